@@ -1,0 +1,54 @@
+#pragma once
+// Symplectic Euler, both variants. For separable H = T(p) + U(q) both are
+// explicit; otherwise the implicit stage is solved by Newton's method
+// (newton.hpp) with the Jacobian I +- h H_qp, to round-off.
+#include "geomint/core/state.hpp"
+#include "geomint/integrators/newton.hpp"
+#include "geomint/systems/frozen.hpp"
+
+namespace geomint {
+
+// Stable on the harmonic oscillator for h*omega < 2 (trace of the one-step map 2 - h^2 w^2).
+inline constexpr MethodInfo symplectic_euler_pq_info{"symplectic_euler_pq", 1, "000 eq. (42)-(43)", 0.0, 2.0};
+inline constexpr MethodInfo symplectic_euler_qp_info{"symplectic_euler_qp", 1,
+                                                     "adjoint of 000 eq. (42)-(43) (000 footnote 3)", 0.0, 2.0};
+
+// 000 eq. (42)-(43): p^{j+1} = p^j - h H_q(q^j, p^{j+1});  q^{j+1} = q^j + h H_p(q^j, p^{j+1}).
+template <class Sys, class State>
+State symplectic_euler_pq(const Sys& sys, const State& z, double h) {
+  constexpr int D = State::dof;
+  const auto at = freeze_q(sys, z.q);
+  State next;
+  if constexpr (Sys::separable) {
+    next.p = z.p - h * at.H_q(z.p);  // H_q does not depend on p
+  } else {
+    next.p = newton_solve<D>(
+        [&](const Vec<D>& P) {
+          return std::pair<Vec<D>, Mat<D>>{P - z.p + h * at.H_q(P), Mat<D>::Identity() + h * at.H_qp(P)};
+        },
+        z.p, "symplectic Euler (42)");
+  }
+  next.q = z.q + h * at.H_p(next.p);
+  return next;
+}
+
+// Adjoint: q^{j+1} = q^j + h H_p(q^{j+1}, p^j);  p^{j+1} = p^j - h H_q(q^{j+1}, p^j).
+template <class Sys, class State>
+State symplectic_euler_qp(const Sys& sys, const State& z, double h) {
+  constexpr int D = State::dof;
+  State next;
+  if constexpr (Sys::separable) {
+    next.q = z.q + h * sys.H_p(z.q, z.p);  // H_p does not depend on q
+  } else {
+    next.q = newton_solve<D>(
+        [&](const Vec<D>& Q) {
+          return std::pair<Vec<D>, Mat<D>>{Q - z.q - h * sys.H_p(Q, z.p),
+                                           Mat<D>::Identity() - h * sys.H_qp(Q, z.p).transpose()};
+        },
+        z.q, "adjoint symplectic Euler");
+  }
+  next.p = z.p - h * sys.H_q(next.q, z.p);
+  return next;
+}
+
+}  // namespace geomint

@@ -1,0 +1,16 @@
+#pragma once
+// Provenance of a run (run.json): commit, compiler and flags, resolved scene,
+// threads, command line, start and end time.
+#include <chrono>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace geomint {
+
+std::string utc_iso8601(std::chrono::system_clock::time_point t);
+
+// The build half of run.json (git commit, compiler, flags), fixed at build time.
+nlohmann::ordered_json build_info();
+
+}  // namespace geomint

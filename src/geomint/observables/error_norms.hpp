@@ -1,0 +1,31 @@
+#pragma once
+// Error norms along a trajectory.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+
+namespace geomint {
+
+// Accumulates e_j = value_j - value_0 (or any error sequence) over j = 0..J and
+// reports the max norm and the root mean square of 000 eq. (50), which divides
+// the sum of the J+1 squares by J.
+class ErrorSeries {
+ public:
+  void add(double e) {
+    // A NaN anywhere makes the max NaN: a failed run never reports a small error.
+    max_ = (std::isnan(e) || std::isnan(max_)) ? e + max_ : std::max(max_, std::abs(e));
+    sum_sq_ += e * e;
+    ++count_;
+  }
+  double max_abs() const { return max_; }
+  double rms50() const { return count_ > 1 ? std::sqrt(sum_sq_ / static_cast<double>(count_ - 1)) : 0.0; }  // (50)
+  std::int64_t count() const { return count_; }
+
+ private:
+  double max_ = 0, sum_sq_ = 0;
+  std::int64_t count_ = 0;
+};
+
+inline double relative_error(double approx, double exact) { return std::abs(approx - exact) / std::abs(exact); }
+
+}  // namespace geomint

@@ -1,0 +1,47 @@
+#include "geomint/observables/order_fit.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+namespace geomint {
+
+OrderFit fit_order(std::span<const double> h, std::span<const double> err, double roundoff_floor) {
+  if (h.size() != err.size()) throw std::invalid_argument("fit_order: h and err differ in length");
+  OrderFit fit;
+  fit.used.assign(h.size(), false);
+  std::vector<double> x, y;
+  fit.h_min = std::numeric_limits<double>::infinity();
+  fit.h_max = 0;
+  for (std::size_t i = 0; i < h.size(); ++i) {
+    if (!(std::isfinite(err[i]) && err[i] > roundoff_floor && h[i] > 0)) continue;
+    fit.used[i] = true;
+    x.push_back(std::log10(h[i]));
+    y.push_back(std::log10(err[i]));
+    fit.h_min = std::min(fit.h_min, h[i]);
+    fit.h_max = std::max(fit.h_max, h[i]);
+  }
+  fit.points = static_cast<int>(x.size());
+  if (fit.points < 3) {
+    throw std::invalid_argument("fit_order: only " + std::to_string(fit.points) +
+                                " points above the round-off floor; at least 3 are needed");
+  }
+  const double n = fit.points;
+  double mx = 0, my = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) mx += x[i], my += y[i];
+  mx /= n, my /= n;
+  double sxx = 0, sxy = 0, syy = 0;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    sxx += (x[i] - mx) * (x[i] - mx);
+    sxy += (x[i] - mx) * (y[i] - my);
+    syy += (y[i] - my) * (y[i] - my);
+  }
+  fit.order = sxy / sxx;
+  fit.log10_c = my - fit.order * mx;
+  fit.r2 = syy > 0 ? sxy * sxy / (sxx * syy) : 1.0;
+  return fit;
+}
+
+}  // namespace geomint

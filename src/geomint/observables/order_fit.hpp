@@ -1,0 +1,22 @@
+#pragma once
+// Convergence orders: least-squares slope of log(error) against log(h).
+#include <span>
+#include <vector>
+
+namespace geomint {
+
+struct OrderFit {
+  double order = 0;       // fitted slope p in err ~ C h^p
+  double log10_c = 0;     // fitted log10 C
+  double r2 = 0;          // coefficient of determination of the log-log fit
+  int points = 0;         // how many points entered the fit
+  double h_min = 0, h_max = 0;
+  std::vector<bool> used; // per input point: inside the fit?
+};
+
+// Fits over the points whose error is finite and above `roundoff_floor`
+// (points at the round-off plateau would flatten the slope). Throws
+// std::invalid_argument if fewer than 3 points remain.
+OrderFit fit_order(std::span<const double> h, std::span<const double> err, double roundoff_floor);
+
+}  // namespace geomint

@@ -1,0 +1,30 @@
+#pragma once
+// Wall-clock timing for the cost figures and summary.json (never for pass/fail).
+#include <algorithm>
+#include <chrono>
+#include <vector>
+
+namespace geomint {
+
+// Keeps the compiler from discarding a computation whose result is unused.
+template <class T>
+inline void do_not_optimize(const T& value) {
+  asm volatile("" : : "r"(&value) : "memory");
+}
+
+// Median over `repeats` runs of f() (after one untimed warm-up run), in seconds.
+template <class F>
+double median_seconds(int repeats, const F& f) {
+  f();
+  std::vector<double> t;
+  for (int r = 0; r < repeats; ++r) {
+    const auto start = std::chrono::steady_clock::now();
+    f();
+    t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  }
+  std::sort(t.begin(), t.end());
+  const std::size_t n = t.size();
+  return n % 2 ? t[n / 2] : 0.5 * (t[n / 2 - 1] + t[n / 2]);
+}
+
+}  // namespace geomint
