@@ -1,6 +1,7 @@
 #include "geomint/scene/scene.hpp"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <sstream>
 
@@ -14,16 +15,22 @@ std::string fmt(double v) {
   return s.str();
 }
 
+// A value as the user would write it (shortest round-trip form for floats).
 std::string repr(const toml::node& node) {
-  std::ostringstream s;
-  if (auto* str = node.as_string()) {
-    s << '"' << str->get() << '"';
-  } else {
-    node.visit([&](const auto& n) { s << n; });
+  if (const auto* v = node.as_floating_point()) {
+    char buf[32];
+    const auto r = std::to_chars(buf, buf + sizeof buf, v->get());
+    return std::string(buf, r.ptr);
   }
-  std::string out = s.str();
-  std::replace(out.begin(), out.end(), '\n', ' ');
-  return out;
+  if (const auto* v = node.as_integer()) return std::to_string(v->get());
+  if (const auto* v = node.as_boolean()) return v->get() ? "true" : "false";
+  if (const auto* v = node.as_string()) return '"' + v->get() + '"';
+  if (const auto* arr = node.as_array()) {
+    std::string out = "[";
+    for (std::size_t i = 0; i < arr->size(); ++i) out += (i ? ", " : "") + repr(*arr->get(i));
+    return out + "]";
+  }
+  return "(table)";
 }
 
 const char* type_name(Schema::Type t) {

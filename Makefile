@@ -1,0 +1,62 @@
+# Front door. On a fresh Debian 12 machine `make figures` and `make test` are
+# each enough: they install what is missing (scripts/install-deps.sh, once per
+# change of that script), configure, build and run.
+#
+#   make deps                     install the Debian packages for build, test and figures
+#   make build                    configure (Release) and build into build/
+#   make test                     build, then ctest (unit, regression, stability, figures)
+#   make figures                  run every experiment's paper scene, render figures/out/*
+#   make paper                    figures + tables from summary.json + paper/main.pdf
+#   make experiment NAME=x ARGS='--set key=value'   one experiment (+ its figures)
+#   make bench                    throughput benchmarks (Google Benchmark)
+#   make clean                    remove build/, results/, figures/out/, paper outputs
+
+BUILD     ?= build
+RESULTS   ?= results
+JOBS      ?= $(shell nproc 2>/dev/null || echo 2)
+CMAKE_ARGS ?=
+EXPERIMENTS := $(notdir $(patsubst %/,%,$(dir $(wildcard experiments/*/main.cpp))))
+DEPS_STAMP := .deps
+
+.PHONY: all deps build test figures paper experiment bench clean
+all: build
+
+$(DEPS_STAMP)/%.stamp: scripts/install-deps.sh
+	scripts/install-deps.sh $*
+	@mkdir -p $(DEPS_STAMP) && touch $@
+
+deps: $(DEPS_STAMP)/figures.stamp
+
+$(BUILD)/CMakeCache.txt: | $(DEPS_STAMP)/build.stamp
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_ARGS)
+
+build: $(DEPS_STAMP)/build.stamp $(BUILD)/CMakeCache.txt
+	cmake --build $(BUILD) -j $(JOBS)
+
+test: build
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+# One experiment with its paper scene (or ARGS), then its figures.
+experiment: build $(DEPS_STAMP)/figures.stamp
+	@test -n "$(NAME)" || { echo "usage: make experiment NAME=<one of: $(EXPERIMENTS)> [ARGS='--set key=value']"; exit 2; }
+	$(BUILD)/bin/$(NAME) --out $(RESULTS)/$(NAME) $(ARGS)
+	tests/figures/render_figures.sh $(RESULTS)/$(NAME) figures/out $(wildcard figures/$(NAME)*.gp)
+
+figures: build $(DEPS_STAMP)/figures.stamp
+	@for name in $(EXPERIMENTS); do \
+	  echo "== $$name"; \
+	  $(BUILD)/bin/$$name --out $(RESULTS)/$$name || exit 1; \
+	  tests/figures/render_figures.sh $(RESULTS)/$$name figures/out figures/$$name*.gp || exit 1; \
+	done
+
+paper: figures $(DEPS_STAMP)/paper.stamp
+	python3 scripts/paper_tables.py $(RESULTS) paper/generated
+	cd paper && latexmk -pdf -interaction=nonstopmode -halt-on-error main.tex
+
+bench: $(DEPS_STAMP)/build.stamp $(BUILD)/CMakeCache.txt
+	cmake --build $(BUILD) -j $(JOBS) --target geomint_bench
+	$(BUILD)/bin/geomint_bench
+
+clean:
+	rm -rf $(BUILD) $(RESULTS) figures/out paper/generated
+	-cd paper && latexmk -C main.tex >/dev/null 2>&1

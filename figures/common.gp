@@ -1,0 +1,62 @@
+# figures/common.gp: settings shared by every figure script.
+#
+# A figure script is run from the repository root as
+#     gnuplot -e "results='DIR'; out='OUTDIR'" figures/NAME.gp
+# and writes OUTDIR/NAME.pdf and OUTDIR/NAME.png. It loads this file, then
+#     do for [fmt in FORMATS] { eval term(fmt, 'NAME', width_cm, height_cm); plot ...; unset output }
+
+if (!exists("results")) results = 'results/euler_compensation'
+if (!exists("out"))     out = 'figures/out'
+system sprintf("mkdir -p '%s'", out)
+
+# ---- terminals: one figure in vector (pdf) and raster (png) form ----------
+FORMATS = "pdf png"
+FONT    = "Sans,10"
+DPI     = 200                            # png resolution; fonts and lines scale with it
+term(fmt, name, w, h) = (fmt eq "pdf" \
+    ? sprintf("set terminal pdfcairo enhanced color font '%s' size %gcm,%gcm linewidth 1.5", FONT, w, h) \
+    : sprintf("set terminal pngcairo enhanced font '%s' size %d,%d fontscale %g linewidth %g pointscale %g", \
+              FONT, w*DPI/2.54, h*DPI/2.54, DPI/150.0, 1.5*DPI/144.0, DPI/72.0)) \
+    . sprintf("; set output '%s/%s.%s'", out, name, fmt)
+
+# ---- data: CSV with a header row; columns are addressed by name ----------
+# Values written as "nan" are not numbers to gnuplot: such rows are skipped.
+set datafile separator comma
+set datafile columnheaders
+csv(file) = results . '/' . file
+
+# ---- one colour per method, used in every figure (Okabe-Ito, colour-blind safe)
+C_EXACT = '#000000'      # exact solution
+C_SE    = '#D55E00'      # (symplectic) Euler without compensation
+C_COMP  = '#0072B2'      # with the compensating transformation
+C_RK4   = '#009E73'      # classical RK4, reference
+
+LS_EXACT = 1;  set style line LS_EXACT lc rgb C_EXACT lw 1.0 dt 1
+LS_SE    = 2;  set style line LS_SE    lc rgb C_SE    lw 1.0 pt 7 ps 0.55   # filled circles
+LS_COMP  = 3;  set style line LS_COMP  lc rgb C_COMP  lw 1.0 pt 4 ps 0.70   # open squares
+LS_RK4   = 4;  set style line LS_RK4   lc rgb C_RK4   lw 1.0 pt 8 ps 0.70   # open triangles
+LS_SE2   = 5;  set style line LS_SE2   lc rgb C_SE    lw 1.0 pt 9 ps 0.65   # second problem, same method
+# least-squares fits: dashed, in the method's colour
+LS_SE_FIT   = 12; set style line LS_SE_FIT   lc rgb C_SE   lw 0.8 dt (6,3)
+LS_COMP_FIT = 13; set style line LS_COMP_FIT lc rgb C_COMP lw 0.8 dt (6,3)
+LS_RK4_FIT  = 14; set style line LS_RK4_FIT  lc rgb C_RK4  lw 0.8 dt (6,3)
+
+# ---- look ---------------------------------------------------------------
+set border lw 0.8
+set grid back lc rgb '#d9d9d9' lw 0.5 dt 1
+set tics out nomirror scale 0.7
+set key opaque box lc rgb '#bbbbbb' lw 0.5 samplen 2.5 spacing 1.15 width 1
+set mxtics; set mytics
+LOGFMT = "10^{%L}"                       # tic labels on logarithmic axes
+
+# ---- fitted orders from orders.csv -------------------------------------
+# eval getfit('se_energy') defines se_energy_order, se_energy_c (log10 of the
+# constant), se_energy_hmin and se_energy_hmax: the fitted line is
+# err = 10^c h^order over [hmin, hmax]. A missing name is an error.
+_row(n, col) = (strcol("name") eq n) ? column(col) : NaN
+getfit(n) = \
+    "undefine STATS_*; stats csv('orders.csv') using (_row('".n."','order')):(_row('".n."','log10_c')) nooutput; " \
+  . n."_order = STATS_max_x; ".n."_c = STATS_max_y; " \
+  . "undefine STATS_*; stats csv('orders.csv') using (_row('".n."','h_min')):(_row('".n."','h_max')) nooutput; " \
+  . n."_hmin = STATS_max_x; ".n."_hmax = STATS_max_y"
+powerlaw(h, c, order) = 10**c * h**order

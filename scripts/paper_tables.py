@@ -1,0 +1,517 @@
+#!/usr/bin/env python3
+"""LaTeX tables and macros for paper/main.tex from the experiments' summary.json.
+
+Usage: python3 scripts/paper_tables.py RESULTS_ROOT OUT_DIR
+
+RESULTS_ROOT holds one directory per experiment (RESULTS_ROOT/<name>/summary.json,
+as written by build/bin/<name>). For every known experiment, and for every other
+directory of RESULTS_ROOT that holds a summary.json, this writes
+
+  OUT_DIR/<name>_table.tex   published vs reproduced (booktabs table float)
+  OUT_DIR/<name>_timing.tex  ns per step per method, their ratio, error at equal wall time
+  OUT_DIR/<name>_macros.tex  \\newcommand macros for the numbers the text cites
+
+A known experiment without results gets placeholder files ("not yet reproduced"),
+and its macros are defined as "n/a", so that main.tex always compiles.
+
+Each published key is paired with summary["orders"][key] if present, else with
+summary["reproduced"][key]. Orders are printed to 3 decimals, other values with
+2 significant digits (scientific notation below 1e-3).
+
+Exit status: 0 on success, 2 on a usage error or a malformed summary.json
+(the message names the file and the offending key). Python standard library only.
+"""
+
+import csv
+import json
+import math
+import os
+import sys
+import tempfile
+
+# ---------------------------------------------------------------------------
+# Per-experiment presentation: row descriptions, method names, cited macros.
+# ---------------------------------------------------------------------------
+
+# Experiments the paper has a section for, in the order of main.tex.
+KNOWN = [
+    "euler_compensation",
+    "rowlands_convergence",
+    "energy_map",
+    "lobatto_table",
+    "measure_cloud",
+    "ti_drift",
+]
+
+TITLES = {
+    "euler_compensation": r"000, Figs.~2, 3, 8, 9 (\texttt{euler\_compensation})",
+    "rowlands_convergence": r"000, Fig.~4 (\texttt{rowlands\_convergence})",
+    "energy_map": r"000, Fig.~6 (\texttt{energy\_map})",
+    "lobatto_table": r"001, Table~1, Figs.~1, 2 (\texttt{lobatto\_table})",
+    "measure_cloud": r"003, Figs.~5.1--5.6 (\texttt{measure\_cloud})",
+    "ti_drift": r"004, Figs.~1--6 (\texttt{ti\_drift})",
+}
+
+# Row descriptions of the published-vs-reproduced table (LaTeX).
+DESCRIPTIONS = {
+    "euler_compensation": {
+        "ee_decay": r"Order of explicit Euler (9) on (14) in $y$",
+        "se_energy": r"Order of symplectic Euler (42)--(43) in $(q,p)$, error in $H$ (Fig.~9)",
+        "se_compensated_energy": r"Order of symplectic Euler in $(\bar q,\bar p)$ of (82), error in $H$ (Fig.~9)",
+        "decay_compensated_max_rel_err": r"Fig.~2: explicit Euler in $\bar y$ of (15), max.\ relative error of $y$",
+        "gompertz_compensated_max_rel_err": r"Fig.~3: explicit Euler in $\bar y$ of (18), max.\ relative error of $y$",
+    },
+}
+
+# Method names of the timing table (LaTeX).
+METHODS = {
+    "euler_compensation": {
+        "se": r"Symplectic Euler (42)--(43) in $(q,p)$",
+        "se_compensated": r"Symplectic Euler in $(\bar q,\bar p)$ of (82)",
+        "rk4": r"Classical Runge--Kutta 4 (not symplectic)",
+    },
+}
+
+# What "error" means in the timing table of an experiment (LaTeX).
+ERROR_NAMES = {
+    "euler_compensation": r"$\max_{t_j\le T}|H_j-H_0|$",
+}
+
+# Crossover of two work-precision curves, read from <dir>/timing.csv
+# (columns method, wall_s and the named error column): (method a, method b, column).
+CROSSOVERS = {
+    "euler_compensation": ("se", "se_compensated", "energy_err_max"),
+}
+
+# Macros the text cites: (name, path into summary.json or a derived quantity, format).
+# A path starts with "summary", "scene" (run.json's resolved scene) or "derived".
+MACROS = {
+    "euler_compensation": [
+        ("ECeeDecayOrder", ("summary", "orders", "ee_decay"), "order"),
+        ("ECeeGompertzOrder", ("summary", "orders", "ee_gompertz"), "order"),
+        ("ECseOrder", ("summary", "orders", "se_energy"), "order"),
+        ("ECcompOrder", ("summary", "orders", "se_compensated_energy"), "order"),
+        ("ECrkOrder", ("summary", "orders", "rk4_energy"), "order"),
+        ("ECseRmsOrder", ("summary", "orders", "se_energy_rms"), "order"),
+        ("ECcompRmsOrder", ("summary", "orders", "se_compensated_energy_rms"), "order"),
+        ("ECfitPoints", ("summary", "fits", "se_energy", "points"), "int"),
+        ("ECfitHmin", ("summary", "fits", "se_energy", "h_min"), "plain"),
+        ("ECfitHmax", ("summary", "fits", "se_energy", "h_max"), "plain"),
+        ("ECdecayCompErr", ("summary", "reproduced", "decay_compensated_max_rel_err"), "err"),
+        ("ECdecayEulerErr", ("summary", "reproduced", "decay_euler_max_rel_err"), "err"),
+        ("ECgompertzCompErr", ("summary", "reproduced", "gompertz_compensated_max_rel_err"), "err"),
+        ("ECgompertzEulerErr", ("summary", "reproduced", "gompertz_euler_max_rel_err"), "err"),
+        ("ECfigEightSeErr", ("summary", "reproduced", "fig8_max_energy_err_se"), "err"),
+        ("ECfigEightCompErr", ("summary", "reproduced", "fig8_max_energy_err_compensated"), "err"),
+        ("ECfigEightQhat", ("summary", "reproduced", "fig8_max_abs_qhat"), "fixed3"),
+        ("ECnsSe", ("summary", "timing", "ns_per_step", "se"), "ns"),
+        ("ECnsComp", ("summary", "timing", "ns_per_step", "se_compensated"), "ns"),
+        ("ECnsRk", ("summary", "timing", "ns_per_step", "rk4"), "ns"),
+        ("ECratio", ("summary", "timing", "ns_per_step_ratio_compensated_over_se"), "ratio"),
+        ("ECeqWall", ("summary", "timing", "error_at_equal_wall_time", "wall_s"), "sci"),
+        ("ECeqErrSe", ("summary", "timing", "error_at_equal_wall_time", "se"), "err"),
+        ("ECeqErrComp", ("summary", "timing", "error_at_equal_wall_time", "se_compensated"), "err"),
+        ("ECeqErrRk", ("summary", "timing", "error_at_equal_wall_time", "rk4"), "err"),
+        ("ECrunWall", ("summary", "timing", "wall_s"), "seconds"),
+        ("ECcrossWall", ("derived", "crossover", "wall_s"), "sci"),
+        ("ECcrossErr", ("derived", "crossover", "err"), "err"),
+        ("ECtEnd", ("scene", "convergence", "t_end"), "plain"),
+        ("ECoscH", ("scene", "oscillator", "h"), "plain"),
+        ("ECoscK", ("scene", "oscillator", "k"), "plain"),
+        ("ECoscSteps", ("scene", "oscillator", "steps"), "int"),
+        ("ECtimingSteps", ("scene", "timing", "steps"), "int"),
+        ("ECtimingRepeats", ("scene", "timing", "repeats"), "int"),
+    ],
+}
+
+NA = r"\textit{n/a}"
+
+
+class Malformed(Exception):
+    """A summary.json that does not have the shape of the interface contract."""
+
+
+# ---------------------------------------------------------------------------
+# Formatting
+# ---------------------------------------------------------------------------
+
+def tex_escape(text):
+    repl = {
+        "\\": r"\textbackslash{}", "&": r"\&", "%": r"\%", "$": r"\$", "#": r"\#",
+        "_": r"\_", "{": r"\{", "}": r"\}", "~": r"\textasciitilde{}", "^": r"\textasciicircum{}",
+        "<": r"\textless{}", ">": r"\textgreater{}", "|": r"\textbar{}",
+    }
+    return "".join(repl.get(c, c) for c in str(text))
+
+
+def is_number(v):
+    return isinstance(v, (int, float)) and not isinstance(v, bool)
+
+
+def sci(x, digits=2):
+    """x as $m\\times10^{e}$ with `digits` significant digits (plain LaTeX, math content only)."""
+    if x == 0:
+        return "0"
+    mant, exp = f"{x:.{digits - 1}e}".split("e")
+    exp = int(exp)
+    if exp == 0:
+        return mant
+    return rf"{mant}\times10^{{{exp}}}"
+
+
+def general(x):
+    """A value that is not an order: scientific below 1e-3 or from 1e4, else 4 significant digits."""
+    if not math.isfinite(x):
+        return None
+    if x == 0:
+        return "0"
+    if abs(x) < 1e-3 or abs(x) >= 1e4:
+        return sci(x)
+    return f"{x:.4g}"
+
+
+def fmt(value, kind):
+    """Math-mode content (without $) for a number, or None if it cannot be shown."""
+    if value is None or not is_number(value) or not math.isfinite(value):
+        return None
+    if kind == "order":
+        return f"{value:.3f}"
+    if kind == "porder":  # a published order: as printed (an integer) or to 3 decimals
+        return f"{value:.0f}" if float(value).is_integer() else f"{value:.3f}"
+    if kind == "dorder":
+        return f"{value:+.3f}"
+    if kind == "int":
+        n = int(round(value))
+        return f"{n:,}".replace(",", r"\,") if abs(n) >= 10000 else f"{n}"
+    if kind == "err":
+        if value == 0:
+            return "0"
+        if abs(value) < 1e-3 or abs(value) >= 1e4:
+            return sci(value)
+        return f"{value:.2g}"
+    if kind == "sci":
+        return sci(value)
+    if kind == "fixed3":
+        return f"{value:.3f}"
+    if kind == "ns":
+        return f"{value:.1f}"
+    if kind == "ratio":
+        return f"{value:.1f}"
+    if kind == "seconds":
+        return f"{value:.2g}"
+    if kind == "plain":
+        return f"{value:g}"
+    return general(value)
+
+
+def math_cell(content):
+    return NA if content is None else f"${content}$"
+
+
+# ---------------------------------------------------------------------------
+# Reading
+# ---------------------------------------------------------------------------
+
+def reject_constant(name):
+    raise ValueError(f"non-standard JSON constant {name}")
+
+
+def load_json(path):
+    try:
+        with open(path, encoding="utf-8") as f:
+            return json.load(f, parse_constant=reject_constant)
+    except (OSError, ValueError) as e:
+        raise Malformed(f"{path}: not valid JSON: {e}") from None
+
+
+def check_summary(path, s):
+    if not isinstance(s, dict):
+        raise Malformed(f"{path}: top level must be a JSON object")
+    pub = s.get("published")
+    if not isinstance(pub, dict):
+        raise Malformed(f'{path}: "published" must be an object of numbers')
+    for section in ("reproduced", "orders", "timing", "norms"):
+        if section in s and s[section] is not None and not isinstance(s[section], dict):
+            raise Malformed(f'{path}: "{section}" must be an object')
+    orders = s.get("orders") or {}
+    reproduced = s.get("reproduced") or {}
+    for key, v in pub.items():
+        if not is_number(v):
+            raise Malformed(f'{path}: published "{key}" must be a number, got {json.dumps(v)}')
+        if key in orders:
+            r = orders[key]
+        elif key in reproduced:
+            r = reproduced[key]
+        else:
+            raise Malformed(f'{path}: published "{key}" has no value in "orders" or "reproduced"')
+        if r is not None and not is_number(r):
+            raise Malformed(f'{path}: reproduced "{key}" must be a number or null, got {json.dumps(r)}')
+    timing = s.get("timing") or {}
+    nsps = timing.get("ns_per_step")
+    if nsps is not None:
+        if not isinstance(nsps, dict) or not all(is_number(v) or v is None for v in nsps.values()):
+            raise Malformed(f'{path}: "timing.ns_per_step" must be an object of numbers')
+    eq = timing.get("error_at_equal_wall_time")
+    if eq is not None:
+        if not isinstance(eq, dict) or not all(is_number(v) or v is None for v in eq.values()):
+            raise Malformed(f'{path}: "timing.error_at_equal_wall_time" must be an object of numbers or null')
+
+
+def lookup(tree, path):
+    node = tree
+    for k in path:
+        if not isinstance(node, dict) or k not in node:
+            return None
+        node = node[k]
+    return node
+
+
+def read_timing_curves(path, error_column):
+    """{method: [(wall_s, err), ...]} from a timing.csv, or None if there is none."""
+    if not os.path.isfile(path):
+        return None
+    curves = {}
+    with open(path, newline="", encoding="utf-8") as f:
+        rows = csv.DictReader(f)
+        need = {"method", "wall_s", error_column}
+        if rows.fieldnames is None or not need <= set(rows.fieldnames):
+            raise Malformed(f"{path}: needs the columns {sorted(need)}")
+        for row in rows:
+            try:
+                w, e = float(row["wall_s"]), float(row[error_column])
+            except ValueError:
+                raise Malformed(f"{path}: non-numeric wall_s or {error_column} in row {row}") from None
+            if w > 0 and e > 0 and math.isfinite(w) and math.isfinite(e):
+                curves.setdefault(row["method"], []).append((w, e))
+    return {m: sorted(c) for m, c in curves.items()}
+
+
+def loglog_at(curve, w):
+    """log err at wall time w by linear interpolation in log-log; None outside the curve."""
+    for (w0, e0), (w1, e1) in zip(curve, curve[1:]):
+        if w0 <= w <= w1 and w1 > w0:
+            s = math.log(w / w0) / math.log(w1 / w0)
+            return math.log(e0) + s * (math.log(e1) - math.log(e0))
+    return None
+
+
+def crossover(curve_a, curve_b):
+    """First wall time at which the log-log-interpolated curves a and b cross: {wall_s, err} or None.
+
+    Both curves are piecewise linear in (log w, log err), so their difference is piecewise
+    linear between the merged break points and each crossing is found exactly.
+    """
+    lo = max(curve_a[0][0], curve_b[0][0])
+    hi = min(curve_a[-1][0], curve_b[-1][0])
+    if not lo < hi:
+        return None
+    ws = sorted({w for w, _ in curve_a + curve_b if lo <= w <= hi} | {lo, hi})
+    prev = None
+    for w in ws:
+        la, lb = loglog_at(curve_a, w), loglog_at(curve_b, w)
+        if la is None or lb is None:
+            continue
+        d = la - lb
+        if prev is not None:
+            w0, d0, la0 = prev
+            if d0 == 0:
+                return {"wall_s": w0, "err": math.exp(la0)}
+            if d0 * d < 0 or d == 0:
+                s = d0 / (d0 - d)
+                lw = math.log(w0) + s * (math.log(w) - math.log(w0))
+                wc = math.exp(lw)
+                return {"wall_s": wc, "err": math.exp(loglog_at(curve_a, wc))}
+        prev = (w, d, la)
+    return None
+
+
+# ---------------------------------------------------------------------------
+# Writing
+# ---------------------------------------------------------------------------
+
+HEADER = "% Generated by scripts/paper_tables.py from {src}; do not edit.\n"
+
+
+def write_atomic(path, text):
+    d = os.path.dirname(path) or "."
+    fd, tmp = tempfile.mkstemp(dir=d, prefix=".tmp-", suffix=".tex")
+    try:
+        with os.fdopen(fd, "w", encoding="utf-8") as f:
+            f.write(text)
+        os.replace(tmp, path)
+    except BaseException:
+        if os.path.exists(tmp):
+            os.unlink(tmp)
+        raise
+
+
+def placeholder_box(name, what):
+    return (
+        "\\begin{center}\n\\fbox{\\parbox{0.9\\linewidth}{\\centering\\small\n"
+        f"{what} of \\texttt{{{tex_escape(name)}}}: not yet reproduced in this version\n"
+        f"(no \\texttt{{results/{tex_escape(name)}/summary.json}}).}}}}\n\\end{{center}}\n"
+    )
+
+
+def experiment_title(name):
+    return TITLES.get(name, r"\texttt{" + tex_escape(name) + "}")
+
+
+def results_table(name, s, src):
+    pub = s["published"]
+    orders = s.get("orders") or {}
+    reproduced = s.get("reproduced") or {}
+    desc = DESCRIPTIONS.get(name, {})
+    lines = [HEADER.format(src=src)]
+    lines.append("\\begin{table}[htbp]\n\\centering\n\\small\n")
+    lines.append(f"\\caption{{Published and reproduced values, {experiment_title(name)}. "
+                 "Orders are least-squares slopes of $\\log(\\text{error})$ against $\\log h$; "
+                 "difference = reproduced $-$ published.}\n")
+    lines.append(f"\\label{{tab:{name}-table}}\n")
+    lines.append("\\begin{tabular}{@{}p{0.52\\linewidth}rrr@{}}\n\\toprule\n")
+    lines.append("Quantity & Published & Reproduced & Difference \\\\\n\\midrule\n")
+    for key, p in pub.items():
+        is_order = key in orders
+        r = orders[key] if is_order else reproduced[key]
+        label = desc.get(key, tex_escape(key))
+        if is_order:
+            cells = [fmt(p, "porder"), fmt(r, "order"), fmt(None if r is None else r - p, "dorder")]
+        else:
+            cells = [general(p), None if r is None else general(r), None if r is None else general(r - p)]
+        lines.append(f"{label} & " + " & ".join(math_cell(c) for c in cells) + " \\\\\n")
+    lines.append("\\bottomrule\n\\end{tabular}\n")
+    norms = s.get("norms")
+    if isinstance(norms, dict) and norms:
+        lines.append("\\par\\smallskip\\parbox{\\linewidth}{\\footnotesize Norms (from \\texttt{summary.json}): ")
+        lines.append("; ".join(f"\\texttt{{{tex_escape(k)}}}: {tex_escape(v)}" for k, v in norms.items()))
+        lines.append(".}\n")
+    lines.append("\\end{table}\n")
+    return "".join(lines)
+
+
+def timing_table(name, s, src, cross):
+    timing = s.get("timing") or {}
+    nsps = timing.get("ns_per_step") or {}
+    eq = timing.get("error_at_equal_wall_time")
+    methods = METHODS.get(name, {})
+    err_name = ERROR_NAMES.get(name, "error")
+    lines = [HEADER.format(src=src)]
+    if not nsps and not eq:
+        lines.append("\\begin{center}\\small No timing recorded for \\texttt{"
+                     f"{tex_escape(name)}" "}.\\end{center}\n")
+        if "wall_s" in timing and is_number(timing["wall_s"]):
+            lines.append(f"\\begin{{center}}\\small Wall time of the run: ${fmt(timing['wall_s'], 'seconds')}$\\,s.\\end{{center}}\n")
+        return "".join(lines)
+    names = list(nsps) + [m for m in (eq or {}) if m != "wall_s" and m not in nsps]
+    base = next((nsps[m] for m in nsps if is_number(nsps[m]) and nsps[m] > 0), None)
+    lines.append("\\begin{table}[htbp]\n\\centering\n\\small\n")
+    lines.append(f"\\caption{{Cost, {experiment_title(name)}: time per step, cost relative to the first method, "
+                 f"and {err_name} at equal wall time.}}\n")
+    lines.append(f"\\label{{tab:{name}-timing}}\n")
+    lines.append("\\begin{tabular}{@{}lrrr@{}}\n\\toprule\n")
+    lines.append(f"Method & ns per step & Relative cost & {err_name} at equal wall time \\\\\n\\midrule\n")
+    for m in names:
+        ns = nsps.get(m)
+        rel = ns / base if (is_number(ns) and base) else None
+        e = (eq or {}).get(m)
+        lines.append(f"{methods.get(m, tex_escape(m))} & {math_cell(fmt(ns, 'ns'))} & "
+                     f"{math_cell(fmt(rel, 'ratio'))} & {math_cell(fmt(e, 'err'))} \\\\\n")
+    lines.append("\\bottomrule\n\\end{tabular}\n")
+    notes = []
+    for k, v in timing.items():
+        if k.startswith("ns_per_step_ratio") and is_number(v):
+            notes.append(f"ratio \\texttt{{{tex_escape(k[len('ns_per_step_ratio_'):])}}} = ${fmt(v, 'ratio')}$")
+    if isinstance(eq, dict) and is_number(eq.get("wall_s")):
+        notes.append(f"equal wall time ${sci(eq['wall_s'])}$\\,s")
+    elif "error_at_equal_wall_time" in timing and eq is None:
+        notes.append("no wall-time range common to all methods")
+    if cross is not None:
+        a, b = (r"\texttt{" + tex_escape(m) + "}" for m in CROSSOVERS[name][:2])
+        if cross.get("wall_s") is not None:
+            notes.append(f"the work-precision curves of {a} and {b} (log--log interpolation of "
+                         f"\\texttt{{timing.csv}}) cross at ${sci(cross['wall_s'])}$\\,s, "
+                         f"error ${fmt(cross['err'], 'err')}$")
+        else:
+            notes.append(f"the work-precision curves of {a} and {b} do not cross in the measured range")
+    if isinstance(timing.get("method"), str):
+        notes.append("measurement: " + tex_escape(timing["method"]))
+    if is_number(timing.get("wall_s")):
+        notes.append(f"wall time of the whole run ${fmt(timing['wall_s'], 'seconds')}$\\,s")
+    if notes:
+        lines.append("\\par\\smallskip\\parbox{\\linewidth}{\\footnotesize " + "; ".join(notes) + ".}\n")
+    lines.append("\\end{table}\n")
+    return "".join(lines)
+
+
+def macros_file(name, s, scene, cross, src):
+    lines = [HEADER.format(src=src)]
+    specs = MACROS.get(name, [])
+    if not specs:
+        lines.append(f"% No macros are cited for {name}.\n")
+    sources = {"summary": s, "scene": scene, "derived": {"crossover": cross} if cross else {}}
+    for macro, path, kind in specs:
+        value = lookup(sources.get(path[0]) or {}, path[1:]) if s is not None else None
+        content = fmt(value, kind)
+        body = NA if content is None else f"\\ensuremath{{{content}}}"
+        lines.append(f"\\newcommand{{\\{macro}}}{{{body}}}\n")
+    return "".join(lines)
+
+
+def process(name, exp_dir, out_dir):
+    summary_path = os.path.join(exp_dir, "summary.json") if exp_dir else None
+    out = {k: os.path.join(out_dir, f"{name}_{k}.tex") for k in ("table", "timing", "macros")}
+    if summary_path is None or not os.path.isfile(summary_path):
+        src = "(no results)"
+        write_atomic(out["table"], HEADER.format(src=src) + placeholder_box(name, "Published vs reproduced"))
+        write_atomic(out["timing"], HEADER.format(src=src) + placeholder_box(name, "Timing"))
+        write_atomic(out["macros"], macros_file(name, None, None, None, src))
+        return False
+    s = load_json(summary_path)
+    check_summary(summary_path, s)
+    if s.get("experiment") not in (None, name):
+        print(f"paper_tables.py: warning: {summary_path} names experiment {s.get('experiment')!r}",
+              file=sys.stderr)
+    scene = {}
+    run_path = os.path.join(exp_dir, "run.json")
+    if os.path.isfile(run_path):
+        run = load_json(run_path)
+        if isinstance(run, dict) and isinstance(run.get("scene"), dict):
+            scene = run["scene"]
+    cross = None
+    if name in CROSSOVERS:
+        a, b, col = CROSSOVERS[name]
+        curves = read_timing_curves(os.path.join(exp_dir, "timing.csv"), col)
+        if curves and a in curves and b in curves and len(curves[a]) > 1 and len(curves[b]) > 1:
+            cross = crossover(curves[a], curves[b]) or {"wall_s": None, "err": None}
+    src = summary_path
+    write_atomic(out["table"], results_table(name, s, src))
+    write_atomic(out["timing"], timing_table(name, s, src, cross))
+    write_atomic(out["macros"], macros_file(name, s, scene, cross, src))
+    return True
+
+
+def main(argv):
+    if len(argv) != 3 or argv[1] in ("-h", "--help"):
+        print(__doc__.strip(), file=sys.stderr if len(argv) != 2 else sys.stdout)
+        return 0 if len(argv) == 2 and argv[1] in ("-h", "--help") else 2
+    root, out_dir = argv[1], argv[2]
+    if not os.path.isdir(root):
+        print(f"paper_tables.py: RESULTS_ROOT {root!r} is not a directory", file=sys.stderr)
+        return 2
+    os.makedirs(out_dir, exist_ok=True)
+    present = sorted(d for d in os.listdir(root)
+                     if os.path.isfile(os.path.join(root, d, "summary.json")))
+    names = KNOWN + [d for d in present if d not in KNOWN]
+    try:
+        for name in names:
+            done = process(name, os.path.join(root, name) if name in present else None, out_dir)
+            print(f"paper_tables.py: {name}: {'tables written' if done else 'not yet reproduced (placeholder)'}",
+                  file=sys.stderr)
+    except Malformed as e:
+        print(f"paper_tables.py: malformed results: {e}", file=sys.stderr)
+        return 2
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv))

@@ -1,0 +1,123 @@
+// Scene loading: overrides, validation, and the messages a user sees.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "geomint/scene/scene.hpp"
+
+using namespace geomint;
+namespace fs = std::filesystem;
+
+namespace {
+
+Schema schema() {
+  Schema s;
+  s.real("decay.h", positive()).integer("decay.steps", at_least(1)).reals("convergence.h", positive(), 3);
+  s.real_rows("initial", 2, any_finite(), 1).boolean("flags.fast").text("method", {"se", "rk4"});
+  return s;
+}
+
+fs::path scene_file(const std::string& text) {
+  static int counter = 0;
+  const fs::path p = fs::temp_directory_path() / ("geomint_scene_test_" + std::to_string(::getpid()) + "_" +
+                                                  std::to_string(counter++) + ".toml");
+  std::ofstream(p) << text;
+  return p;
+}
+
+const std::string valid = R"(
+initial = [[1.0, 0.0], [0.5, 0.5]]
+method = "se"
+[decay]
+h = 0.3
+steps = 20
+[convergence]
+h = [0.1, 0.05, 0.025]
+[flags]
+fast = true
+)";
+
+std::string error_of(const std::string& text, const std::vector<std::string>& overrides = {}) {
+  try {
+    Scene::load(scene_file(text), overrides, schema());
+  } catch (const SceneError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST(Scene, LoadsValidScene) {
+  const auto s = Scene::load(scene_file(valid), {}, schema());
+  EXPECT_DOUBLE_EQ(s.real("decay.h"), 0.3);
+  EXPECT_EQ(s.integer("decay.steps"), 20);
+  EXPECT_EQ(s.reals("convergence.h").size(), 3u);
+  EXPECT_EQ(s.real_rows("initial")[1][1], 0.5);
+  EXPECT_TRUE(s.boolean("flags.fast"));
+  EXPECT_EQ(s.text("method"), "se");
+  EXPECT_EQ(s.to_json()["decay"]["steps"], 20);
+}
+
+TEST(Scene, IntegerIsAcceptedAsReal) {
+  std::string text = valid;
+  text.replace(text.find("h = 0.3"), 7, "h = 1");
+  EXPECT_DOUBLE_EQ(Scene::load(scene_file(text), {}, schema()).real("decay.h"), 1.0);
+}
+
+TEST(Scene, OverridesApply) {
+  const auto s = Scene::load(scene_file(valid), {"decay.h=0.01", "convergence.h=[1, 0.5, 0.25, 0.125]", "method=\"rk4\""},
+                             schema());
+  EXPECT_DOUBLE_EQ(s.real("decay.h"), 0.01);
+  EXPECT_EQ(s.reals("convergence.h").size(), 4u);
+  EXPECT_EQ(s.text("method"), "rk4");
+}
+
+TEST(Scene, RejectsOutOfRangeNanAndNegative) {
+  EXPECT_EQ(error_of(valid, {"decay.h=-1"}), "decay.h = -1 (from --set): must be a finite number > 0");
+  EXPECT_EQ(error_of(valid, {"decay.h=nan"}), "decay.h = nan (from --set): must be a finite number > 0");
+  EXPECT_EQ(error_of(valid, {"decay.h=inf"}), "decay.h = inf (from --set): must be a finite number > 0");
+  EXPECT_NE(error_of(valid, {"decay.steps=0"}).find("decay.steps = 0"), std::string::npos);
+  EXPECT_NE(error_of(valid, {"convergence.h=[0.1, -0.05, 0.025]"}).find("each a finite number > 0"),
+            std::string::npos);
+  EXPECT_NE(error_of(valid, {"convergence.h=[0.1, 0.05]"}).find("at least 3"), std::string::npos);
+}
+
+TEST(Scene, RejectsUnknownKeys) {
+  EXPECT_EQ(error_of(valid, {"nosuch.key=1"}), "--set nosuch.key=1: unknown key 'nosuch.key' (see --help for the keys)");
+  const std::string err = error_of(valid + "\n[extra]\nthing = 2\n");
+  EXPECT_NE(err.find("unknown key 'extra.thing'"), std::string::npos) << err;
+}
+
+TEST(Scene, RejectsTypeErrors) {
+  std::string text = valid;
+  text.replace(text.find("h = 0.3"), 7, "h = \"fast\"");
+  const std::string err = error_of(text);
+  EXPECT_NE(err.find("decay.h = \"fast\""), std::string::npos) << err;
+  EXPECT_NE(err.find("must be a finite number > 0"), std::string::npos) << err;
+  EXPECT_NE(error_of(valid, {"decay.steps=2.5"}).find("must be an integer"), std::string::npos);
+  EXPECT_NE(error_of(valid, {"flags.fast=1"}).find("true or false"), std::string::npos);
+  EXPECT_NE(error_of(valid, {"method=\"euler\""}).find("one of \"se\" \"rk4\""), std::string::npos);
+  EXPECT_NE(error_of(valid, {"initial=[[1, 2, 3]]"}).find("lists of 2 numbers"), std::string::npos);
+}
+
+TEST(Scene, RejectsUnparsableValuesAndMissingKeys) {
+  EXPECT_NE(error_of(valid, {"decay.h=abc"}).find("cannot read 'abc' as a number"), std::string::npos);
+  EXPECT_NE(error_of(valid, {"decay.h"}).find("expected key=value"), std::string::npos);
+  std::string text = valid;
+  text.erase(text.find("steps = 20"), 10);
+  EXPECT_NE(error_of(text).find("missing key 'decay.steps'"), std::string::npos);
+  EXPECT_NE(error_of("decay = [").find("not valid TOML"), std::string::npos);
+}
+
+TEST(Scene, CrossKeyRejectNamesTheKeyAndValue) {
+  const auto s = Scene::load(scene_file(valid), {}, schema());
+  try {
+    s.reject("decay.h", "must be below 0.2");
+    FAIL();
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("decay.h = 0.3 (in "), std::string::npos) << e.what();
+  }
+}
