@@ -39,7 +39,8 @@ struct OscillatorCompensation {
   // m := pi (1 - |qbar|). g is increasing and convex on [0, pi], so Newton's
   // method started right of the root decreases monotonically to it. Start:
   // x0 = cbrt(6 m) lies left of the root (x - sin x <= x^3/6); one Newton step
-  // from it, capped at pi (the root is <= pi), lies right of it.
+  // from it, capped at pi (the root is <= pi), lies right of it, and the
+  // further steps dx are positive.
   // With s, c = sin, cos(x/2): sin x = 2 s c and g' = 1 - cos x = 2 s^2 (no
   // cancellation), one sin/cos pair per step. NaN for |qbar| > 1.
   double inverse(double qbar) const {
@@ -53,10 +54,13 @@ struct OscillatorCompensation {
     if (m > 0.0) {
       x = std::cbrt(6.0 * m);
       x = std::min(std::numbers::pi, x - newton_step(x));
+      // Near the simple root the relative error squares at each step, so after
+      // a step of relative size <= 1e-8 the iterate is converged to round-off.
       for (int it = 0; it < 60; ++it) {
         const double dx = newton_step(x);
-        if (!(dx > 2.0 * std::numeric_limits<double>::epsilon() * x)) break;  // converged (or at round-off)
+        if (!(dx > 0.0)) break;  // at round-off
         x -= dx;
+        if (dx <= 1e-8 * x) break;
       }
     }
     return std::copysign(std::cos(0.5 * x), qbar) * scale();  // sin(psi/2) = cos(x/2)
