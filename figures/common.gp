@@ -20,9 +20,11 @@ term(fmt, name, w, h) = (fmt eq "pdf" \
     . sprintf("; set output '%s/%s.%s'", out, name, fmt)
 
 # ---- data: CSV with a header row; columns are addressed by name ----------
-# Values written as "nan" are not numbers to gnuplot: such rows are skipped.
+# (Referring to a column by name makes gnuplot read the first row as headers.
+# `set datafile columnheaders` is not used: it would also drop the first
+# sample of the '+' pseudo-file.) Values written as "nan" or "-nan" are not
+# numbers to gnuplot: those points are skipped without a warning.
 set datafile separator comma
-set datafile columnheaders
 csv(file) = results . '/' . file
 
 # ---- one colour per method, used in every figure (Okabe-Ito, colour-blind safe)
@@ -37,9 +39,9 @@ LS_COMP  = 3;  set style line LS_COMP  lc rgb C_COMP  lw 1.0 pt 4 ps 0.70   # op
 LS_RK4   = 4;  set style line LS_RK4   lc rgb C_RK4   lw 1.0 pt 8 ps 0.70   # open triangles
 LS_SE2   = 5;  set style line LS_SE2   lc rgb C_SE    lw 1.0 pt 9 ps 0.65   # second problem, same method
 # least-squares fits: dashed, in the method's colour
-LS_SE_FIT   = 12; set style line LS_SE_FIT   lc rgb C_SE   lw 0.8 dt (6,3)
-LS_COMP_FIT = 13; set style line LS_COMP_FIT lc rgb C_COMP lw 0.8 dt (6,3)
-LS_RK4_FIT  = 14; set style line LS_RK4_FIT  lc rgb C_RK4  lw 0.8 dt (6,3)
+LS_SE_FIT   = 12; set style line LS_SE_FIT   lc rgb C_SE   lw 0.9 dt (8,4)
+LS_COMP_FIT = 13; set style line LS_COMP_FIT lc rgb C_COMP lw 0.9 dt (8,4)
+LS_RK4_FIT  = 14; set style line LS_RK4_FIT  lc rgb C_RK4  lw 0.9 dt (8,4)
 
 # ---- look ---------------------------------------------------------------
 set border lw 0.8
@@ -52,11 +54,9 @@ LOGFMT = "10^{%L}"                       # tic labels on logarithmic axes
 # ---- fitted orders from orders.csv -------------------------------------
 # eval getfit('se_energy') defines se_energy_order, se_energy_c (log10 of the
 # constant), se_energy_hmin and se_energy_hmax: the fitted line is
-# err = 10^c h^order over [hmin, hmax]. A missing name is an error.
+# err = 10^c h^order over [hmin, hmax]. A name missing from orders.csv is an error.
 _row(n, col) = (strcol("name") eq n) ? column(col) : NaN
-getfit(n) = \
-    "undefine STATS_*; stats csv('orders.csv') using (_row('".n."','order')):(_row('".n."','log10_c')) nooutput; " \
-  . n."_order = STATS_max_x; ".n."_c = STATS_max_y; " \
-  . "undefine STATS_*; stats csv('orders.csv') using (_row('".n."','h_min')):(_row('".n."','h_max')) nooutput; " \
-  . n."_hmin = STATS_max_x; ".n."_hmax = STATS_max_y"
+_get(n, col, var) = sprintf("undefine STATS_*; stats csv('orders.csv') using (_row('%s','%s')) nooutput; %s = STATS_max; ", n, col, var)
+getfit(n) = _get(n, 'order', n.'_order') . _get(n, 'log10_c', n.'_c') \
+          . _get(n, 'h_min', n.'_hmin')  . _get(n, 'h_max', n.'_hmax')
 powerlaw(h, c, order) = 10**c * h**order

@@ -15,8 +15,11 @@ A known experiment without results gets placeholder files ("not yet reproduced")
 and its macros are defined as "n/a", so that main.tex always compiles.
 
 Each published key is paired with summary["orders"][key] if present, else with
-summary["reproduced"][key]. Orders are printed to 3 decimals, other values with
-2 significant digits (scientific notation below 1e-3).
+summary["reproduced"][key]. Orders are printed to 3 decimals; other values to
+4 significant digits in the tables and 2 in the macros, in scientific notation
+(plain LaTeX, $1.8\times10^{-15}$) below 1e-3. The crossover of two methods'
+work-precision curves (CROSSOVERS) is read from <name>/timing.csv, and the scene
+parameters the text cites from <name>/run.json, when those files exist.
 
 Exit status: 0 on success, 2 on a usage error or a malformed summary.json
 (the message names the file and the offending key). Python standard library only.
@@ -44,12 +47,12 @@ KNOWN = [
 ]
 
 TITLES = {
-    "euler_compensation": r"000, Figs.~2, 3, 8, 9 (\texttt{euler\_compensation})",
-    "rowlands_convergence": r"000, Fig.~4 (\texttt{rowlands\_convergence})",
-    "energy_map": r"000, Fig.~6 (\texttt{energy\_map})",
-    "lobatto_table": r"001, Table~1, Figs.~1, 2 (\texttt{lobatto\_table})",
-    "measure_cloud": r"003, Figs.~5.1--5.6 (\texttt{measure\_cloud})",
-    "ti_drift": r"004, Figs.~1--6 (\texttt{ti\_drift})",
+    "euler_compensation": r"[000] Figs.~2, 3, 8, 9 (\texttt{euler\_compensation})",
+    "rowlands_convergence": r"[000] Fig.~4 (\texttt{rowlands\_convergence})",
+    "energy_map": r"[000] Fig.~6 (\texttt{energy\_map})",
+    "lobatto_table": r"[001] Table~1, Figs.~1, 2 (\texttt{lobatto\_table})",
+    "measure_cloud": r"[003] Figs.~5.1--5.6 (\texttt{measure\_cloud})",
+    "ti_drift": r"[004] Figs.~1--6 (\texttt{ti\_drift})",
 }
 
 # Row descriptions of the published-vs-reproduced table (LaTeX).
@@ -115,10 +118,23 @@ MACROS = {
         ("ECrunWall", ("summary", "timing", "wall_s"), "seconds"),
         ("ECcrossWall", ("derived", "crossover", "wall_s"), "sci"),
         ("ECcrossErr", ("derived", "crossover", "err"), "err"),
-        ("ECtEnd", ("scene", "convergence", "t_end"), "plain"),
+        ("ECdecayAlpha", ("scene", "decay", "alpha"), "plain"),
+        ("ECdecayYzero", ("scene", "decay", "y0"), "plain"),
+        ("ECdecayH", ("scene", "decay", "h"), "plain"),
+        ("ECdecaySteps", ("scene", "decay", "steps"), "int"),
+        ("ECgompertzA", ("scene", "gompertz", "a"), "plain"),
+        ("ECgompertzB", ("scene", "gompertz", "b"), "plain"),
+        ("ECgompertzYzero", ("scene", "gompertz", "y0"), "plain"),
+        ("ECgompertzH", ("scene", "gompertz", "h"), "plain"),
+        ("ECgompertzSteps", ("scene", "gompertz", "steps"), "int"),
+        ("ECoscQzero", ("scene", "oscillator", "q0"), "plain"),
+        ("ECoscPzero", ("scene", "oscillator", "p0"), "plain"),
         ("ECoscH", ("scene", "oscillator", "h"), "plain"),
         ("ECoscK", ("scene", "oscillator", "k"), "plain"),
         ("ECoscSteps", ("scene", "oscillator", "steps"), "int"),
+        ("ECtEnd", ("scene", "convergence", "t_end"), "plain"),
+        ("ECtimingHmax", ("scene", "timing", "h"), "max:err"),
+        ("ECtimingHmin", ("scene", "timing", "h"), "min:err"),
         ("ECtimingSteps", ("scene", "timing", "steps"), "int"),
         ("ECtimingRepeats", ("scene", "timing", "repeats"), "int"),
     ],
@@ -159,6 +175,13 @@ def sci(x, digits=2):
     return rf"{mant}\times10^{{{exp}}}"
 
 
+def sig(x, n):
+    """x in fixed notation with n significant digits, trailing zeros kept (0.20); whole numbers
+    with more than n digits are not rounded further (123)."""
+    decimals = max(0, n - 1 - math.floor(math.log10(abs(x))))
+    return f"{x:.{decimals}f}"
+
+
 def general(x):
     """A value that is not an order: scientific below 1e-3 or from 1e4, else 4 significant digits."""
     if not math.isfinite(x):
@@ -167,7 +190,7 @@ def general(x):
         return "0"
     if abs(x) < 1e-3 or abs(x) >= 1e4:
         return sci(x)
-    return f"{x:.4g}"
+    return sig(x, 4)
 
 
 def fmt(value, kind):
@@ -188,7 +211,7 @@ def fmt(value, kind):
             return "0"
         if abs(value) < 1e-3 or abs(value) >= 1e4:
             return sci(value)
-        return f"{value:.2g}"
+        return sig(value, 2)
     if kind == "sci":
         return sci(value)
     if kind == "fixed3":
@@ -364,7 +387,7 @@ def results_table(name, s, src):
     desc = DESCRIPTIONS.get(name, {})
     lines = [HEADER.format(src=src)]
     lines.append("\\begin{table}[htbp]\n\\centering\n\\small\n")
-    lines.append(f"\\caption{{Published and reproduced values, {experiment_title(name)}. "
+    lines.append(f"\\caption{{Published and reproduced values of {experiment_title(name)}. "
                  "Orders are least-squares slopes of $\\log(\\text{error})$ against $\\log h$; "
                  "difference = reproduced $-$ published.}\n")
     lines.append(f"\\label{{tab:{name}-table}}\n")
@@ -405,11 +428,11 @@ def timing_table(name, s, src, cross):
     names = list(nsps) + [m for m in (eq or {}) if m != "wall_s" and m not in nsps]
     base = next((nsps[m] for m in nsps if is_number(nsps[m]) and nsps[m] > 0), None)
     lines.append("\\begin{table}[htbp]\n\\centering\n\\small\n")
-    lines.append(f"\\caption{{Cost, {experiment_title(name)}: time per step, cost relative to the first method, "
-                 f"and {err_name} at equal wall time.}}\n")
+    lines.append(f"\\caption{{Cost of {experiment_title(name)}: time per step, cost relative to the first method, "
+                 f"and the error, {err_name}, at equal wall time.}}\n")
     lines.append(f"\\label{{tab:{name}-timing}}\n")
     lines.append("\\begin{tabular}{@{}lrrr@{}}\n\\toprule\n")
-    lines.append(f"Method & ns per step & Relative cost & {err_name} at equal wall time \\\\\n\\midrule\n")
+    lines.append("Method & ns per step & Relative cost & Error at equal wall time \\\\\n\\midrule\n")
     for m in names:
         ns = nsps.get(m)
         rel = ns / base if (is_number(ns) and base) else None
@@ -451,21 +474,27 @@ def macros_file(name, s, scene, cross, src):
     sources = {"summary": s, "scene": scene, "derived": {"crossover": cross} if cross else {}}
     for macro, path, kind in specs:
         value = lookup(sources.get(path[0]) or {}, path[1:]) if s is not None else None
+        if kind.startswith(("min:", "max:")):  # a list reduced to its extreme
+            numbers = value if isinstance(value, list) and value and all(map(is_number, value)) else None
+            value = None if numbers is None else (min(numbers) if kind[:3] == "min" else max(numbers))
+            kind = kind[4:]
         content = fmt(value, kind)
         body = NA if content is None else f"\\ensuremath{{{content}}}"
         lines.append(f"\\newcommand{{\\{macro}}}{{{body}}}\n")
     return "".join(lines)
 
 
-def process(name, exp_dir, out_dir):
-    summary_path = os.path.join(exp_dir, "summary.json") if exp_dir else None
-    out = {k: os.path.join(out_dir, f"{name}_{k}.tex") for k in ("table", "timing", "macros")}
-    if summary_path is None or not os.path.isfile(summary_path):
+def render(name, exp_dir):
+    """{suffix: text} of the three files of one experiment; placeholders if exp_dir is None.
+
+    Reads and checks everything first, so that a malformed input raises before any file is written.
+    """
+    if exp_dir is None:
         src = "(no results)"
-        write_atomic(out["table"], HEADER.format(src=src) + placeholder_box(name, "Published vs reproduced"))
-        write_atomic(out["timing"], HEADER.format(src=src) + placeholder_box(name, "Timing"))
-        write_atomic(out["macros"], macros_file(name, None, None, None, src))
-        return False
+        return {"table": HEADER.format(src=src) + placeholder_box(name, "Published vs reproduced"),
+                "timing": HEADER.format(src=src) + placeholder_box(name, "Timing"),
+                "macros": macros_file(name, None, None, None, src)}
+    summary_path = os.path.join(exp_dir, "summary.json")
     s = load_json(summary_path)
     check_summary(summary_path, s)
     if s.get("experiment") not in (None, name):
@@ -483,33 +512,36 @@ def process(name, exp_dir, out_dir):
         curves = read_timing_curves(os.path.join(exp_dir, "timing.csv"), col)
         if curves and a in curves and b in curves and len(curves[a]) > 1 and len(curves[b]) > 1:
             cross = crossover(curves[a], curves[b]) or {"wall_s": None, "err": None}
-    src = summary_path
-    write_atomic(out["table"], results_table(name, s, src))
-    write_atomic(out["timing"], timing_table(name, s, src, cross))
-    write_atomic(out["macros"], macros_file(name, s, scene, cross, src))
-    return True
+    return {"table": results_table(name, s, summary_path),
+            "timing": timing_table(name, s, summary_path, cross),
+            "macros": macros_file(name, s, scene, cross, summary_path)}
 
 
 def main(argv):
-    if len(argv) != 3 or argv[1] in ("-h", "--help"):
-        print(__doc__.strip(), file=sys.stderr if len(argv) != 2 else sys.stdout)
-        return 0 if len(argv) == 2 and argv[1] in ("-h", "--help") else 2
+    if len(argv) == 2 and argv[1] in ("-h", "--help"):
+        print(__doc__.strip())
+        return 0
+    if len(argv) != 3:
+        print(__doc__.strip(), file=sys.stderr)
+        return 2
     root, out_dir = argv[1], argv[2]
     if not os.path.isdir(root):
         print(f"paper_tables.py: RESULTS_ROOT {root!r} is not a directory", file=sys.stderr)
         return 2
-    os.makedirs(out_dir, exist_ok=True)
     present = sorted(d for d in os.listdir(root)
                      if os.path.isfile(os.path.join(root, d, "summary.json")))
     names = KNOWN + [d for d in present if d not in KNOWN]
     try:
-        for name in names:
-            done = process(name, os.path.join(root, name) if name in present else None, out_dir)
-            print(f"paper_tables.py: {name}: {'tables written' if done else 'not yet reproduced (placeholder)'}",
-                  file=sys.stderr)
+        files = {name: render(name, os.path.join(root, name) if name in present else None) for name in names}
     except Malformed as e:
         print(f"paper_tables.py: malformed results: {e}", file=sys.stderr)
         return 2
+    os.makedirs(out_dir, exist_ok=True)
+    for name, texts in files.items():
+        for suffix, text in texts.items():
+            write_atomic(os.path.join(out_dir, f"{name}_{suffix}.tex"), text)
+        state = "tables written" if name in present else "not yet reproduced (placeholder)"
+        print(f"paper_tables.py: {name}: {state}", file=sys.stderr)
     return 0
 
 

@@ -2,6 +2,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -22,6 +23,7 @@ TEST(Csv, HeaderRowsAndFullPrecision) {
   EXPECT_EQ(csv.str(), "name,h,n\nse,0.10000000000000001,10\nrk4,0.33333333333333331,1099511627776\n");
   EXPECT_EQ(std::strtod(format_double(1.0 / 3.0).c_str(), nullptr), 1.0 / 3.0);  // reads back bit for bit
   EXPECT_EQ(csv.rows(), 2u);
+  EXPECT_EQ(format_double(-std::nan("")), "nan");
 }
 
 TEST(Csv, RejectsRowsOfTheWrongWidth) {

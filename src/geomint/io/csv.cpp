@@ -1,11 +1,13 @@
 #include "geomint/io/csv.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <stdexcept>
 
 namespace geomint {
 
 std::string format_double(double v) {
+  if (std::isnan(v)) return "nan";  // not "-nan": one spelling for an undefined value
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.17g", v);
   return buf;

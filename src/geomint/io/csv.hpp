@@ -36,6 +36,6 @@ class Csv {
   std::string text_;
 };
 
-std::string format_double(double v);  // %.17g
+std::string format_double(double v);  // %.17g; "nan" for every NaN
 
 }  // namespace geomint

@@ -1,0 +1,77 @@
+#!/usr/bin/env bash
+# Render gnuplot figure scripts and check them.
+#
+#   tests/figures/render_figures.sh RESULTS_DIR OUT_DIR SCRIPT...
+#
+# Runs, from the repository root (two levels above this file, so that the scripts'
+# `load 'figures/common.gp'` works), for each SCRIPT:
+#     gnuplot -e "results='RESULTS_DIR'; out='OUT_DIR'" SCRIPT
+# and fails (exit 1, naming the script) if gnuplot exits non-zero, if it prints
+# anything containing "warning" (any case) on stderr, or if OUT_DIR/NAME.pdf or
+# OUT_DIR/NAME.png (NAME = script basename without .gp) is missing or empty.
+# All scripts are tried; the exit status is 1 if any failed, 2 on a usage error.
+set -u
+
+if [ $# -lt 3 ]; then
+    echo "usage: $0 RESULTS_DIR OUT_DIR SCRIPT..." >&2
+    exit 2
+fi
+if ! command -v gnuplot >/dev/null 2>&1; then
+    echo "render_figures: gnuplot not found in PATH" >&2
+    exit 1
+fi
+
+# Paths are relative to the caller's directory; make them absolute before cd.
+abspath() { case "$1" in /*) printf '%s\n' "$1" ;; *) printf '%s\n' "$PWD/$1" ;; esac; }
+results=$(abspath "$1")
+out=$(abspath "$2")
+shift 2
+for p in "$results" "$out"; do
+    case "$p" in *\'*) echo "render_figures: path must not contain a single quote: $p" >&2; exit 2 ;; esac
+done
+if [ ! -d "$results" ]; then
+    echo "render_figures: results directory not found: $results" >&2
+    exit 1
+fi
+scripts=()
+for s in "$@"; do scripts+=("$(abspath "$s")"); done
+
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
+cd "$root" || exit 1
+mkdir -p "$out" || exit 1
+log=$(mktemp "${TMPDIR:-/tmp}/render_figures.XXXXXX") || exit 1
+trap 'rm -f "$log"' EXIT
+
+failed=()
+for script in "${scripts[@]}"; do
+    name=$(basename "$script" .gp)
+    why=""
+    if [ ! -f "$script" ]; then
+        why="script not found"
+    else
+        rm -f "$out/$name.pdf" "$out/$name.png"        # no stale figure may pass the check
+        gnuplot -e "results='$results'; out='$out'" "$script" 2>"$log"
+        rc=$?
+        if [ -s "$log" ]; then sed "s|^|  $name: |" "$log" >&2; fi
+        if [ $rc -ne 0 ]; then
+            why="gnuplot exited with status $rc"
+        elif grep -qi warning "$log"; then
+            why="gnuplot printed a warning"
+        else
+            for ext in pdf png; do
+                [ -s "$out/$name.$ext" ] || why="${why:+$why; }$out/$name.$ext missing or empty"
+            done
+        fi
+    fi
+    if [ -n "$why" ]; then
+        echo "FAIL $name ($script): $why" >&2
+        failed+=("$name")
+    else
+        echo "ok   $name -> $out/$name.pdf, $out/$name.png"
+    fi
+done
+
+if [ ${#failed[@]} -gt 0 ]; then
+    echo "render_figures: ${#failed[@]} of ${#scripts[@]} failed: ${failed[*]}" >&2
+    exit 1
+fi
