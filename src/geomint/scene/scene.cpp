@@ -41,6 +41,7 @@ const char* type_name(Schema::Type t) {
     case Schema::Type::real_rows: return "a list of lists of numbers";
     case Schema::Type::boolean: return "true or false";
     case Schema::Type::text: return "a string";
+    case Schema::Type::texts: return "a list of strings";
   }
   return "?";
 }
@@ -114,6 +115,9 @@ Schema& Schema::boolean(std::string key, std::string doc) {
 Schema& Schema::text(std::string key, std::vector<std::string> choices, std::string doc) {
   return add({std::move(key), Type::text, {}, 0, 0, std::move(choices), std::move(doc)});
 }
+Schema& Schema::texts(std::string key, std::vector<std::string> choices, std::size_t min_len, std::string doc) {
+  return add({std::move(key), Type::texts, {}, min_len, 0, std::move(choices), std::move(doc)});
+}
 
 const Schema::Entry* Schema::find(std::string_view key) const {
   for (const auto& e : entries_)
@@ -162,16 +166,23 @@ std::optional<std::string> check(const Schema::Entry& e, const toml::node& node)
     case Schema::Type::boolean:
       if (!node.is_boolean()) return std::string("must be true or false");
       return std::nullopt;
-    case Schema::Type::text: {
-      std::string allowed = "must be a string";
+    case Schema::Type::text:
+    case Schema::Type::texts: {
+      const bool list = e.type == Schema::Type::texts;
+      std::string allowed = list ? "must be a list of at least " + std::to_string(e.min_len) + " strings" : "must be a string";
       if (!e.choices.empty()) {
-        allowed += ", one of";
+        allowed += list ? ", each one of" : ", one of";
         for (const auto& c : e.choices) allowed += " \"" + c + "\"";
       }
-      if (!node.is_string()) return allowed;
-      if (!e.choices.empty() &&
-          std::find(e.choices.begin(), e.choices.end(), node.as_string()->get()) == e.choices.end())
-        return allowed;
+      const auto ok = [&](const toml::node& n) {
+        return n.is_string() && (e.choices.empty() || std::find(e.choices.begin(), e.choices.end(),
+                                                                n.as_string()->get()) != e.choices.end());
+      };
+      if (!list) return ok(node) ? std::nullopt : std::optional<std::string>(allowed);
+      const auto* arr = node.as_array();
+      if (!arr || arr->size() < e.min_len) return allowed;
+      for (const auto& x : *arr)
+        if (!ok(x)) return allowed;
       return std::nullopt;
     }
   }
@@ -256,6 +267,12 @@ std::string Scene::text(std::string_view key) const { return *at(key).value<std:
 std::vector<double> Scene::reals(std::string_view key) const {
   std::vector<double> out;
   for (const auto& x : *at(key).as_array()) out.push_back(*x.value<double>());
+  return out;
+}
+
+std::vector<std::string> Scene::texts(std::string_view key) const {
+  std::vector<std::string> out;
+  for (const auto& x : *at(key).as_array()) out.push_back(*x.value<std::string>());
   return out;
 }
 

@@ -34,7 +34,7 @@ inline Bound at_least(double lo) { return {.gt = {}, .ge = lo, .lt = {}, .le = {
 
 class Schema {
  public:
-  enum class Type { real, integer, reals, real_rows, boolean, text };
+  enum class Type { real, integer, reals, real_rows, boolean, text, texts };
   struct Entry {
     std::string key;
     Type type;
@@ -51,6 +51,7 @@ class Schema {
   Schema& real_rows(std::string key, std::size_t row_len, Bound each, std::size_t min_rows, std::string doc = {});
   Schema& boolean(std::string key, std::string doc = {});
   Schema& text(std::string key, std::vector<std::string> choices, std::string doc = {});
+  Schema& texts(std::string key, std::vector<std::string> choices, std::size_t min_len, std::string doc = {});
 
   const Entry* find(std::string_view key) const;
   const std::vector<Entry>& entries() const { return entries_; }
@@ -73,6 +74,7 @@ class Scene {
   std::vector<std::vector<double>> real_rows(std::string_view key) const;
   bool boolean(std::string_view key) const;
   std::string text(std::string_view key) const;
+  std::vector<std::string> texts(std::string_view key) const;
 
   // For checks that involve several keys: throws the SceneError for `key`.
   [[noreturn]] void reject(std::string_view key, std::string_view allowed) const;

@@ -1,6 +1,9 @@
 #pragma once
-// A system wrapper that counts force evaluations (evaluations of H_q), for the
-// work-precision figures. Used in counting runs only, never in timed runs.
+// A system wrapper that counts force evaluations, for the work-precision
+// figures: every evaluation of a gradient (H_q, U_q, force) or of a
+// Hessian-vector product U_qq v counts one (for the elastic pendulum a
+// Hessian-vector product costs about one gradient). Used in counting runs
+// only, never in timed runs.
 #include <cstdint>
 
 #include "geomint/core/state.hpp"
@@ -22,6 +25,26 @@ struct Counting {
   Vec<D> H_p(const Vec<D>& q, const Vec<D>& p) const { return sys.H_p(q, p); }
   Mat<D> H_qp(const Vec<D>& q, const Vec<D>& p) const { return sys.H_qp(q, p); }
   Mat<D> H_pp(const Vec<D>& q, const Vec<D>& p) const { return sys.H_pp(q, p); }
+
+  // Separable (mechanical) systems.
+  double T(const Vec<D>& p) const requires requires(const Sys& s) { s.T(p); } { return sys.T(p); }
+  double U(const Vec<D>& q) const requires requires(const Sys& s) { s.U(q); } { return sys.U(q); }
+  Vec<D> inv_mass(const Vec<D>& p) const requires requires(const Sys& s) { s.inv_mass(p); } { return sys.inv_mass(p); }
+  Vec<D> mass_times(const Vec<D>& v) const requires requires(const Sys& s) { s.mass_times(v); } {
+    return sys.mass_times(v);
+  }
+  Vec<D> U_q(const Vec<D>& q) const requires requires(const Sys& s) { s.U_q(q); } {
+    ++*force_evals;
+    return sys.U_q(q);
+  }
+  Vec<D> force(const Vec<D>& q) const requires requires(const Sys& s) { s.force(q); } {
+    ++*force_evals;
+    return sys.force(q);
+  }
+  Vec<D> U_qq_times(const Vec<D>& q, const Vec<D>& v) const requires requires(const Sys& s) { s.U_qq_times(q, v); } {
+    ++*force_evals;
+    return sys.U_qq_times(q, v);
+  }
 
   struct FrozenQ {
     decltype(freeze_q(std::declval<const Sys&>(), std::declval<const Vec<D>&>())) inner;

@@ -1,0 +1,84 @@
+#pragma once
+// 000 Appendix A: the planar elastic pendulum (mass m, spring stiffness k,
+// relaxed length l, gravity g). The y axis points down, as the signs of (72)
+// (U = -m g r cos(theta)) and (73) (U = -m g y) imply: the pendulum hangs at
+// x = 0, y = l + m g / k.
+//
+// The Cartesian form (73) is separable, H = |p|^2/(2m) + U(q), and is
+// assembled from potential terms, so a scene without gravity compiles a step
+// without a gravity term (not one multiplied by zero).
+#include <cmath>
+#include <tuple>
+
+#include "geomint/core/state.hpp"
+
+namespace geomint {
+
+// U = (k/2)(|q| - l)^2: the spring of 000 eq. (73).
+struct SpringTerm {
+  double k, l;
+  double U(const Vec<2>& q) const {
+    const double s = q.norm() - l;
+    return 0.5 * k * s * s;
+  }
+  Vec<2> U_q(const Vec<2>& q) const { return k * (1.0 - l / q.norm()) * q; }
+  // U_qq v = k [(1 - l/r) v + (l/r^3) q (q.v)]
+  Vec<2> U_qq_times(const Vec<2>& q, const Vec<2>& v) const {
+    const double r = q.norm();
+    return k * ((1.0 - l / r) * v + (l / (r * r * r)) * q.dot(v) * q);
+  }
+};
+
+// U = -m g y: gravity along +y (downwards), 000 eq. (73).
+struct GravityTerm {
+  double m, g;
+  double U(const Vec<2>& q) const { return -m * g * q[1]; }
+  Vec<2> U_q(const Vec<2>&) const { return Vec<2>(0.0, -m * g); }
+  Vec<2> U_qq_times(const Vec<2>&, const Vec<2>&) const { return Vec<2>::Zero(); }
+};
+
+// H = |p|^2/(2m) + sum of the potential terms: 000 eq. (73) with SpringTerm and GravityTerm.
+template <class... Terms>
+struct ElasticPendulumCartesian {
+  using State = PhaseState<2>;
+  static constexpr bool separable = true;
+
+  double m;
+  std::tuple<Terms...> terms;
+
+  Vec<2> inv_mass(const Vec<2>& p) const { return p / m; }  // M^{-1} p, M = m I
+  Vec<2> mass_times(const Vec<2>& v) const { return m * v; }  // M v
+  double T(const Vec<2>& p) const { return 0.5 * p.squaredNorm() / m; }
+  double U(const Vec<2>& q) const {
+    return std::apply([&](const auto&... t) { return (t.U(q) + ...); }, terms);
+  }
+  Vec<2> U_q(const Vec<2>& q) const {
+    return std::apply([&](const auto&... t) { return (t.U_q(q) + ...).eval(); }, terms);
+  }
+  Vec<2> U_qq_times(const Vec<2>& q, const Vec<2>& v) const {  // Hessian-vector product
+    return std::apply([&](const auto&... t) { return (t.U_qq_times(q, v) + ...).eval(); }, terms);
+  }
+  Vec<2> force(const Vec<2>& q) const { return -U_q(q); }
+
+  double H(const State& z) const { return T(z.p) + U(z.q); }  // (73)
+  Vec<2> H_q(const Vec<2>& q, const Vec<2>&) const { return U_q(q); }
+  Vec<2> H_p(const Vec<2>&, const Vec<2>& p) const { return inv_mass(p); }
+  Mat<2> H_qp(const Vec<2>&, const Vec<2>&) const { return Mat<2>::Zero(); }
+  Mat<2> H_pp(const Vec<2>&, const Vec<2>&) const { return Mat<2>::Identity() / m; }
+};
+
+struct ElasticPendulumParams {
+  double l, m, k, g;
+};
+
+using ElasticPendulumWithGravity = ElasticPendulumCartesian<SpringTerm, GravityTerm>;
+using ElasticPendulumWithoutGravity = ElasticPendulumCartesian<SpringTerm>;
+
+// Calls f with the Cartesian pendulum made of the terms the parameters call for.
+template <class F>
+decltype(auto) with_elastic_pendulum(const ElasticPendulumParams& p, F&& f) {
+  if (p.g == 0.0) return f(ElasticPendulumWithoutGravity{p.m, {SpringTerm{p.k, p.l}}});
+  return f(ElasticPendulumWithGravity{p.m, {SpringTerm{p.k, p.l}, GravityTerm{p.m, p.g}}});
+}
+
+}  // namespace geomint

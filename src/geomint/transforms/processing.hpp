@@ -1,0 +1,70 @@
+#pragma once
+// Processed methods, 000 eq. (22)-(23): Phi^n = post o kernel^n o pre. The
+// preprocessor is applied once, the kernel n times, the postprocessor only
+// where a result is wanted. The kernel runs on a state of its own (for
+// kick-drift-kick kernels it carries the cached force); `pre(z, h)` maps a
+// phase-space point into it and `post` maps back, either pointwise,
+// `post(s, h)`, or from the kernel states at steps j-1, j, j+1,
+// `post(prev, cur, next, h)` (000 eq. (36)-(37)).
+#include <cstdint>
+
+namespace geomint {
+
+template <class Kernel, class Pre, class Post>
+struct Processed {
+  Kernel kernel;  // kernel(s, h) -> s
+  Pre pre;        // pre(z, h) -> s
+  Post post;      // post(s, h) -> z  or  post(prev, cur, next, h) -> z
+};
+
+template <class Kernel, class Pre, class Post>
+Processed(Kernel, Pre, Post) -> Processed<Kernel, Pre, Post>;
+
+namespace detail {
+template <class M, class S>
+concept StencilPost = requires(const M& m, const S& s, double h) { m.post(s, s, s, h); };
+}  // namespace detail
+
+// Calls observe(j, z_j) with z_j = post(...) for j = 0..n; returns z_n. A
+// stencil postprocessor needs the kernel state at j-1 for j = 0, taken as
+// kernel(s_0, -h) (the inverse step of a symmetric kernel), and at n+1.
+template <class M, class Z, class Observer>
+Z integrate_processed(const M& m, const Z& z0, double h, std::int64_t n, Observer&& observe) {
+  auto cur = m.pre(z0, h);
+  using S = decltype(cur);
+  if constexpr (detail::StencilPost<M, S>) {
+    S prev = m.kernel(cur, -h), next = m.kernel(cur, h);
+    Z z = m.post(prev, cur, next, h);
+    observe(std::int64_t{0}, z);
+    for (std::int64_t j = 1; j <= n; ++j) {
+      prev = cur, cur = next, next = m.kernel(cur, h);
+      z = m.post(prev, cur, next, h);
+      observe(j, z);
+    }
+    return z;
+  } else {
+    observe(std::int64_t{0}, m.post(cur, h));
+    for (std::int64_t j = 1; j <= n; ++j) {
+      cur = m.kernel(cur, h);
+      observe(j, m.post(cur, h));
+    }
+    return m.post(cur, h);
+  }
+}
+
+// 000 eq. (23) as it is meant to be used: pre once, n kernel steps, post once.
+template <class M, class Z>
+Z integrate_processed(const M& m, const Z& z0, double h, std::int64_t n) {
+  auto s = m.pre(z0, h);
+  using S = decltype(s);
+  if constexpr (detail::StencilPost<M, S>) {
+    S prev = n > 0 ? s : m.kernel(s, -h);
+    for (std::int64_t j = 1; j <= n; ++j) prev = s, s = m.kernel(s, h);
+    return m.post(prev, s, m.kernel(s, h), h);
+  } else {
+    for (std::int64_t j = 1; j <= n; ++j) s = m.kernel(s, h);
+    return m.post(s, h);
+  }
+}
+
+}  // namespace geomint
