@@ -16,7 +16,8 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const std::string bin = std::string(GEOMINT_BIN_DIR) + "/euler_compensation";
+std::string bin_of(const std::string& name) { return std::string(GEOMINT_BIN_DIR) + "/" + name; }
+const std::string bin = bin_of("euler_compensation");
 const fs::path work = fs::path(GEOMINT_TEST_RESULTS) / ("cli-" + std::to_string(::getpid()));
 
 struct Outcome {
@@ -24,10 +25,10 @@ struct Outcome {
   std::string err;
 };
 
-Outcome run(const std::string& args) {
+Outcome run(const std::string& args, const std::string& binary = bin) {
   fs::create_directories(work);
   const fs::path err = work / "stderr.txt";
-  const int status = std::system((bin + " " + args + " >/dev/null 2>" + err.string()).c_str());
+  const int status = std::system((binary + " " + args + " >/dev/null 2>" + err.string()).c_str());
   std::ifstream in(err);
   std::stringstream ss;
   ss << in.rdbuf();
@@ -35,10 +36,11 @@ Outcome run(const std::string& args) {
 }
 
 // Exit 2, exactly one line on stderr containing every `needle`, and --out untouched.
-void expect_rejected(const std::string& args, const std::vector<std::string>& needles) {
+void expect_rejected(const std::string& args, const std::vector<std::string>& needles,
+                     const std::string& binary = bin) {
   const fs::path out = work / "out";
   fs::remove_all(out);
-  const Outcome r = run("--quick --out " + out.string() + " " + args);
+  const Outcome r = run("--quick --out " + out.string() + " " + args, binary);
   EXPECT_EQ(r.code, 2) << args << "\n" << r.err;
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   for (const auto& n : needles) EXPECT_NE(r.err.find(n), std::string::npos) << "missing '" << n << "' in: " << r.err;
@@ -88,4 +90,16 @@ TEST(Cli, UnknownOptionAndHelp) {
   EXPECT_EQ(run("--bogus").code, 2);
   const Outcome help = run("--help");
   EXPECT_EQ(help.code, 0);
+}
+
+TEST(Cli, RowlandsStepBeyondStabilityBound) {
+  expect_rejected("--set h=[2.0,1.0,0.5]", {"h = [2, 1, 0.5]", "unstable for h sqrt(k/m) >= 2"},
+                  bin_of("rowlands_convergence"));
+}
+TEST(Cli, RowlandsSingularInitialCondition) {
+  expect_rejected("--set initial=[[0,0,1,0]]", {"initial", "singular"}, bin_of("rowlands_convergence"));
+}
+TEST(Cli, RowlandsUnknownMethod) {
+  expect_rejected("--set methods=[\\\"sv\\\",\\\"leapfrog\\\"]", {"methods", "each one of"},
+                  bin_of("rowlands_convergence"));
 }
