@@ -60,3 +60,49 @@ _get(n, col, var) = sprintf("undefine STATS_*; stats csv('orders.csv') using (_r
 getfit(n) = _get(n, 'order', n.'_order') . _get(n, 'log10_c', n.'_c') \
           . _get(n, 'h_min', n.'_hmin')  . _get(n, 'h_max', n.'_hmax')
 powerlaw(h, c, order) = 10**c * h**order
+
+# ---- 000 Sec. 3.3, Rowlands time stepping (figures/rowlands_convergence_*.gp) ----
+# As above, the unprocessed base method is vermillion and the processed one blue.
+C_SV      = C_SE         # Störmer–Verlet (26)–(28); also odeint's velocity Verlet (same method)
+C_ROW     = C_COMP       # Rowlands kernel (31) with the processors (32)–(33)
+C_ROWCH   = '#56B4E9'    # Rowlands kernel with the cheap processors (34)–(37)
+C_KERNEL  = '#E69F00'    # Rowlands kernel (31) without processing
+C_PRINTED = '#CC79A7'    # processors (32)–(33) with the coefficient h²/24 as printed
+C_RKN     = '#882255'    # odeint symplectic RKN (McLachlan SB3a), order 4
+# (odeint's RK4 uses C_RK4 and LS_RK4)
+
+LS_SV      = 21; set style line LS_SV      lc rgb C_SV      lw 1.0 pt 7  ps 0.55  # filled circles
+LS_ROW     = 22; set style line LS_ROW     lc rgb C_ROW     lw 1.0 pt 4  ps 0.70  # open squares
+LS_ROWCH   = 23; set style line LS_ROWCH   lc rgb C_ROWCH   lw 1.0 pt 9  ps 0.65  # filled triangles
+LS_KERNEL  = 24; set style line LS_KERNEL  lc rgb C_KERNEL  lw 1.0 pt 12 ps 0.80  # open diamonds
+LS_PRINTED = 25; set style line LS_PRINTED lc rgb C_PRINTED lw 1.0 pt 6  ps 0.60  # open circles
+LS_RKN     = 26; set style line LS_RKN     lc rgb C_RKN     lw 1.0 pt 10 ps 0.70  # open inverted triangles
+LS_VV      = 27; set style line LS_VV      lc rgb C_SV      lw 1.0 pt 6  ps 1.00 dt (4,3)  # large open circles
+# least-squares fits: dashed (dotted for the processors as printed), with the
+# method's marker for the key sample; LS_<X>_FIT = LS_<X> + 10
+LS_SV_FIT      = 31; set style line LS_SV_FIT      lc rgb C_SV      lw 0.9 dt (8,4) pt 7  ps 0.55
+LS_ROW_FIT     = 32; set style line LS_ROW_FIT     lc rgb C_ROW     lw 0.9 dt (8,4) pt 4  ps 0.70
+LS_ROWCH_FIT   = 33; set style line LS_ROWCH_FIT   lc rgb C_ROWCH   lw 0.9 dt (8,4) pt 9  ps 0.65
+LS_KERNEL_FIT  = 34; set style line LS_KERNEL_FIT  lc rgb C_KERNEL  lw 0.9 dt (8,4) pt 12 ps 0.80
+LS_PRINTED_FIT = 35; set style line LS_PRINTED_FIT lc rgb C_PRINTED lw 0.9 dt (3,3) pt 6  ps 0.60
+
+# ---- the resolved scene, from run.json ------------------------------------
+# scene_num('pendulum.g') is the value of scene key pendulum.g (dotted; array
+# elements by index from 0, e.g. 'initial.0.1') as a number formatted %g, or
+# "?" if run.json or the key is missing. (run.json is read with awk: it is
+# written one value per line, as the experiments write it.)
+_json_awk = '{ s = $0; sub(/^[ \t]+/, "", s); sub(/,[ \t]*$/, "", s) } \
+  s == "}" || s == "]" { n--; next } \
+  { k = ""; v = s } \
+  s ~ /^"[^"]*": / { k = s; sub(/^"/, "", k); sub(/": .*$/, "", k); v = s; sub(/^"[^"]*": /, "", v) } \
+  k == "" && n > 0 && arr[n] { k = idx[n]++ } \
+  { p = (n > 0 && path[n] != "" ? path[n] "." : "") k } \
+  v == "{" || v == "[" { n++; path[n] = p; arr[n] = (v == "["); idx[n] = 0; next } \
+  p == want { gsub(/"/, "", v); print v; exit }'
+scene_num(key) = (_s = system(sprintf("awk -v want='scene.%s' '%s' '%s' 2>/dev/null", \
+                                      key, _json_awk, results . '/run.json')), \
+                  _s eq "" ? "?" : sprintf("%g", real(_s)))
+
+# ---- x tics for logarithmic axes spanning few decades ------------------------
+# eval LOGTICS("1 2 5") puts the x tics at 1, 2, 5 × 10^k (labelled with the x format, e.g. "%g")
+LOGTICS(ds) = sprintf("set xtics (); do for [k=-8:8] { do for [d in '%s'] { set xtics add (real(d) * 10.0**k) } }", ds)

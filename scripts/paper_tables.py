@@ -11,6 +11,10 @@ directory of RESULTS_ROOT that holds a summary.json, this writes
   OUT_DIR/<name>_timing.tex  ns per step per method, their ratio, error at equal wall time
   OUT_DIR/<name>_macros.tex  \\newcommand macros for the numbers the text cites
 
+and, for an experiment with an entry in ORDER_TABLES (summary["orders_by_initial"]),
+
+  OUT_DIR/<name>_orders.tex  fitted orders for every initial condition
+
 A known experiment without results gets placeholder files ("not yet reproduced"),
 and its macros are defined as "n/a", so that main.tex always compiles.
 
@@ -18,8 +22,10 @@ Each published key is paired with summary["orders"][key] if present, else with
 summary["reproduced"][key]. Orders are printed to 3 decimals; other values to
 4 significant digits in the tables and 2 in the macros, in scientific notation
 (plain LaTeX, $1.8\times10^{-15}$) below 1e-3. The crossover of two methods'
-work-precision curves (CROSSOVERS) is read from <name>/timing.csv, and the scene
-parameters the text cites from <name>/run.json, when those files exist.
+work-precision curves (CROSSOVERS), and the cost of reaching given error levels and
+the errors at equal wall time (COST_TARGETS), are read from <name>/timing.csv; ratios
+of two methods' errors (ERROR_RATIOS) from another CSV of <name>/; the scene
+parameters the text cites from <name>/run.json; all only when those files exist.
 
 Exit status: 0 on success, 2 on a usage error or a malformed summary.json
 (the message names the file and the offending key). Python standard library only.
@@ -64,6 +70,15 @@ DESCRIPTIONS = {
         "decay_compensated_max_rel_err": r"Fig.~2: explicit Euler in $\bar y$ of (15), max.\ relative error of $y$",
         "gompertz_compensated_max_rel_err": r"Fig.~3: explicit Euler in $\bar y$ of (18), max.\ relative error of $y$",
     },
+    "rowlands_convergence": {
+        "sv_energy": r"Order of St\"ormer--Verlet (26)--(28), energy error (50) (Fig.~4)",
+        "sv_phase": r"Order of St\"ormer--Verlet, $\ell^2$ phase error at $t_{\max}$ (Fig.~4)",
+        "rowlands_energy": r"Effective order of the Rowlands kernel (31) with (32)--(33), "
+                           r"coefficient $h^2/12$, energy error (50) (Fig.~4)",
+        "rowlands_phase": r"The same, $\ell^2$ phase error at $t_{\max}$ (Fig.~4)",
+        "rowlands_cheap_phase": r"Effective order of (31) with the cheap processors (34)--(37), "
+                                r"$\ell^2$ phase error at $t_{\max}$ (Section~3.3)",
+    },
 }
 
 # Method names of the timing table (LaTeX).
@@ -73,17 +88,102 @@ METHODS = {
         "se_compensated": r"Symplectic Euler in $(\bar q,\bar p)$ of (82)",
         "rk4": r"Classical Runge--Kutta 4 (not symplectic)",
     },
+    "rowlands_convergence": {
+        "sv": r"St\"ormer--Verlet",
+        "rowlands": r"Rowlands, $h^2/12$",
+        "rowlands_cheap": r"Rowlands, cheap",
+        "odeint_rk4": r"odeint \texttt{runge\_kutta4}",
+        "odeint_rkn_sb3a": r"odeint \texttt{symplectic\_rkn\_\allowbreak sb3a\_mclachlan}",
+        "odeint_velocity_verlet": r"odeint \texttt{velocity\_verlet}",
+    },
 }
 
 # What "error" means in the timing table of an experiment (LaTeX).
 ERROR_NAMES = {
     "euler_compensation": r"$\max_{t_j\le T}|H_j-H_0|$",
+    "rowlands_convergence": r"the $\ell^2$ phase error at $t_{\max}$",
 }
 
 # Crossover of two work-precision curves, read from <dir>/timing.csv
 # (columns method, wall_s and the named error column): (method a, method b, column).
 CROSSOVERS = {
     "euler_compensation": ("se", "se_compensated", "energy_err_max"),
+}
+
+# Cost of reaching given error levels, read from <dir>/timing.csv (columns method, steps,
+# wall_s, force_evals and the error column): for every method the wall time and the number
+# of force evaluations at which the error first reaches each target (log-log interpolation
+# between measured points, never extrapolated), the force evaluations per step at the
+# smallest step, and every method's error at the wall time of the most expensive run of
+# the method "equal_wall". The timing table shows these in place of
+# summary["timing"]["error_at_equal_wall_time"].
+COST_TARGETS = {
+    "rowlands_convergence": {
+        "error": "phase_err", "targets": [1e-6, 1e-8], "equal_wall": "sv",
+        "legend": r"St\"ormer--Verlet: (26)--(28); Rowlands, $h^2/12$: the kernel (31) with the "
+                  r"processors (32)--(33), coefficient $h^2/12$; Rowlands, cheap: the kernel with (34)--(37).",
+    },
+}
+
+# Fitted orders for every initial condition (summary["orders_by_initial"]), written to
+# <name>_orders.tex: rows (key, method, error norm, order expected from the analysis);
+# the column headers show the initial conditions of run.json's scene[initial_key].
+ORDER_TABLES = {
+    "rowlands_convergence": {
+        "initial_key": "initial",
+        "initial_names": r"$(x,y,p_x,p_y)(0)$",
+        "rows": [
+            ("sv_energy", r"St\"ormer--Verlet (26)--(28)", r"energy (50)", 2),
+            ("sv_energy_max", "", r"energy, max.", 2),
+            ("sv_phase", "", r"phase, $\ell^2$", 2),
+            ("rowlands_energy", r"Rowlands, $h^2/12$", r"energy (50)", 4),
+            ("rowlands_energy_max", "", r"energy, max.", 4),
+            ("rowlands_phase", "", r"phase, $\ell^2$", 4),
+            ("rowlands_cheap_energy", r"Rowlands, cheap", r"energy (50)", 4),
+            ("rowlands_cheap_energy_max", "", r"energy, max.", 4),
+            ("rowlands_cheap_phase", "", r"phase, $\ell^2$", 4),
+            ("kernel_unprocessed_energy", r"Kernel (31) alone", r"energy (50)", 2),
+            ("kernel_unprocessed_energy_max", "", r"energy, max.", 2),
+            ("kernel_unprocessed_phase", "", r"phase, $\ell^2$", 2),
+            ("rowlands_printed_energy", r"Rowlands, $h^2/24$ (printed)", r"energy (50)", 2),
+            ("rowlands_printed_energy_max", "", r"energy, max.", 2),
+            ("rowlands_printed_phase", "", r"phase, $\ell^2$", 2),
+        ],
+        "caption": r"Fitted orders of [000] Fig.~4 (\texttt{rowlands\_convergence}) for every initial "
+                   r"condition: least-squares slopes of $\log(\text{error})$ against $\log h$ over "
+                   r"the points above the round-off and reference floor. Energy: the "
+                   r"$\ell^2$ norm (50) over the steps and the maximum over the steps; phase: the "
+                   r"$\ell^2$ distance in $(x,y,p_x,p_y)$ from the reference at $t_{\max}$. Rowlands, "
+                   r"$h^2/12$ and $h^2/24$: the kernel (31) with the processors (32)--(33) with that "
+                   r"coefficient ($h^2/24$ as printed); cheap: with the processors (34)--(37). Expected: "
+                   r"the order of the method, or its effective order with the processors "
+                   r"(for $h^2/24$ see the text). The first initial condition is the one drawn.",
+        # Ranges of the fitted orders over all initial conditions, for the text: group -> keys.
+        "groups": {
+            "second": ["sv_energy", "sv_energy_max", "sv_phase",
+                       "kernel_unprocessed_energy", "kernel_unprocessed_energy_max", "kernel_unprocessed_phase",
+                       "rowlands_printed_energy", "rowlands_printed_energy_max", "rowlands_printed_phase"],
+            "fourth": ["rowlands_energy", "rowlands_energy_max", "rowlands_phase",
+                       "rowlands_cheap_energy", "rowlands_cheap_energy_max", "rowlands_cheap_phase"],
+        },
+    },
+}
+
+# Ratio of two methods' errors at the smallest step, over all initial conditions and the
+# given error columns of a CSV in <dir>/ (columns initial, h and <method><suffix>):
+# (file, numerator method, denominator method, column suffixes). Gives min and max.
+ERROR_RATIOS = {
+    "rowlands_convergence": ("fig4_convergence.csv", "rowlands_printed", "kernel", ["_phase", "_energy_rms"]),
+}
+
+# Quantities computed from run.json's resolved scene, for the text: {name: function(scene)};
+# a function that fails on a missing or malformed scene gives n/a.
+SCENE_DERIVED = {
+    "rowlands_convergence": {
+        # 000 eq. (73), y pointing down: the pendulum hangs at x = 0, y = l + m g / k
+        "y_equilibrium": lambda sc: (sc["pendulum"]["l"]
+                                     + sc["pendulum"]["m"] * sc["pendulum"]["g"] / sc["pendulum"]["k"]),
+    },
 }
 
 # Macros the text cites: (name, path into summary.json or a derived quantity, format).
@@ -137,6 +237,90 @@ MACROS = {
         ("ECtimingHmin", ("scene", "timing", "h"), "min:err"),
         ("ECtimingSteps", ("scene", "timing", "steps"), "int"),
         ("ECtimingRepeats", ("scene", "timing", "repeats"), "int"),
+    ],
+    "rowlands_convergence": [
+        # scene (run.json)
+        ("RCl", ("scene", "pendulum", "l"), "plain"),
+        ("RCm", ("scene", "pendulum", "m"), "plain"),
+        ("RCk", ("scene", "pendulum", "k"), "plain"),
+        ("RCg", ("scene", "pendulum", "g"), "plain"),
+        ("RCyEq", ("derived", "scene", "y_equilibrium"), "plain"),
+        ("RCtEnd", ("scene", "t_end"), "plain"),
+        ("RChMax", ("scene", "h"), "max:plain"),
+        ("RChMin", ("scene", "h"), "min:plain"),
+        ("RChCount", ("scene", "h"), "len:int"),
+        ("RCicOne", ("scene", "initial", 0), "vec"),
+        ("RCicTwo", ("scene", "initial", 1), "vec"),
+        ("RCicThree", ("scene", "initial", 2), "vec"),
+        ("RCicCount", ("scene", "initial"), "len:int"),
+        ("RCrtol", ("scene", "reference", "rtol"), "tol"),
+        ("RCatol", ("scene", "reference", "atol"), "tol"),
+        ("RCtimingRepeats", ("scene", "timing", "repeats"), "int"),
+        # fitted orders, first initial condition (the one drawn)
+        ("RCsvEnergyOrder", ("summary", "orders", "sv_energy"), "order"),
+        ("RCsvEnergyMaxOrder", ("summary", "orders", "sv_energy_max"), "order"),
+        ("RCsvPhaseOrder", ("summary", "orders", "sv_phase"), "order"),
+        ("RCrowEnergyOrder", ("summary", "orders", "rowlands_energy"), "order"),
+        ("RCrowEnergyMaxOrder", ("summary", "orders", "rowlands_energy_max"), "order"),
+        ("RCrowPhaseOrder", ("summary", "orders", "rowlands_phase"), "order"),
+        ("RCcheapEnergyOrder", ("summary", "orders", "rowlands_cheap_energy"), "order"),
+        ("RCcheapPhaseOrder", ("summary", "orders", "rowlands_cheap_phase"), "order"),
+        ("RCkernelEnergyOrder", ("summary", "orders", "kernel_unprocessed_energy"), "order"),
+        ("RCkernelPhaseOrder", ("summary", "orders", "kernel_unprocessed_phase"), "order"),
+        ("RCprintedEnergyOrder", ("summary", "orders", "rowlands_printed_energy"), "order"),
+        ("RCprintedPhaseOrder", ("summary", "orders", "rowlands_printed_phase"), "order"),
+        # ranges over all initial conditions (ORDER_TABLES groups)
+        ("RCsecondOrderMin", ("derived", "order_range", "second", "min"), "order"),
+        ("RCsecondOrderMax", ("derived", "order_range", "second", "max"), "order"),
+        ("RCfourthOrderMin", ("derived", "order_range", "fourth", "min"), "order"),
+        ("RCfourthOrderMax", ("derived", "order_range", "fourth", "max"), "order"),
+        # fit ranges (first initial condition)
+        ("RCfitPointsSecond", ("summary", "fits", "sv_phase", "points"), "int"),
+        ("RCfitHminSecond", ("summary", "fits", "sv_phase", "h_min"), "plain"),
+        ("RCfitPointsFourth", ("summary", "fits", "rowlands_phase", "points"), "int"),
+        ("RCfitHminFourth", ("summary", "fits", "rowlands_phase", "h_min"), "plain"),
+        # reference
+        ("RCrefSelfCheck", ("summary", "reproduced", "reference_self_check"), "err"),
+        ("RCrefMargin", ("summary", "reproduced", "reference_margin"), "int"),
+        # h^2/24 against the unprocessed kernel (ERROR_RATIOS)
+        ("RCprintedKernelRatioMin", ("derived", "error_ratio", "min"), "sig7"),
+        ("RCprintedKernelRatioMax", ("derived", "error_ratio", "max"), "sig7"),
+        ("RCprintedKernelRatioH", ("derived", "error_ratio", "h"), "plain"),
+        # cost (summary timing and timing.csv via COST_TARGETS)
+        ("RCrunWall", ("summary", "timing", "wall_s"), "seconds"),
+        ("RCnsSv", ("summary", "timing", "ns_per_step", "sv"), "ns"),
+        ("RCnsRow", ("summary", "timing", "ns_per_step", "rowlands"), "ns"),
+        ("RCnsCheap", ("summary", "timing", "ns_per_step", "rowlands_cheap"), "ns"),
+        ("RCnsRk", ("summary", "timing", "ns_per_step", "odeint_rk4"), "ns"),
+        ("RCnsRkn", ("summary", "timing", "ns_per_step", "odeint_rkn_sb3a"), "ns"),
+        ("RCnsVv", ("summary", "timing", "ns_per_step", "odeint_velocity_verlet"), "ns"),
+        ("RCratio", ("summary", "timing", "ns_per_step_ratio_rowlands_over_sv"), "ratio"),
+        ("RCevalsSv", ("derived", "cost", "sv", "evals_per_step"), "ratio"),
+        ("RCevalsRow", ("derived", "cost", "rowlands", "evals_per_step"), "ratio"),
+        ("RCevalsRk", ("derived", "cost", "odeint_rk4", "evals_per_step"), "ratio"),
+        ("RCevalsRkn", ("derived", "cost", "odeint_rkn_sb3a", "evals_per_step"), "ratio"),
+        ("RCsvMinPhase", ("derived", "cost", "sv", "min_err"), "err"),
+        ("RCwallSvEsix", ("derived", "cost", "sv", "wall_to", "1e-06"), "us"),
+        ("RCwallRowEsix", ("derived", "cost", "rowlands", "wall_to", "1e-06"), "us"),
+        ("RCwallRkEsix", ("derived", "cost", "odeint_rk4", "wall_to", "1e-06"), "us"),
+        ("RCwallRknEsix", ("derived", "cost", "odeint_rkn_sb3a", "wall_to", "1e-06"), "us"),
+        ("RCwallRowEeight", ("derived", "cost", "rowlands", "wall_to", "1e-08"), "us"),
+        ("RCwallCheapEeight", ("derived", "cost", "rowlands_cheap", "wall_to", "1e-08"), "us"),
+        ("RCwallRkEeight", ("derived", "cost", "odeint_rk4", "wall_to", "1e-08"), "us"),
+        ("RCwallRknEeight", ("derived", "cost", "odeint_rkn_sb3a", "wall_to", "1e-08"), "us"),
+        ("RCevalsSvEsix", ("derived", "cost", "sv", "evals_to", "1e-06"), "int"),
+        ("RCevalsRowEsix", ("derived", "cost", "rowlands", "evals_to", "1e-06"), "int"),
+        ("RCevalsRowEeight", ("derived", "cost", "rowlands", "evals_to", "1e-08"), "int"),
+        ("RCevalsCheapEeight", ("derived", "cost", "rowlands_cheap", "evals_to", "1e-08"), "int"),
+        ("RCevalsRkEeight", ("derived", "cost", "odeint_rk4", "evals_to", "1e-08"), "int"),
+        ("RCevalsRknEeight", ("derived", "cost", "odeint_rkn_sb3a", "evals_to", "1e-08"), "int"),
+        ("RCeqWall", ("derived", "equal_wall_s"), "us"),
+        ("RCeqErrSv", ("derived", "cost", "sv", "err_at_equal_wall"), "err"),
+        ("RCeqErrRow", ("derived", "cost", "rowlands", "err_at_equal_wall"), "err"),
+        ("RCeqErrCheap", ("derived", "cost", "rowlands_cheap", "err_at_equal_wall"), "err"),
+        ("RCeqErrRk", ("derived", "cost", "odeint_rk4", "err_at_equal_wall"), "err"),
+        ("RCeqErrRkn", ("derived", "cost", "odeint_rkn_sb3a", "err_at_equal_wall"), "err"),
+        ("RCeqErrVv", ("derived", "cost", "odeint_velocity_verlet", "err_at_equal_wall"), "err"),
     ],
 }
 
@@ -216,6 +400,13 @@ def fmt(value, kind):
         return sci(value)
     if kind == "fixed3":
         return f"{value:.3f}"
+    if kind == "sig7":
+        return sig(value, 7)
+    if kind == "us":  # seconds shown in microseconds
+        return None if value <= 0 else sig(value * 1e6, 2)
+    if kind == "tol":  # a tolerance: 10^{-14}, or m\times10^{e}
+        mant, exp = f"{value:.1e}".split("e")
+        return f"10^{{{int(exp)}}}" if mant == "1.0" else sci(value)
     if kind == "ns":
         return f"{value:.1f}"
     if kind == "ratio":
@@ -278,12 +469,21 @@ def check_summary(path, s):
     if eq is not None:
         if not isinstance(eq, dict) or not all(is_number(v) or v is None for v in eq.values()):
             raise Malformed(f'{path}: "timing.error_at_equal_wall_time" must be an object of numbers or null')
+    obi = s.get("orders_by_initial")
+    if obi is not None:
+        if not isinstance(obi, list) or not all(
+                isinstance(o, dict) and all(is_number(v) or v is None for v in o.values()) for o in obi):
+            raise Malformed(f'{path}: "orders_by_initial" must be a list of objects of numbers or null')
 
 
 def lookup(tree, path):
+    """tree[path[0]][path[1]]...; an int in the path indexes a list. None if absent."""
     node = tree
     for k in path:
-        if not isinstance(node, dict) or k not in node:
+        if isinstance(k, int):
+            if not isinstance(node, list) or not -len(node) <= k < len(node):
+                return None
+        elif not isinstance(node, dict) or k not in node:
             return None
         node = node[k]
     return node
@@ -348,6 +548,101 @@ def crossover(curve_a, curve_b):
     return None
 
 
+def read_csv_rows(path, need):
+    """The rows of a CSV file as dicts, or None if there is no such file."""
+    if not os.path.isfile(path):
+        return None
+    with open(path, newline="", encoding="utf-8") as f:
+        rows = csv.DictReader(f)
+        if rows.fieldnames is None or not set(need) <= set(rows.fieldnames):
+            raise Malformed(f"{path}: needs the columns {sorted(need)}")
+        return list(rows)
+
+
+def read_cost(path, error_column):
+    """{method: [{h, steps, wall_s, force_evals, err}, ...] by decreasing h} from a timing.csv, or None."""
+    numeric = ("h", "steps", "wall_s", "force_evals", error_column)
+    rows = read_csv_rows(path, ("method",) + numeric)
+    if rows is None:
+        return None
+    runs = {}
+    for row in rows:
+        try:
+            v = {k: float(row[k]) for k in numeric}
+        except ValueError:
+            raise Malformed(f"{path}: non-numeric value in row {row}") from None
+        v["err"] = v.pop(error_column)
+        if all(math.isfinite(x) and x > 0 for x in v.values()):
+            runs.setdefault(row["method"], []).append(v)
+    return {m: sorted(r, key=lambda v: -v["h"]) for m, r in runs.items()}
+
+
+def first_reach(runs, target, key):
+    """runs[.][key] where the error first falls to `target` along decreasing h, by log-log
+    interpolation between the two measurements that bracket it; None outside the measured range."""
+    for a, b in zip(runs, runs[1:]):
+        if a["err"] >= target >= b["err"] and a["err"] > b["err"]:
+            s = math.log(a["err"] / target) / math.log(a["err"] / b["err"])
+            return math.exp(math.log(a[key]) + s * (math.log(b[key]) - math.log(a[key])))
+    return None
+
+
+def target_key(target):
+    return f"{target:g}"  # 1e-08
+
+
+def cost_summary(name, exp_dir):
+    """COST_TARGETS quantities of one experiment: {"cost": {method: {...}}, "equal_wall_s": W}, or None."""
+    cfg = COST_TARGETS[name]
+    runs = read_cost(os.path.join(exp_dir, "timing.csv"), cfg["error"])
+    if not runs:
+        return None
+    ref = runs.get(cfg["equal_wall"])
+    wall = max(v["wall_s"] for v in ref) if ref else None
+    cost = {}
+    for m, r in runs.items():
+        finest = r[-1]
+        curve = sorted((v["wall_s"], v["err"]) for v in r)
+        at_w = loglog_at(curve, wall) if wall is not None else None
+        cost[m] = {
+            "evals_per_step": finest["force_evals"] / finest["steps"],
+            "min_err": min(v["err"] for v in r),
+            "err_at_equal_wall": None if at_w is None else math.exp(at_w),
+            "wall_to": {target_key(t): first_reach(r, t, "wall_s") for t in cfg["targets"]},
+            "evals_to": {target_key(t): first_reach(r, t, "force_evals") for t in cfg["targets"]},
+        }
+    return {"cost": cost, "equal_wall_s": wall}
+
+
+def order_ranges(name, s):
+    """{group: {min, max}} of the fitted orders over all initial conditions (ORDER_TABLES groups)."""
+    obi = s.get("orders_by_initial") or []
+    out = {}
+    for group, keys in ORDER_TABLES[name].get("groups", {}).items():
+        values = [o[k] for o in obi for k in keys if is_number(o.get(k)) and math.isfinite(o[k])]
+        if values:
+            out[group] = {"min": min(values), "max": max(values)}
+    return out
+
+
+def error_ratio(name, exp_dir):
+    """ERROR_RATIOS: {min, max, h} of numerator/denominator error at the smallest h, or None."""
+    file, num, den, suffixes = ERROR_RATIOS[name]
+    path = os.path.join(exp_dir, file)
+    rows = read_csv_rows(path, ["h"] + [m + x for m in (num, den) for x in suffixes])
+    if not rows:
+        return None
+    try:
+        hs = [float(r["h"]) for r in rows]
+        h_min = min(hs)
+        ratios = [float(r[num + x]) / float(r[den + x])
+                  for r, h in zip(rows, hs) if h == h_min for x in suffixes if float(r[den + x]) != 0]
+    except ValueError:
+        raise Malformed(f"{path}: non-numeric value in the columns of {num} and {den}") from None
+    ratios = [q for q in ratios if math.isfinite(q)]
+    return {"min": min(ratios), "max": max(ratios), "h": h_min} if ratios else None
+
+
 # ---------------------------------------------------------------------------
 # Writing
 # ---------------------------------------------------------------------------
@@ -361,6 +656,7 @@ def write_atomic(path, text):
     try:
         with os.fdopen(fd, "w", encoding="utf-8") as f:
             f.write(text)
+        os.chmod(tmp, 0o644)
         os.replace(tmp, path)
     except BaseException:
         if os.path.exists(tmp):
@@ -466,19 +762,128 @@ def timing_table(name, s, src, cross):
     return "".join(lines)
 
 
-def macros_file(name, s, scene, cross, src):
+def orders_table(name, s, scene, src):
+    """The fitted orders of every initial condition (ORDER_TABLES), as a table float."""
+    cfg = ORDER_TABLES[name]
+    obi = s.get("orders_by_initial")
+    lines = [HEADER.format(src=src)]
+    if not obi:
+        lines.append("\\begin{center}\\small No \\texttt{orders\\_by\\_initial} recorded for \\texttt{"
+                     f"{tex_escape(name)}" "}.\\end{center}\n")
+        return "".join(lines)
+    n = len(obi)
+    initial = (scene or {}).get(cfg["initial_key"])
+    if not (isinstance(initial, list) and len(initial) == n and all(isinstance(r, list) for r in initial)):
+        initial = None
+    lines.append("\\begin{table}[htbp]\n\\centering\n\\small\n")
+    lines.append(f"\\caption{{{cfg['caption']}}}\n")
+    lines.append(f"\\label{{tab:{name}-orders}}\n")
+    lines.append("\\begin{tabular}{@{}p{0.27\\linewidth}lc" + "r" * n + "@{}}\n\\toprule\n")
+    lines.append(f"Method & Error & Expected & \\multicolumn{{{n}}}{{c}}{{Initial condition}} \\\\\n")
+    lines.append(f"\\cmidrule(l){{4-{3 + n}}}\n")
+    lines.append(" & & & " + " & ".join(str(i + 1) for i in range(n)) + " \\\\\n")
+    if initial is not None:
+        vecs = []
+        for row in initial:
+            ok = all(is_number(v) and math.isfinite(v) for v in row)
+            vecs.append("\\footnotesize $(" + ",".join(f"{v:g}" for v in row) + ")$" if ok else NA)
+        lines.append(f"\\footnotesize {cfg['initial_names']} & & & " + " & ".join(vecs) + " \\\\\n")
+    lines.append("\\midrule\n")
+    for i, (key, method, norm, expected) in enumerate(cfg["rows"]):
+        if method and i > 0:
+            lines.append("\\addlinespace\n")
+        cells = [math_cell(fmt(o.get(key), "order")) for o in obi]
+        lines.append(f"\\raggedright {method} & {norm} & ${expected}$ & " + " & ".join(cells) + " \\\\\n")
+    lines.append("\\bottomrule\n\\end{tabular}\n\\end{table}\n")
+    return "".join(lines)
+
+
+def cost_timing_table(name, s, src, derived):
+    """Timing table of an experiment with COST_TARGETS: time and force evaluations per step,
+    error at equal wall time, and what each error target costs."""
+    cfg = COST_TARGETS[name]
+    timing = s.get("timing") or {}
+    nsps = timing.get("ns_per_step") or {}
+    cost = derived.get("cost") or {}
+    methods = METHODS.get(name, {})
+    err_name = ERROR_NAMES.get(name, "error")
+    targets = cfg["targets"]
+    nt = len(targets)
+    lines = [HEADER.format(src=src)]
+    if not nsps and not cost:
+        lines.append("\\begin{center}\\small No timing recorded for \\texttt{"
+                     f"{tex_escape(name)}" "}.\\end{center}\n")
+        return "".join(lines)
+    names = list(nsps) + [m for m in cost if m not in nsps]
+    base = next((nsps[m] for m in nsps if is_number(nsps[m]) and nsps[m] > 0), None)
+    first = tex_escape(names[0]) if names else ""
+    lines.append("\\begin{table}[htbp]\n\\centering\n\\footnotesize\n")
+    lines.append(f"\\caption{{Cost of {experiment_title(name)}: time and force evaluations (gradients and "
+                 "Hessian--vector products) per step at the smallest $h$, cost relative to the first method, "
+                 f"{err_name} of every method at the wall time of the most expensive run of "
+                 f"\\texttt{{{tex_escape(cfg['equal_wall'])}}}, and the wall time and the force evaluations "
+                 "with which each method first reaches the given error (log--log interpolation between the "
+                 "measured step sizes of \\texttt{timing.csv}, not extrapolated; --- where the measured "
+                 "step sizes do not reach it). One run goes from the first initial condition to $t_{\\max}$, "
+                 "with pre- and postprocessing once." + (" " + cfg["legend"] if cfg.get("legend") else "")
+                 + "}\n")
+    lines.append(f"\\label{{tab:{name}-timing}}\n")
+    lines.append("\\setlength{\\tabcolsep}{4pt}\n")
+    lines.append("\\begin{tabular}{@{}p{0.22\\linewidth}rrrr" + "r" * (2 * nt) + "@{}}\n\\toprule\n")
+    tcells = " & ".join(f"${fmt(t, 'tol')}$" for t in targets)
+    lines.append("Method & ns per & Relative & Evaluations & Error at equal & "
+                 f"\\multicolumn{{{nt}}}{{c}}{{Wall time ($\\mu$s) to}} & "
+                 f"\\multicolumn{{{nt}}}{{c}}{{Evaluations to}} \\\\\n")
+    lines.append(f"\\cmidrule(lr){{6-{5 + nt}}}\\cmidrule(l){{{6 + nt}-{5 + 2 * nt}}}\n")
+    lines.append(f" & step & cost & per step & wall time & {tcells} & {tcells} \\\\\n\\midrule\n")
+    for m in names:
+        ns = nsps.get(m)
+        rel = ns / base if (is_number(ns) and base) else None
+        c = cost.get(m, {})
+        cells = [math_cell(fmt(ns, "ns")), math_cell(fmt(rel, "ratio")),
+                 math_cell(fmt(c.get("evals_per_step"), "ratio")), math_cell(fmt(c.get("err_at_equal_wall"), "err"))]
+        for key, kind in (("wall_to", "us"), ("evals_to", "int")):
+            for t in targets:
+                v = (c.get(key) or {}).get(target_key(t))
+                cells.append("---" if c and v is None else math_cell(fmt(v, kind)))
+        lines.append(f"\\raggedright {methods.get(m, tex_escape(m))} & " + " & ".join(cells) + " \\\\\n")
+    lines.append("\\bottomrule\n\\end{tabular}\n")
+    notes = []
+    for k, v in timing.items():
+        if k.startswith("ns_per_step_ratio") and is_number(v):
+            notes.append(f"ratio \\texttt{{{tex_escape(k[len('ns_per_step_ratio_'):])}}} = ${fmt(v, 'ratio')}$")
+    if is_number(derived.get("equal_wall_s")):
+        notes.append(f"equal wall time ${fmt(derived['equal_wall_s'], 'us')}\\,\\mu$s")
+    if isinstance(timing.get("method"), str):
+        notes.append("measurement: " + tex_escape(timing["method"]))
+    if is_number(timing.get("wall_s")):
+        notes.append(f"wall time of the whole run ${fmt(timing['wall_s'], 'seconds')}$\\,s")
+    if notes:
+        lines.append("\\par\\smallskip\\parbox{\\linewidth}{\\footnotesize " + "; ".join(notes) + ".}\n")
+    lines.append("\\end{table}\n")
+    return "".join(lines)
+
+
+def macros_file(name, s, scene, derived, src):
     lines = [HEADER.format(src=src)]
     specs = MACROS.get(name, [])
     if not specs:
         lines.append(f"% No macros are cited for {name}.\n")
-    sources = {"summary": s, "scene": scene, "derived": {"crossover": cross} if cross else {}}
+    sources = {"summary": s, "scene": scene, "derived": derived or {}}
     for macro, path, kind in specs:
         value = lookup(sources.get(path[0]) or {}, path[1:]) if s is not None else None
         if kind.startswith(("min:", "max:")):  # a list reduced to its extreme
             numbers = value if isinstance(value, list) and value and all(map(is_number, value)) else None
             value = None if numbers is None else (min(numbers) if kind[:3] == "min" else max(numbers))
             kind = kind[4:]
-        content = fmt(value, kind)
+        elif kind.startswith("len:"):  # the length of a list
+            value = len(value) if isinstance(value, list) else None
+            kind = kind[4:]
+        if kind == "vec":  # a list of numbers as (a, b, ...)
+            ok = isinstance(value, list) and value and all(is_number(v) and math.isfinite(v) for v in value)
+            content = r"(" + ", ".join(f"{v:g}" for v in value) + ")" if ok else None
+        else:
+            content = fmt(value, kind)
         body = NA if content is None else f"\\ensuremath{{{content}}}"
         lines.append(f"\\newcommand{{\\{macro}}}{{{body}}}\n")
     return "".join(lines)
@@ -491,9 +896,12 @@ def render(name, exp_dir):
     """
     if exp_dir is None:
         src = "(no results)"
-        return {"table": HEADER.format(src=src) + placeholder_box(name, "Published vs reproduced"),
-                "timing": HEADER.format(src=src) + placeholder_box(name, "Timing"),
-                "macros": macros_file(name, None, None, None, src)}
+        files = {"table": HEADER.format(src=src) + placeholder_box(name, "Published vs reproduced"),
+                 "timing": HEADER.format(src=src) + placeholder_box(name, "Timing"),
+                 "macros": macros_file(name, None, None, None, src)}
+        if name in ORDER_TABLES:
+            files["orders"] = HEADER.format(src=src) + placeholder_box(name, "Orders per initial condition")
+        return files
     summary_path = os.path.join(exp_dir, "summary.json")
     s = load_json(summary_path)
     check_summary(summary_path, s)
@@ -512,9 +920,29 @@ def render(name, exp_dir):
         curves = read_timing_curves(os.path.join(exp_dir, "timing.csv"), col)
         if curves and a in curves and b in curves and len(curves[a]) > 1 and len(curves[b]) > 1:
             cross = crossover(curves[a], curves[b]) or {"wall_s": None, "err": None}
-    return {"table": results_table(name, s, summary_path),
-            "timing": timing_table(name, s, summary_path, cross),
-            "macros": macros_file(name, s, scene, cross, summary_path)}
+    derived = {"crossover": cross} if cross else {}
+    if name in SCENE_DERIVED:
+        derived["scene"] = {}
+        for key, f in SCENE_DERIVED[name].items():
+            try:
+                derived["scene"][key] = f(scene)
+            except (KeyError, IndexError, TypeError, ZeroDivisionError):
+                derived["scene"][key] = None
+    if name in COST_TARGETS:
+        derived.update(cost_summary(name, exp_dir) or {})
+    if name in ORDER_TABLES:
+        derived["order_range"] = order_ranges(name, s)
+    if name in ERROR_RATIOS:
+        ratio = error_ratio(name, exp_dir)
+        if ratio is not None:
+            derived["error_ratio"] = ratio
+    files = {"table": results_table(name, s, summary_path),
+             "timing": (cost_timing_table(name, s, summary_path, derived) if name in COST_TARGETS
+                        else timing_table(name, s, summary_path, cross)),
+             "macros": macros_file(name, s, scene, derived, summary_path)}
+    if name in ORDER_TABLES:
+        files["orders"] = orders_table(name, s, scene, summary_path)
+    return files
 
 
 def main(argv):

@@ -6,8 +6,9 @@
 // modified energy whose O(h^2) part differs from H by (h^2/12) d/dt(U_q M^{-1} p);
 // the processor that removes it is the time-h^2/12 flow of U_q M^{-1} p, i.e.
 // (32)-(33) with h^2/12. (On the oscillator U = w^2 q^2/2 the kernel's
-// invariant ellipse is p^2 + w^2 (1 - h^2 w^2/3) q^2 + O(h^4), mapped to the
-// circle by qbar = (1 + h^2 w^2/12) q.) The cheap processors (34)-(37)
+// invariant ellipse is p^2 + w^2 (1 - h^2 w^2/3) q^2 + O(h^4), the image of the
+// exact orbits under the symplectic map qbar = (1 + h^2 w^2/12) q,
+// pbar = (1 - h^2 w^2/12) p.) The cheap processors (34)-(37)
 // expand to h^2/12 as well (U_q^{+1/2} + U_q^{-1/2} = 2 U_q + O(h^2)). With the
 // printed h^2/24 the processed method is of order 2 only; the experiment
 // rowlands_convergence measures both (see paper/).

@@ -1,0 +1,76 @@
+# Fig. 4 of Takács & Fülöp (2025), Sec. 3.3: convergence of Störmer–Verlet (26)–(28) and of the
+# Rowlands method (kernel (31) with processors) on the planar elastic pendulum in Cartesian
+# coordinates (App. A): energy error, eq. (50), against h (left); phase-space error at t_max (right).
+# Besides the paper's two methods: the cheap processors (34)–(37), the kernel without processing,
+# and the processors (32)–(33) with the coefficient h²/24 as printed (which give only order 2).
+# Dashed lines: least-squares fits from orders.csv, drawn over the h range they were fitted on.
+# Input: fig4_convergence.csv, orders.csv (the rows of initial condition `ic`, default 0, the one
+# the paper scene draws), run.json (pendulum parameters and initial condition, for the title).
+if (!exists("results")) results = 'results/rowlands_convergence'
+load 'figures/common.gp'
+set encoding utf8    # (so that the key width counts characters, not bytes)
+if (!exists("ic")) ic = 0
+CONV = csv('fig4_convergence.csv')
+sel(col) = (column("initial") == ic) ? column(col) : NaN     # the rows of initial condition ic
+
+METHODS = "sv kernel rowlands_printed rowlands rowlands_cheap"        # (column prefixes)
+FIT(m)   = m eq "kernel" ? "kernel_unprocessed" : m                   # (name prefix in orders.csv)
+LABEL(m) = m eq "sv"       ? "Störmer–Verlet (26)–(28)" \
+         : m eq "rowlands" ? "Rowlands, processors (32)–(33), h²/12" \
+         : m eq "rowlands_cheap" ? "Rowlands, cheap processors (34)–(37)" \
+         : m eq "kernel"   ? "Rowlands kernel (31) alone" \
+         : "(32)–(33) as printed, h^2/24"
+STYLE(m) = m eq "sv" ? LS_SV : m eq "rowlands" ? LS_ROW : m eq "rowlands_cheap" ? LS_ROWCH \
+         : m eq "kernel" ? LS_KERNEL : LS_PRINTED
+FITSTYLE(m) = STYLE(m) + 10
+
+# fitted orders of initial condition ic: eval fit_at('sv_energy') defines sv_energy_order, _c,
+# _hmin, _hmax (as getfit in common.gp, which does not tell the initial conditions apart)
+_row_ic(n, col) = (strcol("name") eq n && column("initial") == ic) ? column(col) : NaN
+_get_ic(n, col, var) = sprintf("undefine STATS_*; stats csv('orders.csv') using (_row_ic('%s','%s')) nooutput; %s = STATS_max; ", n, col, var)
+fit_at(n) = _get_ic(n, 'order', n.'_order') . _get_ic(n, 'log10_c', n.'_c') \
+          . _get_ic(n, 'h_min', n.'_hmin')  . _get_ic(n, 'h_max', n.'_hmax')
+do for [m in METHODS] { do for [q in "energy phase"] { eval fit_at(FIT(m).'_'.q) } }
+# the fitted line err = 10^c h^order from h_min (t = 0) to h_max (t = 1): straight in log-log
+fit_h(n, t)   = value(n.'_hmin') * (value(n.'_hmax') / value(n.'_hmin'))**t
+fit_err(n, t) = powerlaw(fit_h(n, t), value(n.'_c'), value(n.'_order'))
+
+# t_max from the data; pendulum parameters and the initial condition from the scene (run.json)
+stats CONV using (sel("h") * sel("steps")) nooutput
+T = STATS_max
+PARAMS = sprintf("l = %s, m = %s, k = %s, g = %s, t_{max} = %g", \
+                 scene_num('pendulum.l'), scene_num('pendulum.m'), scene_num('pendulum.k'), scene_num('pendulum.g'), T)
+Z0 = sprintf("initial condition (x, y, p_x, p_y) = (%s, %s, %s, %s)", scene_num(sprintf('initial.%d.0', ic)), \
+             scene_num(sprintf('initial.%d.1', ic)), scene_num(sprintf('initial.%d.2', ic)), scene_num(sprintf('initial.%d.3', ic)))
+
+do for [fmt in FORMATS] {
+    eval term(fmt, 'rowlands_convergence_fig4', 17, 12)
+    set multiplot layout 1,2 title sprintf("{/:Bold Fig. 4:} planar elastic pendulum, Cartesian coordinates: %s\n%s; dashed (dotted) lines: least-squares fits over the h range fitted", PARAMS, Z0)
+    set format x "%g"
+    eval LOGTICS("1 2 5")  # the h range may span less than a decade
+    set logscale xy
+    set format y LOGFMT
+    set xlabel "step size h"
+    set key outside below center vertical Left reverse samplen 3 width -6
+    set bmargin 9.5   # same for both panels, so that their axes line up
+    set autoscale xfix
+    set offsets graph 0.04, graph 0.04, 0, 0
+
+    set title "energy error, eq. (50)"
+    set ylabel "(J^{−1} Σ_{j=0}^{J} (H(q^j, p^j) − H_0)^2)^{1/2}"
+    plot for [m in METHODS] CONV using "h":(sel(m.'_energy_rms')) with points ls STYLE(m) notitle, \
+         for [m in METHODS] [t=0:1:1] '+' using (fit_h(FIT(m).'_energy', t)):(fit_err(FIT(m).'_energy', t)) \
+                with lines ls FITSTYLE(m) notitle, \
+         for [m in METHODS] keyentry with linespoints ls FITSTYLE(m) \
+                title sprintf("%s, order %.2f", LABEL(m), value(FIT(m).'_energy_order'))
+
+    set title "phase-space error at t_{max}"
+    set ylabel "|z^N − z(t_{max})|_2,  z = (x, y, p_x, p_y)"
+    plot for [m in METHODS] CONV using "h":(sel(m.'_phase')) with points ls STYLE(m) notitle, \
+         for [m in METHODS] [t=0:1:1] '+' using (fit_h(FIT(m).'_phase', t)):(fit_err(FIT(m).'_phase', t)) \
+                with lines ls FITSTYLE(m) notitle, \
+         for [m in METHODS] keyentry with linespoints ls FITSTYLE(m) \
+                title sprintf("%s, order %.2f", LABEL(m), value(FIT(m).'_phase_order'))
+    unset multiplot
+    unset output
+}
