@@ -5,6 +5,8 @@
 #include <stdexcept>
 #include <string>
 
+#include <Eigen/LU>
+
 #include "geomint/core/state.hpp"
 
 namespace geomint {

@@ -52,3 +52,33 @@ State symplectic_euler_qp(const Sys& sys, const State& z, double h) {
 }
 
 }  // namespace geomint
+
+namespace geomint {
+
+// Compensated summation (Kahan; as in Hairer's GNI codes): s + x with the
+// rounding error of earlier additions carried in c, so that long runs do not
+// random-walk the round-off.
+template <class V>
+void compensated_add(V& s, V& c, const V& x) {
+  const V y = x - c;
+  const V t = s + y;
+  c = (t - s) - y;
+  s = t;
+}
+
+template <int D>
+struct CompensatedState {
+  PhaseState<D> z;
+  Vec<D> cq = Vec<D>::Zero(), cp = Vec<D>::Zero();  // carried rounding errors
+};
+
+// 000 eq. (42)-(43) for separable H, the increments added with compensated summation.
+template <class Sys, int D>
+CompensatedState<D> symplectic_euler_pq(const Sys& sys, CompensatedState<D> s, double h) {
+  static_assert(Sys::separable, "compensated symplectic Euler is implemented for separable H");
+  compensated_add(s.z.p, s.cp, Vec<D>(-h * sys.H_q(s.z.q, s.z.p)));
+  compensated_add(s.z.q, s.cq, Vec<D>(h * sys.H_p(s.z.q, s.z.p)));
+  return s;
+}
+
+}  // namespace geomint

@@ -47,6 +47,9 @@ int run_experiment(int argc, char** argv, const ExperimentSpec& spec, const std:
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   app.add_option("--set", overrides, "Override a scene key: --set key=value (repeatable)");
+  bool resume = false;
+  app.add_flag("--resume", resume,
+               "Continue an interrupted run from the checkpoint in --out (experiments that write checkpoints)");
   app.footer(keys_help(spec.schema));
   try {
     app.parse(argc, argv);
@@ -74,6 +77,7 @@ int run_experiment(int argc, char** argv, const ExperimentSpec& spec, const std:
 
   omp_set_num_threads(threads);
   Context ctx(*scene, *out, threads);
+  ctx.resume = resume;
   try {
     spec.run(ctx);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -96,6 +100,9 @@ int run_experiment(int argc, char** argv, const ExperimentSpec& spec, const std:
     run["wall_s"] = wall;
     run["files"] = out->written();
     out->write("run.json", run.dump(2) + "\n");
+  } catch (const Interrupted& e) {
+    std::cerr << name << ": stopped: " << e.what() << '\n';
+    return 3;
   } catch (const std::exception& e) {
     std::cerr << name << ": error: " << e.what() << '\n';
     return 1;

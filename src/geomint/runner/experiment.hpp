@@ -4,6 +4,7 @@
 // --set, --help; exit 0 on success, 2 on bad input (before any work), 1 on a
 // failure during the run.
 #include <functional>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 
@@ -21,6 +22,7 @@ class Context {
   const Scene& scene;
   OutputDir& out;
   int threads;
+  bool resume = false;  // --resume: continue from the checkpoint in the output directory, if any
   // What summary.json reports besides "experiment" and the total wall time:
   // "published", "reproduced", "orders", "timing", ...
   nlohmann::ordered_json summary = nlohmann::ordered_json::object();
@@ -28,6 +30,12 @@ class Context {
   void write(const std::string& name, const Csv& csv) { out.write(name, csv.str()); }
   // A line on stderr when it is a terminal.
   void progress(std::string_view what) const;
+};
+
+// Thrown by an experiment that stops early on purpose, leaving a checkpoint
+// for --resume; the run exits with code 3.
+struct Interrupted : std::runtime_error {
+  using std::runtime_error::runtime_error;
 };
 
 struct ExperimentSpec {

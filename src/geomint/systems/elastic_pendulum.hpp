@@ -50,13 +50,13 @@ struct ElasticPendulumCartesian {
   Vec<2> mass_times(const Vec<2>& v) const { return m * v; }  // M v
   double T(const Vec<2>& p) const { return 0.5 * p.squaredNorm() / m; }
   double U(const Vec<2>& q) const {
-    return std::apply([&](const auto&... t) { return (t.U(q) + ...); }, terms);
+    return std::apply([&](const auto&... t) { return (0.0 + ... + t.U(q)); }, terms);
   }
   Vec<2> U_q(const Vec<2>& q) const {
-    return std::apply([&](const auto&... t) { return (t.U_q(q) + ...).eval(); }, terms);
+    return std::apply([&](const auto&... t) { return (Vec<2>::Zero() + ... + t.U_q(q)).eval(); }, terms);
   }
   Vec<2> U_qq_times(const Vec<2>& q, const Vec<2>& v) const {  // Hessian-vector product
-    return std::apply([&](const auto&... t) { return (t.U_qq_times(q, v) + ...).eval(); }, terms);
+    return std::apply([&](const auto&... t) { return (Vec<2>::Zero() + ... + t.U_qq_times(q, v)).eval(); }, terms);
   }
   Vec<2> force(const Vec<2>& q) const { return -U_q(q); }
 
@@ -67,12 +67,68 @@ struct ElasticPendulumCartesian {
   Mat<2> H_pp(const Vec<2>&, const Vec<2>&) const { return Mat<2>::Identity() / m; }
 };
 
+// ---- polar coordinates q = (r, theta), theta measured from +y: x = r sin(theta), y = r cos(theta) ----
+
+// U = (k/2)(r - l)^2: the spring of 000 eq. (72).
+struct SpringPolarTerm {
+  double k, l;
+  double U(const Vec<2>& q) const { return 0.5 * k * (q[0] - l) * (q[0] - l); }
+  Vec<2> U_q(const Vec<2>& q) const { return Vec<2>(k * (q[0] - l), 0.0); }
+};
+
+// U = -m g r cos(theta): gravity of 000 eq. (72).
+struct GravityPolarTerm {
+  double m, g;
+  double U(const Vec<2>& q) const { return -m * g * q[0] * std::cos(q[1]); }
+  Vec<2> U_q(const Vec<2>& q) const { return Vec<2>(-m * g * std::cos(q[1]), m * g * q[0] * std::sin(q[1])); }
+};
+
+// 000 eq. (72): H = (p_r^2 + p_theta^2 / r^2)/(2m) + sum of the potential terms. Not
+// separable; theta is cyclic without gravity (p_theta is then a first integral).
+template <class... Terms>
+struct ElasticPendulumPolar {
+  using State = PhaseState<2>;
+  static constexpr bool separable = false;
+
+  double m;
+  std::tuple<Terms...> terms;
+
+  double U(const Vec<2>& q) const {
+    return std::apply([&](const auto&... t) { return (0.0 + ... + t.U(q)); }, terms);
+  }
+  Vec<2> U_q(const Vec<2>& q) const {
+    return std::apply([&](const auto&... t) { return (Vec<2>::Zero() + ... + t.U_q(q)).eval(); }, terms);
+  }
+  double H(const State& z) const {  // (72)
+    const double r = z.q[0];
+    return (z.p[0] * z.p[0] + z.p[1] * z.p[1] / (r * r)) / (2 * m) + U(z.q);
+  }
+  Vec<2> H_q(const Vec<2>& q, const Vec<2>& p) const {  // (dH/dr, dH/dtheta)
+    const double r = q[0];
+    return Vec<2>(-p[1] * p[1] / (m * r * r * r), 0.0) + U_q(q);
+  }
+  Vec<2> H_p(const Vec<2>& q, const Vec<2>& p) const { return Vec<2>(p[0] / m, p[1] / (m * q[0] * q[0])); }
+  Mat<2> H_qp(const Vec<2>& q, const Vec<2>& p) const {
+    Mat<2> J = Mat<2>::Zero();
+    J(0, 1) = -2 * p[1] / (m * q[0] * q[0] * q[0]);  // d(dH/dr)/dp_theta
+    return J;
+  }
+  Mat<2> H_pp(const Vec<2>& q, const Vec<2>&) const {
+    Mat<2> J = Mat<2>::Zero();
+    J(0, 0) = 1 / m, J(1, 1) = 1 / (m * q[0] * q[0]);
+    return J;
+  }
+};
+
 struct ElasticPendulumParams {
   double l, m, k, g;
 };
 
 using ElasticPendulumWithGravity = ElasticPendulumCartesian<SpringTerm, GravityTerm>;
 using ElasticPendulumWithoutGravity = ElasticPendulumCartesian<SpringTerm>;
+using ElasticPendulumPolarWithGravity = ElasticPendulumPolar<SpringPolarTerm, GravityPolarTerm>;
+using FreeParticleCartesian = ElasticPendulumCartesian<>;  // 000 eq. (61)
+using FreeParticlePolar = ElasticPendulumPolar<>;          // 000 eq. (62)
 
 // Calls f with the Cartesian pendulum made of the terms the parameters call for.
 template <class F>

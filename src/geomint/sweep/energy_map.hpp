@@ -1,0 +1,54 @@
+#pragma once
+// The energy map of 000 Fig. 6: symplectic Euler (42)-(43), p first, on the
+// elastic pendulum from many initial conditions at rest, in Cartesian (73) or
+// polar (72) coordinates, accumulating for each the RMS energy error of
+// eq. (50), eps = sqrt(sum_{j=0}^{J} (H_j - H_0)^2 / J).
+//
+// Two implementations of the same computation:
+//  - energy_map_scalar: one trajectory at a time through the generic library
+//    (ElasticPendulumCartesian/Polar, symplectic_euler_pq): the reference;
+//  - batch kernels: kEnergyMapBatch trajectories at once in structure-of-arrays
+//    form, SIMD across the batch, one translation unit per instruction set
+//    (SSE2, AVX2, AVX-512), chosen at run time by CPU detection. They differ
+//    from the scalar loop by round-off only (vector sin/cos are within a few ulp).
+// A trajectory that reaches r <= 0, a non-finite value or an energy error above
+// `blowup` is marked diverged at that step; its lane is frozen (masked), never
+// poisoning the others.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace geomint {
+
+enum class Coordinates { cartesian, polar };
+
+struct EnergyMapParams {
+  double l, m, k, g;   // pendulum (000 Appendix A)
+  double h;            // step
+  std::int64_t steps;  // J
+  double blowup;       // |H_j - H_0| above this marks divergence
+};
+
+struct EnergyMapPoint {
+  double eps;           // eq. (50); NaN when diverged
+  std::int64_t diverge_step;  // -1: did not diverge
+};
+
+inline constexpr int kEnergyMapBatch = 32;
+
+// A batch kernel: integrates kEnergyMapBatch trajectories from (x0[i], y0[i]), p = 0.
+using EnergyMapKernel = void (*)(Coordinates, const EnergyMapParams&, const double* x0, const double* y0,
+                                 EnergyMapPoint* out);
+
+struct EnergyMapKernelInfo {
+  std::string isa;  // "avx512", "avx2", "sse2"
+  EnergyMapKernel run;
+};
+
+// The kernels this CPU can run, best first.
+std::vector<EnergyMapKernelInfo> energy_map_kernels();
+
+// The reference: one trajectory through the generic library code.
+EnergyMapPoint energy_map_scalar(Coordinates c, const EnergyMapParams& p, double x0, double y0);
+
+}  // namespace geomint

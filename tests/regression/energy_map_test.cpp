@@ -1,0 +1,83 @@
+// Regression: the quick scene of energy_map (000 Fig. 6 and Sec. 5.2).
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+namespace fs = std::filesystem;
+using json = nlohmann::json;
+
+namespace {
+
+const fs::path dir = fs::path(GEOMINT_TEST_RESULTS) / "energy_map";
+
+const json& summary() {
+  static const json s = [] {
+    std::ifstream in(dir / "summary.json");
+    if (!in) throw std::runtime_error("no summary.json in " + dir.string() + " (run the quick_run fixture)");
+    return json::parse(in);
+  }();
+  return s;
+}
+
+std::string read(const fs::path& p) {
+  std::ifstream in(p);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+}  // namespace
+
+TEST(EnergyMap, PolarDivergenceFollowsTheAnalyticBoundary) {
+  EXPECT_GE(summary()["reproduced"]["boundary_agreement"].get<double>(), 0.95);
+}
+
+TEST(EnergyMap, EpsIsFiniteWhereverTheRunDidNotDiverge) {
+  std::ifstream in(dir / "map.csv");
+  std::string line;
+  std::getline(in, line);
+  ASSERT_EQ(line, "x0,y0,H0,eps_cartesian,eps_polar,diverged_cartesian,diverged_polar,diverge_step_polar");
+  int rows = 0;
+  while (std::getline(in, line)) {
+    double v[8];
+    std::stringstream ss(line);
+    std::string cell;
+    for (double& x : v) std::getline(ss, cell, ','), x = std::strtod(cell.c_str(), nullptr);
+    EXPECT_EQ(std::isfinite(v[3]), v[5] == 0) << line;
+    EXPECT_EQ(std::isfinite(v[4]), v[6] == 0) << line;
+    ++rows;
+  }
+  EXPECT_EQ(rows, summary()["grid"]["points"].get<int>());
+}
+
+TEST(EnergyMap, PolarSymplecticEulerChangesPxAtSecondOrder) {
+  EXPECT_NEAR(summary()["orders"]["polar_px_change_per_step"].get<double>(), 2.0, 0.15);  // Sec. 5.2.1
+}
+
+TEST(EnergyMap, CartesianAngularMomentumIsKeptToRoundoff) {
+  EXPECT_LE(summary()["reproduced"]["cartesian_L_max_rel_drift"].get<double>(), 1e-12);  // Sec. 5.2.2
+}
+
+TEST(EnergyMap, ResumeGivesTheSameMap) {
+  // Stop after one round of batches, resume, and compare with an uninterrupted run.
+  const std::string bin = std::string(GEOMINT_BIN_DIR) + "/energy_map --quick --set grid.nx=48 --set grid.ny=48 ";
+  const fs::path a = dir.parent_path() / "energy_map-resume", b = dir.parent_path() / "energy_map-straight";
+  fs::remove_all(a), fs::remove_all(b);
+  const int stopped = std::system((bin + "--set checkpoint.stop_after=1 --out " + a.string() + " 2>/dev/null").c_str());
+  ASSERT_TRUE(WIFEXITED(stopped));
+  EXPECT_EQ(WEXITSTATUS(stopped), 3);
+  EXPECT_TRUE(fs::exists(a / "energy_map.checkpoint.json"));
+  EXPECT_FALSE(fs::exists(a / "map.csv"));
+  ASSERT_EQ(std::system((bin + "--resume --out " + a.string() + " 2>/dev/null").c_str()), 0);
+  ASSERT_EQ(std::system((bin + "--out " + b.string() + " 2>/dev/null").c_str()), 0);
+  EXPECT_EQ(read(a / "map.csv"), read(b / "map.csv"));
+  EXPECT_FALSE(fs::exists(a / "energy_map.checkpoint.json"));
+}

@@ -1,0 +1,71 @@
+// The polar elastic pendulum (000 eq. (72)) against the Cartesian one (73)
+// through the point transformation and its momentum map (41).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "geomint/integrators/integrate.hpp"
+#include "geomint/integrators/symplectic_euler.hpp"
+#include "geomint/reference/odeint_reference.hpp"
+#include "geomint/systems/elastic_pendulum.hpp"
+#include "geomint/transforms/polar.hpp"
+
+using namespace geomint;
+
+namespace {
+const double l = 1.0, m = 1.3, k = 0.9, g = 0.02;
+const ElasticPendulumWithGravity cart{m, {SpringTerm{k, l}, GravityTerm{m, g}}};
+const ElasticPendulumPolarWithGravity polar{m, {SpringPolarTerm{k, l}, GravityPolarTerm{m, g}}};
+const PhaseState<2> z0 = make_state<2>(Vec<2>(0.7, 1.1), Vec<2>(0.3, -0.2));
+
+double distance(const PhaseState<2>& a, const PhaseState<2>& b) {
+  return std::sqrt((a.q - b.q).squaredNorm() + (a.p - b.p).squaredNorm());
+}
+}  // namespace
+
+TEST(Polar, TransformationRoundTripAndSameHamiltonian) {
+  const auto zp = polar_from_cartesian(z0);
+  EXPECT_NEAR(zp.q[0], std::hypot(0.7, 1.1), 1e-15);
+  EXPECT_LT(distance(cartesian_from_polar(zp), z0), 1e-15);
+  EXPECT_NEAR(polar.H(zp), cart.H(z0), 1e-15);
+  EXPECT_NEAR(angular_momentum(z0), -zp.p[1], 1e-15);
+  // Hanging at rest: x = 0, y = l + m g / k is theta = 0.
+  EXPECT_EQ(polar_from_cartesian(make_state<2>(Vec<2>(0.0, 1.2), Vec<2>(0.0, 0.0))).q[1], 0.0);
+}
+
+TEST(Polar, GradientsAgainstFiniteDifferences) {
+  const auto zp = polar_from_cartesian(z0);
+  const double d = 1e-6;
+  for (int i = 0; i < 2; ++i) {
+    auto a = zp, b = zp;
+    a.q[i] += d, b.q[i] -= d;
+    EXPECT_NEAR(polar.H_q(zp.q, zp.p)[i], (polar.H(a) - polar.H(b)) / (2 * d), 1e-8);
+    a = zp, b = zp;
+    a.p[i] += d, b.p[i] -= d;
+    EXPECT_NEAR(polar.H_p(zp.q, zp.p)[i], (polar.H(a) - polar.H(b)) / (2 * d), 1e-8);
+  }
+  auto a = zp, b = zp;
+  a.p[1] += d, b.p[1] -= d;
+  EXPECT_NEAR(polar.H_qp(zp.q, zp.p)(0, 1), (polar.H_q(a.q, a.p)[0] - polar.H_q(b.q, b.p)[0]) / (2 * d), 1e-8);
+}
+
+TEST(Polar, SameExactTrajectory) {
+  // The same motion in both coordinates (odeint references), mapped by (41).
+  const auto zc = reference_solution(cart, z0, 5.0, 1e-13, 1e-13);
+  const auto zp = reference_solution(polar, polar_from_cartesian(z0), 5.0, 1e-13, 1e-13);
+  EXPECT_LT(distance(cartesian_from_polar(zp), zc), 1e-10);
+}
+
+TEST(Polar, SymplecticEulerTrajectoriesAgreeAsHTendsToZero) {
+  // Symplectic Euler differs between the coordinate systems (Sec. 4) by O(h): the gap halves with h.
+  double previous = 0;
+  for (double h : {0.01, 0.005, 0.0025}) {
+    const auto n = std::llround(2.0 / h);
+    const auto zc = integrate_n_steps([&](const auto& z) { return symplectic_euler_pq(cart, z, h); }, z0, n);
+    const auto zp = integrate_n_steps([&](const auto& z) { return symplectic_euler_pq(polar, z, h); },
+                                      polar_from_cartesian(z0), n);
+    const double gap = distance(cartesian_from_polar(zp), zc);
+    if (previous > 0) EXPECT_NEAR(previous / gap, 2.0, 0.1);
+    previous = gap;
+  }
+}
