@@ -53,9 +53,10 @@ paper: figures $(DEPS_STAMP)/paper.stamp
 	python3 scripts/paper_tables.py $(RESULTS) paper/generated
 	cd paper && latexmk -pdf -interaction=nonstopmode -halt-on-error main.tex
 
-bench: $(DEPS_STAMP)/build.stamp $(BUILD)/CMakeCache.txt
-	cmake --build $(BUILD) -j $(JOBS) --target geomint_bench
+bench: $(DEPS_STAMP)/build.stamp $(DEPS_STAMP)/figures.stamp $(BUILD)/CMakeCache.txt
+	cmake --build $(BUILD) -j $(JOBS) --target geomint_bench geomint_energy_map_bench
 	$(BUILD)/bin/geomint_bench
+	bench/run_energy_map_bench.sh $(BUILD)
 
 clean:
 	rm -rf $(BUILD) $(RESULTS) figures/out paper/generated

@@ -106,3 +106,15 @@ scene_num(key) = (_s = system(sprintf("awk -v want='scene.%s' '%s' '%s' 2>/dev/n
 # ---- x tics for logarithmic axes spanning few decades ------------------------
 # eval LOGTICS("1 2 5") puts the x tics at 1, 2, 5 × 10^k (labelled with the x format, e.g. "%g")
 LOGTICS(ds) = sprintf("set xtics (); do for [k=-8:8] { do for [d in '%s'] { set xtics add (real(d) * 10.0**k) } }", ds)
+
+# ---- numbers from summary.json ------------------------------------------------
+# summary_num('orders.polar_px_change_per_step') is the value of that key (dotted, as for
+# scene_num) in results/summary.json, formatted %.17g, or "?" if the file or the key is missing.
+summary_num(key) = (_s = system(sprintf("awk -v want='%s' '%s' '%s' 2>/dev/null", \
+                                        key, _json_awk, results . '/summary.json')), \
+                    _s eq "" ? "?" : sprintf("%.17g", real(_s)))
+# eval need_num('NAME', scene_num('pendulum.g')) sets NAME to the number, or stops the script
+# with an error naming the value that is missing (no silent default).
+need_num(var, s) = (s eq "?") \
+    ? sprintf("exit error \"%s: missing from %s/run.json or summary.json\"", var, results) \
+    : sprintf("%s = %s", var, s)

@@ -5,7 +5,10 @@
 #include <cmath>
 #include <vector>
 
+#include "geomint/integrators/symplectic_euler.hpp"
 #include "geomint/sweep/energy_map.hpp"
+#include "geomint/systems/elastic_pendulum.hpp"
+#include "geomint/transforms/polar.hpp"
 
 using namespace geomint;
 
@@ -54,4 +57,25 @@ TEST(EnergyMapKernel, DivergingLanesAreMaskedAndDoNotPoisonOthers) {
   for (int i = 0; i < kEnergyMapBatch; ++i)
     if (i != 3 && i != 4) EXPECT_EQ(mixed[i].eps, clean[i].eps) << i;  // bit for bit
   EXPECT_GT(energy_map_scalar(Coordinates::polar, P, 1.5, 1.5).diverge_step, 0);
+}
+
+TEST(EnergyMapScalar, MatchesTheGenericLibraryMethod) {
+  // The written-out loop against symplectic_euler_pq on the library's systems
+  // (Newton's method for the implicit stage in polar coordinates).
+  const ElasticPendulumWithGravity cart{1.0, {SpringTerm{1.0, 1.0}, GravityTerm{1.0, 0.02}}};
+  const ElasticPendulumPolarWithGravity polar{1.0, {SpringPolarTerm{1.0, 1.0}, GravityPolarTerm{1.0, 0.02}}};
+  const double x0 = 0.4, y0 = 1.1;
+  const auto eps_of = [&](const auto& sys, PhaseState<2> z) {
+    const double H0 = sys.H(z);
+    double sum = 0;
+    for (std::int64_t j = 1; j <= P.steps; ++j) {
+      z = symplectic_euler_pq(sys, z, P.h);
+      sum += (sys.H(z) - H0) * (sys.H(z) - H0);
+    }
+    return std::sqrt(sum / static_cast<double>(P.steps));
+  };
+  const auto z0 = make_state<2>(Vec<2>(x0, y0), Vec<2>(0.0, 0.0));
+  const double ec = eps_of(cart, z0), ep = eps_of(polar, polar_from_cartesian(z0));
+  EXPECT_NEAR(energy_map_scalar(Coordinates::cartesian, P, x0, y0).eps, ec, 1e-11 * ec);
+  EXPECT_NEAR(energy_map_scalar(Coordinates::polar, P, x0, y0).eps, ep, 1e-11 * ep);
 }

@@ -2,9 +2,6 @@
 
 #include <cmath>
 
-#include "geomint/integrators/symplectic_euler.hpp"
-#include "geomint/systems/elastic_pendulum.hpp"
-#include "geomint/transforms/polar.hpp"
 
 namespace geomint {
 
@@ -21,39 +18,46 @@ std::vector<EnergyMapKernelInfo> energy_map_kernels() {
   return k;
 }
 
-namespace {
-
-template <class Sys>
-EnergyMapPoint scalar_run(const Sys& sys, const PhaseState<2>& z0, const EnergyMapParams& P, bool polar) {
-  const double H0 = sys.H(z0);
-  if (!(z0.q.allFinite() && std::isfinite(H0)) || (polar ? z0.q[0] : z0.q.norm()) <= 0.0) return {std::nan(""), 0};
-  PhaseState<2> z = z0;
+// The straightforward scalar loop: one trajectory at a time, the formulas
+// written out as a user would (the reference the kernels are tested against;
+// itself tested against the generic symplectic_euler_pq in tests/unit).
+EnergyMapPoint energy_map_scalar(Coordinates c, const EnergyMapParams& P, double x0, double y0) {
+  const double m = P.m, k = P.k, l = P.l, g = P.g, h = P.h;
+  const double r0 = std::hypot(x0, y0);
+  if (!(r0 > 0.0)) return {std::nan(""), 0};
   double sum = 0, comp = 0;
-  for (std::int64_t j = 1; j <= P.steps; ++j) {
-    z = symplectic_euler_pq(sys, z, P.h);
-    const double r = polar ? z.q[0] : z.q.norm(), d = sys.H(z) - H0;
-    if (!(r > 0.0 && std::fabs(d) <= P.blowup)) return {std::nan(""), j};
-    const double y = d * d - comp, t = sum + y;  // Kahan
+  const auto add = [&](double d) {  // Kahan summation of d^2
+    const double y = d * d - comp, t = sum + y;
     comp = (t - sum) - y;
     sum = t;
+  };
+  if (c == Coordinates::cartesian) {
+    double x = x0, y = y0, px = 0, py = 0, r = r0;
+    const double H0 = 0.5 * k * (r0 - l) * (r0 - l) - m * g * y0;  // (73)
+    for (std::int64_t j = 1; j <= P.steps; ++j) {
+      const double f = k * (1.0 - l / r);
+      px -= h * f * x, py -= h * (f * y - m * g);  // (42)
+      x += h * px / m, y += h * py / m;            // (43)
+      r = std::sqrt(x * x + y * y);
+      const double d = (px * px + py * py) / (2 * m) + 0.5 * k * (r - l) * (r - l) - m * g * y - H0;
+      if (!(r > 0.0 && std::fabs(d) <= P.blowup)) return {std::nan(""), j};
+      add(d);
+    }
+  } else {
+    double r = r0, th = std::atan2(x0, y0), pr = 0, pt = 0;
+    const double H0 = 0.5 * k * (r0 - l) * (r0 - l) - m * g * r0 * std::cos(th);  // (72)
+    for (std::int64_t j = 1; j <= P.steps; ++j) {
+      // (42) solved explicitly: dH/dtheta has no p, dH/dr has p_theta only; (43) with r^j.
+      pt -= h * m * g * r * std::sin(th);
+      pr -= h * (-pt * pt / (m * r * r * r) + k * (r - l) - m * g * std::cos(th));
+      th += h * pt / (m * r * r);
+      r += h * pr / m;
+      const double d = (pr * pr + pt * pt / (r * r)) / (2 * m) + 0.5 * k * (r - l) * (r - l) - m * g * r * std::cos(th) - H0;
+      if (!(r > 0.0 && std::fabs(d) <= P.blowup)) return {std::nan(""), j};
+      add(d);
+    }
   }
   return {std::sqrt(sum / static_cast<double>(P.steps)), -1};  // (50)
-}
-
-}  // namespace
-
-EnergyMapPoint energy_map_scalar(Coordinates c, const EnergyMapParams& P, double x0, double y0) {
-  const auto z0 = make_state<2>(Vec<2>(x0, y0), Vec<2>(0.0, 0.0));
-  if (c == Coordinates::cartesian) {
-    const ElasticPendulumWithGravity sys{P.m, {SpringTerm{P.k, P.l}, GravityTerm{P.m, P.g}}};
-    return scalar_run(sys, z0, P, false);
-  }
-  const ElasticPendulumPolarWithGravity sys{P.m, {SpringPolarTerm{P.k, P.l}, GravityPolarTerm{P.m, P.g}}};
-  try {
-    return scalar_run(sys, polar_from_cartesian(z0), P, true);
-  } catch (const IntegrationError&) {  // the implicit stage failed: the run left the chart
-    return {std::nan(""), -2};
-  }
 }
 
 }  // namespace geomint

@@ -5,8 +5,9 @@
 // eq. (50), eps = sqrt(sum_{j=0}^{J} (H_j - H_0)^2 / J).
 //
 // Two implementations of the same computation:
-//  - energy_map_scalar: one trajectory at a time through the generic library
-//    (ElasticPendulumCartesian/Polar, symplectic_euler_pq): the reference;
+//  - energy_map_scalar: one trajectory at a time, the formulas written out (the
+//    straightforward loop; tested against the generic library's
+//    symplectic_euler_pq on ElasticPendulumCartesian/Polar);
 //  - batch kernels: kEnergyMapBatch trajectories at once in structure-of-arrays
 //    form, SIMD across the batch, one translation unit per instruction set
 //    (SSE2, AVX2, AVX-512), chosen at run time by CPU detection. They differ
@@ -48,7 +49,7 @@ struct EnergyMapKernelInfo {
 // The kernels this CPU can run, best first.
 std::vector<EnergyMapKernelInfo> energy_map_kernels();
 
-// The reference: one trajectory through the generic library code.
+// The straightforward scalar loop, one trajectory.
 EnergyMapPoint energy_map_scalar(Coordinates c, const EnergyMapParams& p, double x0, double y0);
 
 }  // namespace geomint
