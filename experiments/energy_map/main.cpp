@@ -246,7 +246,7 @@ void run(Context& ctx) {
                                  {"polar", scalar_ns["polar"].get<double>() / ns_polar}};
   timing["map_wall_s"] = {{"cartesian", wall_cart}, {"polar", wall_polar}};
   timing["method"] = "map: wall time of the batched kernel times threads over the steps computed in this run; "
-                     "scalar: the generic library loop (one trajectory at a time) on timing.scalar_points "
+                     "scalar: the straightforward scalar loop (one trajectory at a time) on timing.scalar_points "
                      "initial conditions of timing.scalar_steps steps, single thread";
 
   json reproduced;
