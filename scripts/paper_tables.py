@@ -79,6 +79,31 @@ DESCRIPTIONS = {
         "rowlands_cheap_phase": r"Effective order of (31) with the cheap processors (34)--(37), "
                                 r"$\ell^2$ phase error at $t_{\max}$ (Section~3.3)",
     },
+    "energy_map": {
+        "polar_px_change_per_step": r"Sec.~5.2.1: order in $h$ of the change of $p_x$ in one step of "
+                                    r"symplectic Euler in polar coordinates, free particle (62)",
+        "cartesian_L_max_rel_drift": r"Sec.~5.2.2: max.\ relative drift of $L=xp_y-yp_x$ (69) under "
+                                     r"symplectic Euler in Cartesian coordinates, free particle (61), "
+                                     r"compensated summation",
+    },
+}
+
+# Further rows of the published-vs-reproduced table, with no published value:
+# (description, path into summary.json, format).
+EXTRA_ROWS = {
+    "energy_map": [
+        (r"Fig.~6: grid points (origin excluded) at which the polar run diverges if and only if "
+         r"$r(0)\ge 2l+\frac{2mg}{k}\cos\varphi(0)$", ("reproduced", "boundary_agreement"), "percent"),
+        (r"Fig.~6: runs finite in both coordinate systems with "
+         r"$\varepsilon_{(r,\varphi)}<\varepsilon_{(x,y)}$ (polar more accurate)",
+         ("reproduced", "fraction_polar_better"), "percent"),
+        (r"Fig.~6: polar runs that diverge", ("reproduced", "fraction_diverged_polar"), "percent"),
+        (r"Fig.~6: Cartesian runs that diverge", ("reproduced", "fraction_diverged_cartesian"), "percent"),
+        (r"Sec.~5.2.2: the drift of $L$ with plain floating-point updates",
+         ("reproduced", "cartesian_L_max_rel_drift_plain"), "err"),
+        (r"Fig.~6: initial positions, $n_x\times n_y$", ("grid", "points"), "int"),
+        (r"Fig.~6: steps per run, $J=t_{\max}/\Delta t$", ("grid", "steps"), "int"),
+    ],
 }
 
 # Method names of the timing table (LaTeX).
@@ -122,6 +147,28 @@ COST_TARGETS = {
         "error": "phase_err", "targets": [1e-6, 1e-8], "equal_wall": "sv",
         "legend": r"St\"ormer--Verlet: (26)--(28); Rowlands, $h^2/12$: the kernel (31) with the "
                   r"processors (32)--(33), coefficient $h^2/12$; Rowlands, cheap: the kernel with (34)--(37).",
+    },
+}
+
+# Batched kernels timed against a straightforward scalar loop (summary["timing"]: kernel_isa,
+# ns_per_step_per_core, scalar_ns_per_step, speedup_vs_scalar, map_wall_s, each per coordinate
+# system; the scene's timing.scalar_points and timing.scalar_steps): the timing
+# table shows these beside the target of each kernel and the hardware ceiling, both given here.
+# The ceilings are estimates from the project's performance measurements on the machine type the
+# results come from (AMD EPYC, Zen 5 generation, about 4.1 GHz, AVX-512; g++ 12.2): Cartesian,
+# one square root and one division per step share the divider (11.5 cycles per 8 lanes); polar,
+# the vector sine and cosine (0.65-0.8 ns per value). Values in ns per trajectory-step per core.
+KERNEL_TIMING = {
+    "energy_map": {
+        "rows": [("cartesian", r"Cartesian (73)"), ("polar", r"Polar (72)")],
+        "target": {"cartesian": 0.6, "polar": 1.4},
+        "ceiling": {"cartesian": (0.35, 0.35), "polar": (0.8, 1.2)},
+        "ceiling_note": r"Hardware ceiling: an estimate from the project's performance measurements "
+                        r"on this machine type (AMD EPYC, Zen~5 generation, about 4.1\,GHz, AVX-512), "
+                        r"not measured in this run. Cartesian: one square root and one division per "
+                        r"step share the divider, 11.5 cycles per 8 lanes; polar: the vector sine and "
+                        r"cosine, 0.65--0.8\,ns per value. Target: the time per step set as the goal "
+                        r"of the kernel.",
     },
 }
 
@@ -176,9 +223,46 @@ ERROR_RATIOS = {
     "rowlands_convergence": ("fig4_convergence.csv", "rowlands_printed", "kernel", ["_phase", "_energy_rms"]),
 }
 
+def free_particle_end(sc):
+    """(|q_J|, eps |q_J| |p| / |L_0|) of the free-particle run of energy_map (m = 1, J steps of the
+    smallest h from the first initial state): the round-off scale of evaluating L at its end."""
+    fi = sc["first_integrals"]
+    x, y, px, py = fi["initial"][0]
+    t_end = fi["steps"] * min(fi["h"])
+    q_end = math.hypot(x + t_end * px, y + t_end * py)
+    return q_end, sys.float_info.epsilon * q_end * math.hypot(px, py) / abs(x * py - y * px)
+
+
+# The local order between the two smallest step sizes, read from a CSV of <dir>/:
+# (file, step column, error column, key of derived).
+LOCAL_ORDERS = {
+    "energy_map": ("first_integrals.csv", "h", "px_change_per_step", "px_local_order"),
+}
+
+
+# The map of energy_map (<dir>/map.csv with the scene of run.json), for the text: where the
+# polar runs diverge against the analytic boundary r(0) >= 2l + (2mg/k) cos(phi(0)) of 000
+# Sec. 4.1, and where polar is the more accurate. "ring_half_width": the initial radii
+# |r(0) - l| < ring_half_width * l counted separately for the share where polar is better.
+MAP_STATS = {
+    "energy_map": {"file": "map.csv", "ring_half_width": 0.2},
+}
+
+
 # Quantities computed from run.json's resolved scene, for the text: {name: function(scene)};
 # a function that fails on a missing or malformed scene gives n/a.
 SCENE_DERIVED = {
+    "energy_map": {
+        "dx": lambda sc: (sc["grid"]["x_max"] - sc["grid"]["x_min"]) / (sc["grid"]["nx"] - 1),
+        # U at r = 0, (72) or (73): for p(0) = 0 the boundary r(0) = 2l + (2mg/k) cos(phi(0)) is
+        # the isoline H_0 = k l^2 / 2
+        "H_threshold": lambda sc: 0.5 * sc["pendulum"]["k"] * sc["pendulum"]["l"] ** 2,
+        "dt_times_omega": lambda sc: sc["dt"] * math.sqrt(sc["pendulum"]["k"] / sc["pendulum"]["m"]),
+        # the Cartesian angular-momentum run (free particle, m = 1): |q| at its end and the
+        # round-off of evaluating L = x p_y - y p_x there, eps |q| |p| / |L_0|
+        "L_q_end": lambda sc: free_particle_end(sc)[0],
+        "L_eval_roundoff": lambda sc: free_particle_end(sc)[1],
+    },
     "rowlands_convergence": {
         # 000 eq. (73), y pointing down: the pendulum hangs at x = 0, y = l + m g / k
         "y_equilibrium": lambda sc: (sc["pendulum"]["l"]
@@ -322,6 +406,98 @@ MACROS = {
         ("RCeqErrRkn", ("derived", "cost", "odeint_rkn_sb3a", "err_at_equal_wall"), "err"),
         ("RCeqErrVv", ("derived", "cost", "odeint_velocity_verlet", "err_at_equal_wall"), "err"),
     ],
+    "energy_map": [
+        # scene (run.json) and run
+        ("EMl", ("scene", "pendulum", "l"), "plain"),
+        ("EMm", ("scene", "pendulum", "m"), "plain"),
+        ("EMk", ("scene", "pendulum", "k"), "plain"),
+        ("EMg", ("scene", "pendulum", "g"), "plain"),
+        ("EMdt", ("scene", "dt"), "plain"),
+        ("EMdtOmega", ("derived", "scene", "dt_times_omega"), "plain"),
+        ("EMtMax", ("scene", "t_max"), "int"),
+        ("EMxMin", ("scene", "grid", "x_min"), "plain"),
+        ("EMxMax", ("scene", "grid", "x_max"), "plain"),
+        ("EMyMin", ("scene", "grid", "y_min"), "plain"),
+        ("EMyMax", ("scene", "grid", "y_max"), "plain"),
+        ("EMdx", ("derived", "scene", "dx"), "plain"),
+        ("EMblowup", ("scene", "divergence", "blowup"), "tol"),
+        ("EMhThreshold", ("derived", "scene", "H_threshold"), "plain"),
+        ("EMfiHmax", ("scene", "first_integrals", "h"), "max:plain"),
+        ("EMfiHmin", ("scene", "first_integrals", "h"), "min:plain"),
+        ("EMfiHcount", ("scene", "first_integrals", "h"), "len:int"),
+        ("EMfiIcCount", ("scene", "first_integrals", "initial"), "len:int"),
+        ("EMfiIcOne", ("scene", "first_integrals", "initial", 0), "vec"),
+        ("EMfiSteps", ("scene", "first_integrals", "steps"), "int"),
+        ("EMqEnd", ("derived", "scene", "L_q_end"), "ns3"),
+        ("EMLroundoff", ("derived", "scene", "L_eval_roundoff"), "err"),
+        ("EMscalarPoints", ("scene", "timing", "scalar_points"), "int"),
+        ("EMscalarSteps", ("scene", "timing", "scalar_steps"), "int"),
+        ("EMthreads", ("derived", "kernel", "threads"), "int"),
+        # grid and summary
+        ("EMnx", ("summary", "grid", "nx"), "int"),
+        ("EMny", ("summary", "grid", "ny"), "int"),
+        ("EMpoints", ("summary", "grid", "points"), "int"),
+        ("EMsteps", ("summary", "grid", "steps"), "int"),
+        ("EMagreement", ("summary", "reproduced", "boundary_agreement"), "percent"),
+        ("EMpolarBetter", ("summary", "reproduced", "fraction_polar_better"), "percent"),
+        ("EMdivPolar", ("summary", "reproduced", "fraction_diverged_polar"), "percent"),
+        ("EMdivCart", ("summary", "reproduced", "fraction_diverged_cartesian"), "percent"),
+        ("EMLdrift", ("summary", "reproduced", "cartesian_L_max_rel_drift"), "err"),
+        ("EMLdriftPlain", ("summary", "reproduced", "cartesian_L_max_rel_drift_plain"), "err"),
+        ("EMpxOrder", ("summary", "orders", "polar_px_change_per_step"), "order"),
+        ("EMpxOrderLocal", ("derived", "px_local_order"), "order"),
+        # the map (map.csv, MAP_STATS)
+        ("EMcounted", ("derived", "map", "counted"), "int"),
+        ("EMdisagree", ("derived", "map", "disagree"), "int"),
+        ("EMcriterion", ("derived", "map", "criterion"), "int"),
+        ("EMdivPolarCount", ("derived", "map", "diverged_polar"), "int"),
+        ("EMdivInside", ("derived", "map", "diverged_inside"), "int"),
+        ("EMaliveOutside", ("derived", "map", "alive_outside"), "int"),
+        ("EMcartDivOffOrigin", ("derived", "map", "cartesian_diverged_off_origin"), "int"),
+        ("EMinner", ("derived", "map", "inner"), "int"),
+        ("EMinnerRmax", ("derived", "map", "inner_r_max"), "fixed3"),
+        ("EMinnerCandidates", ("derived", "map", "inner_candidates"), "int"),
+        ("EMouter", ("derived", "map", "outer"), "int"),
+        ("EMouterDistMax", ("derived", "map", "outer_dist_max"), "fixed3"),
+        ("EMouterDistAll", ("derived", "map", "outer_dist_all"), "fixed3"),
+        ("EMouterCandidates", ("derived", "map", "outer_candidates"), "int"),
+        ("EMhMinDiverged", ("derived", "map", "H0_min_diverged"), "fixed3"),
+        ("EMhMaxAlive", ("derived", "map", "H0_max_alive"), "fixed3"),
+        ("EMinsideStepMedian", ("derived", "map", "inside_step_median"), "int"),
+        ("EMinsideStepMax", ("derived", "map", "inside_step_max"), "int"),
+        ("EMinsideTimeMax", ("derived", "map", "inside_time_max"), "int"),
+        ("EMoutsideStepMedian", ("derived", "map", "outside_step_median"), "int"),
+        ("EMoutsideStepMax", ("derived", "map", "outside_step_max"), "int"),
+        ("EMoutsideTimeMax", ("derived", "map", "outside_time_max"), "int"),
+        ("EMbothFinite", ("derived", "map", "both_finite"), "int"),
+        ("EMringHalfWidth", ("derived", "map", "ring_half_width"), "plain"),
+        ("EMringPolarBetter", ("derived", "map", "ring_polar_better"), "percent"),
+        ("EMoffRingPolarBetter", ("derived", "map", "off_ring_polar_better"), "percent"),
+        ("EMratioLo", ("derived", "map", "ratio_p05"), "ns3"),
+        ("EMratioMedian", ("derived", "map", "ratio_median"), "ns3"),
+        ("EMratioHi", ("derived", "map", "ratio_p95"), "ns3"),
+        # cost (summary timing, KERNEL_TIMING)
+        ("EMisa", ("summary", "timing", "kernel_isa"), "isa"),
+        ("EMnsCart", ("summary", "timing", "ns_per_step_per_core", "cartesian"), "ns3"),
+        ("EMnsPolar", ("summary", "timing", "ns_per_step_per_core", "polar"), "ns3"),
+        ("EMscalarCart", ("summary", "timing", "scalar_ns_per_step", "cartesian"), "ns3"),
+        ("EMscalarPolar", ("summary", "timing", "scalar_ns_per_step", "polar"), "ns3"),
+        ("EMspeedupCart", ("summary", "timing", "speedup_vs_scalar", "cartesian"), "ratio"),
+        ("EMspeedupPolar", ("summary", "timing", "speedup_vs_scalar", "polar"), "ratio"),
+        ("EMwallCart", ("summary", "timing", "map_wall_s", "cartesian"), "seconds"),
+        ("EMwallPolar", ("summary", "timing", "map_wall_s", "polar"), "seconds"),
+        ("EMmapWall", ("derived", "kernel", "map_wall_s"), "seconds"),
+        ("EMrunWall", ("summary", "timing", "wall_s"), "seconds"),
+        ("EMtrajSteps", ("derived", "kernel", "trajectory_steps"), "sci"),
+        ("EMtargetCart", ("derived", "kernel", "target", "cartesian"), "plain"),
+        ("EMtargetPolar", ("derived", "kernel", "target", "polar"), "plain"),
+        ("EMceilCart", ("derived", "kernel", "ceiling", "cartesian", "lo"), "plain"),
+        ("EMceilPolarLo", ("derived", "kernel", "ceiling", "polar", "lo"), "plain"),
+        ("EMceilPolarHi", ("derived", "kernel", "ceiling", "polar", "hi"), "plain"),
+        ("EMceilFracCart", ("derived", "kernel", "fraction", "cartesian", "lo"), "percent"),
+        ("EMceilFracPolarLo", ("derived", "kernel", "fraction", "polar", "lo"), "percent"),
+        ("EMceilFracPolarHi", ("derived", "kernel", "fraction", "polar", "hi"), "percent"),
+    ],
 }
 
 NA = r"\textit{n/a}"
@@ -409,6 +585,10 @@ def fmt(value, kind):
         return f"10^{{{int(exp)}}}" if mant == "1.0" else sci(value)
     if kind == "ns":
         return f"{value:.1f}"
+    if kind == "ns3":  # 3 significant digits: 1.39, 28.4, 129
+        return sig(value, 3) if value > 0 else None
+    if kind == "percent":  # a fraction shown in per cent, 3 significant digits
+        return "0\\,\\%" if value == 0 else sig(100 * value, 3) + "\\,\\%"
     if kind == "ratio":
         return f"{value:.1f}"
     if kind == "seconds":
@@ -643,6 +823,146 @@ def error_ratio(name, exp_dir):
     return {"min": min(ratios), "max": max(ratios), "h": h_min} if ratios else None
 
 
+def local_order(name, exp_dir):
+    """LOCAL_ORDERS: the slope of log(error) against log(h) between the two smallest h, or None."""
+    file, hcol, ecol, _ = LOCAL_ORDERS[name]
+    path = os.path.join(exp_dir, file)
+    rows = read_csv_rows(path, (hcol, ecol))
+    if not rows:
+        return None
+    try:
+        pts = sorted((float(r[hcol]), float(r[ecol])) for r in rows)
+    except ValueError:
+        raise Malformed(f"{path}: non-numeric value in {hcol} or {ecol}") from None
+    pts = [(h, e) for h, e in pts if h > 0 and e > 0 and math.isfinite(h) and math.isfinite(e)]
+    if len(pts) < 2 or pts[0][0] == pts[1][0]:
+        return None
+    (h0, e0), (h1, e1) = pts[0], pts[1]
+    return math.log(e1 / e0) / math.log(h1 / h0)
+
+
+def quantile(sorted_values, q):
+    """Nearest-rank quantile of a sorted non-empty list."""
+    return sorted_values[int(round(q * (len(sorted_values) - 1)))]
+
+
+def energy_map_stats(name, exp_dir, scene):
+    """MAP_STATS quantities of the energy map, or None without map.csv or a usable scene.
+
+    With phi(0) measured from the downward vertical (cos phi(0) = y0/r0, y pointing down), a
+    release from rest oscillates radially about r* = l + (mg/k) cos phi(0) between r(0) and
+    2r* - r(0); the boundary is r(0) = 2r*. A polar run that diverges inside the boundary
+    counts as "inner" if r(0) < r* (its inner turning point is r(0) itself), else as "outer"
+    (inner turning point 2r* - r(0), at the radial distance 2r* - r(0) inside the boundary).
+    """
+    cfg = MAP_STATS[name]
+    path = os.path.join(exp_dir, cfg["file"])
+    cols = ("x0", "y0", "H0", "eps_cartesian", "eps_polar", "diverged_cartesian", "diverged_polar",
+            "diverge_step_polar")
+    rows = read_csv_rows(path, cols)
+    try:
+        pend = scene["pendulum"]
+        l, m, k, g = (float(pend[key]) for key in ("l", "m", "k", "g"))
+        dt = float(scene["dt"])
+    except (KeyError, TypeError, ValueError):
+        return None
+    if not rows or not (l > 0 and k > 0):
+        return None
+    pts = []
+    try:
+        for row in rows:
+            pts.append({key: float(row[key]) for key in cols})
+    except ValueError:
+        raise Malformed(f"{path}: non-numeric value in a row") from None
+    counted = agree = 0
+    cart_div_off_origin = 0
+    crit_count = polar_div = 0
+    inner, outer, alive_outside, outside_steps, inside_steps = [], [], [], [], []
+    inner_candidates, outer_candidates = [], []  # (r0) and (b - r0) of all points inside, by side of r*
+    alive_inner_r, alive_outer_d = [], []
+    div_h0, alive_h0 = [], []
+    both, ring, off_ring, ratios = 0, [0, 0], [0, 0], []
+    half = cfg["ring_half_width"] * l
+    for p in pts:
+        x, y = p["x0"], p["y0"]
+        r = math.hypot(x, y)
+        dc, dp = p["diverged_cartesian"] != 0, p["diverged_polar"] != 0
+        polar_div += dp
+        if r == 0:  # the origin: no initial condition of the polar problem
+            continue
+        cart_div_off_origin += dc
+        counted += 1
+        r_star = l + m * g / k * (y / r)
+        b = 2 * l + 2 * m * g / k * (y / r)  # as in the executable
+        crit = r >= b
+        crit_count += crit
+        agree += dp == crit
+        (div_h0 if dp else alive_h0).append(p["H0"])
+        if crit:
+            if dp:
+                outside_steps.append(p["diverge_step_polar"])
+            else:
+                alive_outside.append(r - b)
+        else:
+            if r < r_star:
+                inner_candidates.append(r)
+                if dp:
+                    inner.append(r)
+                else:
+                    alive_inner_r.append(r)
+            else:
+                outer_candidates.append(b - r)
+                if dp:
+                    outer.append(b - r)
+                else:
+                    alive_outer_d.append(b - r)
+            if dp:
+                inside_steps.append(p["diverge_step_polar"])
+        ec, ep = p["eps_cartesian"], p["eps_polar"]
+        if not dc and not dp and math.isfinite(ec) and math.isfinite(ep):
+            both += 1
+            better = ep < ec
+            tally = ring if abs(r - l) < half else off_ring
+            tally[0] += better
+            tally[1] += 1
+            if ec > 0:
+                ratios.append(ep / ec)
+    out = {
+        "counted": counted, "agreement": agree / counted if counted else None,
+        "disagree": counted - agree, "criterion": crit_count, "diverged_polar": polar_div,
+        "diverged_inside": len(inner) + len(outer), "alive_outside": len(alive_outside),
+        "cartesian_diverged_off_origin": cart_div_off_origin,
+        "inner": len(inner), "outer": len(outer),
+        "both_finite": both, "ring_half_width": cfg["ring_half_width"],
+        "ring_polar_better": ring[0] / ring[1] if ring[1] else None,
+        "off_ring_polar_better": off_ring[0] / off_ring[1] if off_ring[1] else None,
+    }
+    if inner:
+        r_max = max(inner)
+        out["inner_r_max"] = r_max
+        out["inner_candidates"] = sum(1 for r in inner_candidates if r <= r_max)
+    if outer:
+        d_max = max(outer)
+        out["outer_dist_max"] = d_max
+        out["outer_candidates"] = sum(1 for d in outer_candidates if d <= d_max)
+        # every point closer to the boundary than this diverged
+        out["outer_dist_all"] = min(alive_outer_d) if alive_outer_d else None
+    if div_h0:
+        out["H0_min_diverged"] = min(div_h0)
+    if alive_h0:
+        out["H0_max_alive"] = max(alive_h0)
+    for key, steps in (("inside", inside_steps), ("outside", outside_steps)):
+        if steps:
+            steps.sort()
+            out[f"{key}_step_median"] = quantile(steps, 0.5)
+            out[f"{key}_step_max"] = steps[-1]
+            out[f"{key}_time_max"] = steps[-1] * dt
+    if ratios:
+        ratios.sort()
+        out["ratio_p05"], out["ratio_median"], out["ratio_p95"] = (quantile(ratios, q) for q in (0.05, 0.5, 0.95))
+    return out
+
+
 # ---------------------------------------------------------------------------
 # Writing
 # ---------------------------------------------------------------------------
@@ -698,6 +1018,11 @@ def results_table(name, s, src):
         else:
             cells = [general(p), None if r is None else general(r), None if r is None else general(r - p)]
         lines.append(f"{label} & " + " & ".join(math_cell(c) for c in cells) + " \\\\\n")
+    extra = EXTRA_ROWS.get(name, [])
+    if extra:
+        lines.append("\\midrule\n")
+    for label, path, kind in extra:
+        lines.append(f"{label} & --- & {math_cell(fmt(lookup(s, path), kind))} & --- \\\\\n")
     lines.append("\\bottomrule\n\\end{tabular}\n")
     norms = s.get("norms")
     if isinstance(norms, dict) and norms:
@@ -864,6 +1189,107 @@ def cost_timing_table(name, s, src, derived):
     return "".join(lines)
 
 
+ISA_NAMES = {"avx512": "AVX-512", "avx2": "AVX2", "sse2": "SSE2"}
+
+
+def kernel_summary(name, s, run, scene):
+    """KERNEL_TIMING quantities: ceiling/measured per coordinate system, the total map wall time,
+    the number of trajectory-steps of the map and the threads of the run."""
+    cfg = KERNEL_TIMING[name]
+    timing = s.get("timing") or {}
+    ns = timing.get("ns_per_step_per_core") or {}
+    walls = timing.get("map_wall_s") or {}
+    out = {"fraction": {}, "ceiling": {}, "target": cfg["target"]}
+    for key, _ in cfg["rows"]:
+        lo, hi = cfg["ceiling"][key]
+        out["ceiling"][key] = {"lo": lo, "hi": hi}
+        v = ns.get(key) if isinstance(ns, dict) else None
+        if is_number(v) and v > 0:
+            out["fraction"][key] = {"lo": lo / v, "hi": hi / v}
+    if isinstance(walls, dict) and walls and all(is_number(w) for w in walls.values()):
+        out["map_wall_s"] = sum(walls.values())
+    grid = s.get("grid") or {}
+    if isinstance(grid, dict) and is_number(grid.get("points")) and is_number(grid.get("steps")):
+        out["trajectory_steps"] = len(cfg["rows"]) * grid["points"] * grid["steps"]
+    threads = (run or {}).get("threads")
+    out["threads"] = threads if is_number(threads) else None
+    for key in ("scalar_points", "scalar_steps"):
+        v = lookup(scene or {}, ("timing", key))
+        out[key] = v if is_number(v) else None
+    return out
+
+
+def range_cell(lo, hi, kind):
+    """lo, or lo--hi when they differ, as a table cell."""
+    a, b = fmt(lo, kind), fmt(hi, kind)
+    if a is None or b is None:
+        return NA
+    return f"${a}$" if a == b else f"${a}$--${b}$"
+
+
+def kernel_timing_table(name, s, src, derived):
+    """Timing table of an experiment with KERNEL_TIMING: the batched kernel per coordinate system
+    against the scalar loop, its target and the hardware ceiling."""
+    cfg = KERNEL_TIMING[name]
+    timing = s.get("timing") or {}
+    lines = [HEADER.format(src=src)]
+    if not isinstance(timing.get("ns_per_step_per_core"), dict):
+        lines.append("\\begin{center}\\small No kernel timing recorded for \\texttt{"
+                     f"{tex_escape(name)}" "}.\\end{center}\n")
+        return "".join(lines)
+    k = derived.get("kernel") or {}
+
+    def get(section, key):
+        d = timing.get(section)
+        return d.get(key) if isinstance(d, dict) else None
+
+    isa = timing.get("kernel_isa")
+    isa_name = ISA_NAMES.get(isa, tex_escape(isa)) if isinstance(isa, str) else NA
+    lines.append("\\begin{table}[htbp]\n\\centering\n\\small\n")
+    pts, steps = k.get("scalar_points"), k.get("scalar_steps")
+    scalar_runs = (f", on ${fmt(pts, 'int')}$ initial conditions of ${fmt(steps, 'int')}$ steps"
+                   if is_number(pts) and is_number(steps) else "")
+    lines.append(f"\\caption{{Cost of {experiment_title(name)}: time per trajectory-step and core of the "
+                 f"batched kernel ({isa_name}, chosen at run time; wall time of the map times the number of "
+                 "threads, over the trajectory-steps of the map), of the straightforward scalar loop (the "
+                 f"same formulas, one trajectory at a time, one thread{scalar_runs}), their ratio, the wall "
+                 "time of the map, the target of the kernel and the hardware ceiling, and the ceiling as a "
+                 "fraction of the measured time.}\n")
+    lines.append(f"\\label{{tab:{name}-timing}}\n")
+    lines.append("\\setlength{\\tabcolsep}{4pt}\n")
+    lines.append("\\begin{tabular}{@{}lrrrrrrr@{}}\n\\toprule\n")
+    lines.append("Coordinates & Kernel & Scalar loop & Speedup & Map wall & Target & Ceiling & "
+                 "Ceiling / \\\\\n")
+    lines.append(" & ns/step/core & ns/step & & time (s) & ns/step & ns/step & kernel \\\\\n\\midrule\n")
+    for key, label in cfg["rows"]:
+        ceil = (k.get("ceiling") or {}).get(key) or {}
+        frac = (k.get("fraction") or {}).get(key) or {}
+        target = cfg["target"].get(key)
+        cells = [math_cell(fmt(get("ns_per_step_per_core", key), "ns3")),
+                 math_cell(fmt(get("scalar_ns_per_step", key), "ns3")),
+                 math_cell(fmt(get("speedup_vs_scalar", key), "ratio")),
+                 math_cell(fmt(get("map_wall_s", key), "ns3")),
+                 NA if target is None else f"$\\le {fmt(target, 'plain')}$",
+                 range_cell(ceil.get("lo"), ceil.get("hi"), "plain"),
+                 range_cell(frac.get("lo"), frac.get("hi"), "percent")]
+        lines.append(f"{label} & " + " & ".join(cells) + " \\\\\n")
+    lines.append("\\midrule\n")
+    lines.append(f"Both & & & & {math_cell(fmt(k.get('map_wall_s'), 'ns3'))} & & & \\\\\n")
+    lines.append("\\bottomrule\n\\end{tabular}\n")
+    notes = []
+    if is_number(k.get("trajectory_steps")):
+        notes.append(f"the map is ${sci(k['trajectory_steps'])}$ trajectory-steps")
+    if is_number(k.get("threads")):
+        notes.append(f"{int(k['threads'])} thread{'s' if k['threads'] != 1 else ''}")
+    if is_number(timing.get("wall_s")):
+        notes.append(f"wall time of the whole run ${fmt(timing['wall_s'], 'seconds')}$\\,s")
+    text = "; ".join(notes) + ". " if notes else ""
+    lines.append("\\par\\smallskip\\parbox{\\linewidth}{\\footnotesize " + text[:1].upper() + text[1:]
+                 + cfg["ceiling_note"] + "}\n")
+    lines.append("\\end{table}\n")
+    return "".join(lines)
+
+
 def macros_file(name, s, scene, derived, src):
     lines = [HEADER.format(src=src)]
     specs = MACROS.get(name, [])
@@ -879,6 +1305,10 @@ def macros_file(name, s, scene, derived, src):
         elif kind.startswith("len:"):  # the length of a list
             value = len(value) if isinstance(value, list) else None
             kind = kind[4:]
+        if kind == "isa":  # an instruction set, as text
+            body = ISA_NAMES.get(value, tex_escape(value)) if isinstance(value, str) else NA
+            lines.append(f"\\newcommand{{\\{macro}}}{{{body}}}\n")
+            continue
         if kind == "vec":  # a list of numbers as (a, b, ...)
             ok = isinstance(value, list) and value and all(is_number(v) and math.isfinite(v) for v in value)
             content = r"(" + ", ".join(f"{v:g}" for v in value) + ")" if ok else None
@@ -908,11 +1338,13 @@ def render(name, exp_dir):
     if s.get("experiment") not in (None, name):
         print(f"paper_tables.py: warning: {summary_path} names experiment {s.get('experiment')!r}",
               file=sys.stderr)
-    scene = {}
+    scene, run = {}, {}
     run_path = os.path.join(exp_dir, "run.json")
     if os.path.isfile(run_path):
         run = load_json(run_path)
-        if isinstance(run, dict) and isinstance(run.get("scene"), dict):
+        if not isinstance(run, dict):
+            run = {}
+        if isinstance(run.get("scene"), dict):
             scene = run["scene"]
     cross = None
     if name in CROSSOVERS:
@@ -926,7 +1358,7 @@ def render(name, exp_dir):
         for key, f in SCENE_DERIVED[name].items():
             try:
                 derived["scene"][key] = f(scene)
-            except (KeyError, IndexError, TypeError, ZeroDivisionError):
+            except (KeyError, IndexError, TypeError, ValueError, ZeroDivisionError):
                 derived["scene"][key] = None
     if name in COST_TARGETS:
         derived.update(cost_summary(name, exp_dir) or {})
@@ -936,9 +1368,22 @@ def render(name, exp_dir):
         ratio = error_ratio(name, exp_dir)
         if ratio is not None:
             derived["error_ratio"] = ratio
+    if name in LOCAL_ORDERS:
+        derived[LOCAL_ORDERS[name][3]] = local_order(name, exp_dir)
+    if name in MAP_STATS:
+        stats = energy_map_stats(name, exp_dir, scene)
+        if stats is not None:
+            derived["map"] = stats
+    if name in KERNEL_TIMING:
+        derived["kernel"] = kernel_summary(name, s, run, scene)
+    if name in COST_TARGETS:
+        timing_text = cost_timing_table(name, s, summary_path, derived)
+    elif name in KERNEL_TIMING:
+        timing_text = kernel_timing_table(name, s, summary_path, derived)
+    else:
+        timing_text = timing_table(name, s, summary_path, cross)
     files = {"table": results_table(name, s, summary_path),
-             "timing": (cost_timing_table(name, s, summary_path, derived) if name in COST_TARGETS
-                        else timing_table(name, s, summary_path, cross)),
+             "timing": timing_text,
              "macros": macros_file(name, s, scene, derived, summary_path)}
     if name in ORDER_TABLES:
         files["orders"] = orders_table(name, s, scene, summary_path)
