@@ -97,7 +97,7 @@ void run(Context& ctx) {
   const std::size_t npoints = xs.size() * ys.size();
   const double l = s.real("pendulum.l"), m = s.real("pendulum.m"), k = s.real("pendulum.k"), g = s.real("pendulum.g");
   const double dt = s.real("dt");
-  const EnergyMapParams P{l, m, k, g, dt, std::llround(s.real("t_max") / dt), s.real("divergence.blowup")};
+  const EnergyMapParams P{l, m, k, g, dt, steps_to(s.real("t_max"), dt), s.real("divergence.blowup")};
   const auto kernels = energy_map_kernels();
   const EnergyMapKernel kernel = kernels.front().run;
 

@@ -157,13 +157,6 @@ OscillatorRuns oscillator_runs(const State& z0, double h, double k, std::int64_t
   return {run_se(z0, h, n), run_se_compensated(z0, h, k, n), run_rk4(z0, h, n)};
 }
 
-std::int64_t steps_to(double t_end, double h) { return std::llround(t_end / h); }
-
-json fit_json(const OrderFit& f) {
-  return {{"order", f.order}, {"log10_c", f.log10_c}, {"r2", f.r2}, {"points", f.points},
-          {"h_min", f.h_min}, {"h_max", f.h_max}};
-}
-
 // log-log interpolation of err(wall) at `wall`, on a curve sorted by wall time; NaN outside it.
 double error_at_wall_time(std::vector<std::pair<double, double>> curve, double wall) {
   std::sort(curve.begin(), curve.end());
@@ -325,7 +318,7 @@ void run(Context& ctx) {
   const auto fit = [&](const char* name, const std::vector<double>& err, double fit_floor) {
     const OrderFit f = fit_order(hs, err, fit_floor);
     orders[name] = f.order;
-    fits[name] = fit_json(f);
+    fits[name] = to_json(f);
     order_csv.row(name, f.order, f.log10_c, f.r2, f.points, f.h_min, f.h_max);
   };
   fit("ee_decay", ee_decay, floor_at(s.real("decay.y0")));

@@ -14,6 +14,7 @@
 
 #include <boost/numeric/odeint.hpp>
 
+#include "geomint/integrators/integrate.hpp"
 #include "geomint/integrators/rowlands.hpp"
 #include "geomint/integrators/stormer_verlet.hpp"
 #include "geomint/observables/error_norms.hpp"
@@ -111,14 +112,7 @@ State final_run(const std::string& method, const Sys& sys, const State& z0, doub
   return with_method(method, sys, [&](const auto& m) { return integrate_processed(m, z0, h, n); });
 }
 
-std::int64_t steps_to(double t_end, double h) { return std::llround(t_end / h); }
-
 State state_of(const std::vector<double>& row) { return make_state<2>(Vec<2>(row[0], row[1]), Vec<2>(row[2], row[3])); }
-
-json fit_json(const OrderFit& f) {
-  return {{"order", f.order}, {"log10_c", f.log10_c}, {"r2", f.r2}, {"points", f.points},
-          {"h_min", f.h_min}, {"h_max", f.h_max}};
-}
 
 Schema schema() {
   Schema s;
@@ -227,7 +221,7 @@ void run_with(Context& ctx, const Sys& sys) {
                                                std::tuple{"_phase", &ph, phase_floor}}) {
         const OrderFit f = fit_order(hs, *err, floor);
         o[name + suffix] = f.order;
-        if (i == 0) fits[name + suffix] = fit_json(f);
+        if (i == 0) fits[name + suffix] = to_json(f);
         order_csv.row(static_cast<std::int64_t>(i), name + suffix, f.order, f.log10_c, f.r2, f.points, f.h_min, f.h_max);
         if (std::string(suffix) == "_phase")
           for (std::size_t j = 0; j < nh; ++j)

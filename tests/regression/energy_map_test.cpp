@@ -11,21 +11,16 @@
 
 #include <nlohmann/json.hpp>
 
+#include "summary.hpp"
+
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 
 namespace {
 
-const fs::path dir = fs::path(GEOMINT_TEST_RESULTS) / "energy_map";
+const fs::path dir = results_dir("energy_map");
 
-const json& summary() {
-  static const json s = [] {
-    std::ifstream in(dir / "summary.json");
-    if (!in) throw std::runtime_error("no summary.json in " + dir.string() + " (run the quick_run fixture)");
-    return json::parse(in);
-  }();
-  return s;
-}
+const json& summary() { return summary_of("energy_map"); }
 
 std::string read(const fs::path& p) {
   std::ifstream in(p);

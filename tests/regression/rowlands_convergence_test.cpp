@@ -8,21 +8,16 @@
 
 #include <nlohmann/json.hpp>
 
+#include "summary.hpp"
+
 namespace fs = std::filesystem;
 using json = nlohmann::json;
 
 namespace {
 
-const fs::path dir = fs::path(GEOMINT_TEST_RESULTS) / "rowlands_convergence";
+const fs::path dir = results_dir("rowlands_convergence");
 
-const json& summary() {
-  static const json s = [] {
-    std::ifstream in(dir / "summary.json");
-    if (!in) throw std::runtime_error("no summary.json in " + dir.string() + " (run the quick_run fixture)");
-    return json::parse(in);
-  }();
-  return s;
-}
+const json& summary() { return summary_of("rowlands_convergence"); }
 
 void expect_order(const char* key, double expected, double tol) {
   const auto& all = summary()["orders_by_initial"];

@@ -1,9 +1,13 @@
 #pragma once
 // Drive a one-step method for n steps with an integer step counter
 // (t_j = j*h is computed by the observer, never accumulated).
+#include <cmath>
 #include <cstdint>
 
 namespace geomint {
+
+// The number of steps of size h to t_end (scenes check that h divides t_end).
+inline std::int64_t steps_to(double t_end, double h) { return std::llround(t_end / h); }
 
 // Calls observe(j, z_j) for j = 0..n and returns z_n.
 template <class Step, class State, class Observer>

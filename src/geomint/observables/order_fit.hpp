@@ -3,6 +3,8 @@
 #include <span>
 #include <vector>
 
+#include <nlohmann/json.hpp>
+
 namespace geomint {
 
 struct OrderFit {
@@ -18,5 +20,8 @@ struct OrderFit {
 // (points at the round-off plateau would flatten the slope). Throws
 // std::invalid_argument if fewer than 3 points remain.
 OrderFit fit_order(std::span<const double> h, std::span<const double> err, double roundoff_floor);
+
+// The fit as summary.json reports it: order, log10_c, r2, points, h_min, h_max.
+nlohmann::ordered_json to_json(const OrderFit& f);
 
 }  // namespace geomint
