@@ -8,7 +8,7 @@
 
 namespace geomint {
 
-OrderFit fit_order(std::span<const double> h, std::span<const double> err, double roundoff_floor) {
+OrderFit fit_order(std::span<const double> h, std::span<const double> err, double roundoff_floor, const char* what) {
   if (h.size() != err.size()) throw std::invalid_argument("fit_order: h and err differ in length");
   OrderFit fit;
   fit.used.assign(h.size(), false);
@@ -25,7 +25,7 @@ OrderFit fit_order(std::span<const double> h, std::span<const double> err, doubl
   }
   fit.points = static_cast<int>(x.size());
   if (fit.points < 3) {
-    throw std::invalid_argument("fit_order: only " + std::to_string(fit.points) +
+    throw std::invalid_argument(std::string(what) + ": only " + std::to_string(fit.points) +
                                 " points above the round-off floor; at least 3 are needed");
   }
   const double n = fit.points;

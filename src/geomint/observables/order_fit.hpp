@@ -19,7 +19,8 @@ struct OrderFit {
 // Fits over the points whose error is finite and above `roundoff_floor`
 // (points at the round-off plateau would flatten the slope). Throws
 // std::invalid_argument if fewer than 3 points remain.
-OrderFit fit_order(std::span<const double> h, std::span<const double> err, double roundoff_floor);
+OrderFit fit_order(std::span<const double> h, std::span<const double> err, double roundoff_floor,
+                  const char* what = "fit_order");
 
 // The fit as summary.json reports it: order, log10_c, r2, points, h_min, h_max.
 nlohmann::ordered_json to_json(const OrderFit& f);

@@ -1,7 +1,7 @@
 #pragma once
 // A system wrapper that counts force evaluations, for the work-precision
-// figures: every evaluation of a gradient (H_q, U_q, force) or of a
-// Hessian-vector product U_qq v counts one (for the elastic pendulum a
+// figures: every evaluation of a gradient (H_q, U_q, force), of a
+// Hessian-vector product U_qq v or of a Hessian U_qq counts one (for the elastic pendulum a
 // Hessian-vector product costs about one gradient). Used in counting runs
 // only, never in timed runs.
 #include <cstdint>
@@ -40,6 +40,11 @@ struct Counting {
   Vec<D> force(const Vec<D>& q) const requires requires(const Sys& s) { s.force(q); } {
     ++*force_evals;
     return sys.force(q);
+  }
+  double mass() const requires requires(const Sys& s) { s.mass(); } { return sys.mass(); }
+  Mat<D> U_qq(const Vec<D>& q) const requires requires(const Sys& s) { s.U_qq(q); } {
+    ++*force_evals;
+    return sys.U_qq(q);
   }
   Vec<D> U_qq_times(const Vec<D>& q, const Vec<D>& v) const requires requires(const Sys& s) { s.U_qq_times(q, v); } {
     ++*force_evals;

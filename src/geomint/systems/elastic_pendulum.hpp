@@ -27,6 +27,10 @@ struct SpringTerm {
     const double r = q.norm();
     return k * ((1.0 - l / r) * v + (l / (r * r * r)) * q.dot(v) * q);
   }
+  Mat<2> U_qq(const Vec<2>& q) const {  // k [(1 - l/r) I + (l/r^3) q q^T]
+    const double r = q.norm();
+    return k * ((1.0 - l / r) * Mat<2>::Identity() + (l / (r * r * r)) * q * q.transpose());
+  }
 };
 
 // U = -m g y: gravity along +y (downwards), 000 eq. (73).
@@ -35,6 +39,7 @@ struct GravityTerm {
   double U(const Vec<2>& q) const { return -m * g * q[1]; }
   Vec<2> U_q(const Vec<2>&) const { return Vec<2>(0.0, -m * g); }
   Vec<2> U_qq_times(const Vec<2>&, const Vec<2>&) const { return Vec<2>::Zero(); }
+  Mat<2> U_qq(const Vec<2>&) const { return Mat<2>::Zero(); }
 };
 
 // H = |p|^2/(2m) + sum of the potential terms: 000 eq. (73) with SpringTerm and GravityTerm.
@@ -59,6 +64,10 @@ struct ElasticPendulumCartesian {
     return std::apply([&](const auto&... t) { return (Vec<2>::Zero() + ... + t.U_qq_times(q, v)).eval(); }, terms);
   }
   Vec<2> force(const Vec<2>& q) const { return -U_q(q); }
+  Mat<2> U_qq(const Vec<2>& q) const {
+    return std::apply([&](const auto&... t) { return (Mat<2>::Zero() + ... + t.U_qq(q)).eval(); }, terms);
+  }
+  double mass() const { return m; }
 
   double H(const State& z) const { return T(z.p) + U(z.q); }  // (73)
   Vec<2> H_q(const Vec<2>& q, const Vec<2>&) const { return U_q(q); }

@@ -1,0 +1,50 @@
+// Regression: the quick scene of lobatto_table reproduces 001 Table 1 and the
+// claims around it (order 6, stability bound (10), symplecticity), and the
+// nonlinear extension.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "summary.hpp"
+
+using json = nlohmann::json;
+
+namespace {
+const json& summary() { return summary_of("lobatto_table"); }
+}  // namespace
+
+TEST(LobattoTable, Table1WithinThreePercent) {
+  const auto& pub = summary()["published"];
+  const auto& rep = summary()["reproduced"];
+  for (const char* q : {"p", "q", "H"})
+    for (int n : {10, 20, 40}) {
+      const std::string key = std::string(q) + "_err_N" + std::to_string(n);
+      EXPECT_NEAR(rep[key].get<double>(), pub[key].get<double>(), 0.03 * pub[key].get<double>()) << key;
+    }
+  for (int n : {10, 20, 40})  // the discrete energy (15) is kept to round-off
+    EXPECT_LT(rep["Hd_err_N" + std::to_string(n)].get<double>(), 1e-13);
+}
+
+TEST(LobattoTable, SixthOrderOnTheOscillatorAndNonlinearSystems) {
+  const auto& o = summary()["orders"];
+  for (const char* key : {"lobatto_p", "lobatto_q", "lobatto_H", "lobatto_nonlinear_pendulum", "lobatto_elastic_pendulum"})
+    EXPECT_NEAR(o[key].get<double>(), 6.0, 0.3) << key;
+  EXPECT_NEAR(o["simpson"].get<double>(), 4.0, 0.2);
+  EXPECT_NEAR(o["midpoint"].get<double>(), 2.0, 0.1);
+}
+
+TEST(LobattoTable, StabilityBoundAndRunsAroundIt) {
+  const auto& r = summary()["reproduced"];
+  EXPECT_NEAR(r["stability_bound"].get<double>(), std::sqrt(42.0 - 6.0 * std::sqrt(29.0)), 1e-9);  // (10)
+  EXPECT_EQ(r["bound_runs"]["0.98999999999999999"]["diverged_at_step"].get<long>(), -1);
+  EXPECT_GT(r["bound_runs"]["1.01"]["diverged_at_step"].get<long>(), 0);
+}
+
+TEST(LobattoTable, NonlinearMapsAreSymplectic) {
+  const auto& r = summary()["reproduced"];
+  EXPECT_LT(r["symplecticity_defect_pendulum"].get<double>(), 1e-10);
+  EXPECT_LT(r["symplecticity_defect_elastic"].get<double>(), 1e-10);
+}
