@@ -103,3 +103,8 @@ TEST(Cli, RowlandsUnknownMethod) {
   expect_rejected("--set methods=[\\\"sv\\\",\\\"leapfrog\\\"]", {"methods", "each one of"},
                   bin_of("rowlands_convergence"));
 }
+
+TEST(Cli, LobattoMeshesBeyondTheStabilityBound) {
+  expect_rejected("--set meshes=[2,10,20]", {"meshes", "unstable for h omega >= sqrt(42 - 6 sqrt(29))"},
+                  bin_of("lobatto_table"));
+}
