@@ -19,9 +19,15 @@ A known experiment without results gets placeholder files ("not yet reproduced")
 and its macros are defined as "n/a", so that main.tex always compiles.
 
 Each published key is paired with summary["orders"][key] if present, else with
-summary["reproduced"][key]. Orders are printed to 3 decimals; other values to
+summary["reproduced"][key]. A published value is a number or an object of numbers (one
+value per parameter, e.g. per step size, paired key by key with an object of numbers or
+null). An experiment in RESULTS_TABLES has its own table layout (lobatto_table: Table 1 of
+001 with published and reproduced values side by side, and the growth rates of its Fig. 2
+beside their value in exact arithmetic, from the closed form of 001 eqs. (13)-(14));
+DERIVED_SUMMARIES adds quantities computed from its CSV files and scene for the macros.
+Orders are printed to 3 decimals; other values to
 4 significant digits in the tables and 2 in the macros, in scientific notation
-(plain LaTeX, $1.8\times10^{-15}$) below 1e-3. The crossover of two methods'
+(plain LaTeX, $1.8\\times10^{-15}$) below 1e-3. The crossover of two methods'
 work-precision curves (CROSSOVERS), and the cost of reaching given error levels and
 the errors at equal wall time (COST_TARGETS), are read from <name>/timing.csv; ratios
 of two methods' errors (ERROR_RATIOS) from another CSV of <name>/; the scene
@@ -121,12 +127,20 @@ METHODS = {
         "odeint_rkn_sb3a": r"odeint \texttt{symplectic\_rkn\_\allowbreak sb3a\_mclachlan}",
         "odeint_velocity_verlet": r"odeint \texttt{velocity\_verlet}",
     },
+    "lobatto_table": {
+        "lobatto": r"Lobatto (P3, (2))",
+        "simpson": r"Simpson (P2)",
+        "midpoint": r"Implicit midpoint",
+        "odeint_rk4": r"odeint \texttt{runge\_kutta4}",
+        "odeint_rkf78": r"odeint \texttt{runge\_kutta\_\allowbreak fehlberg78}",
+    },
 }
 
 # What "error" means in the timing table of an experiment (LaTeX).
 ERROR_NAMES = {
     "euler_compensation": r"$\max_{t_j\le T}|H_j-H_0|$",
     "rowlands_convergence": r"the $\ell^2$ phase error at $t_{\max}$",
+    "lobatto_table": r"the phase-space error $|z_J-z(t_{\text{end}})|_2$",
 }
 
 # Crossover of two work-precision curves, read from <dir>/timing.csv
@@ -147,6 +161,16 @@ COST_TARGETS = {
         "error": "phase_err", "targets": [1e-6, 1e-8], "equal_wall": "sv",
         "legend": r"St\"ormer--Verlet: (26)--(28); Rowlands, $h^2/12$: the kernel (31) with the "
                   r"processors (32)--(33), coefficient $h^2/12$; Rowlands, cheap: the kernel with (34)--(37).",
+    },
+    "lobatto_table": {
+        "error": "error", "targets": [1e-10, 1e-12], "equal_wall": "odeint_rkf78",
+        "evals_name": r"evaluations of $V'$ and $V''$",
+        "run_note": r"One run integrates the pendulum $L=\dot q^2/2+\cos q$ from $q(0)=1$, $p(0)=0$ "
+                    r"to $t_{\text{end}}$ with fixed steps.",
+        "legend": r"Lobatto and Simpson: the Galerkin variational schemes built from their definition, "
+                  r"internal values by Newton's method with the exact Jacobian; implicit midpoint: Newton on "
+                  r"the midpoint. The two odeint steppers are explicit and not symplectic; "
+                  r"\texttt{runge\_kutta\_fehlberg78} is used with fixed steps (order 8).",
     },
 }
 
@@ -269,6 +293,379 @@ SCENE_DERIVED = {
                                      + sc["pendulum"]["m"] * sc["pendulum"]["g"] / sc["pendulum"]["k"]),
     },
 }
+
+# ---------------------------------------------------------------------------
+# lobatto_table (001): Table 1 side by side, the growth rates of Fig. 2, the closed form of (13)-(14).
+# ---------------------------------------------------------------------------
+
+# Rows of Table 1: (key prefix of summary["published"] and ["reproduced"] as <prefix>_err_N<N>,
+# label, key of summary["orders"] or None, published order as printed (LaTeX), format of the
+# reproduced errors).
+LOBATTO_ROWS = [
+    ("p", r"$p$", "lobatto_p", "6", "sci4"),
+    ("q", r"$q$", "lobatto_q", "6", "sci4"),
+    ("H", r"$H(p,q)$", "lobatto_H", "6", "sci4"),
+    ("Hd", r"$H_d(p,q)$ (15)", None, r"\text{exact}", "err"),
+]
+# Rows of <dir>/table1.csv beyond the paper's Table 1: (column, label, key of summary["orders"]).
+LOBATTO_EXTRA_ROWS = [
+    ("simpson_q_err", r"$q$, Simpson", "simpson"),
+    ("midpoint_q_err", r"$q$, midpoint", "midpoint"),
+]
+# Macro names of the first, second, ... entry of a list of the scene (long_run.h, stable intervals).
+ORDINALS = ["One", "Two", "Three", "Four", "Five", "Six"]
+
+
+def lobatto_map(h, m, w):
+    """(delta~, a, b, c) of 001 eq. (14): Phi = [[a, b], [c, a]] / delta~ acting on (p, q)."""
+    x = (h * w) ** 2
+    dt = 1 + x / 30 + x * x / 1800
+    a = 1 - 7 * x / 15 + 23 * x * x / 900 - x ** 3 / 3600
+    b = m * h * w * w / 43200 * (x - 60) * (x * x - 84 * x + 720)
+    c = h / m * (1 - 2 * x / 15 + x * x / 300)
+    return dt, a, b, c
+
+
+def lobatto_exact_orbit(h, m, w, A):
+    """The orbit of (13)-(14) from q = A, p = 0 in exact arithmetic where b < 0 < c (the first and
+    the third stability interval): q_j = A cos(j theta), p_j = -sqrt(-b/c) A sin(j theta), so
+    H_j - H_0 = K sin^2(j theta). Returns {theta, K, H0, Hd0}, or None where b < 0 < c fails."""
+    dt, a, b, c = lobatto_map(h, m, w)
+    if not (b < 0 < c and dt > 0):
+        return None
+    theta = math.atan2(math.sqrt(-b * c), a)  # cos theta = a/delta~, sin theta = sqrt(-bc)/delta~ (det = 1)
+    return {"theta": theta, "K": 0.5 * A * A * (-b / (m * c) - m * w * w),
+            "H0": 0.5 * m * w * w * A * A, "Hd0": -b * A * A / (2 * dt)}
+
+
+def lsq_slope(ys):
+    """Least-squares slope of ys against their index."""
+    n = len(ys)
+    if n < 2:
+        return None
+    mx, my = (n - 1) / 2, sum(ys) / n
+    sxx = sum((i - mx) ** 2 for i in range(n))
+    return sum((i - mx) * (y - my) for i, y in enumerate(ys)) / sxx
+
+
+def lobatto_exact_growth(h, m, w, A, periods, windows):
+    """Fig. 2's growth rate in exact arithmetic: the least-squares slope, per period, of the window
+    maxima of |H_j - H_0| = |K| sin^2(j theta) over the steps j = 1..n (windows of n // windows steps,
+    complete windows only, as the executable), and the number of periods after which a sample
+    first reaches the peak |K|. With N = round(T/h) steps per period, j theta = 2 pi k/N + j eps on
+    the residue class j = k mod N; within a window each class moves by at most N eps per step, so its
+    maximum is at an end of the window or at a peak inside it. None if the orbit or N is unsuitable."""
+    orb = lobatto_exact_orbit(h, m, w, A)
+    T = 2 * math.pi / w
+    N = round(T / h)
+    if orb is None or N < 1:
+        return None
+    eps = orb["theta"] - 2 * math.pi / N
+    if abs(N * eps) > 1e-3:
+        return None
+    n = round(periods * T / h)
+    W = max(1, n // windows)
+    maxima = []
+    half = math.pi / 2
+    for i in range(n // W):
+        s, e = i * W + 1, (i + 1) * W
+        best = 0.0
+        for k in range(N):
+            j0, j1 = s + (k - s) % N, e - (e - k) % N
+            if j0 > e:
+                continue
+            phi = 2 * math.pi * k / N
+            a0, a1 = phi + j0 * eps, phi + j1 * eps
+            lo, hi = min(a0, a1), max(a0, a1)
+            peak = half + math.pi * math.ceil((lo - half) / math.pi)
+            best = max(best, 1.0 if peak <= hi else max(math.sin(a0) ** 2, math.sin(a1) ** 2))
+        maxima.append(abs(orb["K"]) * best)
+    slope = lsq_slope(maxima)
+    # periods until a sample first reaches the peak (0 if one starts on it, as for N divisible by 4)
+    dist = []
+    for k in range(N):
+        phi = 2 * math.pi * k / N
+        d = ((half - phi) if eps > 0 else (phi - half)) % math.pi
+        dist.append(0.0 if min(d, math.pi - d) < 1e-12 else d)
+    to_peak = min(dist) / abs(eps) * h / T if eps != 0 else None
+    return {"slope": None if slope is None else slope / (W * h / T), "K": orb["K"], "bound": abs(orb["K"]),
+            "H0": orb["H0"], "Hd0": orb["Hd0"], "eps": eps, "periods_to_peak": to_peak,
+            "first": maxima[0] if maxima else None, "last": maxima[-1] if maxima else None}
+
+
+def keyed_by_h(d, h):
+    """d[key] for the key of d (a JSON object keyed by formatted step sizes) equal to h, else None."""
+    if not isinstance(d, dict):
+        return None
+    for k, v in d.items():
+        try:
+            if math.isclose(float(k), h, rel_tol=1e-12):
+                return v
+        except ValueError:
+            continue
+    return None
+
+
+def stable_intervals(rows, col, tol=1e-12):
+    """[[lo, hi], ...] of the scan points (h_omega) at which rows[col] <= 1 + tol."""
+    out, start, prev = [], None, None
+    for r in rows:
+        hw, rho = float(r["h_omega"]), float(r[col])
+        if rho <= 1 + tol and start is None:
+            start = hw
+        if not rho <= 1 + tol and start is not None:
+            out.append([start, prev])
+            start = None
+        prev = hw
+    if start is not None:
+        out.append([start, prev])
+    return out
+
+
+def table1_meshes(s):
+    """The meshes N of Table 1, from the keys p_err_N<N> of summary["published"], ascending."""
+    ns = []
+    for k in (s.get("published") or {}):
+        if k.startswith("p_err_N") and k[len("p_err_N"):].isdigit():
+            ns.append(int(k[len("p_err_N"):]))
+    return sorted(ns)
+
+
+def lobatto_summary(s, scene, exp_dir):
+    """Derived quantities of lobatto_table for the tables and macros (missing inputs give None)."""
+    pub, rep = s.get("published") or {}, s.get("reproduced") or {}
+    osc = scene.get("oscillator") if isinstance(scene, dict) else None
+    try:
+        m, w, A = (float(osc[k]) for k in ("m", "omega", "amplitude"))
+    except (TypeError, KeyError, ValueError):
+        m = w = A = None
+    out = {"table": {}, "growth": [], "stable": {}, "bound_runs": {}, "nonlinear": {}}
+    # Table 1 against the published three digits
+    agree = count = 0
+    dev = []
+    for prefix in ("p", "q", "H"):
+        for N in table1_meshes(s):
+            key = f"{prefix}_err_N{N}"
+            p, r = pub.get(key), rep.get(key)
+            if is_number(p) and is_number(r) and p != 0:
+                count += 1
+                agree += f"{p:.2e}" == f"{r:.2e}"
+                dev.append(abs(r - p) / abs(p))
+    out["table"].update({"agree": agree, "count": count, "max_dev": max(dev) if dev else None})
+    hd_rel = []
+    for i, N in enumerate(table1_meshes(s)):
+        orb = lobatto_exact_orbit(2 * math.pi / w / N, m, w, A) if w else None
+        r = rep.get(f"Hd_err_N{N}")
+        if orb and is_number(r):
+            out["table"][f"hd_rel_{i}"] = r / orb["Hd0"]
+            out["table"][f"hd0_{i}"] = orb["Hd0"]
+            hd_rel.append(r / orb["Hd0"])
+    hd = [rep.get(f"Hd_err_N{N}") for N in table1_meshes(s)]
+    hd_pub = [pub.get(f"Hd_err_N{N}") for N in table1_meshes(s)]
+    out["table"]["hd_min"] = min((v for v in hd if is_number(v)), default=None)
+    out["table"]["hd_max"] = max((v for v in hd if is_number(v)), default=None)
+    out["table"]["hd_pub_min"] = min((v for v in hd_pub if is_number(v)), default=None)
+    out["table"]["hd_pub_max"] = max((v for v in hd_pub if is_number(v)), default=None)
+    out["table"]["hd_rel_min"] = min(hd_rel, default=None)
+    out["table"]["hd_rel_max"] = max(hd_rel, default=None)
+    # Fig. 2: per step size of long_run.h
+    long_run = scene.get("long_run") if isinstance(scene, dict) else None
+    hs = long_run.get("h") if isinstance(long_run, dict) else None
+    if isinstance(long_run, dict) and is_number(long_run.get("periods")) and is_number(long_run.get("windows")):
+        out["window_periods"] = long_run["periods"] / long_run["windows"]
+    fig2 = read_csv_rows(os.path.join(exp_dir, "fig2_energy.csv"),
+                         ("h", "period", "Hd_err_plain", "Hd_err_compensated", "H_err"))
+    if isinstance(hs, list) and all(is_number(h) for h in hs):
+        for i, h in enumerate(hs):
+            g = {"h": h, "steps_per_period": (2 * math.pi / w) / h if w else None,
+                 "pub": keyed_by_h(pub.get("energy_growth_rate"), h),
+                 "rep": keyed_by_h(rep.get("energy_growth_rate"), h),
+                 "hd": keyed_by_h(rep.get("energy_growth_rate_Hd"), h),
+                 "hd_comp": keyed_by_h(rep.get("energy_growth_rate_Hd_compensated"), h)}
+            ex = None
+            if w and is_number(long_run.get("periods")) and is_number(long_run.get("windows")):
+                ex = lobatto_exact_growth(h, m, w, A, long_run["periods"], int(long_run["windows"]))
+            if ex:
+                g.update({"exact": ex["slope"], "bound": ex["bound"], "periods_to_peak": ex["periods_to_peak"],
+                          "exact_first": ex["first"], "exact_last": ex["last"], "ratio": ex["H0"] / ex["Hd0"]})
+                if is_number(g["hd"]):
+                    # the drift of H_d, seen in H: (H_0 / H_d(0)) |slope of |H_d - H_d(0)||
+                    g["roundoff"] = ex["H0"] / ex["Hd0"] * abs(g["hd"])
+                    # |det Phi - 1| per step implied by that drift
+                    g["det_defect"] = abs(g["hd"]) * h / (2 * math.pi / w) / ex["Hd0"]
+                if is_number(g["rep"]) and is_number(ex["slope"]):
+                    g["rep_minus_exact"] = g["rep"] - ex["slope"]
+            if fig2:
+                rows = [r for r in fig2 if math.isclose(float(r["h"]), h, rel_tol=1e-12)]
+                if rows:
+                    g["hd_plain_max"] = max(float(r["Hd_err_plain"]) for r in rows)
+                    g["hd_comp_max"] = max(float(r["Hd_err_compensated"]) for r in rows)
+                    g["H_first"], g["H_last"] = float(rows[0]["H_err"]), float(rows[-1]["H_err"])
+                    g["H_change"] = g["H_last"] - g["H_first"]
+                    if is_number(g.get("ratio")):
+                        g["hd_plain_max_in_H"] = g["ratio"] * g["hd_plain_max"]
+            out["growth"].append(g)
+    # stability
+    sets = rep.get("stable_set_h_omega")
+    if isinstance(sets, list):
+        out["stable"]["count"] = len(sets)
+        out["stable"]["intervals"] = [{"lo": iv[0], "hi": iv[1]} if isinstance(iv, list) and len(iv) == 2 else {}
+                                      for iv in sets]
+    st = scene.get("stability") if isinstance(scene, dict) else None
+    if isinstance(st, dict) and all(is_number(st.get(k)) for k in ("hw_min", "hw_max", "points")) and st["points"] > 1:
+        out["stable"]["grid_step"] = (st["hw_max"] - st["hw_min"]) / (st["points"] - 1)
+    bound = rep.get("stability_bound")
+    if is_number(bound):
+        out["stable"]["h_over_T"] = bound / (2 * math.pi)  # the largest h/T of the first interval
+        out["stable"]["min_steps_per_period"] = 2 * math.pi / bound
+    scan = read_csv_rows(os.path.join(exp_dir, "stability.csv"),
+                         ("h_omega", "spectral_radius", "spectral_radius_simpson"))
+    if scan:
+        near = min(scan, key=lambda r: abs(float(r["h_omega"]) - math.pi))  # h = T/2
+        out["stable"]["hw_near_pi"], out["stable"]["rho_near_pi"] = float(near["h_omega"]), float(near["spectral_radius"])
+        simp = stable_intervals(scan, "spectral_radius_simpson")
+        out["stable"]["simpson"] = [{"lo": lo, "hi": hi} for lo, hi in simp]
+        out["stable"]["simpson_count"] = len(simp)
+    runs = rep.get("bound_runs")
+    if isinstance(runs, dict):
+        for k, v in runs.items():
+            try:
+                f = float(k)
+            except ValueError:
+                continue
+            if isinstance(v, dict):
+                side = "below" if f < 1 else "above"
+                out["bound_runs"][side] = dict(v, factor=f)
+    # Fig. 1: the largest errors of q and p over the steps of one period, per N and method
+    fig1 = {}
+    for i, N in enumerate(lookup(scene or {}, ("figure1", "meshes")) or []):
+        rows = read_csv_rows(os.path.join(exp_dir, f"fig1_N{int(N)}.csv"),
+                             ("t", "q_lobatto", "p_lobatto", "q_simpson", "p_simpson", "q_midpoint", "p_midpoint"))
+        if not rows or not w:
+            continue
+        e = {}
+        for meth in ("lobatto", "simpson", "midpoint"):
+            e[meth] = {"q": max(abs(float(r[f"q_{meth}"]) - A * math.cos(w * float(r["t"]))) for r in rows),
+                       "p": max(abs(float(r[f"p_{meth}"]) + m * w * A * math.sin(w * float(r["t"]))) for r in rows)}
+        fig1[i] = e
+    out["fig1"] = [fig1.get(i) for i in range(len(fig1))]
+    # nonlinear: Newton iterations and the points of the fits
+    nl = read_csv_rows(os.path.join(exp_dir, "nonlinear.csv"),
+                       ("h", "pendulum_err", "pendulum_newton_iterations", "elastic_err", "elastic_newton_iterations"))
+    atol = lookup(scene or {}, ("reference", "atol"))
+    if nl:
+        for sysname in ("pendulum", "elastic"):
+            its = [float(r[f"{sysname}_newton_iterations"]) for r in nl]
+            out["nonlinear"][f"{sysname}_it_min"], out["nonlinear"][f"{sysname}_it_max"] = min(its), max(its)
+            if is_number(atol):
+                fitted = [float(r["h"]) for r in nl if float(r[f"{sysname}_err"]) >= 100 * atol]
+                out["nonlinear"][f"{sysname}_fit_points"] = len(fitted)
+                out["nonlinear"][f"{sysname}_fit_hmin"] = min(fitted) if fitted else None
+        if is_number(atol):
+            out["nonlinear"]["floor"] = 100 * atol
+    return out
+
+
+def lobatto_results_table(name, s, src, derived):
+    """Table 1 of 001 with published and reproduced values side by side, and Fig. 2's growth rates."""
+    pub, rep, orders = s.get("published") or {}, s.get("reproduced") or {}, s.get("orders") or {}
+    meshes = table1_meshes(s)
+    lt = derived.get("lt") or {}
+    t1 = read_csv_rows(os.path.join(os.path.dirname(src), "table1.csv"), ["N"] + [c for c, _, _ in LOBATTO_EXTRA_ROWS])
+    nm = len(meshes)
+
+    def cell(v, kind):
+        if kind == "sci4":
+            c = sci(v, 4) if is_number(v) and math.isfinite(v) and v != 0 else fmt(v, "err")
+        elif kind == "pub":
+            c = sci(v, 3) if is_number(v) and math.isfinite(v) and v != 0 else fmt(v, "err")
+        else:
+            c = fmt(v, kind)
+        return math_cell(c)
+
+    lines = [HEADER.format(src=src)]
+    lines.append("\\begin{table}[htbp]\n\\centering\n\\footnotesize\n")
+    lines.append(f"\\caption{{Table~1 of [001], published (Pub.) and reproduced (Rep.): the largest absolute "
+                 "error over the steps $j=1,\\dots,N$ of one period, $N$ steps per period, for the harmonic "
+                 "oscillator with $m=1$, $\\omega=2\\pi$, $q(0)=\\pi/2$, $p(0)=0$: momentum $p$, state $q$, energy $H$ "
+                 "and discrete energy $H_d$. Published orders: the "
+                 "closest integer to the ratio of successive errors as a power of $2^{-1}$, as printed; reproduced "
+                 "orders: least-squares slopes of $\\log(\\text{error})$ against $\\log h$. Below the line (not in "
+                 "Table~1 of [001]): the state error of Simpson's scheme (P2 elements and Simpson's rule, [2] of [001]) "
+                 "and of the implicit midpoint rule in the same runs (\\texttt{table1.csv}).}\n")
+    lines.append(f"\\label{{tab:{name}-table}}\n")
+    lines.append("\\setlength{\\tabcolsep}{2.5pt}\n")
+    lines.append("\\begin{tabular}{@{}l" + "rr" * (nm + 1) + "@{}}\n\\toprule\n")
+    lines.append(" & " + " & ".join(f"\\multicolumn{{2}}{{c}}{{$N={N}$}}" for N in meshes)
+                 + " & \\multicolumn{2}{c}{Order} \\\\\n")
+    lines.append("".join(f"\\cmidrule(lr){{{2 + 2 * i}-{3 + 2 * i}}}" for i in range(nm))
+                 + f"\\cmidrule(l){{{2 + 2 * nm}-{3 + 2 * nm}}}\n")
+    lines.append("Quantity & " + " & ".join(["Pub.", "Rep."] * (nm + 1)) + " \\\\\n\\midrule\n")
+    for prefix, label, okey, porder, kind in LOBATTO_ROWS:
+        cells = []
+        for N in meshes:
+            cells += [cell(pub.get(f"{prefix}_err_N{N}"), "pub"), cell(rep.get(f"{prefix}_err_N{N}"), kind)]
+        cells += [f"${porder}$", cell(orders.get(okey), "order") if okey else "---"]
+        lines.append(f"{label} & " + " & ".join(cells) + " \\\\\n")
+    if t1:
+        lines.append("\\midrule\n")
+        by_n = {}
+        for r in t1:
+            try:
+                by_n[int(float(r["N"]))] = r
+            except ValueError:
+                raise Malformed(f"{src}: table1.csv: non-numeric N in row {r}") from None
+        for col, label, okey in LOBATTO_EXTRA_ROWS:
+            cells = []
+            for N in meshes:
+                v = by_n.get(N, {}).get(col)
+                try:
+                    v = float(v) if v is not None else None
+                except ValueError:
+                    v = None
+                cells += ["---", cell(v, "sci4")]
+            cells += ["---", cell(orders.get(okey), "order")]
+            lines.append(f"{label} & " + " & ".join(cells) + " \\\\\n")
+    lines.append("\\bottomrule\n\\end{tabular}\n")
+    tab = lt.get("table") or {}
+    if is_number(tab.get("count")) and tab["count"]:
+        lines.append("\\par\\smallskip\\parbox{\\linewidth}{\\footnotesize "
+                     f"${tab['agree']}$ of the ${tab['count']}$ reproduced errors of $p$, $q$ and $H$ round to the "
+                     f"three published digits; the largest relative deviation is {math_cell(fmt(tab['max_dev'], 'percent'))}. "
+                     "$H_d$: round-off in both (see the text).}\n")
+    lines.append("\\end{table}\n")
+    growth = lt.get("growth") or []
+    if growth:
+        lines.append("\n\\begin{table}[htbp]\n\\centering\n\\footnotesize\n")
+        lines.append(f"\\caption{{Fig.~2 of [001]: growth rate of the energy error over the long runs, per period. "
+                     "Published: the ``$\\ell^\\infty$ energy error growth rate'' of the caption of Fig.~2. "
+                     "Reproduced: the least-squares slope of the window maxima of $|H_j-H(0)|$ (\\texttt{fig2\\_energy.csv}). "
+                     "Exact arithmetic: the same slope for the orbit of (13)--(14) in closed form, "
+                     "$H_j-H(0)=K\\sin^2(j\\theta)$ (computed by \\texttt{paper\\_tables.py}). "
+                     "$H_d$ plain and compensated: the slopes of the window maxima of $|H_d-H_d(0)|$, with the "
+                     "update (13) added plainly and by compensated summation. Round-off in $H$: the plain $H_d$ slope "
+                     "times $H(0)/H_d(0)$, the change of $H$ that goes with a drift of $H_d$, to be compared "
+                     "with reproduced $-$ exact.}\n")
+        lines.append(f"\\label{{tab:{name}-growth}}\n")
+        lines.append("\\setlength{\\tabcolsep}{3pt}\n")
+        lines.append("\\begin{tabular}{@{}rrrrrrrrr@{}}\n\\toprule\n")
+        lines.append("$h$ & $N$ & Published & Reproduced & Exact & Reproduced & Round-off & "
+                     "\\multicolumn{2}{c}{$H_d$} \\\\\n")
+        lines.append("\\cmidrule(l){8-9}\n")
+        lines.append(" & & & & arithmetic & $-$ exact & in $H$ & plain & compensated \\\\\n\\midrule\n")
+        for g in growth:
+            cells = [math_cell(fmt(g.get("h"), "plain")), math_cell(fmt(g.get("steps_per_period"), "int")),
+                     cell(g.get("pub"), "pub"), cell(g.get("rep"), "sci4"), cell(g.get("exact"), "sci4"),
+                     cell(g.get("rep_minus_exact"), "err"), cell(g.get("roundoff"), "err"), cell(g.get("hd"), "err"), cell(g.get("hd_comp"), "err")]
+            lines.append(" & ".join(cells) + " \\\\\n")
+        lines.append("\\bottomrule\n\\end{tabular}\n\\end{table}\n")
+    return "".join(lines)
+
+
+# Experiment-specific derived quantities (derived[key] = function(summary, scene, exp_dir)) and
+# published-vs-reproduced tables (function(name, summary, summary_path, derived)).
+DERIVED_SUMMARIES = {"lobatto_table": ("lt", lobatto_summary)}
+RESULTS_TABLES = {"lobatto_table": lobatto_results_table}
 
 # Macros the text cites: (name, path into summary.json or a derived quantity, format).
 # A path starts with "summary", "scene" (run.json's resolved scene) or "derived".
@@ -500,6 +897,157 @@ MACROS = {
     ],
 }
 
+def _lt_growth_macros():
+    """The macros of lobatto_table for each step size of long_run.h (One, Two, ...)."""
+    out = []
+    for i, o in enumerate(ORDINALS[:3]):
+        g = ("derived", "lt", "growth", i)
+        out += [
+            (f"LTlongH{o}", ("scene", "long_run", "h", i), "plain"),
+            (f"LTstepsPerPeriod{o}", g + ("steps_per_period",), "int"),
+            (f"LTgrowthPub{o}", g + ("pub",), "sci3"),
+            (f"LTgrowthRep{o}", g + ("rep",), "sci4"),
+            (f"LTgrowthExact{o}", g + ("exact",), "sci4"),
+            (f"LTgrowthRoundoff{o}", g + ("roundoff",), "err"),
+            (f"LTgrowthRepMinusExact{o}", g + ("rep_minus_exact",), "err"),
+            (f"LTgrowthHd{o}", g + ("hd",), "err"),
+            (f"LTgrowthHdComp{o}", g + ("hd_comp",), "err"),
+            (f"LTdetDefect{o}", g + ("det_defect",), "err"),
+            (f"LTboundK{o}", g + ("bound",), "err"),
+            (f"LTperiodsToPeak{o}", g + ("periods_to_peak",), "sci"),
+            (f"LTratioHHd{o}", g + ("ratio",), "ns3"),
+            (f"LTHdPlainMax{o}", g + ("hd_plain_max",), "err"),
+            (f"LTHdCompMax{o}", g + ("hd_comp_max",), "err"),
+            (f"LTHdPlainMaxInH{o}", g + ("hd_plain_max_in_H",), "err"),
+            (f"LTHfirst{o}", g + ("H_first",), "sci4"),
+            (f"LTHlast{o}", g + ("H_last",), "sci4"),
+            (f"LTHchange{o}", g + ("H_change",), "err"),
+        ]
+    return out
+
+
+def _lt_table_macros():
+    """The macros of lobatto_table for Table 1 (meshes 10, 20, 40 of the paper scene)."""
+    out = []
+    for n, word in ((10, "Ten"), (20, "Twenty"), (40, "Forty")):
+        for prefix, mac in (("p", "p"), ("q", "q"), ("H", "H"), ("Hd", "Hd")):
+            kind = "err" if prefix == "Hd" else "sci4"
+            out.append((f"LT{mac}Err{word}", ("summary", "reproduced", f"{prefix}_err_N{n}"), kind))
+            out.append((f"LT{mac}Pub{word}", ("summary", "published", f"{prefix}_err_N{n}"), "sci3"))
+    for i, o in enumerate(ORDINALS[:3]):
+        out.append((f"LTmesh{o}", ("scene", "meshes", i), "int"))
+        out.append((f"LTHdZero{o}", ("derived", "lt", "table", f"hd0_{i}"), "ns3"))
+        out.append((f"LTHdRel{o}", ("derived", "lt", "table", f"hd_rel_{i}"), "err"))
+    return out
+
+
+def _lt_stability_macros():
+    out = []
+    for i, o in enumerate(ORDINALS[:3]):
+        out.append((f"LTstable{o}Lo", ("derived", "lt", "stable", "intervals", i, "lo"), "plain"))
+        out.append((f"LTstable{o}Hi", ("derived", "lt", "stable", "intervals", i, "hi"), "plain"))
+    for i, o in enumerate(ORDINALS[:2]):
+        out.append((f"LTsimpsonStable{o}Lo", ("derived", "lt", "stable", "simpson", i, "lo"), "plain"))
+        out.append((f"LTsimpsonStable{o}Hi", ("derived", "lt", "stable", "simpson", i, "hi"), "plain"))
+    for side, word in (("below", "Below"), ("above", "Above")):
+        b = ("derived", "lt", "bound_runs", side)
+        out += [(f"LT{word}Factor", b + ("factor",), "plain"),
+                (f"LT{word}Hw", b + ("h_omega",), "fixed3"),
+                (f"LT{word}Steps", b + ("steps",), "int"),
+                (f"LT{word}Diverged", b + ("diverged_at_step",), "int"),
+                (f"LT{word}Norm", b + ("max_norm_over_initial",), "sci3")]
+    return out
+
+
+def _lt_cost_macros():
+    out = []
+    for m, word in (("lobatto", "Lobatto"), ("simpson", "Simpson"), ("midpoint", "Midpoint"),
+                    ("odeint_rk4", "Rk"), ("odeint_rkf78", "Rkf")):
+        c = ("derived", "cost", m)
+        out += [(f"LTns{word}", ("summary", "timing", "ns_per_step", m), "ns"),
+                (f"LTevals{word}", c + ("evals_per_step",), "ratio"),
+                (f"LTminErr{word}", c + ("min_err",), "err"),
+                (f"LTeqErr{word}", c + ("err_at_equal_wall",), "err"),
+                (f"LTwall{word}Eten", c + ("wall_to", "1e-10"), "us"),
+                (f"LTwall{word}Etwelve", c + ("wall_to", "1e-12"), "us"),
+                (f"LTevalsTo{word}Eten", c + ("evals_to", "1e-10"), "int"),
+                (f"LTevalsTo{word}Etwelve", c + ("evals_to", "1e-12"), "int")]
+    out.append(("LTeqWall", ("derived", "equal_wall_s"), "us"))
+    return out
+
+
+MACROS["lobatto_table"] = [
+    # scene (run.json)
+    ("LTm", ("scene", "oscillator", "m"), "plain"),
+    ("LTomega", ("scene", "oscillator", "omega"), "plain"),
+    ("LTamp", ("scene", "oscillator", "amplitude"), "plain"),
+    ("LTfigMeshOne", ("scene", "figure1", "meshes", 0), "int"),
+    ("LTfigMeshTwo", ("scene", "figure1", "meshes", 1), "int"),
+    ("LTperiods", ("scene", "long_run", "periods"), "int"),
+    ("LTwindows", ("scene", "long_run", "windows"), "int"),
+    ("LTwindowPeriods", ("derived", "lt", "window_periods"), "plain"),
+    ("LTstabMin", ("scene", "stability", "hw_min"), "plain"),
+    ("LTstabMax", ("scene", "stability", "hw_max"), "plain"),
+    ("LTstabPoints", ("scene", "stability", "points"), "int"),
+    ("LTstabStep", ("derived", "lt", "stable", "grid_step"), "plain"),
+    ("LTnlHmax", ("scene", "nonlinear", "h"), "max:plain"),
+    ("LTnlHmin", ("scene", "nonlinear", "h"), "min:plain"),
+    ("LTnlHcount", ("scene", "nonlinear", "h"), "len:int"),
+    ("LTnlTend", ("scene", "nonlinear", "t_end"), "plain"),
+    ("LTnlQzero", ("scene", "nonlinear", "pendulum_q0"), "plain"),
+    ("LTnlElasticIc", ("scene", "nonlinear", "elastic_initial", 0), "vec"),
+    ("LTrtol", ("scene", "reference", "rtol"), "tol"),
+    ("LTatol", ("scene", "reference", "atol"), "tol"),
+    ("LTrepeats", ("scene", "timing", "repeats"), "int"),
+    ("LTrunWall", ("summary", "timing", "wall_s"), "seconds"),
+    # Table 1
+    ("LTtabAgree", ("derived", "lt", "table", "agree"), "int"),
+    ("LTtabCount", ("derived", "lt", "table", "count"), "int"),
+    ("LTtabMaxDev", ("derived", "lt", "table", "max_dev"), "percent"),
+    ("LTHdMin", ("derived", "lt", "table", "hd_min"), "err"),
+    ("LTHdMax", ("derived", "lt", "table", "hd_max"), "err"),
+    ("LTHdPubMin", ("derived", "lt", "table", "hd_pub_min"), "err"),
+    ("LTHdPubMax", ("derived", "lt", "table", "hd_pub_max"), "err"),
+    ("LTHdRelMin", ("derived", "lt", "table", "hd_rel_min"), "err"),
+    ("LTHdRelMax", ("derived", "lt", "table", "hd_rel_max"), "err"),
+] + _lt_table_macros() + [
+    # orders
+    ("LTorderP", ("summary", "orders", "lobatto_p"), "order"),
+    ("LTorderQ", ("summary", "orders", "lobatto_q"), "order"),
+    ("LTorderH", ("summary", "orders", "lobatto_H"), "order"),
+    ("LTorderSimpson", ("summary", "orders", "simpson"), "order"),
+    ("LTorderMidpoint", ("summary", "orders", "midpoint"), "order"),
+    ("LTorderPendulum", ("summary", "orders", "lobatto_nonlinear_pendulum"), "order"),
+    ("LTorderElastic", ("summary", "orders", "lobatto_elastic_pendulum"), "order"),
+    ("LTorderSimpsonPendulum", ("summary", "orders", "simpson_nonlinear_pendulum"), "order"),
+    ("LTorderMidpointPendulum", ("summary", "orders", "midpoint_nonlinear_pendulum"), "order"),
+    # stability
+    ("LTboundPub", ("summary", "published", "stability_bound"), "fixed5"),
+    ("LTbound", ("summary", "reproduced", "stability_bound"), "fixed5"),
+    ("LTstableCount", ("derived", "lt", "stable", "count"), "int"),
+    ("LTboundHoverT", ("derived", "lt", "stable", "h_over_T"), "sig4"),
+    ("LTboundMinN", ("derived", "lt", "stable", "min_steps_per_period"), "fixed3"),
+    ("LThwNearPi", ("derived", "lt", "stable", "hw_near_pi"), "plain"),
+    ("LTrhoNearPi", ("derived", "lt", "stable", "rho_near_pi"), "fixed3"),
+    ("LTsimpsonStableCount", ("derived", "lt", "stable", "simpson_count"), "int"),
+] + _lt_stability_macros() + _lt_growth_macros() + [
+    (f"LTfig{o}{meth.capitalize()}{var.upper()}", ("derived", "lt", "fig1", i, meth, var), "err")
+    for i, o in enumerate(ORDINALS[:2]) for meth in ("lobatto", "simpson", "midpoint") for var in ("q", "p")
+] + [
+    # nonlinear
+    ("LTsympPendulum", ("summary", "reproduced", "symplecticity_defect_pendulum"), "err"),
+    ("LTsympElastic", ("summary", "reproduced", "symplecticity_defect_elastic"), "err"),
+    ("LTnewtonPendMin", ("derived", "lt", "nonlinear", "pendulum_it_min"), "plain"),
+    ("LTnewtonPendMax", ("derived", "lt", "nonlinear", "pendulum_it_max"), "plain"),
+    ("LTnewtonElasticMin", ("derived", "lt", "nonlinear", "elastic_it_min"), "plain"),
+    ("LTnewtonElasticMax", ("derived", "lt", "nonlinear", "elastic_it_max"), "plain"),
+    ("LTnlFitPoints", ("derived", "lt", "nonlinear", "pendulum_fit_points"), "int"),
+    ("LTnlFitHmin", ("derived", "lt", "nonlinear", "pendulum_fit_hmin"), "plain"),
+    ("LTnlElasticFitPoints", ("derived", "lt", "nonlinear", "elastic_fit_points"), "int"),
+    ("LTnlFloor", ("derived", "lt", "nonlinear", "floor"), "tol"),
+] + _lt_cost_macros()
+
+
 NA = r"\textit{n/a}"
 
 
@@ -578,6 +1126,15 @@ def fmt(value, kind):
         return f"{value:.3f}"
     if kind == "sig7":
         return sig(value, 7)
+    if kind == "sig4":
+        return sig(value, 4)
+    if kind == "fixed5":
+        return f"{value:.5f}"
+    if kind in ("sci3", "sci4"):  # 3 or 4 significant digits, scientific below 1e-3 or from 1e4
+        if value == 0:
+            return "0"
+        n = int(kind[-1])
+        return sci(value, n) if abs(value) < 1e-3 or abs(value) >= 1e4 else sig(value, n)
     if kind == "us":  # seconds shown in microseconds
         return None if value <= 0 else sig(value * 1e6, 2)
     if kind == "tol":  # a tolerance: 10^{-14}, or m\times10^{e}
@@ -630,15 +1187,21 @@ def check_summary(path, s):
     orders = s.get("orders") or {}
     reproduced = s.get("reproduced") or {}
     for key, v in pub.items():
-        if not is_number(v):
-            raise Malformed(f'{path}: published "{key}" must be a number, got {json.dumps(v)}')
+        nested = isinstance(v, dict)  # one published value per parameter, e.g. per step size
+        if not (is_number(v) or (nested and all(is_number(x) for x in v.values()))):
+            raise Malformed(f'{path}: published "{key}" must be a number or an object of numbers, '
+                            f'got {json.dumps(v)}')
         if key in orders:
             r = orders[key]
         elif key in reproduced:
             r = reproduced[key]
         else:
             raise Malformed(f'{path}: published "{key}" has no value in "orders" or "reproduced"')
-        if r is not None and not is_number(r):
+        if nested:
+            if r is not None and not (isinstance(r, dict) and all(is_number(x) or x is None for x in r.values())):
+                raise Malformed(f'{path}: reproduced "{key}" must be an object of numbers or null '
+                                f'(as published), got {json.dumps(r)}')
+        elif r is not None and not is_number(r):
             raise Malformed(f'{path}: reproduced "{key}" must be a number or null, got {json.dumps(r)}')
     timing = s.get("timing") or {}
     nsps = timing.get("ns_per_step")
@@ -1013,6 +1576,15 @@ def results_table(name, s, src):
         is_order = key in orders
         r = orders[key] if is_order else reproduced[key]
         label = desc.get(key, tex_escape(key))
+        if isinstance(p, dict):  # one row per parameter
+            for sub, pv in p.items():
+                rv = r.get(sub) if isinstance(r, dict) else None
+                cells = ([fmt(pv, "porder"), fmt(rv, "order"), fmt(None if rv is None else rv - pv, "dorder")]
+                         if is_order else
+                         [general(pv), None if rv is None else general(rv), None if rv is None else general(rv - pv)])
+                lines.append(f"{label} (\\texttt{{{tex_escape(sub)}}}) & "
+                             + " & ".join(math_cell(c) for c in cells) + " \\\\\n")
+            continue
         if is_order:
             cells = [fmt(p, "porder"), fmt(r, "order"), fmt(None if r is None else r - p, "dorder")]
         else:
@@ -1143,14 +1715,16 @@ def cost_timing_table(name, s, src, derived):
     base = next((nsps[m] for m in nsps if is_number(nsps[m]) and nsps[m] > 0), None)
     first = tex_escape(names[0]) if names else ""
     lines.append("\\begin{table}[htbp]\n\\centering\n\\footnotesize\n")
-    lines.append(f"\\caption{{Cost of {experiment_title(name)}: time and force evaluations (gradients and "
-                 "Hessian--vector products) per step at the smallest $h$, cost relative to the first method, "
+    evals_name = cfg.get("evals_name", "force evaluations (gradients and Hessian--vector products)")
+    run_note = cfg.get("run_note", "One run goes from the first initial condition to $t_{\\max}$, "
+                                   "with pre- and postprocessing once.")
+    lines.append(f"\\caption{{Cost of {experiment_title(name)}: time and {evals_name} "
+                 "per step at the smallest $h$, cost relative to the first method, "
                  f"{err_name} of every method at the wall time of the most expensive run of "
                  f"\\texttt{{{tex_escape(cfg['equal_wall'])}}}, and the wall time and the force evaluations "
                  "with which each method first reaches the given error (log--log interpolation between the "
                  "measured step sizes of \\texttt{timing.csv}, not extrapolated; --- where the measured "
-                 "step sizes do not reach it). One run goes from the first initial condition to $t_{\\max}$, "
-                 "with pre- and postprocessing once." + (" " + cfg["legend"] if cfg.get("legend") else "")
+                 f"step sizes do not reach it). {run_note}" + (" " + cfg["legend"] if cfg.get("legend") else "")
                  + "}\n")
     lines.append(f"\\label{{tab:{name}-timing}}\n")
     lines.append("\\setlength{\\tabcolsep}{4pt}\n")
@@ -1376,13 +1950,18 @@ def render(name, exp_dir):
             derived["map"] = stats
     if name in KERNEL_TIMING:
         derived["kernel"] = kernel_summary(name, s, run, scene)
+    if name in DERIVED_SUMMARIES:
+        key, f = DERIVED_SUMMARIES[name]
+        derived[key] = f(s, scene, exp_dir)
     if name in COST_TARGETS:
         timing_text = cost_timing_table(name, s, summary_path, derived)
     elif name in KERNEL_TIMING:
         timing_text = kernel_timing_table(name, s, summary_path, derived)
     else:
         timing_text = timing_table(name, s, summary_path, cross)
-    files = {"table": results_table(name, s, summary_path),
+    table_text = (RESULTS_TABLES[name](name, s, summary_path, derived) if name in RESULTS_TABLES
+                  else results_table(name, s, summary_path))
+    files = {"table": table_text,
              "timing": timing_text,
              "macros": macros_file(name, s, scene, derived, summary_path)}
     if name in ORDER_TABLES:
