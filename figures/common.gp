@@ -118,3 +118,33 @@ summary_num(key) = (_s = system(sprintf("awk -v want='%s' '%s' '%s' 2>/dev/null"
 need_num(var, s) = (s eq "?") \
     ? sprintf("exit error \"%s: missing from %s/run.json or summary.json\"", var, results) \
     : sprintf("%s = %s", var, s)
+
+# ---- 001 Dubois & Rojas-Quintero, Lobatto variational integrator (figures/lobatto_table_*.gp) ----
+# The paper's method is blue (as the processed / compensated methods above), the comparison
+# schemes of its Fig. 1 and Table 1 orange (Simpson) and vermillion (implicit midpoint).
+C_LOB   = C_COMP       # Lobatto P3 variational scheme (13)–(14); nonlinear: Newton on the internal nodes
+C_SIMP  = '#E69F00'    # Simpson P2 variational scheme (001 ref. [2])
+C_MID   = C_SE         # implicit midpoint
+C_RKF78 = '#CC79A7'    # odeint Runge–Kutta–Fehlberg 7(8), fixed step
+# (odeint's RK4 uses C_RK4 and LS_RK4)
+LS_LOB   = 41; set style line LS_LOB   lc rgb C_LOB   lw 1.0 pt 4  ps 0.70   # open squares
+LS_SIMP  = 42; set style line LS_SIMP  lc rgb C_SIMP  lw 1.0 pt 12 ps 0.85   # open diamonds
+LS_MID   = 43; set style line LS_MID   lc rgb C_MID   lw 1.0 pt 7  ps 0.55   # filled circles
+LS_RKF78 = 44; set style line LS_RKF78 lc rgb C_RKF78 lw 1.0 pt 10 ps 0.70   # open inverted triangles
+LS_LOB2  = 45; set style line LS_LOB2  lc rgb C_LOB   lw 1.0 pt 5  ps 0.60   # filled squares: second quantity / problem
+LS_LOB3  = 46; set style line LS_LOB3  lc rgb C_LOB   lw 1.0 pt 8  ps 0.70   # open triangles: third quantity
+LS_LOB4  = 47; set style line LS_LOB4  lc rgb C_LOB   lw 1.0 pt 6  ps 0.65   # open circles: fourth quantity
+# fits and guides: dashed, in the method's colour, with its marker for the key sample; LS_<X>_FIT = LS_<X> + 10
+LS_LOB_FIT   = 51; set style line LS_LOB_FIT   lc rgb C_LOB   lw 0.9 dt (8,4) pt 4  ps 0.70
+LS_SIMP_FIT  = 52; set style line LS_SIMP_FIT  lc rgb C_SIMP  lw 0.9 dt (8,4) pt 12 ps 0.85
+LS_MID_FIT   = 53; set style line LS_MID_FIT   lc rgb C_MID   lw 0.9 dt (8,4) pt 7  ps 0.55
+LS_LOB2_FIT  = 55; set style line LS_LOB2_FIT  lc rgb C_LOB   lw 0.9 dt (8,4) pt 5  ps 0.60
+LS_LOB3_FIT  = 56; set style line LS_LOB3_FIT  lc rgb C_LOB   lw 0.9 dt (8,4) pt 8  ps 0.70
+# Fig. 2 compares step sizes of the Lobatto scheme alone: a ramp of its blue, light = large h
+C_LOB_H1 = '#56B4E9';  C_LOB_H2 = '#0072B2';  C_LOB_H3 = '#002338'
+C_STABLE = '#CFE8F6'   # shading: h ω where the Lobatto map is stable (spectral radius 1)
+# scene_full('oscillator.omega'): as scene_num, at full precision (%.17g, as summary_num): scene_num's
+# %g keeps 6 digits, too few for a value that is computed with, e.g. T = 2π/ω
+scene_full(key) = (_s = system(sprintf("awk -v want='scene.%s' '%s' '%s' 2>/dev/null", \
+                                       key, _json_awk, results . '/run.json')), \
+                   _s eq "" ? "?" : sprintf("%.17g", real(_s)))

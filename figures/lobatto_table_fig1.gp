@@ -1,0 +1,86 @@
+# Fig. 1 of Dubois & Rojas-Quintero (2025), Sec. 5: the harmonic oscillator over one period with
+# the Lobatto scheme (13)–(14), N = 3 (top row) and N = 10 (bottom row) steps per period, against
+# the exact solution q = A cos ωt, p = −m ω A sin ωt; with the Simpson scheme and the implicit
+# midpoint rule for comparison (as the paper's text says). q (left) and p (right) are drawn in
+# separate panels, p unscaled (the paper's Fig. 1 rescales p to share one axis with q).
+# Lines between the markers only guide the eye: a scheme gives values at t_j = j h alone.
+# Input: fig1_N<N>.csv (N from the scene key figure1.meshes), fig1_exact.csv,
+# run.json (oscillator parameters, the two N).
+if (!exists("results")) results = 'results/lobatto_table'
+load 'figures/common.gp'
+set encoding utf8    # (so that the key width counts characters, not bytes)
+
+eval need_num('M', scene_full('oscillator.m'))
+eval need_num('OMEGA', scene_full('oscillator.omega'))
+eval need_num('A', scene_full('oscillator.amplitude'))
+eval need_num('N1', scene_num('figure1.meshes.0'))
+eval need_num('N2', scene_num('figure1.meshes.1'))
+T = 2 * pi / OMEGA
+EXACT = csv('fig1_exact.csv')
+FIG(n) = csv(sprintf('fig1_N%d.csv', n))
+
+METHODS = "lobatto simpson midpoint"
+LABEL(m) = m eq "lobatto" ? "Lobatto (13)–(14)" : m eq "simpson" ? "Simpson [2]" : "implicit midpoint"
+STYLE(m) = m eq "lobatto" ? LS_LOB : m eq "simpson" ? LS_SIMP : LS_MID
+
+# the largest error over the steps, per N, method and variable: ERR_<N>_<var>_<method>
+do for [n in sprintf("%d %d", N1, N2)] {
+    do for [m in METHODS] {
+        stats FIG(int(n)) using (abs(column("q_".m) - A * cos(OMEGA * column("t")))) nooutput
+        eval sprintf("ERR_%s_q_%s = STATS_max", n, m)
+        stats FIG(int(n)) using (abs(column("p_".m) + M * OMEGA * A * sin(OMEGA * column("t")))) nooutput
+        eval sprintf("ERR_%s_p_%s = STATS_max", n, m)
+    }
+}
+ERRS(n, v) = sprintf("max_j error: Lobatto %.1e, Simpson %.1e, midpoint %.1e", \
+                     value(sprintf("ERR_%d_%s_lobatto", n, v)), value(sprintf("ERR_%d_%s_simpson", n, v)), \
+                     value(sprintf("ERR_%d_%s_midpoint", n, v)))
+
+do for [fmt in FORMATS] {
+    eval term(fmt, 'lobatto_table_fig1', 17, 14)
+    set multiplot title sprintf("{/:Bold Fig. 1:} harmonic oscillator over one period T = 2π/ω = %g: m = %g, ω = %.6g, q(0) = A = %.6g, p(0) = 0\n" \
+                                . "exact: q = A cos ωt, p = −mωA sin ωt (black); markers: the schemes at t_j = jh, h = T/N (lines only guide the eye)", \
+                                T, M, OMEGA, A)
+    set border 31; set xtics autofreq; set ytics autofreq; set mxtics; set mytics; set autoscale xy  # (after the key plot)
+    set xrange [0:T]
+    set xtics T / 4.0
+    set format x "%g"
+    set format y "%g"
+    set offsets 0, 0, graph 0.06, graph 0.06
+    unset key
+    set label 1 "" at graph 0.02, graph 0.06 left front font ",8"   # the errors of the panel
+    do for [row = 1:2] {
+        n = (row == 1 ? N1 : N2)
+        B = (row == 1 ? 0.535 : 0.135)         # bottom of the row, screen
+        set tmargin at screen B + 0.33; set bmargin at screen B
+        set xlabel (row == 2 ? "t" : "") offset 0, 0.4
+        set format x (row == 2 ? "%g" : "")
+
+        set lmargin at screen 0.09; set rmargin at screen 0.48
+        set title sprintf("N = %d steps per period, h = %.4g:  state q", n, T / n) offset 0, -0.5
+        set ylabel "q"
+        set label 1 ERRS(n, "q")
+        plot EXACT using "t":"q" with lines ls LS_EXACT, \
+             for [m in METHODS] FIG(n) using "t":(column("q_".m)) with linespoints ls STYLE(m)
+
+        set lmargin at screen 0.59; set rmargin at screen 0.98
+        set title sprintf("N = %d, h = %.4g:  momentum p (not rescaled)", n, T / n)
+        set ylabel "p"
+        set label 1 ERRS(n, "p")
+        plot EXACT using "t":"p" with lines ls LS_EXACT, \
+             for [m in METHODS] FIG(n) using "t":(column("p_".m)) with linespoints ls STYLE(m)
+    }
+    unset label 1
+
+    # one key for the four panels, below them (a plot of key entries only)
+    set lmargin at screen 0.02; set rmargin at screen 0.98
+    set tmargin at screen 0.065; set bmargin at screen 0.005
+    unset title; unset xlabel; unset ylabel; unset offsets
+    set border 0; set xtics ("" 5); set ytics ("" 5); unset mxtics; unset mytics; set xrange [0:1]; set yrange [0:1]
+    set key center center horizontal Left reverse maxrows 1 samplen 3 width 1
+    plot 2 with lines notitle, \
+         keyentry with lines ls LS_EXACT title "exact", \
+         for [m in METHODS] keyentry with linespoints ls STYLE(m) title LABEL(m)   # (2: off the yrange)
+    unset multiplot
+    unset output
+}
