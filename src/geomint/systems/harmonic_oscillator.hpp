@@ -27,6 +27,8 @@ struct HarmonicOscillator {
   double U(const Vec<1>& q) const { return 0.5 * m * w * w * q[0] * q[0]; }
   Vec<1> U_q(const Vec<1>& q) const { return m * w * w * q; }
   Mat<1> U_qq(const Vec<1>&) const { return Mat<1>::Constant(m * w * w); }
+  Vec<1> U_qq_times(const Vec<1>&, const Vec<1>& v) const { return m * w * w * v; }
+  Vec<1> force(const Vec<1>& q) const { return -U_q(q); }
 
   // Exact flow: q = q0 cos wt + p0/(m w) sin wt, p = -m w q0 sin wt + p0 cos wt.
   State exact(const State& z0, double t) const {

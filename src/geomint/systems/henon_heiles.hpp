@@ -1,0 +1,54 @@
+#pragma once
+// The test problems of 004 (simplified Takahashi-Imada), unit mass:
+//   the unsymmetric pendulum U = -cos q + 0.2 sin 2q (004 Fig. 2) and the
+//   Henon-Heiles-type potential U = (q1^2 + q2^2)/2 + q1^2 q2 - q2^k/k (004 Figs 3-5, k = 3 and 5).
+#include <cmath>
+
+#include "geomint/core/state.hpp"
+
+namespace geomint {
+
+// H = p^2/2 + U(q) with the derivatives the Takahashi-Imada methods need.
+template <int D>
+struct UnitMassSeparable {
+  using State = PhaseState<D>;
+  static constexpr bool separable = true;
+  double mass() const { return 1.0; }
+  Vec<D> inv_mass(const Vec<D>& p) const { return p; }
+  Vec<D> H_p(const Vec<D>&, const Vec<D>& p) const { return p; }
+  Mat<D> H_qp(const Vec<D>&, const Vec<D>&) const { return Mat<D>::Zero(); }
+  Mat<D> H_pp(const Vec<D>&, const Vec<D>&) const { return Mat<D>::Identity(); }
+};
+
+// 004 Fig. 2: U = -cos q + 0.2 sin 2q.
+struct UnsymmetricPendulum : UnitMassSeparable<1> {
+  double U(const Vec<1>& q) const { return -std::cos(q[0]) + 0.2 * std::sin(2 * q[0]); }
+  Vec<1> U_q(const Vec<1>& q) const { return Vec<1>(std::sin(q[0]) + 0.4 * std::cos(2 * q[0])); }
+  Mat<1> U_qq(const Vec<1>& q) const { return Mat<1>::Constant(std::cos(q[0]) - 0.8 * std::sin(2 * q[0])); }
+  Vec<1> U_qq_times(const Vec<1>& q, const Vec<1>& v) const { return U_qq(q) * v; }
+  Vec<1> force(const Vec<1>& q) const { return -U_q(q); }
+  Vec<1> H_q(const Vec<1>& q, const Vec<1>&) const { return U_q(q); }
+  double H(const State& z) const { return 0.5 * z.p.squaredNorm() + U(z.q); }
+};
+
+// 004 Figs 3-5: U = (q1^2 + q2^2)/2 + q1^2 q2 - q2^k / k.
+struct HenonHeiles : UnitMassSeparable<2> {
+  int k = 3;
+  double U(const Vec<2>& q) const {
+    return 0.5 * q.squaredNorm() + q[0] * q[0] * q[1] - std::pow(q[1], k) / k;
+  }
+  Vec<2> U_q(const Vec<2>& q) const {
+    return Vec<2>(q[0] + 2 * q[0] * q[1], q[1] + q[0] * q[0] - std::pow(q[1], k - 1));
+  }
+  Mat<2> U_qq(const Vec<2>& q) const {
+    Mat<2> J;
+    J << 1 + 2 * q[1], 2 * q[0], 2 * q[0], 1 - (k - 1) * std::pow(q[1], k - 2);
+    return J;
+  }
+  Vec<2> U_qq_times(const Vec<2>& q, const Vec<2>& v) const { return U_qq(q) * v; }
+  Vec<2> force(const Vec<2>& q) const { return -U_q(q); }
+  Vec<2> H_q(const Vec<2>& q, const Vec<2>&) const { return U_q(q); }
+  double H(const State& z) const { return 0.5 * z.p.squaredNorm() + U(z.q); }
+};
+
+}  // namespace geomint

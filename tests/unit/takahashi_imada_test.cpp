@@ -1,0 +1,109 @@
+// The Takahashi-Imada method, its simplified version and the processing map
+// chi_h (004 Sect. 1, and the note on its closed forms for the oscillator).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "geomint/integrators/takahashi_imada.hpp"
+#include "geomint/observables/order_fit.hpp"
+#include "geomint/systems/harmonic_oscillator.hpp"
+#include "geomint/systems/henon_heiles.hpp"
+#include "geomint/transforms/processing.hpp"
+#include "geomint/transforms/rowlands_processors.hpp"
+
+using namespace geomint;
+
+namespace {
+const double alpha = takahashi_imada_alpha;
+
+// Positions q_0..q_n of a plain (unprocessed) method.
+std::vector<double> positions(const auto& method, PhaseState<1> z0, double h, int n) {
+  std::vector<double> q;
+  integrate_processed(method, z0, h, n, [&](auto, const PhaseState<1>& z) { q.push_back(z.q[0]); });
+  return q;
+}
+}  // namespace
+
+TEST(TakahashiImada, OscillatorRecursion) {
+  // q_{n+1} - (2 - x + alpha x^2) q_n + q_{n-1} = 0, x = (w h)^2.
+  const HarmonicOscillator osc{1.0, 1.7};
+  const double h = 0.3, x = std::pow(osc.w * h, 2);
+  const auto q = positions(takahashi_imada_method(osc, false), make_state(0.4, 0.9), h, 200);
+  for (std::size_t n = 1; n + 1 < q.size(); ++n)
+    EXPECT_NEAR(q[n + 1] - (2 - x + alpha * x * x) * q[n] + q[n - 1], 0.0, 1e-14) << n;
+}
+
+TEST(TakahashiImada, SimplifiedEqualsTakahashiImadaOnTheOscillator) {
+  const HarmonicOscillator osc{1.0, 1.7};
+  const auto a = positions(takahashi_imada_method(osc, false), make_state(0.4, 0.9), 0.3, 200);
+  const auto b = positions(simplified_ti_method(osc, false), make_state(0.4, 0.9), 0.3, 200);
+  for (std::size_t n = 0; n < a.size(); ++n) EXPECT_NEAR(a[n], b[n], 1e-13) << n;
+}
+
+TEST(TakahashiImada, MaxRelativeEnergyErrorMatchesTheClosedForm) {
+  // From q0 = 0, p0 = 1 in processed variables: max |H - H0| / H0 = x^3 / (36 (x^2 - 12 x + 48)).
+  const HarmonicOscillator osc{1.0, 1.0};
+  for (double wh : {0.5, 1.0, 2.0}) {
+    const double x = wh * wh, closed = x * x * x / (36 * (x * x - 12 * x + 48));
+    double worst = 0;
+    const auto m = takahashi_imada_method(osc, true);
+    integrate_processed(m, make_state(0.0, 1.0), wh, 20000,
+                        [&](auto, const PhaseState<1>& z) { worst = std::max(worst, std::abs(osc.H(z) - 0.5) / 0.5); });
+    EXPECT_NEAR(worst, closed, 2e-3 * closed) << wh;
+  }
+}
+
+TEST(TakahashiImada, OrdersOnTheOscillator) {
+  // Processed TI: global error order 4, energy order 6; Stormer-Verlet: 2.
+  const HarmonicOscillator osc{1.0, 1.0};
+  std::vector<double> hs, e_ti, h_ti, e_sv;
+  for (double h = 0.2; h > 0.01; h /= 2) {
+    const int n = static_cast<int>(std::lround(10.0 / h));
+    double eg = 0, eh = 0, es = 0;
+    integrate_processed(takahashi_imada_method(osc, true), make_state(0.0, 1.0), h, n, [&](auto j, const PhaseState<1>& z) {
+      const auto ex = osc.exact(make_state(0.0, 1.0), static_cast<double>(j) * h);
+      eg = std::max(eg, std::hypot(z.p[0] - ex.p[0], z.q[0] - ex.q[0]));
+      eh = std::max(eh, std::abs(osc.H(z) - 0.5));
+    });
+    integrate_processed(stormer_verlet_method(osc), make_state(0.0, 1.0), h, n, [&](auto j, const PhaseState<1>& z) {
+      const auto ex = osc.exact(make_state(0.0, 1.0), static_cast<double>(j) * h);
+      es = std::max(es, std::hypot(z.p[0] - ex.p[0], z.q[0] - ex.q[0]));
+    });
+    hs.push_back(h), e_ti.push_back(eg), h_ti.push_back(eh), e_sv.push_back(es);
+  }
+  EXPECT_NEAR(fit_order(hs, e_ti, 1e-13).order, 4.0, 0.3);
+  EXPECT_NEAR(fit_order(hs, h_ti, 1e-13).order, 6.0, 0.4);
+  EXPECT_NEAR(fit_order(hs, e_sv, 1e-13).order, 2.0, 0.15);
+}
+
+TEST(TakahashiImada, ProcessingMapRoundTrip) {
+  const HenonHeiles hh;
+  const auto z = make_state<2>(Vec<2>(0.1, 0.2), Vec<2>(0.45, 0.3));
+  const auto back = ti_process(hh, ti_unprocess(hh, z, 0.2, alpha), 0.2, alpha);
+  EXPECT_LT((back.q - z.q).norm() + (back.p - z.p).norm(), 1e-15);
+}
+
+TEST(TakahashiImada, SymplecticButSimplifiedOnlyVolumePreserving) {
+  // Central-difference Jacobians of one step on Henon-Heiles (k = 3), h = 0.2.
+  const HenonHeiles hh;
+  const double h = 0.2, d = 1e-5;
+  const auto z0 = make_state<2>(Vec<2>(0.1, 0.2), Vec<2>(0.45, 0.3));
+  const auto jacobian = [&](const auto& method) {
+    Mat<4> J;
+    for (int c = 0; c < 4; ++c) {
+      auto a = z0, b = z0;
+      (c < 2 ? a.q[c] : a.p[c - 2]) += d, (c < 2 ? b.q[c] : b.p[c - 2]) -= d;
+      const auto za = integrate_processed(method, a, h, 1), zb = integrate_processed(method, b, h, 1);
+      J.col(c) << (za.q - zb.q) / (2 * d), (za.p - zb.p) / (2 * d);
+    }
+    return J;
+  };
+  Mat<4> O = Mat<4>::Zero();
+  O.block<2, 2>(0, 2) = Mat<2>::Identity(), O.block<2, 2>(2, 0) = -Mat<2>::Identity();
+  const Mat<4> Jt = jacobian(takahashi_imada_method(hh, false)), Js = jacobian(simplified_ti_method(hh, false));
+  EXPECT_LT((Jt.transpose() * O * Jt - O).cwiseAbs().maxCoeff(), 1e-9);
+  const double defect = (Js.transpose() * O * Js - O).cwiseAbs().maxCoeff();
+  EXPECT_GT(defect, 1e-7) << "the simplified method is not symplectic for two degrees of freedom";
+  EXPECT_NEAR(Js.determinant(), 1.0, 1e-9);  // but it preserves volume
+}
