@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "geomint/integrators/takahashi_imada.hpp"
+#include "geomint/observables/modified_energy.hpp"
 #include "geomint/observables/order_fit.hpp"
 #include "geomint/systems/harmonic_oscillator.hpp"
 #include "geomint/systems/henon_heiles.hpp"
@@ -106,4 +107,44 @@ TEST(TakahashiImada, SymplecticButSimplifiedOnlyVolumePreserving) {
   const double defect = (Js.transpose() * O * Js - O).cwiseAbs().maxCoeff();
   EXPECT_GT(defect, 1e-7) << "the simplified method is not symplectic for two degrees of freedom";
   EXPECT_NEAR(Js.determinant(), 1.0, 1e-9);  // but it preserves volume
+}
+
+TEST(ModifiedEnergy, DerivativesAgainstFiniteDifferences) {
+  // U4 and U5 against differences of U'' along a (loose tolerance), for both systems.
+  const UnsymmetricPendulum up;
+  const HenonHeiles hh5{{}, 5};
+  const double d = 1e-3;
+  {
+    const Vec<1> q(0.7), a(1.3);
+    const auto u3 = [&](const Vec<1>& x) {  // U'''(a^3) by a central difference of U''(a,a)
+      return (a.dot(up.U_qq_times((x + d * a).eval(), a)) - a.dot(up.U_qq_times((x - d * a).eval(), a))) / (2 * d);
+    };
+    EXPECT_NEAR(up.U4(q, a), (u3((q + d * a).eval()) - u3((q - d * a).eval())) / (2 * d), 1e-4);
+    const auto u4 = [&](const Vec<1>& x) { return up.U4(x, a); };
+    EXPECT_NEAR(up.U5(q, a), (u4((q + d * a).eval()) - u4((q - d * a).eval())) / (2 * d), 1e-4);
+  }
+  {
+    const Vec<2> q(0.1, 0.3), a(0.4, -0.7);
+    const auto u4 = [&](const Vec<2>& x) { return hh5.U4(x, a); };
+    EXPECT_NEAR(hh5.U5(q, a), (u4((q + d * a).eval()) - u4((q - d * a).eval())) / (2 * d), 1e-6);
+    const auto u2 = [&](const Vec<2>& x) { return a.dot(hh5.U_qq_times(x, a)); };
+    const double fd4 = (u2((q + d * a).eval()) - 2 * u2(q) + u2((q - d * a).eval())) / (d * d);  // d^2/ds^2 U''(a,a)
+    EXPECT_NEAR(hh5.U4(q, a), fd4, 1e-4 * (1 + std::abs(fd4)));
+  }
+}
+
+TEST(ModifiedEnergy, ConservedToSixthOrderAlongTheSimplifiedMethodOnHenonHeiles3) {
+  // The note's check: max |E_n - E_0| over t <= 100 drops by 2^6 when h halves (k = 3: U'''' = U^(5) = 0).
+  const HenonHeiles hh;
+  const auto z0 = make_state<2>(Vec<2>(0.0, 0.2), Vec<2>(0.354024481262713, 0.3));
+  std::vector<double> hs, es;
+  for (double h : {0.2, 0.1, 0.05}) {
+    double worst = 0;
+    const double E0 = simplified_ti_modified_energy(hh, z0, h);
+    integrate_processed(simplified_ti_method(hh, false), z0, h, std::lround(100 / h), [&](auto, const PhaseState<2>& z) {
+      worst = std::max(worst, std::abs(simplified_ti_modified_energy(hh, z, h) - E0));
+    });
+    hs.push_back(h), es.push_back(worst);
+  }
+  EXPECT_NEAR(fit_order(hs, es, 1e-14).order, 6.0, 0.3);
 }

@@ -29,6 +29,9 @@ struct UnsymmetricPendulum : UnitMassSeparable<1> {
   Vec<1> force(const Vec<1>& q) const { return -U_q(q); }
   Vec<1> H_q(const Vec<1>& q, const Vec<1>&) const { return U_q(q); }
   double H(const State& z) const { return 0.5 * z.p.squaredNorm() + U(z.q); }
+  // Higher directional derivatives (one degree of freedom: U^(k)(a^k) = U^(k)(q) a^k).
+  double U4(const Vec<1>& q, const Vec<1>& a) const { return (-std::cos(q[0]) + 3.2 * std::sin(2 * q[0])) * std::pow(a[0], 4); }
+  double U5(const Vec<1>& q, const Vec<1>& a) const { return (std::sin(q[0]) + 6.4 * std::cos(2 * q[0])) * std::pow(a[0], 5); }
 };
 
 // 004 Figs 3-5: U = (q1^2 + q2^2)/2 + q1^2 q2 - q2^k / k.
@@ -49,6 +52,13 @@ struct HenonHeiles : UnitMassSeparable<2> {
   Vec<2> force(const Vec<2>& q) const { return -U_q(q); }
   Vec<2> H_q(const Vec<2>& q, const Vec<2>&) const { return U_q(q); }
   double H(const State& z) const { return 0.5 * z.p.squaredNorm() + U(z.q); }
+  // U''''(a^4) = U_2222 a_2^4 and U^(5)(a^5) = U_22222 a_2^5 (the only nonzero components).
+  double U4(const Vec<2>& q, const Vec<2>& a) const {
+    return k < 4 ? 0.0 : -(k - 1.0) * (k - 2) * (k - 3) * std::pow(q[1], k - 4) * std::pow(a[1], 4);
+  }
+  double U5(const Vec<2>& q, const Vec<2>& a) const {
+    return k < 5 ? 0.0 : -(k - 1.0) * (k - 2) * (k - 3) * (k - 4) * std::pow(q[1], k - 5) * std::pow(a[1], 5);
+  }
 };
 
 }  // namespace geomint
