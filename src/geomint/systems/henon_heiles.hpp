@@ -34,18 +34,25 @@ struct UnsymmetricPendulum : UnitMassSeparable<1> {
   double U5(const Vec<1>& q, const Vec<1>& a) const { return (std::sin(q[0]) + 6.4 * std::cos(2 * q[0])) * std::pow(a[0], 5); }
 };
 
+// x^n for a small integer n >= 0 (std::pow is slow in the inner loop).
+inline double int_pow(double x, int n) {
+  double r = 1.0;
+  for (int i = 0; i < n; ++i) r *= x;
+  return r;
+}
+
 // 004 Figs 3-5: U = (q1^2 + q2^2)/2 + q1^2 q2 - q2^k / k.
 struct HenonHeiles : UnitMassSeparable<2> {
   int k = 3;
   double U(const Vec<2>& q) const {
-    return 0.5 * q.squaredNorm() + q[0] * q[0] * q[1] - std::pow(q[1], k) / k;
+    return 0.5 * q.squaredNorm() + q[0] * q[0] * q[1] - int_pow(q[1], k) / k;
   }
   Vec<2> U_q(const Vec<2>& q) const {
-    return Vec<2>(q[0] + 2 * q[0] * q[1], q[1] + q[0] * q[0] - std::pow(q[1], k - 1));
+    return Vec<2>(q[0] + 2 * q[0] * q[1], q[1] + q[0] * q[0] - int_pow(q[1], k - 1));
   }
   Mat<2> U_qq(const Vec<2>& q) const {
     Mat<2> J;
-    J << 1 + 2 * q[1], 2 * q[0], 2 * q[0], 1 - (k - 1) * std::pow(q[1], k - 2);
+    J << 1 + 2 * q[1], 2 * q[0], 2 * q[0], 1 - (k - 1) * int_pow(q[1], k - 2);
     return J;
   }
   Vec<2> U_qq_times(const Vec<2>& q, const Vec<2>& v) const { return U_qq(q) * v; }
@@ -54,10 +61,10 @@ struct HenonHeiles : UnitMassSeparable<2> {
   double H(const State& z) const { return 0.5 * z.p.squaredNorm() + U(z.q); }
   // U''''(a^4) = U_2222 a_2^4 and U^(5)(a^5) = U_22222 a_2^5 (the only nonzero components).
   double U4(const Vec<2>& q, const Vec<2>& a) const {
-    return k < 4 ? 0.0 : -(k - 1.0) * (k - 2) * (k - 3) * std::pow(q[1], k - 4) * std::pow(a[1], 4);
+    return k < 4 ? 0.0 : -(k - 1.0) * (k - 2) * (k - 3) * int_pow(q[1], k - 4) * int_pow(a[1], 4);
   }
   double U5(const Vec<2>& q, const Vec<2>& a) const {
-    return k < 5 ? 0.0 : -(k - 1.0) * (k - 2) * (k - 3) * (k - 4) * std::pow(q[1], k - 5) * std::pow(a[1], 5);
+    return k < 5 ? 0.0 : -(k - 1.0) * (k - 2) * (k - 3) * (k - 4) * int_pow(q[1], k - 5) * int_pow(a[1], 5);
   }
 };
 

@@ -1,0 +1,54 @@
+// Regression: the quick scene of ti_drift (004 Figs 1-5).
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include <nlohmann/json.hpp>
+
+#include "summary.hpp"
+
+using json = nlohmann::json;
+
+namespace {
+const json& summary() { return summary_of("ti_drift"); }
+}  // namespace
+
+TEST(TiDrift, OrdersOnTheOscillator) {
+  const auto& o = summary()["orders"];
+  EXPECT_NEAR(o["ti_energy"].get<double>(), 6.0, 0.4);
+  EXPECT_NEAR(o["ti_solution"].get<double>(), 4.0, 0.3);
+  EXPECT_NEAR(o["sv_energy"].get<double>(), 2.0, 0.15);
+}
+
+TEST(TiDrift, StabilityBoundOfTakahashiImada) {
+  EXPECT_NEAR(summary()["reproduced"]["ti_stability_bound"].get<double>(), 2 * std::sqrt(3.0), 1e-9);
+}
+
+TEST(TiDrift, ShiftedEnergyDriftsAtThePredictedRate) {
+  // Fig. 2: the rate of (4.3), averaged along the orbit, against the fitted slope.
+  const auto& r = summary()["reproduced"];
+  const double rate = r["unsym_pendulum_drift_rate"].get<double>(), pred = r["unsym_pendulum_drift_rate_predicted"].get<double>();
+  EXPECT_LT(rate, 0.0);
+  EXPECT_NEAR(rate, pred, 0.05 * std::abs(pred));
+}
+
+TEST(TiDrift, ModifiedEnergyHasNoDriftForCubicHenonHeiles) {
+  // Fig. 3: bounded O(h^6) error, no drift over the run.
+  const auto& r = summary()["reproduced"];
+  EXPECT_LT(r["hh3_max_E_err"].get<double>(), 1e-7);
+  EXPECT_LT(std::abs(r["hh3_drift_slope"].get<double>()) * 2000.0, 0.1 * r["hh3_max_E_err"].get<double>());
+}
+
+TEST(TiDrift, RandomWalkExponent) {
+  // Fig. 4 on a small ensemble: sigma ~ t^gamma with gamma near 1/2.
+  const double g = summary()["reproduced"]["hh5_sigma_exponent"].get<double>();
+  EXPECT_GE(g, 0.3);
+  EXPECT_LE(g, 0.7);
+}
+
+TEST(TiDrift, SymplecticVersusVolumePreserving) {
+  const auto& r = summary()["reproduced"];
+  EXPECT_LT(r["ti_symplecticity_defect"].get<double>(), 1e-9);
+  EXPECT_GT(r["sti_symplecticity_defect"].get<double>(), 1e-8);
+  EXPECT_LT(std::abs(r["sti_det_minus_one"].get<double>()), 1e-9);
+}
