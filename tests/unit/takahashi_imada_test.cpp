@@ -10,6 +10,7 @@
 #include "geomint/observables/order_fit.hpp"
 #include "geomint/systems/harmonic_oscillator.hpp"
 #include "geomint/systems/henon_heiles.hpp"
+#include "geomint/systems/lennard_jones.hpp"
 #include "geomint/transforms/processing.hpp"
 #include "geomint/transforms/rowlands_processors.hpp"
 
@@ -147,4 +148,27 @@ TEST(ModifiedEnergy, ConservedToSixthOrderAlongTheSimplifiedMethodOnHenonHeiles3
     hs.push_back(h), es.push_back(worst);
   }
   EXPECT_NEAR(fit_order(hs, es, 1e-14).order, 6.0, 0.3);
+}
+
+TEST(LennardJones, DerivativesAgainstFiniteDifferences) {
+  // 3 x 3 grid, slightly perturbed (004 Fig. 6), and a direction a.
+  const LennardJones<9> lj;
+  Vec<18> q, a;
+  for (int i = 0; i < 9; ++i) {
+    q[2 * i] = 1 + i % 3 + 0.01 * std::sin(1.0 + i), q[2 * i + 1] = 1 + i / 3 + 0.01 * std::cos(2.0 + i);
+    a[2 * i] = std::sin(0.3 * i), a[2 * i + 1] = std::cos(0.7 * i);
+  }
+  const double d = 1e-5;
+  const auto along = [&](const auto& f, double s) { return f((q + s * a).eval()); };
+  const auto U = [&](const Vec<18>& x) { return lj.U(x); };
+  EXPECT_NEAR(lj.U_q(q).dot(a), (along(U, d) - along(U, -d)) / (2 * d), 1e-6);
+  const Vec<18> hv = (lj.U_q((q + d * a).eval()) - lj.U_q((q - d * a).eval())) / (2 * d);
+  EXPECT_LT((lj.U_qq_times(q, a) - hv).norm(), 1e-5 * (1 + hv.norm()));
+  const auto U2 = [&](const Vec<18>& x) { return a.dot(lj.U_qq_times(x, a)); };
+  const double e = 1e-3;
+  const double fd4 = (along(U2, e) - 2 * along(U2, 0.0) + along(U2, -e)) / (e * e);
+  EXPECT_NEAR(lj.U4(q, a), fd4, 1e-4 * (1 + std::abs(fd4)));
+  const auto U4 = [&](const Vec<18>& x) { return lj.U4(x, a); };
+  const double fd5 = (along(U4, e / 10) - along(U4, -e / 10)) / (e / 5);
+  EXPECT_NEAR(lj.U5(q, a), fd5, 1e-4 * (1 + std::abs(fd5)));
 }

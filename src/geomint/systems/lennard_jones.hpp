@@ -1,0 +1,94 @@
+#pragma once
+// A Lennard-Jones cluster of N particles in the plane (004 Fig. 6), unit
+// masses: U = sum_{i<j} V(|q_i - q_j|), V(r) = eps (r^-12 - 2 r^-6), no cutoff.
+// With u = |d|^2, d = q_i - q_j, V = G(u) = eps (u^-6 - 2 u^-3), and since u is
+// quadratic in d, every directional derivative is a sum over partitions into
+// blocks of size one and two (the technical note on 004): with x_a = d.A,
+// y = A.A for the pair differences A = a_i - a_j,
+//   grad: 2 G' d;  U'' a: 4 G'' x_a d + 2 G' A;
+//   U''''(a^4) = 16 G'''' x^4 + 48 G''' x^2 y + 12 G'' y^2;
+//   U^(5)(a^5) = 32 G^(5) x^5 + 160 G'''' x^3 y + 120 G''' x y^2.
+#include <array>
+#include <cmath>
+
+#include "geomint/core/state.hpp"
+
+namespace geomint {
+
+template <int N>
+struct LennardJones {
+  static constexpr int D = 2 * N;
+  using State = PhaseState<D>;
+  static constexpr bool separable = true;
+
+  double eps = 0.4;
+
+  // G^(m)(u) = eps (c12_m u^{-6-m} - 2 c6_m u^{-3-m}), m = 0..5.
+  std::array<double, 6> G(double u) const {
+    static constexpr std::array<double, 6> c12{1, -6, 42, -336, 3024, -30240}, c6{1, -3, 12, -60, 360, -2520};
+    std::array<double, 6> out{};
+    const double iu = 1.0 / u, iu3 = iu * iu * iu, iu6 = iu3 * iu3;
+    double p12 = iu6, p6 = iu3;
+    for (int m = 0; m < 6; ++m, p12 *= iu, p6 *= iu) out[m] = eps * (c12[m] * p12 - 2 * c6[m] * p6);
+    return out;
+  }
+  static Vec<2> pair(const Vec<D>& v, int i, int j) { return v.template segment<2>(2 * i) - v.template segment<2>(2 * j); }
+
+  template <class F>
+  void for_pairs(const Vec<D>& q, F&& f) const {
+    for (int i = 0; i < N; ++i)
+      for (int j = i + 1; j < N; ++j) f(i, j, pair(q, i, j));
+  }
+
+  double U(const Vec<D>& q) const {
+    double s = 0;
+    for_pairs(q, [&](int, int, const Vec<2>& d) { s += G(d.squaredNorm())[0]; });
+    return s;
+  }
+  Vec<D> U_q(const Vec<D>& q) const {
+    Vec<D> g = Vec<D>::Zero();
+    for_pairs(q, [&](int i, int j, const Vec<2>& d) {
+      const Vec<2> w = 2 * G(d.squaredNorm())[1] * d;
+      g.template segment<2>(2 * i) += w, g.template segment<2>(2 * j) -= w;
+    });
+    return g;
+  }
+  Vec<D> U_qq_times(const Vec<D>& q, const Vec<D>& a) const {
+    Vec<D> out = Vec<D>::Zero();
+    for_pairs(q, [&](int i, int j, const Vec<2>& d) {
+      const auto g = G(d.squaredNorm());
+      const Vec<2> A = pair(a, i, j);
+      const Vec<2> w = 4 * g[2] * d.dot(A) * d + 2 * g[1] * A;
+      out.template segment<2>(2 * i) += w, out.template segment<2>(2 * j) -= w;
+    });
+    return out;
+  }
+  double U4(const Vec<D>& q, const Vec<D>& a) const {
+    double s = 0;
+    for_pairs(q, [&](int i, int j, const Vec<2>& d) {
+      const auto g = G(d.squaredNorm());
+      const Vec<2> A = pair(a, i, j);
+      const double x = d.dot(A), y = A.squaredNorm();
+      s += 16 * g[4] * x * x * x * x + 48 * g[3] * x * x * y + 12 * g[2] * y * y;
+    });
+    return s;
+  }
+  double U5(const Vec<D>& q, const Vec<D>& a) const {
+    double s = 0;
+    for_pairs(q, [&](int i, int j, const Vec<2>& d) {
+      const auto g = G(d.squaredNorm());
+      const Vec<2> A = pair(a, i, j);
+      const double x = d.dot(A), y = A.squaredNorm();
+      s += 32 * g[5] * x * x * x * x * x + 160 * g[4] * x * x * x * y + 120 * g[3] * x * y * y;
+    });
+    return s;
+  }
+  Vec<D> force(const Vec<D>& q) const { return -U_q(q); }
+  double mass() const { return 1.0; }
+  Vec<D> inv_mass(const Vec<D>& p) const { return p; }
+  double H(const State& z) const { return 0.5 * z.p.squaredNorm() + U(z.q); }
+  Vec<D> H_q(const Vec<D>& q, const Vec<D>&) const { return U_q(q); }
+  Vec<D> H_p(const Vec<D>&, const Vec<D>& p) const { return p; }
+};
+
+}  // namespace geomint
