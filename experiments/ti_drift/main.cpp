@@ -28,6 +28,7 @@
 #include "geomint/sweep/parallel_map.hpp"
 #include "geomint/systems/harmonic_oscillator.hpp"
 #include "geomint/systems/henon_heiles.hpp"
+#include "geomint/systems/lennard_jones.hpp"
 #include "geomint/transforms/processing.hpp"
 #include "geomint/transforms/rowlands_processors.hpp"
 
@@ -74,7 +75,16 @@ Schema schema() {
       .integer("ensemble.seed", non_negative(), "seed; trajectory i uses its own stream (seed, i)")
       .real("ensemble.perturbation", non_negative(), "q2 and p2 of each start perturbed uniformly by at most this")
       .real("ensemble.outlier", positive(), "trajectories whose max |error| exceeds this go to Fig. 4's upper panel (004: 2e-6)")
-      .integer("samples", at_least(10), "output times per long run");
+      .integer("samples", at_least(10), "output times per long run")
+      .reals("lj.h_scan", positive(), 1, "Fig. 6: steps scanned for stability (004 prints h = 0.2)")
+      .real("lj.scan_t", positive(), "time span of the step-size scan")
+      .integer("lj.scan_size", at_least(1), "trajectories of the scan")
+      .real("lj.h", positive(), "Fig. 6: the step used for the statistics")
+      .real("lj.t_end", positive(), "Fig. 6 time span (004: 2e4)")
+      .integer("lj.size", at_least(2), "Fig. 6 trajectories (004: 400)")
+      .integer("lj.seed", non_negative(), "seed; trajectory i uses its own stream (seed, i)")
+      .real("lj.perturbation", non_negative(), "each coordinate of the 3 x 3 grid perturbed uniformly by at most this (004: 0.01)")
+      .real("lj.blowup", positive(), "|H - H0| above this marks a scan run diverged");
   return s;
 }
 
@@ -88,7 +98,8 @@ void run(Context& ctx) {
   json published = {{"ti_solution", 4.0}, {"ti_energy", 6.0}, {"sv_energy", 2.0},  // Sect. 1.4, Fig. 1
                     {"ti_stability_bound", kTiBound},
                     {"hh5_mu_final", -0.11e-6}, {"hh5_sigma_final", 0.54e-6},      // Fig. 4, t = 2.5e6
-                    {"hh5_sigma_exponent", 0.5}, {"hh3_drift_slope", 0.0}};
+                    {"hh5_sigma_exponent", 0.5}, {"hh3_drift_slope", 0.0},
+                    {"lj_mu_final", 0.091e-6}, {"lj_sigma_final", 3.08e-6}, {"lj_sigma_exponent", 0.5}};  // Fig. 6
   json reproduced, orders, timing;
   const double alpha = takahashi_imada_alpha;
 
@@ -294,6 +305,103 @@ void run(Context& ctx) {
     reproduced["poincare_trajectory"] = worst_i;
     reproduced["poincare_windows"] = {{"growth", {static_cast<double>(steep) * tw, static_cast<double>(steep + 1) * tw}},
                                       {"no_growth", {static_cast<double>(flat) * tw, static_cast<double>(flat + 1) * tw}}};
+  }
+
+  // ---- Fig. 6: the Lennard-Jones cluster ----
+  ctx.progress("Fig. 6: Lennard-Jones cluster");
+  {
+    using LJ = LennardJones<9>;
+    using Z18 = PhaseState<18>;
+    const LJ lj;
+    const auto lj_start = [&](std::size_t i) {  // grid (i, j), i, j in {1, 2, 3}, perturbed; p = 0
+      std::seed_seq seq{static_cast<std::uint64_t>(s.integer("lj.seed")), static_cast<std::uint64_t>(i)};
+      std::mt19937_64 rng(seq);
+      std::uniform_real_distribution<double> u(-s.real("lj.perturbation"), s.real("lj.perturbation"));
+      Z18 z;
+      for (int k = 0; k < 9; ++k) z.q[2 * k] = 1 + k % 3 + u(rng), z.q[2 * k + 1] = 1 + k / 3 + u(rng);
+      return z;
+    };
+    // The step-size scan: max |H - H0| over t <= lj.scan_t, diverged beyond lj.blowup or when not finite.
+    const auto hs = s.reals("lj.h_scan");
+    const auto scan_size = static_cast<std::size_t>(s.integer("lj.scan_size"));
+    const auto scan = parallel_map(hs.size() * scan_size, [&](std::size_t task) {
+      const double hh = hs[task / scan_size];
+      const Z18 z0 = lj_start(task % scan_size);
+      const double H0 = lj.H(z0);
+      double worst = 0;
+      std::int64_t diverged = -1;
+      integrate_processed(simplified_ti_method(lj, false), z0, hh, steps_to(s.real("lj.scan_t"), hh),
+                          [&](std::int64_t j, const Z18& z) {
+                            if (diverged >= 0) return;
+                            const double e = std::abs(lj.H(z) - H0);
+                            if (!(e <= s.real("lj.blowup"))) diverged = j;
+                            else worst = std::max(worst, e);
+                          });
+      return std::pair{worst, diverged};
+    });
+    Csv sc({"h", "trajectory", "max_H_err", "diverged", "diverge_step"});
+    json stable_h = json::array();
+    for (std::size_t k = 0; k < hs.size(); ++k) {
+      bool all_ok = true;
+      for (std::size_t i = 0; i < scan_size; ++i) {
+        const auto& [w, dv] = scan[k * scan_size + i];
+        sc.row(hs[k], static_cast<std::int64_t>(i), w, static_cast<std::int64_t>(dv >= 0), dv);
+        all_ok = all_ok && dv < 0;
+      }
+      if (all_ok) stable_h.push_back(hs[k]);
+    }
+    ctx.write("fig6_scan.csv", sc);
+    reproduced["lj_stable_steps"] = stable_h;
+    // The ensemble at lj.h: E error (3.3)+(4.2), H error, and H at the processed variables (1.5).
+    const double hl = s.real("lj.h");
+    const auto Ml = static_cast<std::size_t>(s.integer("lj.size"));
+    const std::int64_t nl = steps_to(s.real("lj.t_end"), hl), every_l = std::max<std::int64_t>(1, nl / samples);
+    const auto tl0 = std::chrono::steady_clock::now();
+    struct Series {
+      std::vector<double> E, H, Hhat;
+    };
+    const auto lj_series = parallel_map(Ml, [&](std::size_t i) {
+      Series r;
+      const Z18 z0 = lj_start(i);
+      const double E0 = simplified_ti_modified_energy(lj, z0, hl), H0 = lj.H(z0);
+      integrate_processed(simplified_ti_method(lj, false), z0, hl, nl, [&](std::int64_t j, const Z18& z) {
+        if (j % every_l) return;
+        r.E.push_back(simplified_ti_modified_energy(lj, z, hl) - E0);
+        r.H.push_back(lj.H(z) - H0);
+        r.Hhat.push_back(lj.H(ti_process(lj, z, hl, alpha)) - H0);
+      });
+      return r;
+    });
+    const double wall6 = std::chrono::duration<double>(std::chrono::steady_clock::now() - tl0).count();
+    Csv f6({"t", "mu", "sigma", "H_err_rms", "Hhat_err_rms"});
+    std::vector<double> lt, ls;
+    const std::size_t nsl = lj_series[0].E.size();
+    double mu_f = 0, sigma_f = 0, H_max = 0;
+    for (std::size_t k = 0; k < nsl; ++k) {
+      double mu = 0, var = 0, hr = 0, hhr = 0;
+      for (const auto& r : lj_series) mu += r.E[k], hr += r.H[k] * r.H[k], hhr += r.Hhat[k] * r.Hhat[k];
+      mu /= static_cast<double>(Ml);
+      for (const auto& r : lj_series) var += (r.E[k] - mu) * (r.E[k] - mu), H_max = std::max(H_max, std::abs(r.H[k]));
+      const double sigma = std::sqrt(var / static_cast<double>(Ml - 1));
+      const double t = static_cast<double>(k) * static_cast<double>(every_l) * hl;
+      f6.row(t, mu, sigma, std::sqrt(hr / static_cast<double>(Ml)), std::sqrt(hhr / static_cast<double>(Ml)));
+      if (t >= s.real("lj.t_end") / 10 && sigma > 0) lt.push_back(std::log(t)), ls.push_back(std::log(sigma));
+      mu_f = mu, sigma_f = sigma;
+    }
+    ctx.write("fig6_stats.csv", f6);
+    Csv f6t({"trajectory", "t", "E_err"});
+    const std::size_t stride = std::max<std::size_t>(1, nsl / 200);
+    for (std::size_t i = 0; i < std::min<std::size_t>(Ml, 50); ++i)
+      for (std::size_t k = 0; k < nsl; k += stride)
+        f6t.row(static_cast<std::int64_t>(i), static_cast<double>(k) * static_cast<double>(every_l) * hl, lj_series[i].E[k]);
+    ctx.write("fig6_trajectories.csv", f6t);
+    reproduced["lj_h"] = hl;
+    reproduced["lj_mu_final"] = mu_f, reproduced["lj_sigma_final"] = sigma_f;
+    reproduced["lj_mu_final_stderr"] = sigma_f / std::sqrt(static_cast<double>(Ml));
+    reproduced["lj_sigma_final_stderr"] = sigma_f / std::sqrt(2.0 * static_cast<double>(Ml - 1));
+    reproduced["lj_sigma_exponent"] = lt.size() >= 2 ? slope(lt, ls) : std::nan("");
+    reproduced["lj_H_err_max"] = H_max;
+    timing["fig6_wall_s"] = wall6;
   }
 
   // ---- Symplecticity vs volume preservation (central differences of one step, Henon-Heiles k = 3) ----

@@ -52,3 +52,14 @@ TEST(TiDrift, SymplecticVersusVolumePreserving) {
   EXPECT_GT(r["sti_symplecticity_defect"].get<double>(), 1e-8);
   EXPECT_LT(std::abs(r["sti_det_minus_one"].get<double>()), 1e-9);
 }
+
+TEST(TiDrift, LennardJonesPrintedStepIsUnstable) {
+  // Fig. 6: the printed h = 0.2 blows up for the 3 x 3 cluster; h = 0.01 is stable, |H - H0| ~ 1e-3.
+  const auto& r = summary()["reproduced"];
+  bool has_02 = false, has_001 = false;
+  for (const auto& h : r["lj_stable_steps"]) has_02 |= h.get<double>() == 0.2, has_001 |= h.get<double>() == 0.01;
+  EXPECT_FALSE(has_02);
+  EXPECT_TRUE(has_001);
+  EXPECT_LT(r["lj_H_err_max"].get<double>(), 2e-2);
+  EXPECT_GT(r["lj_sigma_final"].get<double>(), 0.0);
+}

@@ -48,7 +48,8 @@ struct LennardJones {
   Vec<D> U_q(const Vec<D>& q) const {
     Vec<D> g = Vec<D>::Zero();
     for_pairs(q, [&](int i, int j, const Vec<2>& d) {
-      const Vec<2> w = 2 * G(d.squaredNorm())[1] * d;
+      const double iu = 1.0 / d.squaredNorm(), iu4 = iu * iu * iu * iu;
+      const Vec<2> w = (2 * eps * (6 * iu4 - 6 * iu4 * iu * iu * iu)) * d;  // 2 G'(u) d, G' = eps (-6 u^-7 + 6 u^-4)
       g.template segment<2>(2 * i) += w, g.template segment<2>(2 * j) -= w;
     });
     return g;
@@ -62,6 +63,11 @@ struct LennardJones {
       out.template segment<2>(2 * i) += w, out.template segment<2>(2 * j) -= w;
     });
     return out;
+  }
+  Mat<D> U_qq(const Vec<D>& q) const {  // column by column (processing maps only; rarely called)
+    Mat<D> J;
+    for (int k = 0; k < D; ++k) J.col(k) = U_qq_times(q, Vec<D>::Unit(k));
+    return J;
   }
   double U4(const Vec<D>& q, const Vec<D>& a) const {
     double s = 0;
