@@ -23,7 +23,10 @@ summary["reproduced"][key]. A published value is a number or an object of number
 value per parameter, e.g. per step size, paired key by key with an object of numbers or
 null). An experiment in RESULTS_TABLES has its own table layout (lobatto_table: Table 1 of
 001 with published and reproduced values side by side, and the growth rates of its Fig. 2
-beside their value in exact arithmetic, from the closed form of 001 eqs. (13)-(14));
+beside their value in exact arithmetic, from the closed form of 001 eqs. (13)-(14); ti_drift:
+004 Figs. 1-5 with the reproduced values that have no published number below a line), and one in
+TIMING_TABLES its own timing table (ti_drift: ns per step and force evaluations per step of the
+three methods, and the wall time of the Fig. 4 ensemble);
 DERIVED_SUMMARIES adds quantities computed from its CSV files and scene for the macros.
 Orders are printed to 3 decimals; other values to
 4 significant digits in the tables and 2 in the macros, in scientific notation
@@ -64,7 +67,7 @@ TITLES = {
     "energy_map": r"[000] Fig.~6 (\texttt{energy\_map})",
     "lobatto_table": r"[001] Table~1, Figs.~1, 2 (\texttt{lobatto\_table})",
     "measure_cloud": r"[003] Figs.~5.1--5.6 (\texttt{measure\_cloud})",
-    "ti_drift": r"[004] Figs.~1--6 (\texttt{ti\_drift})",
+    "ti_drift": r"[004] Figs.~1--5 (\texttt{ti\_drift})",
 }
 
 # Row descriptions of the published-vs-reproduced table (LaTeX).
@@ -662,10 +665,447 @@ def lobatto_results_table(name, s, src, derived):
     return "".join(lines)
 
 
+# ---------------------------------------------------------------------------
+# ti_drift (004): Figs. 1-5 of the simplified Takahashi-Imada method.
+# ---------------------------------------------------------------------------
+
+# Constants of the executable (experiments/ti_drift/main.cpp) that the derived quantities need.
+TI_FIT_MAX_WH = 0.5        # Fig. 1: the orders are fitted over omega h_eff <= 0.5 ...
+TI_FIT_FLOOR = 1e3 * sys.float_info.epsilon  # ... and over the errors above this floor
+TI_BOUND = 2 * math.sqrt(3)  # 004 Sect. 1.4: TI is stable for omega h < 2 sqrt(3)
+TI_PUBLISHED_T = 2.5e6     # 004 Fig. 4: the time at which mu and sigma are printed
+
+# Rows of the published-vs-reproduced table with a published value: (key, description, format).
+TI_PUBLISHED_ROWS = [
+    ("ti_solution", r"Fig.~1 left: order of the global error $(|\varepsilon_p|^2+\omega^2|\varepsilon_q|^2)^{1/2}$ "
+                    r"of TI (1.4) in the variables $(\hat p,\hat q)$ of (1.5)", "order"),
+    ("ti_energy", r"Fig.~1 right: order of the largest relative error of $H$ of TI in $(\hat p,\hat q)$", "order"),
+    ("sv_energy", r"Fig.~1 right: the same for St\"ormer--Verlet (1.3)", "order"),
+    ("ti_stability_bound", r"Sect.~1.4: stability bound $\omega h<2\sqrt3$ of TI on the oscillator "
+                           r"(bisection on the spectral radius)", "fixed12"),
+    ("hh3_drift_slope", r"Fig.~3 ($k=3$): least-squares slope per unit time of the error of "
+                        r"$E=\hat H+\frac12h^4\alpha^2K$ (``no drift'')", "err"),
+    ("hh5_mu_final", r"Fig.~4 ($k=5$): mean $\mu$ of the error of $E$ over the ensemble at $t_{\text{end}}$", "sci3"),
+    ("hh5_sigma_final", r"Fig.~4: standard deviation $\sigma$ at $t_{\text{end}}$", "sci3"),
+    ("hh5_sigma_exponent", r"Fig.~4: exponent $\gamma$ of $\sigma\propto t^\gamma$ over "
+                           r"$[t_{\text{end}}/10,t_{\text{end}}]$ (``like the square root of time'')", "fixed3"),
+    # Fig. 6 (the Lennard-Jones cluster), when the results contain it
+    ("lj_mu_final", r"Fig.~6: mean $\mu$ of the error of $E$ over the ensemble at $t_{\text{end}}$", "sci3"),
+    ("lj_sigma_final", r"Fig.~6: standard deviation $\sigma$ at $t_{\text{end}}$", "sci3"),
+    ("lj_sigma_exponent", r"Fig.~6: exponent $\gamma$ of $\sigma\propto t^\gamma$ over "
+                          r"$[t_{\text{end}}/10,t_{\text{end}}]$", "fixed3"),
+]
+
+# Further rows: (description, (source, path...), format[, path of a published value computed from
+# summary["published"]]); source "summary" or "derived". Without that path the row has no published value.
+TI_EXTRA_ROWS = [
+    (r"Fig.~1 left: order of the global error of St\"ormer--Verlet", ("summary", "orders", "sv_solution"), "order"),
+    (r"Fig.~2: drift per unit time of $H+h^2H_3$ along (1.6), least-squares slope",
+     ("summary", "reproduced", "unsym_pendulum_drift_rate"), "sci3"),
+    (r"Fig.~2: the same predicted by (4.3), $-\frac{h^4\alpha^2}{20}\langle U^{(5)}(p^5)\rangle$ along the exact orbit",
+     ("summary", "reproduced", "unsym_pendulum_drift_rate_predicted"), "sci3"),
+    (r"Fig.~3: largest $|E_n-E_0|$ at the output times", ("summary", "reproduced", "hh3_max_E_err"), "err"),
+    (r"Fig.~3: slope times $t_{\text{end}}$, against the largest error above", ("derived", "td", "fig3", "drift_over_run"), "err"),
+    (r"Fig.~4: $\sigma^2/t$ at $t_{\text{end}}$ (published: from $\sigma$ at $t=2.5\cdot10^6$)",
+     ("derived", "td", "fig4", "D_end"), "sci3", ("derived", "td", "fig4", "D_pub")),
+    (r"Fig.~4: trajectories with $\max|E_n-E_0|>2\cdot10^{-6}$ ([004]: 2)", ("summary", "reproduced", "hh5_outliers"),
+     "len:int"),
+    (r"Fig.~5: Poincar\'e cuts per unit time, window of steepest growth ([004]: 25\,220 cuts on "
+     r"$[1\,225\,782,1\,415\,265]$, 0.133)", ("derived", "td", "fig5", "growth", "rate"), "fixed3"),
+    (r"Fig.~5: the same, flattest window ([004]: 12\,827 cuts on $[1.0,1.1]\cdot10^6$, 0.128)",
+     ("derived", "td", "fig5", "no_growth", "rate"), "fixed3"),
+    (r"Fig.~5: share of the cuts with $p_2<0$, window of steepest growth ([004]: the cuts ``lie in the region "
+     r"$p_2<0$'')", ("derived", "td", "fig5", "growth", "share_p2_negative"), "percent"),
+    (r"Fig.~5: the same, flattest window", ("derived", "td", "fig5", "no_growth", "share_p2_negative"), "percent"),
+    (r"Sect.~1.3: $\max|J^{\mathsf T}\Omega J-\Omega|$ of one step of TI (1.4), H\'enon--Heiles $k=3$",
+     ("summary", "reproduced", "ti_symplecticity_defect"), "err"),
+    (r"Sect.~1.3: the same for the simplified method (1.6)", ("summary", "reproduced", "sti_symplecticity_defect"), "err"),
+    (r"Sect.~1.3: $\det J-1$ of one step of (1.6)", ("summary", "reproduced", "sti_det_minus_one"), "err"),
+]
+
+# The timing table: (key of timing.ns_per_step, method, force evaluations per step).
+TI_TIMING_ROWS = [
+    ("sv", r"St\"ormer--Verlet (1.3)", r"1 gradient"),
+    ("ti", r"Takahashi--Imada (1.4)", r"1 gradient, 1 Hessian--vector product"),
+    ("sti", r"Simplified Takahashi--Imada (1.6)", r"2 gradients"),
+]
+
+
+def pendulum_u_max():
+    """max of U = -cos q + 0.2 sin 2q (004 (5.1)): a grid over one period, refined by golden sections."""
+    u = lambda q: -math.cos(q) + 0.2 * math.sin(2 * q)
+    n = 3600
+    q = max((2 * math.pi * i / n for i in range(n)), key=u)
+    a, b = q - 2 * math.pi / n, q + 2 * math.pi / n
+    r = (math.sqrt(5) - 1) / 2
+    for _ in range(80):
+        c, d = b - r * (b - a), a + r * (b - a)
+        a, b = (c, b) if u(c) < u(d) else (a, d)
+    return u(0.5 * (a + b))
+
+
+PENDULUM_U_MAX = pendulum_u_max()
+
+
+def ti_potential_hh(q1, q2, k):
+    """The Henon-Heiles-type potential of 004 Sect. 5.2."""
+    return 0.5 * (q1 * q1 + q2 * q2) + q1 * q1 * q2 - q2 ** k / k
+
+
+def ti_slope(xs, ys):
+    """Least-squares slope of ys against xs, or None."""
+    n = len(xs)
+    if n < 2:
+        return None
+    mx, my = sum(xs) / n, sum(ys) / n
+    sxx = sum((x - mx) ** 2 for x in xs)
+    return None if sxx == 0 else sum((x - mx) * (y - my) for x, y in zip(xs, ys)) / sxx
+
+
+def ti_gamma(ts, sigmas, t0):
+    """Slope of log sigma against log t over t >= t0 (sigma > 0), or None."""
+    pts = [(math.log(t), math.log(s)) for t, s in zip(ts, sigmas) if t >= t0 and t > 0 and s > 0]
+    return ti_slope([p[0] for p in pts], [p[1] for p in pts])
+
+
+def ti_floats(rows, path, cols):
+    try:
+        return [[float(r[c]) for c in cols] for r in rows]
+    except ValueError:
+        raise Malformed(f"{path}: non-numeric value in the columns {list(cols)}") from None
+
+
+def ti_summary(s, scene, exp_dir):
+    """Derived quantities of ti_drift for the tables and macros (missing inputs give None)."""
+    rep, pub = s.get("reproduced") or {}, s.get("published") or {}
+    sc = scene if isinstance(scene, dict) else {}
+    out = {"scene": {}, "osc": {}, "fig2": {}, "fig3": {}, "fig4": {}, "fig5": {}, "cost": {}, "stability": {}}
+
+    def num(*path):
+        v = lookup(sc, path)
+        return float(v) if is_number(v) else None
+
+    h, samples = num("h"), num("samples")
+
+    def steps_and_dt(t_end):
+        if not (h and samples and t_end):
+            return None, None
+        n = round(t_end / h)
+        every = max(1, n // int(samples))
+        return n, every * h
+
+    # the scene: starts, steps and output intervals
+    d = out["scene"]
+    q0, p0 = num("pendulum", "q0"), num("pendulum", "p0")
+    if q0 is not None and p0 is not None:
+        d["pendulum_H0"] = 0.5 * p0 * p0 - math.cos(q0) + 0.2 * math.sin(2 * q0)
+    q2, p2, H0, k = num("hh3", "q2"), num("hh3", "p2"), num("hh", "H0"), num("hh", "k")
+    for key, kk in (("hh3_p1", 3), ("hh_p1", k)):
+        if None not in (q2, p2, H0, kk):
+            arg = 2 * (H0 - ti_potential_hh(0.0, q2, int(kk))) - p2 * p2
+            d[key] = math.sqrt(arg) if arg >= 0 else None
+    for key, t_end in (("pendulum", num("pendulum", "t_end")), ("hh3", num("hh3", "t_end")), ("fig4", num("t_end"))):
+        d[f"{key}_steps"], d[f"{key}_sample_dt"] = steps_and_dt(t_end)
+    whs = lookup(sc, ("oscillator", "omega_h"))
+    if isinstance(whs, list) and whs and all(is_number(w) for w in whs):
+        d["wh_min"], d["wh_max"], d["wh_count"] = min(whs), max(whs), len(whs)
+        d["wh_ti_count"] = sum(1 for w in whs if w < TI_BOUND)
+        t_omega = num("oscillator", "t_omega")
+        if t_omega:
+            d["steps_ti_min"] = math.floor(t_omega / max(w for w in whs if w < TI_BOUND)) if d["wh_ti_count"] else None
+
+    # Fig. 1: the sampled maxima against the closed forms of Sect. 1.4 (start q0 = 0)
+    path = os.path.join(exp_dir, "oscillator.csv")
+    rows = read_csv_rows(path, ("method", "omega_h", "max_global_err", "max_rel_H_err"))
+    if rows:
+        vals = ti_floats(rows, path, ("omega_h", "max_global_err", "max_rel_H_err"))
+        by = {}
+        for r, (wh, g, e) in zip(rows, vals):
+            by.setdefault(r["method"], {})[wh] = (g, e)
+        sv, ti = by.get("sv", {}), by.get("ti", {})
+
+        def closed(method, y):
+            if method == "sv":
+                return y * y / (16 - y * y)
+            return y ** 6 / (36 * (y ** 4 - 12 * y * y + 48)) if y < TI_BOUND else None
+
+        o = out["osc"]
+        common = [w for w in ti if w in sv]
+        o["common"] = len(common)
+        o["ti_better_energy"] = sum(1 for w in common if ti[w][1] < sv[w][1])
+        o["ti_better_global"] = sum(1 for w in common if ti[w][0] < sv[w][0])
+        o["fit_points_global"] = sum(1 for w in ti if w <= TI_FIT_MAX_WH and ti[w][0] >= TI_FIT_FLOOR)
+        o["fit_points_energy"] = sum(1 for w in ti if w <= TI_FIT_MAX_WH and ti[w][1] >= TI_FIT_FLOOR)
+        o["fit_points_sv"] = sum(1 for w in sv if w <= TI_FIT_MAX_WH and sv[w][1] >= TI_FIT_FLOOR)
+        below = [w for w in ti if ti[w][1] < TI_FIT_FLOOR]
+        o["ti_roundoff_wh_max"] = max(below) if below else None
+        for m, data in (("sv", sv), ("ti", ti)):
+            small = [abs(data[w][1] / closed(m, w) - 1) for w in data
+                     if w <= 1 and closed(m, w) and data[w][1] >= TI_FIT_FLOOR]
+            o[f"{m}_dev_small"] = max(small) if small else None
+            large = [(data[w][1] / closed(m, w), w) for w in data if w > 1 and closed(m, w)]
+            if large:
+                ratio, where = min(large)
+                o[f"{m}_ratio_large"], o[f"{m}_ratio_large_wh"] = ratio, where
+        if ti:
+            w_last = max(ti)
+            o["ti_last_wh"], o["ti_last_energy"] = w_last, ti[w_last][1]
+        if sv:
+            near = min(sv, key=lambda w: abs(w - 0.1))
+            o["wh_ref"] = near
+            o["sv_global_ref"], o["sv_energy_ref"] = sv[near]
+            if near in ti:
+                o["ti_global_ref"], o["ti_energy_ref"] = ti[near]
+
+    # stability bound against 2 sqrt(3)
+    b, bp = rep.get("ti_stability_bound"), pub.get("ti_stability_bound")
+    if is_number(b) and is_number(bp):
+        out["stability"]["diff"] = b - bp
+
+    # Fig. 2: the pendulum
+    path = os.path.join(exp_dir, "fig2_pendulum.csv")
+    rows = read_csv_rows(path, ("t", "shifted_energy_err", "H_err"))
+    if rows and len(rows) > 2:
+        t, e, H = zip(*ti_floats(rows, path, ("t", "shifted_energy_err", "H_err")))
+        f = out["fig2"]
+        f["change"] = e[-1]
+        f["U_max"] = PENDULUM_U_MAX
+        for key, ys in (("shifted", e), ("H", H)):
+            sl = ti_slope(t, ys)
+            mt, my = sum(t) / len(t), sum(ys) / len(ys)
+            res = [y - my - sl * (x - mt) for x, y in zip(t, ys)]
+            f[f"{key}_slope"], f[f"{key}_residual_p2p"] = sl, max(res) - min(res)
+        r, pr = rep.get("unsym_pendulum_drift_rate"), rep.get("unsym_pendulum_drift_rate_predicted")
+        if is_number(r) and is_number(pr) and pr != 0:
+            f["rel_diff"] = abs(r - pr) / abs(pr)
+        H0p = out["scene"].get("pendulum_H0")
+        if is_number(r) and r != 0 and is_number(H0p):
+            f["turnover_time"] = (H0p - PENDULUM_U_MAX) / abs(r)
+
+    # Fig. 3: Henon-Heiles k = 3
+    path = os.path.join(exp_dir, "fig3_hh3.csv")
+    rows = read_csv_rows(path, ("t", "E_err", "H_err"))
+    if rows and len(rows) > 2:
+        t, e, H = zip(*ti_floats(rows, path, ("t", "E_err", "H_err")))
+        f = out["fig3"]
+        f["H_max"] = max(abs(v) for v in H)
+        f["E_p2p"] = max(e) - min(e)
+        sl = rep.get("hh3_drift_slope")
+        if is_number(sl):
+            f["drift_over_run"] = sl * t[-1]
+            mx = rep.get("hh3_max_E_err")
+            if is_number(mx) and mx > 0:
+                f["drift_over_max"] = abs(sl * t[-1]) / mx
+
+    # Fig. 4: the ensemble
+    M = num("ensemble", "size")
+    t_end = num("t_end")
+    path = os.path.join(exp_dir, "fig4_stats.csv")
+    rows = read_csv_rows(path, ("t", "mu", "sigma"))
+    f = out["fig4"]
+    if rows and len(rows) > 2 and t_end:
+        t, mu, sigma = zip(*ti_floats(rows, path, ("t", "mu", "sigma")))
+        f["mu_first"], f["t_first"] = mu[1], t[1]
+        late = [m for x, m in zip(t, mu) if x >= t_end / 10]
+        if late:
+            f["mu_late_mean"], f["mu_late_min"], f["mu_late_max"] = sum(late) / len(late), min(late), max(late)
+        f["D_end"] = sigma[-1] ** 2 / t[-1]
+        f["gamma_tenth"] = ti_gamma(t, sigma, t_end / 10)
+        f["gamma_hundredth"] = ti_gamma(t, sigma, t_end / 100)
+        pts = [(x, sg * sg) for x, sg in zip(t, sigma) if x >= t_end / 10]
+        f["D_fit"] = ti_slope([p[0] for p in pts], [p[1] for p in pts])
+        if M and M > 1:
+            f["mu_se"] = sigma[-1] / math.sqrt(M)
+            f["sigma_rel_se"] = 1 / math.sqrt(2 * (M - 1))
+    ps = pub.get("hh5_sigma_final")
+    if is_number(ps):
+        f["D_pub"] = ps * ps / TI_PUBLISHED_T
+    path = os.path.join(exp_dir, "fig4_trajectories.csv")
+    rows = read_csv_rows(path, ("trajectory", "t", "E_err"))
+    traj = {}
+    if rows:
+        for r, (i, x, e) in zip(rows, ti_floats(rows, path, ("trajectory", "t", "E_err"))):
+            traj.setdefault(int(i), []).append((x, e))
+    outliers = rep.get("hh5_outliers")
+    outliers = [int(i) for i in outliers if is_number(i)] if isinstance(outliers, list) else []
+    keep = [i for i in traj if i not in outliers]
+    if len(keep) > 1 and t_end and len({len(traj[i]) for i in keep}) == 1:
+        times = [x for x, _ in traj[keep[0]]]
+        mus, sds = [], []
+        for j in range(len(times)):
+            v = [traj[i][j][1] for i in keep]
+            m = sum(v) / len(v)
+            mus.append(m)
+            sds.append(math.sqrt(sum((x - m) ** 2 for x in v) / (len(v) - 1)))
+        f["kept"] = len(keep)
+        f["mu_end_kept"], f["sigma_end_kept"] = mus[-1], sds[-1]
+        f["gamma_tenth_kept"] = ti_gamma(times, sds, t_end / 10)
+        f["output_dt_thinned"] = times[1] - times[0] if len(times) > 1 else None
+
+    # Fig. 5: the Poincare cuts of one trajectory in two windows
+    wins = rep.get("poincare_windows")
+    path = os.path.join(exp_dir, "fig5_poincare.csv")
+    rows = read_csv_rows(path, ("window", "t", "q2", "p2"))
+    if isinstance(wins, dict):
+        idx = rep.get("poincare_trajectory")
+        series = traj.get(int(idx)) if is_number(idx) else None
+        for label, w in wins.items():
+            if not (isinstance(w, list) and len(w) == 2 and all(is_number(x) for x in w)):
+                continue
+            g = {"lo": w[0], "hi": w[1], "length": w[1] - w[0]}
+            if rows is not None:
+                sel = [r for r in rows if r["window"] == label]
+                p2s = [v[0] for v in ti_floats(sel, path, ("p2",))]
+                g["cuts"] = len(p2s)
+                if g["length"] > 0:
+                    g["rate"] = len(p2s) / g["length"]
+                if p2s:
+                    g["share_p2_negative"] = sum(1 for v in p2s if v < 0) / len(p2s)
+                    g["mean_p2"] = sum(p2s) / len(p2s)
+            if series:
+                a = min(series, key=lambda te: abs(te[0] - w[0]))
+                z = min(series, key=lambda te: abs(te[0] - w[1]))
+                if z[0] > a[0]:
+                    g["E_lo"], g["E_hi"] = a[1], z[1]
+                    g["change"] = z[1] - a[1]
+                    g["slope"] = (z[1] - a[1]) / (z[0] - a[0])
+            out["fig5"][label] = g
+
+    # cost
+    timing = s.get("timing") or {}
+    ns = timing.get("ns_per_step") or {}
+    c = out["cost"]
+    if isinstance(ns, dict) and is_number(ns.get("sv")) and ns["sv"] > 0:
+        for m in ("ti", "sti"):
+            if is_number(ns.get(m)):
+                c[f"ratio_{m}"] = ns[m] / ns["sv"]
+    run = {}
+    if os.path.isfile(os.path.join(exp_dir, "run.json")):
+        run = load_json(os.path.join(exp_dir, "run.json"))
+    threads = run.get("threads") if isinstance(run, dict) else None
+    c["threads"] = threads if is_number(threads) else None
+    n4 = out["scene"].get("fig4_steps")
+    w4 = timing.get("fig4_wall_s")
+    if is_number(w4) and c["threads"] and n4 and M:
+        c["fig4_ns_per_step_thread"] = 1e9 * w4 * c["threads"] / (M * n4)
+        c["fig4_steps_total"] = M * n4
+    return out
+
+
+def ti_results_table(name, s, src, derived):
+    """Published and reproduced values of ti_drift, and the reproduced values without a published one."""
+    pub, rep, orders = s.get("published") or {}, s.get("reproduced") or {}, s.get("orders") or {}
+    sources = {"summary": s, "derived": derived or {}}
+
+    def cell(v, kind):
+        if kind == "fixed12":
+            return math_cell(f"{v:.12f}" if is_number(v) and math.isfinite(v) else None)
+        if kind.startswith("len:"):
+            return math_cell(fmt(len(v), kind[4:]) if isinstance(v, list) else None)
+        return math_cell(fmt(v, kind))
+
+    lines = [HEADER.format(src=src)]
+    lines.append("\\begin{table}[htbp]\n\\centering\n\\footnotesize\n")
+    lines.append(f"\\caption{{Published and reproduced values of {experiment_title(name)}. Orders: least-squares "
+                 "slopes of $\\log(\\text{error})$ against $\\log(\\omega h_{\\text{eff}})$ over "
+                 f"$\\omega h_{{\\text{{eff}}}}\\le{TI_FIT_MAX_WH:g}$ and the errors above $10^3$ machine epsilons; "
+                 "published orders: the powers of $h$ stated in Sect.~1.4 of [004]; published slope of Fig.~3: "
+                 "``no drift''; published exponent of Fig.~4: ``like the square root of time''. Difference = "
+                 "reproduced $-$ published. Below the line: reproduced values without a published number "
+                 "(the statements of [004] in brackets), and $\\sigma^2/t$ computed from the published $\\sigma$. $E=\\hat H+\\frac12h^4\\alpha^2K$ of (3.3) and (4.2); "
+                 "$H_3$ of Fig.~2: that of TI in (3.3). Figs.~2--5 evaluate these at the unprocessed $(p_n,q_n)$.}\n")
+    lines.append(f"\\label{{tab:{name}-table}}\n")
+    lines.append("\\begin{tabular}{@{}p{0.50\\linewidth}rrr@{}}\n\\toprule\n")
+    lines.append("Quantity & Published & Reproduced & Difference \\\\\n\\midrule\n")
+    known = [k for k, _, _ in TI_PUBLISHED_ROWS]
+    rows = [r for r in TI_PUBLISHED_ROWS if r[0] in pub]
+    rows += [(k, tex_escape(k), "general") for k in pub if k not in known]
+    for key, label, kind in rows:
+        p = pub[key]
+        r = orders[key] if key in orders else rep.get(key)
+        if isinstance(p, dict):  # one row per parameter
+            for sub, pv in p.items():
+                rv = r.get(sub) if isinstance(r, dict) else None
+                cells = [math_cell(general(pv)), math_cell(None if not is_number(rv) else general(rv)),
+                         math_cell(None if not is_number(rv) else general(rv - pv))]
+                lines.append(f"{label} (\\texttt{{{tex_escape(sub)}}}) & " + " & ".join(cells) + " \\\\\n")
+            continue
+        diff = r - p if is_number(r) and is_number(p) else None
+        if kind == "order":
+            cells = [math_cell(fmt(p, "porder")), cell(r, "order"), math_cell(fmt(diff, "dorder"))]
+        elif kind == "general":
+            cells = [math_cell(general(p)), math_cell(general(r) if is_number(r) else None),
+                     math_cell(general(diff) if diff is not None else None)]
+        else:
+            dkind = "err" if kind in ("fixed12", "sci3") else kind
+            cells = [cell(p, kind), cell(r, kind), cell(diff, dkind if diff != 0 else "plain")]
+        lines.append(f"\\raggedright {label} & " + " & ".join(cells) + " \\\\\n")
+    lines.append("\\midrule\n")
+    for label, path, kind, *pub_path in TI_EXTRA_ROWS:
+        v = lookup(sources.get(path[0]) or {}, path[1:])
+        if pub_path:
+            pv = lookup(sources.get(pub_path[0][0]) or {}, pub_path[0][1:])
+            diff = v - pv if is_number(v) and is_number(pv) else None
+            lines.append(f"\\raggedright {label} & {cell(pv, kind)} & {cell(v, kind)} & {cell(diff, 'err')} \\\\\n")
+        else:
+            lines.append(f"\\raggedright {label} & --- & {cell(v, kind)} & --- \\\\\n")
+    lines.append("\\bottomrule\n\\end{tabular}\n\\end{table}\n")
+    return "".join(lines)
+
+
+def ti_timing_table(name, s, src, derived):
+    """Cost of ti_drift: ns per step of the three methods and the wall time of the ensemble."""
+    timing = s.get("timing") or {}
+    ns = timing.get("ns_per_step") or {}
+    c = (derived.get("td") or {}).get("cost") or {}
+    lines = [HEADER.format(src=src)]
+    if not isinstance(ns, dict) or not ns:
+        lines.append("\\begin{center}\\small No timing recorded for \\texttt{"
+                     f"{tex_escape(name)}" "}.\\end{center}\n")
+        return "".join(lines)
+    base = ns.get("sv") if is_number(ns.get("sv")) and ns["sv"] > 0 else None
+    lines.append("\\begin{table}[htbp]\n\\centering\n\\small\n")
+    lines.append(f"\\caption{{Cost of {experiment_title(name)}: time per step on the H\\'enon--Heiles problem "
+                 "($k$ of Fig.~4, $h=0.2$, from the first start of the ensemble, no processing), the force "
+                 "evaluations per step (the force at the end of a step is reused by the next one) and the "
+                 "cost relative to St\\\"ormer--Verlet.}\n")
+    lines.append(f"\\label{{tab:{name}-timing}}\n")
+    lines.append("\\begin{tabular}{@{}llrr@{}}\n\\toprule\n")
+    lines.append("Method & Evaluations per step & ns per step & Relative cost \\\\\n\\midrule\n")
+    listed = [k for k, _, _ in TI_TIMING_ROWS]
+    rows = [r for r in TI_TIMING_ROWS if r[0] in ns] + [(k, tex_escape(k), "") for k in ns if k not in listed]
+    for key, label, evals in rows:
+        v = ns.get(key)
+        rel = v / base if is_number(v) and base else None
+        lines.append(f"{label} & {evals} & {math_cell(fmt(v, 'ns'))} & {math_cell(fmt(rel, 'ratio'))} \\\\\n")
+    lines.append("\\bottomrule\n\\end{tabular}\n")
+    notes = []
+    if isinstance(timing.get("method"), str):
+        notes.append("measurement: " + tex_escape(timing["method"]))
+    w4 = timing.get("fig4_wall_s")
+    if is_number(w4):
+        text = f"the ensemble of Fig.~4 takes ${fmt(w4, 'seconds')}$\\,s"
+        if is_number(c.get("threads")):
+            text += f" on {int(c['threads'])} thread{'s' if c['threads'] != 1 else ''}"
+        if is_number(c.get("fig4_steps_total")):
+            text += f" for ${sci(c['fig4_steps_total'], 3)}$ steps"
+        if is_number(c.get("fig4_ns_per_step_thread")):
+            text += f", ${fmt(c['fig4_ns_per_step_thread'], 'ns')}$\\,ns per step and thread"
+        notes.append(text)
+    if is_number(timing.get("wall_s")):
+        notes.append(f"wall time of the whole run ${fmt(timing['wall_s'], 'seconds')}$\\,s")
+    if notes:
+        lines.append("\\par\\smallskip\\parbox{\\linewidth}{\\footnotesize " + "; ".join(notes) + ".}\n")
+    lines.append("\\end{table}\n")
+    return "".join(lines)
+
+
 # Experiment-specific derived quantities (derived[key] = function(summary, scene, exp_dir)) and
 # published-vs-reproduced tables (function(name, summary, summary_path, derived)).
-DERIVED_SUMMARIES = {"lobatto_table": ("lt", lobatto_summary)}
-RESULTS_TABLES = {"lobatto_table": lobatto_results_table}
+DERIVED_SUMMARIES = {"lobatto_table": ("lt", lobatto_summary), "ti_drift": ("td", ti_summary)}
+RESULTS_TABLES = {"lobatto_table": lobatto_results_table, "ti_drift": ti_results_table}
+# Timing tables of their own (function(name, summary, summary_path, derived)).
+TIMING_TABLES = {"ti_drift": ti_timing_table}
 
 # Macros the text cites: (name, path into summary.json or a derived quantity, format).
 # A path starts with "summary", "scene" (run.json's resolved scene) or "derived".
@@ -1048,6 +1488,141 @@ MACROS["lobatto_table"] = [
 ] + _lt_cost_macros()
 
 
+def _td_window_macros():
+    out = []
+    for label, word in (("growth", "Growth"), ("no_growth", "Flat")):
+        w = ("derived", "td", "fig5", label)
+        out += [(f"TDwin{word}Lo", w + ("lo",), "int"),
+                (f"TDwin{word}Hi", w + ("hi",), "int"),
+                (f"TDwin{word}Length", w + ("length",), "int"),
+                (f"TDcuts{word}", w + ("cuts",), "int"),
+                (f"TDcutRate{word}", w + ("rate",), "fixed3"),
+                (f"TDcutNeg{word}", w + ("share_p2_negative",), "percent"),
+                (f"TDcutMeanPtwo{word}", w + ("mean_p2",), "err"),
+                (f"TDwinChange{word}", w + ("change",), "err"),
+                (f"TDwinSlope{word}", w + ("slope",), "err"),
+                (f"TDwinElo{word}", w + ("E_lo",), "err"),
+                (f"TDwinEhi{word}", w + ("E_hi",), "err")]
+    return out
+
+
+MACROS["ti_drift"] = [
+    # scene (run.json) and quantities derived from it
+    ("TDh", ("scene", "h"), "plain"),
+    ("TDsamples", ("scene", "samples"), "int"),
+    ("TDtOmega", ("scene", "oscillator", "t_omega"), "plain"),
+    ("TDwhMin", ("derived", "td", "scene", "wh_min"), "plain"),
+    ("TDwhMax", ("derived", "td", "scene", "wh_max"), "plain"),
+    ("TDwhCount", ("derived", "td", "scene", "wh_count"), "int"),
+    ("TDwhTiCount", ("derived", "td", "scene", "wh_ti_count"), "int"),
+    ("TDstepsTiMin", ("derived", "td", "scene", "steps_ti_min"), "int"),
+    ("TDpendQzero", ("scene", "pendulum", "q0"), "plain"),
+    ("TDpendPzero", ("scene", "pendulum", "p0"), "plain"),
+    ("TDpendHzero", ("derived", "td", "scene", "pendulum_H0"), "plain"),
+    ("TDpendTend", ("scene", "pendulum", "t_end"), "int"),
+    ("TDpendSteps", ("derived", "td", "scene", "pendulum_steps"), "int"),
+    ("TDpendDt", ("derived", "td", "scene", "pendulum_sample_dt"), "plain"),
+    ("TDhhQtwo", ("scene", "hh3", "q2"), "plain"),
+    ("TDhhPtwo", ("scene", "hh3", "p2"), "plain"),
+    ("TDhhHzero", ("scene", "hh", "H0"), "plain"),
+    ("TDhhK", ("scene", "hh", "k"), "int"),
+    ("TDhhThreePone", ("derived", "td", "scene", "hh3_p1"), "sig7"),
+    ("TDhhPone", ("derived", "td", "scene", "hh_p1"), "sig7"),
+    ("TDhhThreeTend", ("scene", "hh3", "t_end"), "int"),
+    ("TDhhThreeSteps", ("derived", "td", "scene", "hh3_steps"), "int"),
+    ("TDhhThreeDt", ("derived", "td", "scene", "hh3_sample_dt"), "plain"),
+    ("TDtEnd", ("scene", "t_end"), "sci"),
+    ("TDfourSteps", ("derived", "td", "scene", "fig4_steps"), "sci3"),
+    ("TDfourDt", ("derived", "td", "scene", "fig4_sample_dt"), "plain"),
+    ("TDensSize", ("scene", "ensemble", "size"), "int"),
+    ("TDensSeed", ("scene", "ensemble", "seed"), "intplain"),
+    ("TDensPert", ("scene", "ensemble", "perturbation"), "plain"),
+    ("TDensOutlier", ("scene", "ensemble", "outlier"), "sci"),
+    # Fig. 1
+    ("TDorderTiSol", ("summary", "orders", "ti_solution"), "order"),
+    ("TDorderTiEnergy", ("summary", "orders", "ti_energy"), "order"),
+    ("TDorderSvEnergy", ("summary", "orders", "sv_energy"), "order"),
+    ("TDorderSvSol", ("summary", "orders", "sv_solution"), "order"),
+    ("TDfitPointsGlobal", ("derived", "td", "osc", "fit_points_global"), "int"),
+    ("TDfitPointsEnergy", ("derived", "td", "osc", "fit_points_energy"), "int"),
+    ("TDroundoffWh", ("derived", "td", "osc", "ti_roundoff_wh_max"), "plain"),
+    ("TDcommon", ("derived", "td", "osc", "common"), "int"),
+    ("TDtiBetterEnergy", ("derived", "td", "osc", "ti_better_energy"), "int"),
+    ("TDtiBetterGlobal", ("derived", "td", "osc", "ti_better_global"), "int"),
+    ("TDsvDevSmall", ("derived", "td", "osc", "sv_dev_small"), "percent"),
+    ("TDtiDevSmall", ("derived", "td", "osc", "ti_dev_small"), "percent"),
+    ("TDsvRatioLarge", ("derived", "td", "osc", "sv_ratio_large"), "sig3"),
+    ("TDsvRatioLargeWh", ("derived", "td", "osc", "sv_ratio_large_wh"), "plain"),
+    ("TDtiRatioLarge", ("derived", "td", "osc", "ti_ratio_large"), "sig3"),
+    ("TDtiRatioLargeWh", ("derived", "td", "osc", "ti_ratio_large_wh"), "plain"),
+    ("TDtiLastWh", ("derived", "td", "osc", "ti_last_wh"), "plain"),
+    ("TDtiLastEnergy", ("derived", "td", "osc", "ti_last_energy"), "sig4"),
+    ("TDwhRef", ("derived", "td", "osc", "wh_ref"), "plain"),
+    ("TDsvGlobalRef", ("derived", "td", "osc", "sv_global_ref"), "err"),
+    ("TDtiGlobalRef", ("derived", "td", "osc", "ti_global_ref"), "err"),
+    ("TDsvEnergyRef", ("derived", "td", "osc", "sv_energy_ref"), "err"),
+    ("TDtiEnergyRef", ("derived", "td", "osc", "ti_energy_ref"), "err"),
+    ("TDbound", ("summary", "reproduced", "ti_stability_bound"), "sig7"),
+    ("TDboundDiff", ("derived", "td", "stability", "diff"), "err"),
+    # Fig. 2
+    ("TDdriftRate", ("summary", "reproduced", "unsym_pendulum_drift_rate"), "sci3"),
+    ("TDdriftPred", ("summary", "reproduced", "unsym_pendulum_drift_rate_predicted"), "sci3"),
+    ("TDdriftRelDiff", ("derived", "td", "fig2", "rel_diff"), "percent"),
+    ("TDdriftChange", ("derived", "td", "fig2", "change"), "err"),
+    ("TDdriftHslope", ("derived", "td", "fig2", "H_slope"), "sci3"),
+    ("TDshiftedResidual", ("derived", "td", "fig2", "shifted_residual_p2p"), "err"),
+    ("TDHresidual", ("derived", "td", "fig2", "H_residual_p2p"), "err"),
+    ("TDpendUmax", ("derived", "td", "fig2", "U_max"), "sig3"),
+    ("TDturnover", ("derived", "td", "fig2", "turnover_time"), "sci"),
+    # Fig. 3
+    ("TDhhThreeMax", ("summary", "reproduced", "hh3_max_E_err"), "err"),
+    ("TDhhThreeSlope", ("summary", "reproduced", "hh3_drift_slope"), "err"),
+    ("TDhhThreeDrift", ("derived", "td", "fig3", "drift_over_run"), "err"),
+    ("TDhhThreeDriftShare", ("derived", "td", "fig3", "drift_over_max"), "percent"),
+    ("TDhhThreePtp", ("derived", "td", "fig3", "E_p2p"), "err"),
+    ("TDhhThreeHmax", ("derived", "td", "fig3", "H_max"), "err"),
+    # Fig. 4
+    ("TDmu", ("summary", "reproduced", "hh5_mu_final"), "sci3"),
+    ("TDmuPub", ("summary", "published", "hh5_mu_final"), "sci"),
+    ("TDsigma", ("summary", "reproduced", "hh5_sigma_final"), "sci3"),
+    ("TDsigmaPub", ("summary", "published", "hh5_sigma_final"), "sci"),
+    ("TDgamma", ("summary", "reproduced", "hh5_sigma_exponent"), "fixed3"),
+    ("TDgammaHundredth", ("derived", "td", "fig4", "gamma_hundredth"), "fixed3"),
+    ("TDgammaKept", ("derived", "td", "fig4", "gamma_tenth_kept"), "fixed3"),
+    ("TDkept", ("derived", "td", "fig4", "kept"), "int"),
+    ("TDmuKept", ("derived", "td", "fig4", "mu_end_kept"), "sci3"),
+    ("TDsigmaKept", ("derived", "td", "fig4", "sigma_end_kept"), "sci3"),
+    ("TDthinnedDt", ("derived", "td", "fig4", "output_dt_thinned"), "plain"),
+    ("TDmuFirst", ("derived", "td", "fig4", "mu_first"), "sci3"),
+    ("TDtFirst", ("derived", "td", "fig4", "t_first"), "plain"),
+    ("TDmuLateMean", ("derived", "td", "fig4", "mu_late_mean"), "sci3"),
+    ("TDmuLateMin", ("derived", "td", "fig4", "mu_late_min"), "sci3"),
+    ("TDmuLateMax", ("derived", "td", "fig4", "mu_late_max"), "sci3"),
+    ("TDmuSe", ("derived", "td", "fig4", "mu_se"), "sci"),
+    ("TDsigmaRelSe", ("derived", "td", "fig4", "sigma_rel_se"), "percent"),
+    ("TDDend", ("derived", "td", "fig4", "D_end"), "sci3"),
+    ("TDDfit", ("derived", "td", "fig4", "D_fit"), "sci3"),
+    ("TDDpub", ("derived", "td", "fig4", "D_pub"), "sci3"),
+    ("TDoutliers", ("summary", "reproduced", "hh5_outliers"), "len:int"),
+    ("TDpoincareTraj", ("summary", "reproduced", "poincare_trajectory"), "int"),
+] + _td_window_macros() + [
+    # symplecticity and volume
+    ("TDsympTi", ("summary", "reproduced", "ti_symplecticity_defect"), "err"),
+    ("TDsympSti", ("summary", "reproduced", "sti_symplecticity_defect"), "err"),
+    ("TDdetSti", ("summary", "reproduced", "sti_det_minus_one"), "err"),
+    # cost
+    ("TDnsSv", ("summary", "timing", "ns_per_step", "sv"), "ns"),
+    ("TDnsTi", ("summary", "timing", "ns_per_step", "ti"), "ns"),
+    ("TDnsSti", ("summary", "timing", "ns_per_step", "sti"), "ns"),
+    ("TDratioTi", ("derived", "td", "cost", "ratio_ti"), "ratio"),
+    ("TDratioSti", ("derived", "td", "cost", "ratio_sti"), "ratio"),
+    ("TDfourWall", ("summary", "timing", "fig4_wall_s"), "seconds"),
+    ("TDfourNs", ("derived", "td", "cost", "fig4_ns_per_step_thread"), "ns"),
+    ("TDthreads", ("derived", "td", "cost", "threads"), "int"),
+    ("TDrunWall", ("summary", "timing", "wall_s"), "seconds"),
+]
+
+
 NA = r"\textit{n/a}"
 
 
@@ -1128,6 +1703,10 @@ def fmt(value, kind):
         return sig(value, 7)
     if kind == "sig4":
         return sig(value, 4)
+    if kind == "intplain":  # an integer without digit grouping (a seed)
+        return f"{int(round(value))}"
+    if kind == "sig3":
+        return sig(value, 3) if value != 0 else "0"
     if kind == "fixed5":
         return f"{value:.5f}"
     if kind in ("sci3", "sci4"):  # 3 or 4 significant digits, scientific below 1e-3 or from 1e4
@@ -1957,6 +2536,8 @@ def render(name, exp_dir):
         timing_text = cost_timing_table(name, s, summary_path, derived)
     elif name in KERNEL_TIMING:
         timing_text = kernel_timing_table(name, s, summary_path, derived)
+    elif name in TIMING_TABLES:
+        timing_text = TIMING_TABLES[name](name, s, summary_path, derived)
     else:
         timing_text = timing_table(name, s, summary_path, cross)
     table_text = (RESULTS_TABLES[name](name, s, summary_path, derived) if name in RESULTS_TABLES

@@ -280,7 +280,7 @@ void run(Context& ctx) {
     const std::size_t windows = 20, per = std::max<std::size_t>(2, ns / windows);
     std::size_t steep = 0, flat = 0;
     double smax = -1, smin = std::numeric_limits<double>::infinity();
-    for (std::size_t w = 0; w + 1 < windows && (w + 1) * per <= ns; ++w) {
+    for (std::size_t w = 0; w < windows && (w + 1) * per <= ns; ++w) {
       std::vector<double> x, y;
       for (std::size_t k = w * per; k < (w + 1) * per; ++k) x.push_back(static_cast<double>(k)), y.push_back(e[k]);
       const double sl_w = std::abs(slope(x, y));
