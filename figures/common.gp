@@ -148,3 +148,34 @@ C_STABLE = '#CFE8F6'   # shading: h ω where the Lobatto map is stable (spectral
 scene_full(key) = (_s = system(sprintf("awk -v want='scene.%s' '%s' '%s' 2>/dev/null", \
                                        key, _json_awk, results . '/run.json')), \
                    _s eq "" ? "?" : sprintf("%.17g", real(_s)))
+
+# ---- 004 simplified Takahashi–Imada method, energy drift (figures/ti_drift_*.gp) ----
+# Numbers from run.json / summary.json for these scripts. scene_num, scene_full and summary_num above
+# convert with real(), which in gnuplot 5.4 rejects a number whose mantissa has no decimal point, such
+# as "2e-06" (how the JSON writer prints 2·10^{-6}): "Trailing characters after numeric expression".
+# json_real('summary.json', 'reproduced.hh5_mu_final') is the value of the (dotted) key of
+# results/FILE rewritten by awk as %.17e, which real() and eval read; "?" if the file or the key is
+# missing or the value is not a number. scene_real('t_end') and summary_real('orders.sv_energy') are
+# the shorthands; use them with need_num.
+_num_awk = '$0 ~ /^[-+]?([0-9]+[.]?[0-9]*|[.][0-9]+)([eE][-+]?[0-9]+)?$/ { printf "%.17e", $0 }'
+json_real(file, key) = (_s = system(sprintf("awk -v want='%s' '%s' '%s' 2>/dev/null | awk '%s'", \
+                                            key, _json_awk, results . '/' . file, _num_awk)), \
+                        _s eq "" ? "?" : _s)
+scene_real(key)   = json_real('run.json', 'scene.' . key)
+summary_real(key) = json_real('summary.json', key)
+# sci(x): x as "−6.52·10^{−6}" (3 significant digits; enhanced text)
+sci(x) = x == 0 ? "0" : gprintf("%.2t·10^{%T}", x)
+# the methods: Störmer–Verlet vermillion and dashed (as in 004 Fig. 1), Takahashi–Imada (1.4) blue,
+# the simplified method (1.6) bluish green (it is the only method of Figs 2–5); statistics black
+C_TI   = C_COMP
+C_STI  = '#009E73'
+C_STAT = '#000000'
+LS_TD_SV  = 101; set style line LS_TD_SV  lc rgb C_SV  lw 1.0 dt (6,3) pt 7 ps 0.55   # filled circles, dashed
+LS_TD_TI  = 102; set style line LS_TD_TI  lc rgb C_TI  lw 1.0 dt 1     pt 4 ps 0.80   # open squares, solid
+LS_TD_STI = 103; set style line LS_TD_STI lc rgb C_STI lw 1.0 dt 1     pt 1 ps 0.80   # plus signs
+# least-squares fits: dashed in the method's colour (as above)
+LS_TD_SV_FIT  = 111; set style line LS_TD_SV_FIT  lc rgb C_SV  lw 0.9 dt (8,4)
+LS_TD_TI_FIT  = 112; set style line LS_TD_TI_FIT  lc rgb C_TI  lw 0.9 dt (8,4)
+LS_TD_STI_FIT = 113; set style line LS_TD_STI_FIT lc rgb C_STI lw 1.2 dt (8,4)
+# time as the colour of points (Fig. 5): eval PALETTE_TIME (viridis, cut before its light yellow end)
+PALETTE_TIME = "set palette defined (0 '#440154', 0.25 '#3B528B', 0.5 '#21908C', 0.75 '#5DC863', 1 '#B5DE2B')"

@@ -1,0 +1,68 @@
+# Fig. 2 of 004 (the simplified Takahashi–Imada method), Sect. 5.1: the unsymmetric pendulum
+# U(q) = −cos q + 0.2 sin 2q (no symmetry q ↔ −q; p > 0 throughout, the pendulum turns round),
+# integrated with the simplified method (1.6), α = 1/12, without processing.
+#   (a) the shifted energy H + h²H_3 minus its initial value, H_3 = (U''(p,p) − |∇U|²)/12 (Takahashi–
+#       Imada's, docs: shared note ti_drift.md §3.4), with the least-squares line whose slope is
+#       summary.json's reproduced.unsym_pendulum_drift_rate (drawn through the data's centroid, which
+#       the least-squares line passes through); the key also gives the rate predicted from (4.3).
+#   (b) the error of H itself: the O(h²) oscillation on top of the same drift (dashed: the slope of
+#       (a) through the centroid of the H error).
+# The series is sampled (fig2_pendulum.csv: every Δt, much longer than a period, so the oscillation is
+# aliased): drawn as points.
+# Input: fig2_pendulum.csv; summary.json (drift rates); run.json (h, pendulum start).
+if (!exists("results")) results = 'results/ti_drift'
+load 'figures/common.gp'
+set encoding utf8    # (so that the key width counts characters, not bytes)
+F2 = csv('fig2_pendulum.csv')
+
+eval need_num('H', scene_real('h'))
+eval need_num('Q0', scene_real('pendulum.q0'))
+eval need_num('P0', scene_real('pendulum.p0'))
+eval need_num('RATE', summary_real('reproduced.unsym_pendulum_drift_rate'))
+eval need_num('RATE_PRED', summary_real('reproduced.unsym_pendulum_drift_rate_predicted'))
+
+stats F2 using "t":"shifted_energy_err" nooutput
+TBAR = STATS_mean_x; EBAR = STATS_mean_y; TMAX = STATS_max_x; NS = STATS_records
+stats F2 using (column("t") > 0 ? column("t") : NaN) nooutput
+DT = STATS_min
+stats F2 using "H_err" nooutput
+HBAR = STATS_mean
+drift(t) = EBAR + RATE * (t - TBAR)
+hdrift(t) = HBAR + RATE * (t - TBAR)     # (b): the same slope through the centroid of the H error
+
+set style line 201 lc rgb C_STI lw 1.0 pt 7 ps 0.25      # samples
+set style line 202 lc rgb C_STAT lw 1.2 dt (8,4)         # the fitted drift
+
+do for [fmt in FORMATS] {
+    eval term(fmt, 'ti_drift_fig2', 17, 14)
+    set multiplot title sprintf("{/:Bold Fig. 2:} unsymmetric pendulum U(q) = −cos q + 0.2 sin 2q, start (q_0, p_0) = (%g, %g), " \
+        . "simplified Takahashi–Imada (1.6), α = 1/12,\nh = %g, no processing; %d samples, every Δt = %g", Q0, P0, H, NS, DT)
+    set xrange [0:TMAX]
+    set format x "%g"
+    set format y "%g"
+    set mxtics; set mytics
+    set lmargin at screen 0.13; set rmargin at screen 0.97
+
+    # ---- (a) the shifted energy ----
+    set tmargin at screen 0.88; set bmargin at screen 0.42
+    set xlabel ""
+    set format x ""
+    set ylabel "(H + h^2H_3)(p_n, q_n) − (H + h^2H_3)(p_0, q_0)" offset 0.5, 0
+    set title "(a) shifted modified energy, H_3 = (U''(p, p) − |∇U(q)|^2)/12: linear drift O(t h^4)" offset 0, -0.3
+    set key bottom left Left reverse samplen 3 width -2 font ",8"
+    plot F2 using "t":"shifted_energy_err" with points ls 201 title "simplified TI, h = ".gprintf("%g", H), \
+         [t=0:TMAX:TMAX] '+' using (t):(drift(t)) with lines ls 202 \
+             title sprintf("least-squares slope %s per unit time; predicted from (4.3): %s", sci(RATE), sci(RATE_PRED))
+
+    # ---- (b) the energy ----
+    set tmargin at screen 0.33; set bmargin at screen 0.08
+    set format x "%g"
+    set xlabel "time t" offset 0, 0.3
+    set ylabel "H(p_n, q_n) − H(p_0, q_0)" offset 0.5, 0
+    set title "(b) energy H = p^2/2 + U(q): bounded O(h^2) oscillation plus the same drift"
+    set key bottom left Left reverse samplen 3 width -2 font ",8"
+    plot F2 using "t":"H_err" with points ls 201 notitle, \
+         [t=0:TMAX:TMAX] '+' using (t):(hdrift(t)) with lines ls 202 title "slope of (a)"
+    unset multiplot
+    unset output
+}
