@@ -21,6 +21,7 @@
 #include "geomint/integrators/symplectic_euler.hpp"
 #include "geomint/observables/drift.hpp"
 #include "geomint/observables/order_fit.hpp"
+#include "geomint/observables/symplecticity.hpp"
 #include "geomint/reference/odeint_reference.hpp"
 #include "geomint/runner/experiment.hpp"
 #include "geomint/runner/timing.hpp"
@@ -308,14 +309,8 @@ void run(Context& ctx) {
   orders["simpson_nonlinear_pendulum"] = fit_order(nh, e_sp, nfloor, "simpson_nonlinear_pendulum").order;
   orders["midpoint_nonlinear_pendulum"] = fit_order(nh, e_mp, nfloor, "midpoint_nonlinear_pendulum").order;
   // Symplecticity of the nonlinear one-step maps: max |J^T Omega J - Omega|.
-  const auto defect = [](const auto& J) {
-    constexpr int D2 = std::decay_t<decltype(J)>::RowsAtCompileTime, D = D2 / 2;
-    Mat<D2> O = Mat<D2>::Zero();
-    O.template block<D, D>(0, D) = Mat<D>::Identity(), O.template block<D, D>(D, 0) = -Mat<D>::Identity();
-    return (J.transpose() * O * J - O).cwiseAbs().maxCoeff();
-  };
-  reproduced["symplecticity_defect_pendulum"] = defect(galerkin_step_jacobian(lob, pend, pz0, nh.front()));
-  reproduced["symplecticity_defect_elastic"] = defect(galerkin_step_jacobian(lob, elastic, ez0, nh.front()));
+  reproduced["symplecticity_defect_pendulum"] = symplecticity_defect(galerkin_step_jacobian(lob, pend, pz0, nh.front()));
+  reproduced["symplecticity_defect_elastic"] = symplecticity_defect(galerkin_step_jacobian(lob, elastic, ez0, nh.front()));
 
   // ---- What the accuracy costs (nonlinear pendulum to t_end) ----
   ctx.progress("cost");

@@ -10,6 +10,7 @@
 #include <Eigen/Eigenvalues>
 
 #include "geomint/integrators/galerkin_variational.hpp"
+#include "geomint/observables/symplecticity.hpp"
 #include "geomint/systems/elastic_pendulum.hpp"
 #include "geomint/systems/harmonic_oscillator.hpp"
 
@@ -74,9 +75,7 @@ TEST(Lobatto, StabilityBoundOfEquation10) {
 TEST(Lobatto, NonlinearStepIsSymplectic) {
   const ElasticPendulumWithGravity ep{1.0, {SpringTerm{1.0, 1.0}, GravityTerm{1.0, 0.2}}};
   const auto J = galerkin_step_jacobian(lobatto_rule(), ep, make_state<2>(Vec<2>(1.2, 0.6), Vec<2>(0.3, -0.1)), 0.2);
-  Mat<4> O = Mat<4>::Zero();
-  O.block<2, 2>(0, 2) = Mat<2>::Identity(), O.block<2, 2>(2, 0) = -Mat<2>::Identity();
-  EXPECT_LT((J.transpose() * O * J - O).cwiseAbs().maxCoeff(), 1e-10);
+  EXPECT_LT(symplecticity_defect(J), 1e-10);
   // and the Jacobian is that of the step (central differences)
   const auto z = make_state<2>(Vec<2>(1.2, 0.6), Vec<2>(0.3, -0.1));
   auto a = z, b = z;
