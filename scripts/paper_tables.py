@@ -24,9 +24,9 @@ value per parameter, e.g. per step size, paired key by key with an object of num
 null). An experiment in RESULTS_TABLES has its own table layout (lobatto_table: Table 1 of
 001 with published and reproduced values side by side, and the growth rates of its Fig. 2
 beside their value in exact arithmetic, from the closed form of 001 eqs. (13)-(14); ti_drift:
-004 Figs. 1-5 with the reproduced values that have no published number below a line), and one in
+004 Figs. 1-6 with the reproduced values that have no published number below a line), and one in
 TIMING_TABLES its own timing table (ti_drift: ns per step and force evaluations per step of the
-three methods, and the wall time of the Fig. 4 ensemble);
+three methods, and the wall times of the Fig. 4 and Fig. 6 ensembles);
 DERIVED_SUMMARIES adds quantities computed from its CSV files and scene for the macros.
 Orders are printed to 3 decimals; other values to
 4 significant digits in the tables and 2 in the macros, in scientific notation
@@ -67,7 +67,7 @@ TITLES = {
     "energy_map": r"[000] Fig.~6 (\texttt{energy\_map})",
     "lobatto_table": r"[001] Table~1, Figs.~1, 2 (\texttt{lobatto\_table})",
     "measure_cloud": r"[003] Figs.~5.1--5.6 (\texttt{measure\_cloud})",
-    "ti_drift": r"[004] Figs.~1--5 (\texttt{ti\_drift})",
+    "ti_drift": r"[004] Figs.~1--6 (\texttt{ti\_drift})",
 }
 
 # Row descriptions of the published-vs-reproduced table (LaTeX).
@@ -666,7 +666,7 @@ def lobatto_results_table(name, s, src, derived):
 
 
 # ---------------------------------------------------------------------------
-# ti_drift (004): Figs. 1-5 of the simplified Takahashi-Imada method.
+# ti_drift (004): Figs. 1-6 of the simplified Takahashi-Imada method.
 # ---------------------------------------------------------------------------
 
 # Constants of the executable (experiments/ti_drift/main.cpp) that the derived quantities need.
@@ -690,7 +690,8 @@ TI_PUBLISHED_ROWS = [
     ("hh5_sigma_exponent", r"Fig.~4: exponent $\gamma$ of $\sigma\propto t^\gamma$ over "
                            r"$[t_{\text{end}}/10,t_{\text{end}}]$ (``like the square root of time'')", "fixed3"),
     # Fig. 6 (the Lennard-Jones cluster), when the results contain it
-    ("lj_mu_final", r"Fig.~6: mean $\mu$ of the error of $E$ over the ensemble at $t_{\text{end}}$", "sci3"),
+    ("lj_mu_final", r"Fig.~6 (at the step $h$ of the text, not the printed 0.2): mean $\mu$ of the error of $E$ "
+                    r"over the ensemble at $t_{\text{end}}$", "sci3"),
     ("lj_sigma_final", r"Fig.~6: standard deviation $\sigma$ at $t_{\text{end}}$", "sci3"),
     ("lj_sigma_exponent", r"Fig.~6: exponent $\gamma$ of $\sigma\propto t^\gamma$ over "
                           r"$[t_{\text{end}}/10,t_{\text{end}}]$", "fixed3"),
@@ -717,6 +718,15 @@ TI_EXTRA_ROWS = [
     (r"Fig.~5: share of the cuts with $p_2<0$, window of steepest growth ([004]: the cuts ``lie in the region "
      r"$p_2<0$'')", ("derived", "td", "fig5", "growth", "share_p2_negative"), "percent"),
     (r"Fig.~5: the same, flattest window", ("derived", "td", "fig5", "no_growth", "share_p2_negative"), "percent"),
+    # Fig. 6, shown only when the results contain it (summary["reproduced"]["lj_mu_final"])
+    (r"Fig.~6: standard error $\sigma/\sqrt M$ of $\mu$ at $t_{\text{end}}$ ($M$ trajectories)",
+     ("summary", "reproduced", "lj_mu_final_stderr"), "sci3"),
+    (r"Fig.~6: standard error $\sigma/\sqrt{2(M-1)}$ of $\sigma$ at $t_{\text{end}}$",
+     ("summary", "reproduced", "lj_sigma_final_stderr"), "sci3"),
+    (r"Fig.~6: largest $|H_n-H_0|$ over the ensemble at the output times ([004]: ``an error in $H$ of size "
+     r"$10^{-3}$'')", ("summary", "reproduced", "lj_H_err_max"), "err"),
+    (r"Fig.~6: runs of the step-size scan that diverge at the printed $h=0.2$ ([004]: ``sufficiently small'')",
+     ("derived", "td", "fig6", "div_first"), "int"),
     (r"Sect.~1.3: $\max|J^{\mathsf T}\Omega J-\Omega|$ of one step of TI (1.4), H\'enon--Heiles $k=3$",
      ("summary", "reproduced", "ti_symplecticity_defect"), "err"),
     (r"Sect.~1.3: the same for the simplified method (1.6)", ("summary", "reproduced", "sti_symplecticity_defect"), "err"),
@@ -779,7 +789,7 @@ def ti_summary(s, scene, exp_dir):
     """Derived quantities of ti_drift for the tables and macros (missing inputs give None)."""
     rep, pub = s.get("reproduced") or {}, s.get("published") or {}
     sc = scene if isinstance(scene, dict) else {}
-    out = {"scene": {}, "osc": {}, "fig2": {}, "fig3": {}, "fig4": {}, "fig5": {}, "cost": {}, "stability": {}}
+    out = {"scene": {}, "osc": {}, "fig2": {}, "fig3": {}, "fig4": {}, "fig5": {}, "fig6": {}, "cost": {}, "stability": {}}
 
     def num(*path):
         v = lookup(sc, path)
@@ -971,6 +981,67 @@ def ti_summary(s, scene, exp_dir):
                     g["slope"] = (z[1] - a[1]) / (z[0] - a[0])
             out["fig5"][label] = g
 
+    # Fig. 6: the Lennard-Jones cluster, the step-size scan and the ensemble at lj.h
+    f = out["fig6"]
+    lh, lt_end, lM = num("lj", "h"), num("lj", "t_end"), num("lj", "size")
+    if lh and lt_end:
+        f["steps"] = round(lt_end / lh)
+        if samples:
+            f["sample_dt"] = max(1, f["steps"] // int(samples)) * lh
+    hs = lookup(sc, ("lj", "h_scan"))
+    path = os.path.join(exp_dir, "fig6_scan.csv")
+    rows = read_csv_rows(path, ("h", "trajectory", "max_H_err", "diverged", "diverge_step"))
+    if rows and isinstance(hs, list) and len(hs) >= 2 and all(is_number(x) for x in hs):
+        vals = ti_floats(rows, path, ("h", "max_H_err", "diverged", "diverge_step"))
+        per_h = []
+        for x in hs:
+            sel = [v for v in vals if abs(v[0] / x - 1) < 1e-9]
+            div = [v for v in sel if v[2] != 0]
+            ok = sorted(v[1] for v in sel if v[2] == 0)
+            per_h.append({"h": x, "runs": len(sel), "diverged": len(div),
+                          "t_div": [v[3] * x for v in div if v[3] >= 0],
+                          "median": (ok[len(ok) // 2] if len(ok) % 2 else 0.5 * (ok[len(ok) // 2 - 1] + ok[len(ok) // 2]))
+                          if ok else None,
+                          "max": ok[-1] if ok else None})
+        first, second = per_h[0], per_h[1]
+        smallest = min(per_h, key=lambda g: g["h"])
+        f["runs"] = first["runs"]
+        f["h_first"], f["div_first"] = first["h"], first["diverged"]
+        f["h_second"], f["div_second"] = second["h"], second["diverged"]
+        if first["t_div"]:
+            f["t_div_first_min"], f["t_div_first_max"] = min(first["t_div"]), max(first["t_div"])
+        if second["t_div"]:
+            f["t_div_second_min"], f["t_div_second_max"] = min(second["t_div"]), max(second["t_div"])
+        f["stable_count"] = sum(1 for g in per_h if g["diverged"] == 0)
+        f["h_smallest"], f["median_smallest"], f["max_smallest"] = smallest["h"], smallest["median"], smallest["max"]
+    mu, sg = rep.get("lj_mu_final"), rep.get("lj_sigma_final")
+    mu_se, sg_se = rep.get("lj_mu_final_stderr"), rep.get("lj_sigma_final_stderr")
+    pmu, psg = pub.get("lj_mu_final"), pub.get("lj_sigma_final")
+    for key, v in (("mu_u", mu), ("mu_se_u", mu_se), ("sigma_u", sg), ("sigma_se_u", sg_se),
+                   ("mu_pub_u", pmu), ("sigma_pub_u", psg)):
+        if is_number(v):
+            f[key] = v / 1e-6  # in units of 10^-6, as the paper prints them
+    if all(is_number(v) for v in (mu, pmu, mu_se)) and mu_se > 0:
+        f["mu_z_pub"] = abs(mu - pmu) / mu_se
+        f["mu_z_zero"] = abs(mu) / mu_se
+    if all(is_number(v) for v in (sg, psg, sg_se)) and sg_se > 0:
+        f["sigma_z_pub"] = abs(sg - psg) / sg_se
+        f["sigma_rel_diff"] = (sg - psg) / psg
+    path = os.path.join(exp_dir, "fig6_stats.csv")
+    rows = read_csv_rows(path, ("t", "mu", "sigma", "H_err_rms", "Hhat_err_rms"))
+    if rows and len(rows) > 2:
+        t, H, Hh = zip(*ti_floats(rows, path, ("t", "H_err_rms", "Hhat_err_rms")))
+        later = [(a, b) for x, a, b in zip(t, H, Hh) if x > 0]
+        f["Hhat_start"] = Hh[0] if t[0] == 0 else None
+        f["H_rms_mean"] = sum(a for a, _ in later) / len(later)
+        f["H_rms_max"] = max(a for a, _ in later)
+        f["Hhat_rms_min"], f["Hhat_rms_max"] = min(b for _, b in later), max(b for _, b in later)
+        hb = sum(b for _, b in later) / len(later)
+        if hb > 0:
+            f["H_over_Hhat"] = f["H_rms_mean"] / hb
+        if f["Hhat_start"]:
+            f["Hhat_rel_var"] = max(abs(b / f["Hhat_start"] - 1) for _, b in later)
+
     # cost
     timing = s.get("timing") or {}
     ns = timing.get("ns_per_step") or {}
@@ -989,6 +1060,10 @@ def ti_summary(s, scene, exp_dir):
     if is_number(w4) and c["threads"] and n4 and M:
         c["fig4_ns_per_step_thread"] = 1e9 * w4 * c["threads"] / (M * n4)
         c["fig4_steps_total"] = M * n4
+    n6, w6 = out["fig6"].get("steps"), timing.get("fig6_wall_s")
+    if is_number(w6) and c["threads"] and n6 and lM:
+        c["fig6_ns_per_step_thread"] = 1e9 * w6 * c["threads"] / (lM * n6)
+        c["fig6_steps_total"] = lM * n6
     return out
 
 
@@ -1013,7 +1088,7 @@ def ti_results_table(name, s, src, derived):
                  "``no drift''; published exponent of Fig.~4: ``like the square root of time''. Difference = "
                  "reproduced $-$ published. Below the line: reproduced values without a published number "
                  "(the statements of [004] in brackets), and $\\sigma^2/t$ computed from the published $\\sigma$. $E=\\hat H+\\frac12h^4\\alpha^2K$ of (3.3) and (4.2); "
-                 "$H_3$ of Fig.~2: that of TI in (3.3). Figs.~2--5 evaluate these at the unprocessed $(p_n,q_n)$.}\n")
+                 "$H_3$ of Fig.~2: that of TI in (3.3). Figs.~2--6 evaluate these at the unprocessed $(p_n,q_n)$.}\n")
     lines.append(f"\\label{{tab:{name}-table}}\n")
     lines.append("\\begin{tabular}{@{}p{0.50\\linewidth}rrr@{}}\n\\toprule\n")
     lines.append("Quantity & Published & Reproduced & Difference \\\\\n\\midrule\n")
@@ -1041,7 +1116,10 @@ def ti_results_table(name, s, src, derived):
             cells = [cell(p, kind), cell(r, kind), cell(diff, dkind if diff != 0 else "plain")]
         lines.append(f"\\raggedright {label} & " + " & ".join(cells) + " \\\\\n")
     lines.append("\\midrule\n")
+    has_lj = "lj_mu_final" in rep
     for label, path, kind, *pub_path in TI_EXTRA_ROWS:
+        if label.startswith("Fig.~6") and not has_lj:
+            continue
         v = lookup(sources.get(path[0]) or {}, path[1:])
         if pub_path:
             pv = lookup(sources.get(pub_path[0][0]) or {}, pub_path[0][1:])
@@ -1091,6 +1169,16 @@ def ti_timing_table(name, s, src, derived):
             text += f" for ${sci(c['fig4_steps_total'], 3)}$ steps"
         if is_number(c.get("fig4_ns_per_step_thread")):
             text += f", ${fmt(c['fig4_ns_per_step_thread'], 'ns')}$\\,ns per step and thread"
+        notes.append(text)
+    w6 = timing.get("fig6_wall_s")
+    if is_number(w6):
+        text = f"the ensemble of Fig.~6 (Lennard-Jones) takes ${fmt(w6, 'seconds')}$\\,s"
+        if is_number(c.get("threads")):
+            text += f" on {int(c['threads'])} thread{'s' if c['threads'] != 1 else ''}"
+        if is_number(c.get("fig6_steps_total")):
+            text += f" for ${sci(c['fig6_steps_total'], 3)}$ steps"
+        if is_number(c.get("fig6_ns_per_step_thread")):
+            text += f", ${fmt(c['fig6_ns_per_step_thread'], 'ns')}$\\,ns per step and thread"
         notes.append(text)
     if is_number(timing.get("wall_s")):
         notes.append(f"wall time of the whole run ${fmt(timing['wall_s'], 'seconds')}$\\,s")
@@ -1605,6 +1693,61 @@ MACROS["ti_drift"] = [
     ("TDDpub", ("derived", "td", "fig4", "D_pub"), "sci3"),
     ("TDoutliers", ("summary", "reproduced", "hh5_outliers"), "len:int"),
     ("TDpoincareTraj", ("summary", "reproduced", "poincare_trajectory"), "int"),
+    # Fig. 6: the Lennard-Jones cluster
+    ("TDljH", ("scene", "lj", "h"), "plain"),
+    ("TDljTend", ("scene", "lj", "t_end"), "sci"),
+    ("TDljSize", ("scene", "lj", "size"), "int"),
+    ("TDljSeed", ("scene", "lj", "seed"), "intplain"),
+    ("TDljPert", ("scene", "lj", "perturbation"), "plain"),
+    ("TDljBlowup", ("scene", "lj", "blowup"), "plain"),
+    ("TDljScanT", ("scene", "lj", "scan_t"), "plain"),
+    ("TDljScanSize", ("scene", "lj", "scan_size"), "int"),
+    ("TDljScanHs", ("scene", "lj", "h_scan"), "vec"),
+    ("TDljSteps", ("derived", "td", "fig6", "steps"), "sci3"),
+    ("TDljDt", ("derived", "td", "fig6", "sample_dt"), "plain"),
+    ("TDljScanRuns", ("derived", "td", "fig6", "runs"), "int"),
+    ("TDljHfirst", ("derived", "td", "fig6", "h_first"), "plain"),
+    ("TDljDivFirst", ("derived", "td", "fig6", "div_first"), "int"),
+    ("TDljDivFirstTmin", ("derived", "td", "fig6", "t_div_first_min"), "plain"),
+    ("TDljDivFirstTmax", ("derived", "td", "fig6", "t_div_first_max"), "plain"),
+    ("TDljHsecond", ("derived", "td", "fig6", "h_second"), "plain"),
+    ("TDljDivSecond", ("derived", "td", "fig6", "div_second"), "int"),
+    ("TDljDivSecondTmin", ("derived", "td", "fig6", "t_div_second_min"), "sig3"),
+    ("TDljDivSecondTmax", ("derived", "td", "fig6", "t_div_second_max"), "sig3"),
+    ("TDljStableCount", ("derived", "td", "fig6", "stable_count"), "int"),
+    ("TDljStableMin", ("summary", "reproduced", "lj_stable_steps"), "min:plain"),
+    ("TDljStableMax", ("summary", "reproduced", "lj_stable_steps"), "max:plain"),
+    ("TDljHsmallest", ("derived", "td", "fig6", "h_smallest"), "plain"),
+    ("TDljScanMedSmall", ("derived", "td", "fig6", "median_smallest"), "err"),
+    ("TDljScanMaxSmall", ("derived", "td", "fig6", "max_smallest"), "err"),
+    ("TDljMu", ("summary", "reproduced", "lj_mu_final"), "sci3"),
+    ("TDljSigma", ("summary", "reproduced", "lj_sigma_final"), "sci3"),
+    ("TDljMuSe", ("summary", "reproduced", "lj_mu_final_stderr"), "sci3"),
+    ("TDljSigmaSe", ("summary", "reproduced", "lj_sigma_final_stderr"), "sci3"),
+    ("TDljMuU", ("derived", "td", "fig6", "mu_u"), "fixed3"),
+    ("TDljMuSeU", ("derived", "td", "fig6", "mu_se_u"), "fixed3"),
+    ("TDljSigmaU", ("derived", "td", "fig6", "sigma_u"), "fixed3"),
+    ("TDljSigmaSeU", ("derived", "td", "fig6", "sigma_se_u"), "fixed3"),
+    ("TDljMuPubU", ("derived", "td", "fig6", "mu_pub_u"), "plain"),
+    ("TDljSigmaPubU", ("derived", "td", "fig6", "sigma_pub_u"), "plain"),
+    ("TDljMuPub", ("summary", "published", "lj_mu_final"), "sci"),
+    ("TDljSigmaPub", ("summary", "published", "lj_sigma_final"), "sci3"),
+    ("TDljMuZpub", ("derived", "td", "fig6", "mu_z_pub"), "sig3"),
+    ("TDljMuZzero", ("derived", "td", "fig6", "mu_z_zero"), "sig3"),
+    ("TDljSigmaZpub", ("derived", "td", "fig6", "sigma_z_pub"), "sig3"),
+    ("TDljSigmaRelDiff", ("derived", "td", "fig6", "sigma_rel_diff"), "percent"),
+    ("TDljGamma", ("summary", "reproduced", "lj_sigma_exponent"), "fixed3"),
+    ("TDljGammaPub", ("summary", "published", "lj_sigma_exponent"), "plain"),
+    ("TDljHerrMax", ("summary", "reproduced", "lj_H_err_max"), "err"),
+    ("TDljHrmsMean", ("derived", "td", "fig6", "H_rms_mean"), "err"),
+    ("TDljHrmsMax", ("derived", "td", "fig6", "H_rms_max"), "err"),
+    ("TDljHhatStart", ("derived", "td", "fig6", "Hhat_start"), "err"),
+    ("TDljHhatMin", ("derived", "td", "fig6", "Hhat_rms_min"), "err"),
+    ("TDljHhatMax", ("derived", "td", "fig6", "Hhat_rms_max"), "err"),
+    ("TDljHhatRelVar", ("derived", "td", "fig6", "Hhat_rel_var"), "percent"),
+    ("TDljHratio", ("derived", "td", "fig6", "H_over_Hhat"), "sig3"),
+    ("TDljWall", ("summary", "timing", "fig6_wall_s"), "seconds"),
+    ("TDljNs", ("derived", "td", "cost", "fig6_ns_per_step_thread"), "ns"),
 ] + _td_window_macros() + [
     # symplecticity and volume
     ("TDsympTi", ("summary", "reproduced", "ti_symplecticity_defect"), "err"),
@@ -1727,8 +1870,8 @@ def fmt(value, kind):
         return "0\\,\\%" if value == 0 else sig(100 * value, 3) + "\\,\\%"
     if kind == "ratio":
         return f"{value:.1f}"
-    if kind == "seconds":
-        return f"{value:.2g}"
+    if kind == "seconds":  # 2 significant digits, but whole seconds from 100 s (no 1.4e+02)
+        return f"{value:.2g}" if abs(value) < 100 else f"{value:.0f}"
     if kind == "plain":
         return f"{value:g}"
     return general(value)

@@ -1,9 +1,10 @@
 // ti_drift: 004 (On energy conservation of the simplified Takahashi-Imada
-// method) Figs 1-5 -- Stormer-Verlet, Takahashi-Imada (1.4) and the simplified
+// method) Figs 1-6 -- Stormer-Verlet, Takahashi-Imada (1.4) and the simplified
 // method (1.6) on the harmonic oscillator (Fig. 1), the drift of the shifted
 // energy on the unsymmetric pendulum (Fig. 2), the modified energy E of (3.3)
 // and (4.2) on Henon-Heiles k = 3 (Fig. 3) and its random walk over an ensemble
-// for k = 5 (Fig. 4), and Poincare cuts of one trajectory (Fig. 5).
+// for k = 5 (Fig. 4), Poincare cuts of one trajectory (Fig. 5), and the
+// Lennard-Jones cluster (Fig. 6: a step-size scan and the ensemble statistics).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -443,7 +444,7 @@ void run(Context& ctx) {
 
 int main(int argc, char** argv) {
   const ExperimentSpec spec{"ti_drift",
-                            "004 Figs 1-5: energy behaviour of the (simplified) Takahashi-Imada method",
+                            "004 Figs 1-6: energy behaviour of the (simplified) Takahashi-Imada method",
                             schema(), validate, run};
   return run_experiment(argc, argv, spec, GEOMINT_EXPERIMENT_DIR);
 }
