@@ -4,7 +4,7 @@
 // initial conditions at rest, accumulating the RMS energy error eq. (50).
 // Single-threaded. Every benchmark reports `time_per_step`, CPU time per
 // trajectory-step (time / (iterations x trajectories x steps)), so rows are
-// comparable whatever the workload; compare with /work/shared/notes/performance.md.
+// comparable whatever the workload.
 //
 //   BM_EnergyMapKernel/<isa>/<coordinates>  the batch kernels of energy_map_kernels()
 //   BM_EnergyMapScalar/<coordinates>        energy_map_scalar (the generic library loop)

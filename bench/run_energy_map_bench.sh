@@ -10,7 +10,7 @@
 # NUMPY_REPEAT runs of NUMPY_N trajectories x 20000 steps) under Debian's
 # /usr/bin/python3, then prints per implementation and coordinate system: ns per
 # trajectory-step on one core, the ratio to the best batch kernel, and the
-# fraction of the hardware ceiling of /work/shared/notes/performance.md
+# fraction of the hardware ceiling (per-step lower bounds measured on this machine type)
 # (ceiling / measured; ~0.35 ns Cartesian, ~0.8 ns polar), and the eps of the
 # check points from every implementation. Build first:
 #   cmake --build build --target geomint_energy_map_bench
@@ -46,7 +46,7 @@ echo "== numpy: $HERE/peers/energy_map_numpy.py (${NUMPY_N} trajectories, median
 "$PY" - "$TMP/cpp.json" "$TMP/cpp.err" "$TMP/numpy.json" <<'EOF'
 import json, sys
 
-CEILING = {"cartesian": 0.35, "polar": 0.8}  # ns per trajectory-step, /work/shared/notes/performance.md
+CEILING = {"cartesian": 0.35, "polar": 0.8}  # ns per trajectory-step: sqrt + divide (Cartesian), vector sin + cos (polar)
 cpp = json.load(open(sys.argv[1]))
 numpy = json.load(open(sys.argv[3]))
 
