@@ -1655,6 +1655,8 @@ MACROS["ti_drift"] = [
     # Fig. 2
     ("TDdriftRate", ("summary", "reproduced", "unsym_pendulum_drift_rate"), "sci3"),
     ("TDdriftPred", ("summary", "reproduced", "unsym_pendulum_drift_rate_predicted"), "sci3"),
+    ("TDdriftRateWhole", ("summary", "reproduced", "unsym_pendulum_drift_rate_whole"), "sci3"),
+    ("TDpendFitT", ("scene", "pendulum", "fit_t"), "int"),
     ("TDdriftRelDiff", ("derived", "td", "fig2", "rel_diff"), "percent"),
     ("TDdriftChange", ("derived", "td", "fig2", "change"), "err"),
     ("TDdriftHslope", ("derived", "td", "fig2", "H_slope"), "sci3"),
