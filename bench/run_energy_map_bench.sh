@@ -57,7 +57,7 @@ for b in cpp["benchmarks"]:
     parts = b["run_name"].split("/")  # BM_EnergyMapKernel/<isa>/<coords>, BM_EnergyMap{Scalar,Odeint}/<coords>
     kind, coords = parts[0], parts[-1]
     impl = {"BM_EnergyMapKernel": "batch kernel " + parts[1] if len(parts) == 3 else kind,
-            "BM_EnergyMapScalar": "energy_map_scalar (library loop)",
+            "BM_EnergyMapScalar": "straightforward scalar loop",
             "BM_EnergyMapOdeint": "Boost.Odeint symplectic_euler"}.get(kind, kind)
     rows.append((impl, coords, b["time_per_step"] * 1e9))
 for coords, ns in numpy["ns_per_step"].items():
