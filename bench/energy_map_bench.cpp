@@ -7,7 +7,7 @@
 // comparable whatever the workload.
 //
 //   BM_EnergyMapKernel/<isa>/<coordinates>  the batch kernels of energy_map_kernels()
-//   BM_EnergyMapScalar/<coordinates>        energy_map_scalar (the generic library loop)
+//   BM_EnergyMapScalar/<coordinates>        energy_map_scalar (the straightforward scalar loop)
 //   BM_EnergyMapOdeint/cartesian            Boost.Odeint symplectic_euler, p-first arrangement
 //
 // Before any benchmark runs, the odeint loop is checked against
