@@ -4,7 +4,7 @@
 #
 #   bench/run_energy_map_bench.sh [BUILD_DIR]      (default: build)
 #
-# Runs BUILD_DIR/bin/geomint_energy_map_bench (batch kernels per ISA, the scalar
+# Runs BUILD_DIR/bin/geomint_energy_map_bench (batch kernels per ISA, the
 # straightforward scalar loop, Boost.Odeint; median of BENCH_REPS repetitions of at least
 # BENCH_MIN_TIME seconds each) and bench/peers/energy_map_numpy.py (median of
 # NUMPY_REPEAT runs of NUMPY_N trajectories x 20000 steps) under Debian's
