@@ -80,7 +80,7 @@ stats TRAJ using "trajectory" nooutput
 NT = int(STATS_max) + 1
 onetraj(i) = column("trajectory") == i ? column("E_err") : NaN
 U6 = 1e-6                                                 # (b) in units of 10^{-6}
-pm(x, se) = sprintf("%.3f ± %.3f·10^{−6}", x / U6, se / U6)
+pm(x, se) = sprintf("%s%.3f ± %.3f·10^{−6}", x < 0 ? "−" : "", abs(x) / U6, se / U6)
 
 # ---- (c): the centroid of the fitted points (t ≥ t_end/10, σ > 0), and a check of the fit ----
 infit(t, s) = (t >= T_END / 10 && s > 0)
@@ -108,6 +108,7 @@ set style line 208 lc rgb C_STI  lw 1.4                       # (c) σ
 set style line 209 lc rgb C_STAT lw 1.0 dt (8,4)              # (c) fit
 set style line 210 lc rgb C_SV   lw 1.2                       # (d) H error
 set style line 211 lc rgb C_TI   lw 1.2                       # (d) H at the processed variables
+set style line 212 lc rgb C_STAT lw 1.0 dt (3,3)              # (d) its value at t = 0
 
 do for [fmt in FORMATS] {
     eval term(fmt, 'ti_drift_fig6', 17, 17)
@@ -133,7 +134,7 @@ do for [fmt in FORMATS] {
     set xlabel "step size h" offset 0, 0.3
     set ylabel sprintf("max_{t ≤ %g} |H(p_n, q_n) − H_0|", SCAN_T) offset 1, 0
     set title sprintf("(a) step-size scan, %d runs per h", SCAN_N) offset 0, -0.4
-    set key bottom right Left reverse samplen 1.5 width -4 font ",7"
+    set key bottom right Left reverse samplen 1.5 width -3 font ",7"
     set arrow 1 from graph 0, first BLOWUP to graph 1, first BLOWUP nohead ls 203
     set label 1 sprintf("|H − H_0| = %g: diverged above", BLOWUP) at graph 0.03, first BLOWUP offset 0, -0.55 left font ",7" tc rgb '#555555'
     do for [i = 1:NS] {
@@ -194,7 +195,7 @@ do for [fmt in FORMATS] {
     plot STATF using "t":(pos("H_err_rms")) with lines ls 210 \
              title sprintf("H(p_n, q_n) − H_0 (max %s)", sci(H_ERR_MAX)), \
          STATF using "t":(pos("Hhat_err_rms")) with lines ls 211 title "H(p̂_n, q̂_n) − H_0, (p̂, q̂) = χ_h(p, q)", \
-         [t = TPOS_MIN : T_END : T_END - TPOS_MIN] '+' using (t):(HHAT0) with lines ls 203 \
+         [t = TPOS_MIN : T_END : T_END - TPOS_MIN] '+' using (t):(HHAT0) with lines ls 212 \
              title sprintf("t = 0: H(χ_h(p_0, q_0)) − H_0 (RMS)")
     set offsets 0, 0, 0, 0
     unset logscale
