@@ -22,6 +22,7 @@
 #include "geomint/systems/hamiltonian_field.hpp"
 #include "geomint/integrators/stormer_verlet.hpp"
 #include "geomint/integrators/takahashi_imada.hpp"
+#include "geomint/observables/linear_fit.hpp"
 #include "geomint/observables/modified_energy.hpp"
 #include "geomint/observables/order_fit.hpp"
 #include "geomint/observables/symplecticity.hpp"
@@ -43,15 +44,7 @@ using Z1 = PhaseState<1>;
 using Z2 = PhaseState<2>;
 const double kTiBound = 2.0 * std::sqrt(3.0);  // 004 Sect. 1.4: omega h < 2 sqrt(3)
 
-// Least-squares slope of y against x.
-double slope(const std::vector<double>& x, const std::vector<double>& y) {
-  double mx = 0, my = 0;
-  for (std::size_t i = 0; i < x.size(); ++i) mx += x[i], my += y[i];
-  mx /= static_cast<double>(x.size()), my /= static_cast<double>(x.size());
-  double sxx = 0, sxy = 0;
-  for (std::size_t i = 0; i < x.size(); ++i) sxx += (x[i] - mx) * (x[i] - mx), sxy += (x[i] - mx) * (y[i] - my);
-  return sxy / sxx;
-}
+double slope(const std::vector<double>& x, const std::vector<double>& y) { return linear_fit(x, y).slope; }
 
 // Henon-Heiles start with q1 = 0 and p1 > 0 from H0 (004 Sect. 5).
 Z2 hh_start(const HenonHeiles& hh, double q2, double p2, double H0) {

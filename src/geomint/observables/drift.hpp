@@ -6,7 +6,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <span>
 #include <vector>
+
+#include "geomint/observables/linear_fit.hpp"
 
 namespace geomint {
 
@@ -22,15 +25,9 @@ class WindowMaxima {
   // Least-squares slope of the window maxima per window (over complete windows).
   double slope_per_window() const {
     const std::size_t n = count_ % window_ == 0 ? maxima_.size() : maxima_.size() - 1;
-    double mx = 0, my = 0;
-    for (std::size_t i = 0; i < n; ++i) mx += static_cast<double>(i), my += maxima_[i];
-    mx /= static_cast<double>(n), my /= static_cast<double>(n);
-    double sxx = 0, sxy = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-      sxx += (static_cast<double>(i) - mx) * (static_cast<double>(i) - mx);
-      sxy += (static_cast<double>(i) - mx) * (maxima_[i] - my);
-    }
-    return sxx > 0 ? sxy / sxx : 0.0;
+    std::vector<double> index(n);
+    for (std::size_t i = 0; i < n; ++i) index[i] = static_cast<double>(i);
+    return linear_fit(index, std::span<const double>(maxima_.data(), n)).slope;
   }
 
  private:

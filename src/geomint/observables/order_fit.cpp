@@ -1,5 +1,7 @@
 #include "geomint/observables/order_fit.hpp"
 
+#include "geomint/observables/linear_fit.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -28,19 +30,10 @@ OrderFit fit_order(std::span<const double> h, std::span<const double> err, doubl
     throw std::invalid_argument(std::string(what) + ": only " + std::to_string(fit.points) +
                                 " points above the round-off floor; at least 3 are needed");
   }
-  const double n = fit.points;
-  double mx = 0, my = 0;
-  for (std::size_t i = 0; i < x.size(); ++i) mx += x[i], my += y[i];
-  mx /= n, my /= n;
-  double sxx = 0, sxy = 0, syy = 0;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    sxx += (x[i] - mx) * (x[i] - mx);
-    sxy += (x[i] - mx) * (y[i] - my);
-    syy += (y[i] - my) * (y[i] - my);
-  }
-  fit.order = sxy / sxx;
-  fit.log10_c = my - fit.order * mx;
-  fit.r2 = syy > 0 ? sxy * sxy / (sxx * syy) : 1.0;
+  const LinearFit line = linear_fit(x, y);
+  fit.order = line.slope;
+  fit.log10_c = line.intercept;
+  fit.r2 = line.r2;
   return fit;
 }
 
