@@ -7,7 +7,7 @@
 #   make test                     build, then ctest (unit, regression, stability, figures)
 #   make figures                  run every experiment's paper scene, render figures/out/*
 #   make paper                    figures + tables from summary.json + paper/main.pdf
-#   make experiment NAME=x ARGS='--set key=value'   one experiment (+ its figures)
+#   make experiment NAME=x [SCENE=v] ARGS='--set key=value'   one experiment (+ its figures)
 #   make bench                    throughput benchmarks (Google Benchmark)
 #   make clean                    remove build/, results/, figures/out/, paper outputs
 
@@ -36,17 +36,28 @@ build: $(DEPS_STAMP)/build.stamp $(BUILD)/CMakeCache.txt
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
-# One experiment with its paper scene (or ARGS), then its figures.
+# Paper scenes: experiments/<name>/<name>.toml, results in $(RESULTS)/<name>, figures
+# figures/<name>_*.gp; a second scene experiments/<name>/<variant>.toml (not quick*)
+# has the id <name>-<variant> for its results and figures.
+scene_id = $(if $(filter $(1),$(2)),$(1),$(1)-$(2))
+
+# One experiment with its paper scene (or SCENE=<variant>, or ARGS), then its figures.
+SCENE ?= $(NAME)
 experiment: build $(DEPS_STAMP)/figures.stamp
-	@test -n "$(NAME)" || { echo "usage: make experiment NAME=<one of: $(EXPERIMENTS)> [ARGS='--set key=value']"; exit 2; }
-	$(BUILD)/bin/$(NAME) --out $(RESULTS)/$(NAME) $(ARGS)
-	tests/figures/render_figures.sh $(RESULTS)/$(NAME) figures/out $(wildcard figures/$(NAME)*.gp)
+	@test -n "$(NAME)" || { echo "usage: make experiment NAME=<one of: $(EXPERIMENTS)> [SCENE=<variant>] [ARGS='--set key=value']"; exit 2; }
+	$(BUILD)/bin/$(NAME) --scene experiments/$(NAME)/$(SCENE).toml --out $(RESULTS)/$(call scene_id,$(NAME),$(SCENE)) $(ARGS)
+	tests/figures/render_figures.sh $(RESULTS)/$(call scene_id,$(NAME),$(SCENE)) figures/out $(wildcard figures/$(call scene_id,$(NAME),$(SCENE))_*.gp)
 
 figures: build $(DEPS_STAMP)/figures.stamp
 	@for name in $(EXPERIMENTS); do \
-	  echo "== $$name"; \
-	  $(BUILD)/bin/$$name --out $(RESULTS)/$$name || exit 1; \
-	  tests/figures/render_figures.sh $(RESULTS)/$$name figures/out figures/$$name*.gp || exit 1; \
+	  for scene in experiments/$$name/*.toml; do \
+	    base=$$(basename $$scene .toml); \
+	    case $$base in quick*) continue ;; esac; \
+	    id=$$name; [ "$$base" = "$$name" ] || id=$$name-$$base; \
+	    echo "== $$id"; \
+	    $(BUILD)/bin/$$name --scene $$scene --out $(RESULTS)/$$id || exit 1; \
+	    tests/figures/render_figures.sh $(RESULTS)/$$id figures/out $$(ls figures/$${id}_*.gp 2>/dev/null) || exit 1; \
+	  done; \
 	done
 
 paper: figures $(DEPS_STAMP)/paper.stamp

@@ -8,7 +8,7 @@
 set -euo pipefail
 
 build=(g++ cmake make pkg-config git libeigen3-dev libboost-dev libtomlplusplus-dev
-       libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev libsleef-dev gnuplot-nox fonts-dejavu-core python3)
+       libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev libsleef-dev libqhull-dev gnuplot-nox fonts-dejavu-core python3 python3-sympy)
 figures=("${build[@]}" python3-numpy python3-matplotlib)
 paper=("${figures[@]}" latexmk texlive-latex-base texlive-latex-recommended
        texlive-latex-extra texlive-fonts-recommended)

@@ -1,12 +1,14 @@
 #!/usr/bin/env bash
-# compare_threads.sh BIN WORKDIR: run BIN's quick scene with 1 and with 2
-# threads and require every CSV except timing*.csv (wall times) to be
-# byte-identical.
+# compare_threads.sh BIN WORKDIR [SCENE]: run BIN's quick scene (or SCENE)
+# with 1 and with 2 threads and require every CSV except timing*.csv (wall
+# times) to be byte-identical.
 set -euo pipefail
 bin=$1 work=$2
+scene=(--quick)
+[ $# -ge 3 ] && scene=(--scene "$3")
 rm -rf "$work" && mkdir -p "$work"
-"$bin" --quick --threads 1 --out "$work/t1" >/dev/null
-"$bin" --quick --threads 2 --out "$work/t2" >/dev/null
+"$bin" "${scene[@]}" --threads 1 --out "$work/t1" >/dev/null
+"$bin" "${scene[@]}" --threads 2 --out "$work/t2" >/dev/null
 n=0
 for f in "$work"/t1/*.csv; do
   name=$(basename "$f")

@@ -1,0 +1,71 @@
+// Regression: the quick scenes of measure_cloud reproduce the claims of 003
+// Sec. 5 -- Phi^(4) preserves mu^(4)_mod to O(h^6) on the paper's cloud while
+// Phi^(0) does not (Figs 5.2, 5.4); Phi^(ell) preserves mu^(ell)_mod to order
+// ell + 2 (Corollary 4.3, on tiny clouds); on the free particle Phi^(0) drifts
+// in H where Phi^(4) does not (Figs 5.5, 5.6).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "summary.hpp"
+
+using json = nlohmann::json;
+
+namespace {
+const json& harmonic() { return summary_of("measure_cloud"); }
+const json& free_particle() { return summary_of("measure_cloud-free"); }
+const char* const kMethods[] = {"M", "MT", "TM", "TT", "T"};
+}  // namespace
+
+TEST(MeasureCloud, GeneratedModifiedQuantitiesMatchGoldenValues) {
+  EXPECT_LT(harmonic()["reproduced"]["golden_max_rel_err"].get<double>(), 1e-13);
+  EXPECT_LT(free_particle()["reproduced"]["golden_max_rel_err"].get<double>(), 1e-13);
+}
+
+// Figs 5.2 and 5.4 on the paper's setup (r = 0.01, h = 0.25, t <= 20).
+TEST(MeasureCloud, Phi4PreservesTheModifiedMeasureAndPhi0DoesNot) {
+  const auto& r = harmonic()["reproduced"];
+  for (const char* m : kMethods) {
+    const double phi4 = r["ptp_phi4_mu4"][m].get<double>();
+    EXPECT_LT(phi4, 5e-4) << m;
+    for (const char* mu : {"ptp_phi0_mu", "ptp_phi0_mu2", "ptp_phi0_mu4"}) EXPECT_GT(r[mu][m].get<double>(), 5e-3) << m << " " << mu;
+    EXPECT_GT(r["ptp_phi0_mu4"][m].get<double>() / phi4, 20.0) << m;
+    // Fig. 5.2: the oscillations shrink from mu to mu^(4)_mod.
+    EXPECT_LT(phi4, r["ptp_phi4_mu"][m].get<double>()) << m;
+  }
+}
+
+// Corollary 4.3: Phi^(ell) preserves mu^(ell)_mod to O(h^(ell + 2)) (ell = 6: derived here, not in 003).
+TEST(MeasureCloud, OrderOfMeasurePreservation) {
+  const auto& o = harmonic()["orders"];
+  for (const char* m : kMethods) {
+    EXPECT_NEAR(o["measure_ell0"][m].get<double>(), 2.0, 0.3) << m;
+    EXPECT_NEAR(o["measure_ell2"][m].get<double>(), 4.0, 0.3) << m;
+    EXPECT_NEAR(o["measure_ell4"][m].get<double>(), 6.0, 0.4) << m;
+    EXPECT_NEAR(o["measure_ell6"][m].get<double>(), 8.0, 0.6) << m;  // one order beyond the paper
+  }
+}
+
+// Figs 5.5, 5.6: |H(T) - H0| at T = 10 under Phi^(0) is at least 4x that under Phi^(4).
+TEST(MeasureCloud, FreeParticlePhi0DriftsInH) {
+  const auto& r = free_particle()["reproduced"];
+  for (const char* m : kMethods) {
+    EXPECT_GT(r["free_H_drift_ratio"][m].get<double>(), 4.0) << m;
+    EXPECT_GT(r["err_at_t_end_phi0"][m].get<double>(), 3 * r["err_at_t_end_phi4"][m].get<double>()) << m;
+    // and it keeps drifting: over the long run Phi^(0) ends farther from H0 than Phi^(4)
+    EXPECT_GT(std::abs(r["long_H_err_phi0"][m].get<double>()), 4 * std::abs(r["long_H_err_phi4"][m].get<double>())) << m;
+  }
+}
+
+// Fig. 5.3: K^(4)_mod along Phi^(4) stays at the O(h^6) level; the reference is accurate.
+TEST(MeasureCloud, ModifiedAlteredHamiltonianIsNearlyConserved) {
+  const auto& r = harmonic()["reproduced"];
+  for (const char* m : kMethods) {
+    EXPECT_LT(r["max_abs_K_mod4_phi4"][m].get<double>(), 2.5e-4) << m;  // h^6 = 2.4e-4
+    EXPECT_GT(r["max_abs_K_E_phi4"][m].get<double>(), 10 * r["max_abs_K_mod4_phi4"][m].get<double>()) << m;
+  }
+  EXPECT_LT(r["reference_self_check"].get<double>(), 1e-9);
+}

@@ -1,0 +1,198 @@
+// The nonholonomic particle of 003: discrete Lagrangians (5.1), their momenta,
+// the Newton step, the generated modified quantities, clouds and hull volumes.
+#include <cmath>
+#include <numbers>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "geomint/geometry/clouds.hpp"
+#include "geomint/geometry/hull_volume.hpp"
+#include "geomint/integrators/conformal_variational.hpp"
+#include "geomint/observables/symplecticity.hpp"
+#include "geomint/systems/nonholonomic_golden.hpp"
+#include "geomint/systems/nonholonomic_modified_series.hpp"
+
+using namespace geomint;
+
+namespace {
+
+using Z = PhaseState<2>;
+Z state(double x, double y, double px, double py) { return make_state<2>(Vec<2>(x, y), Vec<2>(px, py)); }
+double rel(double got, double want) { return std::abs(got - want) / std::abs(want); }
+const NonholonomicParticle harmonic{Potential::harmonic}, free_particle{Potential::free};
+
+TEST(MeasureCloud, GeneratedModifiedQuantitiesMatchGoldenValues) {
+  for (const auto& g : nonholonomic::golden_cases) {
+    const NonholonomicParticle sys{parse_potential(g.potential)};
+    const ModifiedSeries ms(*parse_discretization(g.discretization), sys, nonholonomic::golden_h);
+    const std::string where = std::string(g.discretization) + " " + g.potential;
+    for (const auto* p : {&g.a, &g.b}) {
+      const Z z = from_array(p->z);
+      EXPECT_LT(rel(sys.H(z), p->H), 1e-15) << where;
+      EXPECT_LT(rel(ms.E(2, z), p->E2), 1e-13) << where << " E^(2)";
+      EXPECT_LT(rel(ms.E(4, z), p->E4), 1e-13) << where << " E^(4)";
+      EXPECT_LT(rel(ms.N(2, z), p->N2), 1e-13) << where << " N^(2)";
+      EXPECT_LT(rel(ms.N(4, z), p->N4), 1e-13) << where << " N^(4)";
+      EXPECT_LT(rel(ms.K4(z, 1.0), p->K4_at_E1), 1e-13) << where << " K^(4)";
+      EXPECT_EQ(ms.E(0, z), sys.H(z));
+      EXPECT_EQ(ms.N(0, z), NonholonomicParticle::N(z.q[1]));
+    }
+  }
+}
+
+TEST(MeasureCloud, OneStepMatchesGoldenValues) {
+  for (const auto& g : nonholonomic::golden_cases) {
+    const NonholonomicParticle sys{parse_potential(g.potential)};
+    const Discretization d = *parse_discretization(g.discretization);
+    const Z za = from_array(g.a.z);
+    const double E4 = ModifiedSeries(d, sys, nonholonomic::golden_h).E(4, za);
+    const auto a = to_array(conformal_variational_step(d, sys, za, nonholonomic::golden_h, E4).z);
+    const auto b = to_array(conformal_variational_step(d, sys, za, nonholonomic::golden_h, sys.H(za)).z);
+    for (int k = 0; k < 4; ++k) {
+      EXPECT_LT(rel(a[k], g.step_with_E4[k]), 1e-13) << g.discretization << " " << g.potential << " k=" << k;
+      EXPECT_LT(rel(b[k], g.step_with_H[k]), 1e-13) << g.discretization << " " << g.potential << " k=" << k;
+    }
+  }
+}
+
+// p_0 = -h d Lambda_d / d q_0 and p_1 = h d Lambda_d / d q_1: the closed forms against AD of (5.1).
+TEST(MeasureCloud, DiscreteMomentaAreDerivativesOfTheDiscreteLagrangian) {
+  using AD = Eigen::AutoDiffScalar<Eigen::Vector4d>;
+  std::mt19937_64 gen(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (const auto* sys : {&harmonic, &free_particle})
+    for (Discretization d : all_discretizations)
+      for (int trial = 0; trial < 5; ++trial) {
+        const Vec<2> q0(u(gen), u(gen)), q1(u(gen), u(gen));
+        const double h = 0.3, E = 0.7 + u(gen);
+        Eigen::Matrix<AD, 2, 1> a0, a1;
+        for (int i = 0; i < 2; ++i) a0[i] = AD(q0[i], 4, i), a1[i] = AD(q1[i], 4, 2 + i);
+        const Eigen::Vector4d g = discrete_lagrangian(d, *sys, a0, a1, h, E).derivatives();
+        const Vec<2> p0 = discrete_momentum<double>(d, *sys, q0, q1, h, E, -1);
+        const Vec<2> p1 = discrete_momentum<double>(d, *sys, q0, q1, h, E, +1);
+        for (int i = 0; i < 2; ++i) {
+          EXPECT_NEAR(p0[i], -h * g[i], 1e-14) << discretization_name(d);
+          EXPECT_NEAR(p1[i], h * g[2 + i], 1e-14) << discretization_name(d);
+        }
+      }
+}
+
+TEST(MeasureCloud, NewtonConvergesQuadratically) {
+  const Z z = state(0.3, -0.4, 0.7, 1.1);
+  const double h = 0.25, E = harmonic.H(z);
+  for (Discretization d : all_discretizations) {
+    Vec<2> q1 = z.q + h * harmonic.altered_velocity(z);
+    std::vector<double> err;  // distance of the iterates to the converged solution
+    const Vec<2> solution = conformal_variational_step(d, harmonic, z, h, E).z.q;
+    for (int it = 0; it < 6; ++it) {
+      err.push_back((q1 - solution).norm());
+      const auto [r, J] = momentum_residual(d, harmonic, z, q1, h, E);
+      q1 -= J.partialPivLu().solve(r);
+    }
+    int quadratic_steps = 0;
+    for (std::size_t k = 0; k + 1 < err.size(); ++k)
+      if (err[k] > 1e-7) {
+        EXPECT_LT(err[k + 1], 10 * err[k] * err[k]) << discretization_name(d) << " iterate " << k;
+        ++quadratic_steps;
+      }
+    EXPECT_GE(quadratic_steps, 2) << discretization_name(d);
+    EXPECT_LT(err.back(), 1e-15) << discretization_name(d);
+    EXPECT_LE(conformal_variational_step(d, harmonic, z, h, E).newton_iterations, 6) << discretization_name(d);
+  }
+}
+
+// For fixed E the step is the map of the type-I generating function h Lambda_d: symplectic.
+TEST(MeasureCloud, StepIsSymplecticForFixedE) {
+  const Z z = state(0.3, -0.4, 0.7, 1.1);
+  const double h = 0.25, E = 1.2, dz = 1e-6;
+  for (Discretization d : all_discretizations) {
+    Mat<4> J;
+    for (int c = 0; c < 4; ++c) {
+      Z a = z, b = z;
+      (c < 2 ? a.q[c] : a.p[c - 2]) += dz;
+      (c < 2 ? b.q[c] : b.p[c - 2]) -= dz;
+      const Z za = conformal_variational_step(d, harmonic, a, h, E).z, zb = conformal_variational_step(d, harmonic, b, h, E).z;
+      J.col(c) << (za.q - zb.q) / (2 * dz), (za.p - zb.p) / (2 * dz);
+    }
+    EXPECT_LT(symplecticity_defect<4>(J), 1e-8) << discretization_name(d);
+  }
+}
+
+// With U = 0 the discrete Lagrangians are invariant under x-translations: p_x is conserved (to round-off).
+TEST(MeasureCloud, FreeParticleConservesPx) {
+  Z z = state(0.1, 0.2, 0.9, 1.3);
+  for (Discretization d : all_discretizations) {
+    Z w = z;
+    for (int j = 0; j < 40; ++j) w = conformal_variational_step(d, free_particle, w, 0.25, 1.0).z;
+    EXPECT_NEAR(w.p[0], z.p[0], 1e-13) << discretization_name(d);  // 40 steps, a few ulp each
+  }
+}
+
+// The reference right-hand side (3.8) conserves H and is N J grad H.
+TEST(MeasureCloud, ReferenceFieldIsConformallyHamiltonian) {
+  const std::array<double, 4> z{0.3, -0.4, 0.7, 1.1};
+  const auto f = harmonic.rhs(z);
+  const double N = NonholonomicParticle::N(z[1]), y = z[1];
+  EXPECT_NEAR(f[0], N * z[2], 1e-15);                     // N H_px
+  EXPECT_NEAR(f[1], N * (1 + y * y) * z[3], 1e-15);        // N H_py
+  EXPECT_NEAR(f[2], -N * z[0], 1e-15);                     // -N H_x
+  EXPECT_NEAR(f[3], -N * (y * z[3] * z[3] + y), 1e-15);    // -N H_y
+}
+
+TEST(MeasureCloud, SixHundredCellVertices) {
+  const auto v = six_hundred_cell_vertices();
+  ASSERT_EQ(v.size(), 120u);
+  const double edge = 1 / std::numbers::phi;
+  for (std::size_t i = 0; i < v.size(); ++i) {
+    double n2 = 0;
+    for (double c : v[i]) n2 += c * c;
+    EXPECT_NEAR(n2, 1.0, 1e-15);
+    int neighbours = 0;
+    double closest = 10;
+    for (std::size_t j = 0; j < v.size(); ++j) {
+      if (i == j) continue;
+      double d2 = 0;
+      for (int k = 0; k < 4; ++k) d2 += (v[i][k] - v[j][k]) * (v[i][k] - v[j][k]);
+      closest = std::min(closest, std::sqrt(d2));
+      neighbours += std::abs(std::sqrt(d2) - edge) < 1e-12;
+    }
+    EXPECT_NEAR(closest, edge, 1e-12);
+    EXPECT_EQ(neighbours, 12);  // the vertex figure of the 600-cell is an icosahedron
+  }
+}
+
+TEST(MeasureCloud, HullVolumeOfTheSixHundredCell) {
+  const double r = 0.01;
+  std::vector<Point4> unit{{0, 0, 0, 0}};
+  for (const auto& p : six_hundred_cell_vertices()) unit.push_back(p);
+  const auto cloud = scaled_cloud(unit, {0, 0, 1, 1}, r);
+  const auto facets = hull_facets(cloud);
+  EXPECT_EQ(facets.size(), 600u);
+  const double a = r / std::numbers::phi;  // edge length; 4-content (25/4)(2 + sqrt 5) a^4
+  const double exact = 25.0 / 4 * (2 + std::sqrt(5.0)) * std::pow(a, 4);
+  EXPECT_LT(rel(hull_integral(cloud, facets, cloud.front(), [](const Point4&) { return 1.0; }), exact), 1e-12);
+}
+
+// The 5-point rule is exact for quadratic densities: the standard 4-simplex, int x^a = a!/(4 + |a|)!.
+TEST(MeasureCloud, SimplexRuleIsExactForQuadratics) {
+  const std::vector<Point4> simplex{{0, 0, 0, 0}, {1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}, {0, 0, 0, 1}};
+  const Point4 apex{0.2, 0.2, 0.2, 0.2};
+  const auto facets = hull_facets(simplex);
+  ASSERT_EQ(facets.size(), 5u);
+  const double got = hull_integral(simplex, facets, apex, [](const Point4& z) { return 1 + z[0] * z[0] + 3 * z[0] * z[1] - z[3]; });
+  EXPECT_NEAR(got, 1.0 / 24 + 2.0 / 720 + 3.0 / 720 - 1.0 / 120, 1e-15);
+}
+
+TEST(MeasureCloud, SpherePointsAreSeededAndOnTheSphere) {
+  SpherePoints a(5), b(5);
+  for (int i = 0; i < 100; ++i) {
+    const auto p = a.next(), q = b.next();
+    EXPECT_EQ(p, q);
+    EXPECT_NEAR(p[0] * p[0] + p[1] * p[1] + p[2] * p[2] + p[3] * p[3], 1.0, 1e-15);
+  }
+}
+
+}  // namespace
