@@ -59,6 +59,35 @@ TEST(EnergyMapKernel, DivergingLanesAreMaskedAndDoNotPoisonOthers) {
   EXPECT_GT(energy_map_scalar(Coordinates::polar, P, 1.5, 1.5).diverge_step, 0);
 }
 
+// The kernels test for divergence once per block of steps and replay a suspect block
+// step by step: with a threshold that some lanes cross mid-run, the step found must be
+// the scalar loop's (Cartesian: the same arithmetic; polar: vector sin/cos may move a
+// marginal crossing by a step).
+TEST(EnergyMapKernel, BlockReplayFindsTheStepOfDivergence) {
+  std::vector<double> x, y;
+  regular_batch(x, y);
+  for (const auto c : {Coordinates::cartesian, Coordinates::polar}) {
+    EnergyMapParams Q = P;
+    Q.blowup = 1.5 * energy_map_scalar(c, P, x[16], y[16]).eps;
+    int crossed = 0;
+    for (const auto& k : energy_map_kernels()) {
+      std::vector<EnergyMapPoint> out(kEnergyMapBatch);
+      k.run(c, Q, x.data(), y.data(), out.data());
+      for (int i = 0; i < kEnergyMapBatch; ++i) {
+        const auto ref = energy_map_scalar(c, Q, x[i], y[i]);
+        crossed += ref.diverge_step > 0;
+        if (c == Coordinates::cartesian)
+          EXPECT_EQ(out[i].diverge_step, ref.diverge_step) << k.isa << " lane " << i;
+        else
+          EXPECT_NEAR(out[i].diverge_step, ref.diverge_step, 1) << k.isa << " lane " << i;
+        if (ref.diverge_step < 0) EXPECT_NEAR(out[i].eps, ref.eps, 1e-10 * ref.eps) << k.isa << " lane " << i;
+      }
+    }
+    EXPECT_GT(crossed, 0);  // the threshold is crossed by some lanes ...
+    EXPECT_LT(crossed, static_cast<int>(energy_map_kernels().size()) * kEnergyMapBatch);  // ... not by all
+  }
+}
+
 TEST(EnergyMapScalar, MatchesTheGenericLibraryMethod) {
   // The written-out loop against symplectic_euler_pq on the library's systems
   // (Newton's method for the implicit stage in polar coordinates).

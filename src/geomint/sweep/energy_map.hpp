@@ -13,8 +13,10 @@
 //    (SSE2, AVX2, AVX-512), chosen at run time by CPU detection. They differ
 //    from the scalar loop by round-off only (vector sin/cos are within a few ulp).
 // A trajectory that reaches r <= 0, a non-finite value or an energy error above
-// `blowup` is marked diverged at that step; its lane is frozen (masked), never
-// poisoning the others.
+// `blowup` is marked diverged at that step; its lane is parked, never poisoning
+// the others. The batch kernels test for this once per block of steps and replay
+// a suspect block step by step (so the hot loop has no tests), and sum
+// (H_j - H_0)^2 per block, compensated (Kahan) across blocks.
 #include <cstdint>
 #include <string>
 #include <vector>
