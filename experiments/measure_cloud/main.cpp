@@ -333,6 +333,7 @@ void run(Context& ctx) {
         for (const char* q : {"H", "K_E", "K_mod", "E4", "err"}) cols.push_back(std::string(discretization_name(d)) + "_" + q);
       Csv csv(cols);
       json max_H = json::object(), max_K = json::object(), max_Kmod = json::object(), err_end, Estar;
+      for (Discretization d : methods) Estar[discretization_name(d)] = ModifiedSeries(d, sys, h).E(ell, as_state(z0)) - H0;
       for (std::size_t j = 0; j <= static_cast<std::size_t>(n); ++j) {
         csv << static_cast<double>(j) * h << sys.H(as_state(ref[j]));
         for (std::size_t k = 0; k < methods.size(); ++k) {
@@ -345,7 +346,6 @@ void run(Context& ctx) {
           max_K[name] = std::max(max_K.value(name, 0.0), std::abs(sys.K(z, H0)));
           max_Kmod[name] = std::max(max_Kmod.value(name, 0.0), std::abs(Kmod));
           if (j == static_cast<std::size_t>(n)) err_end[name] = err, H_end[std::to_string(ell)][name] = std::abs(sys.H(z) - H0);
-          Estar[name] = E - H0;
         }
         csv.end_row();
       }
