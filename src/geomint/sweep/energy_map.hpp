@@ -37,7 +37,7 @@ struct EnergyMapPoint {
   std::int64_t diverge_step;  // -1: did not diverge
 };
 
-inline constexpr int kEnergyMapBatch = 32;
+inline constexpr int kEnergyMapBatch = 64;
 
 // A batch kernel: integrates kEnergyMapBatch trajectories from (x0[i], y0[i]), p = 0.
 using EnergyMapKernel = void (*)(Coordinates, const EnergyMapParams&, const double* x0, const double* y0,

@@ -1,0 +1,85 @@
+# Beyond the paper: accuracy against cost of Φ^(4)_h (E* = ℰ^(4)(z_0)) for the five discretizations (5.1),
+# harmonic potential U = (x² + y²)/2, one trajectory from z_0 = (0, 0, 1, 1) with N = ⌊t_end/h⌋ steps for each
+# step size h of the order study: the error ‖z_N − z_ref(t_N)‖_2 at the last step t_N = N h (≤ t_end; the
+# reference is taken there) against (a) the wall time of the run (the median over timing.repeats) and (b) the
+# number of Newton iterations, N × (mean iterations per step): the force evaluations of the implicit step.
+# Log–log, one line per method.
+# Input: timing_cost.csv (method, h, steps, t_end, err, wall_s, ns_per_step, newton_iterations_per_step),
+# run.json (energies.t_end, timing.repeats, cloud.center).
+if (!exists("results")) results = 'results/measure_cloud'
+load 'figures/common.gp'
+load 'figures/measure_cloud_style.gpi'
+eval mc_need_potential('harmonic')
+TC = csv('timing_cost.csv')
+
+eval need_num('TEND', scene_real('energies.t_end'))
+eval need_num('REPEATS', scene_real('timing.repeats'))
+Z0 = sprintf("(%s, %s, %s, %s)", scene_num('cloud.center.0'), scene_num('cloud.center.1'), \
+             scene_num('cloud.center.2'), scene_num('cloud.center.3'))
+iters = 'column("steps") * column("newton_iterations_per_step")'
+stats TC using "h" nooutput
+HMIN = STATS_min; HMAX = STATS_max
+stats TC using "newton_iterations_per_step" nooutput
+ITMIN = STATS_min; ITMAX = STATS_max
+# the data, one block per method (wall_s, err, iterations)
+undefine $FULLB
+do for [m in MC_METHODS] {
+    set table $FULLB append separator comma
+    plot TC using (column("wall_s")):(column("err")):(@iters) with table if (strcol("method") eq m)
+    unset table
+    set print $FULLB append; print ""; print ""; unset print
+}
+
+stats $FULLB using 1:2 nooutput
+WMIN = STATS_min_x; WMAX = STATS_max_x; EMAX = STATS_max_y
+stats $FULLB using 3 nooutput
+IMIN = STATS_min; IMAX = STATS_max
+# guide: error ∝ h² ∝ (cost)^(−2), above the data
+GUIDE(x, x0) = 2.5 * EMAX * (x / x0)**(-2)
+
+do for [fmt in FORMATS] {
+    eval term(fmt, 'measure_cloud_cost', 17, 10)
+    set multiplot title sprintf("{/:Bold Cost:} Φ^{(4)}_h, harmonic potential U = (x^2 + y^2)/2, z_0 = %s, h = %g … %g: " \
+        . "error at t_N = N h ≤ %g against cost\n(wall time: %s; Newton iterations per step %.2f – %.2f)", \
+        Z0, HMIN, HMAX, TEND, REPEATS > 1 ? sprintf("median of %d runs", REPEATS) : "one run", ITMIN, ITMAX)
+    unset key
+    set logscale xy
+    set format y LOGFMT
+    set mxtics 10; set mytics 10
+    set tmargin at screen 0.84; set bmargin at screen 0.30
+    set autoscale fix
+    set offsets graph 0.05, graph 0.05, graph 0.08, graph 0.08
+    eval LOGTICS("1 1.5 2 3 5 7")
+    set ylabel "‖z_N − z_{ref}(t_N)‖_2" offset 1, 0
+
+    # ---- (a) wall time ----
+    set lmargin at screen 0.10; set rmargin at screen 0.48
+    set title "(a) against wall time" offset 0, -0.4
+    set xlabel "wall time of the run [μs]" offset 0, 0.4
+    set format x "%g"
+    plot for [i = 0:4] $FULLB index i using ($1 * 1e6):2 with linespoints ls MC_LS(word(MC_METHODS, i + 1)) ps 0.6 notitle, \
+         [t=0:1:1] '+' using (x = 1e6 * WMIN * (WMAX / WMIN)**t, x):(GUIDE(x, 1e6 * WMIN)) with lines ls MC_LS_GUIDE notitle
+
+    # ---- (b) Newton iterations ----
+    set lmargin at screen 0.60; set rmargin at screen 0.98
+    set title "(b) against Newton iterations (force evaluations)"
+    set xlabel "Newton iterations, N × (mean per step)"
+    set format x "%g"
+    plot for [i = 0:4] $FULLB index i using 3:2 with linespoints ls MC_LS(word(MC_METHODS, i + 1)) ps 0.6 notitle, \
+         [t=0:1:1] '+' using (x = IMIN * (IMAX / IMIN)**t, x):(GUIDE(x, IMIN)) with lines ls MC_LS_GUIDE notitle
+
+    # ---- shared key ----
+    unset logscale xy
+    set lmargin at screen 0.10; set rmargin at screen 0.98
+    set tmargin at screen 0.1; set bmargin at screen 0.0
+    unset title; unset xlabel; unset ylabel; unset border; unset tics; unset grid
+    set xrange [0:1]; set yrange [0:1]
+    set key at screen 0.06, screen 0.17 left top vertical Left reverse maxrows 4 samplen 2.5 width -2 spacing 1.05 font ",8" nobox
+    plot NaN notitle, \
+         for [m in MC_METHODS] keyentry with linespoints ls MC_LS(m) ps 0.6 title MC_DESC(m), \
+         keyentry with lines ls MC_LS_GUIDE title "slope −2: error ∝ h^2 ∝ cost^{−2}"
+    set border; set tics; set grid
+    set autoscale xy
+    unset multiplot
+    unset output
+}

@@ -1,0 +1,14 @@
+# Fig. 5.4 of García-Naranjo & Vermeeren (Sec. 5.2.3): the same experiment as Fig. 5.2 with Φ^(0)_h
+# (E* = H(z_0) of each point: the method of the earlier literature), harmonic potential U = (x² + y²)/2,
+# h = 0.25, the five discretizations (5.1) and the exact flow. Relative volume V(t)/V(0) − 1 of the convex
+# hull of a 600-cell cloud of radius 0.01 around z_0 = (0, 0, 1, 1) w.r.t. (a) μ, (b) μ^(2)_mod,
+# (c) μ^(4)_mod; (d) peak-to-peak over t ≤ ptp_window against the measure. The oscillations are large and do
+# not shrink with the order of the modified measure (Φ^(0) preserves none of them beyond O(h^2)).
+# Input: volumes_phi0.csv, summary.json, run.json (see figures/measure_cloud_volumes.gpi).
+if (!exists("results")) results = 'results/measure_cloud'
+load 'figures/common.gp'
+load 'figures/measure_cloud_style.gpi'
+ELL = 0
+NAME = 'measure_cloud_fig54'
+FIGNO = "5.4"
+load 'figures/measure_cloud_volumes.gpi'
