@@ -32,7 +32,7 @@ using json = nlohmann::ordered_json;
 
 namespace {
 
-constexpr std::size_t kCheckpointBatches = 64;  // batches per checkpoint round
+constexpr std::size_t kCheckpointBatches = 32;  // batches per checkpoint round
 
 // Inclusive linspace; n = 1 gives the single value lo.
 std::vector<double> linspace(double lo, double hi, std::int64_t n) {
@@ -71,7 +71,7 @@ Schema schema() {
       .real_rows("first_integrals.initial", 4, any_finite(), 1, "free-particle states [x, y, px, py], x, y not both 0")
       .integer("first_integrals.steps", at_least(1), "steps of the Cartesian angular-momentum run")
       .integer("checkpoint.stop_after", non_negative(),
-               "stop after this many rounds of 64 batches, leaving a checkpoint for --resume (0: run to the end)")
+               "stop after this many rounds of 32 batches, leaving a checkpoint for --resume (0: run to the end)")
       .integer("timing.scalar_points", at_least(1), "initial conditions timed with the scalar reference loop")
       .integer("timing.scalar_steps", at_least(1), "steps of each scalar timing run");
   return s;
