@@ -15,6 +15,12 @@ and, for an experiment with an entry in ORDER_TABLES (summary["orders_by_initial
 
   OUT_DIR/<name>_orders.tex  fitted orders for every initial condition
 
+and, for one with an entry in EXTRA_TABLES, OUT_DIR/<name>_<suffix>.tex (measure_cloud:
+_orders.tex, the order of measure preservation per method). A directory
+RESULTS_ROOT/<name>-<variant> of SCENE_VARIANTS holds the results of a second paper scene of
+<name> (measure_cloud-free: the free particle); it is read together with <name> and gets no
+files of its own. Without it, the quantities it provides are "n/a".
+
 A known experiment without results gets placeholder files ("not yet reproduced"),
 and its macros are defined as "n/a", so that main.tex always compiles.
 
@@ -24,9 +30,13 @@ value per parameter, e.g. per step size, paired key by key with an object of num
 null). An experiment in RESULTS_TABLES has its own table layout (lobatto_table: Table 1 of
 001 with published and reproduced values side by side, and the growth rates of its Fig. 2
 beside their value in exact arithmetic, from the closed form of 001 eqs. (13)-(14); ti_drift:
-004 Figs. 1-6 with the reproduced values that have no published number below a line), and one in
+004 Figs. 1-6 with the reproduced values that have no published number below a line;
+measure_cloud: the statements of 003 Sec. 5 beside the values of its five methods), and one in
 TIMING_TABLES its own timing table (ti_drift: ns per step and force evaluations per step of the
-three methods, and the wall times of the Fig. 4 and Fig. 6 ensembles);
+three methods, and the wall times of the Fig. 4 and Fig. 6 ensembles; measure_cloud: ns and
+Newton iterations per step, errors and order of the five methods); a published key in
+PUBLISHED_PAIRS is paired with another summary path (measure_cloud: one published number
+against a value per method);
 DERIVED_SUMMARIES adds quantities computed from its CSV files and scene for the macros.
 Orders are printed to 3 decimals; other values to
 4 significant digits in the tables and 2 in the macros, in scientific notation
@@ -1188,12 +1198,491 @@ def ti_timing_table(name, s, src, derived):
     return "".join(lines)
 
 
+# ---------------------------------------------------------------------------
+# measure_cloud (003): Figs. 5.1-5.6 of the measure-preserving discretization of the
+# nonholonomic particle. Two result directories: <root>/measure_cloud (harmonic potential:
+# Figs. 5.1-5.4, the order study, the cost) and <root>/measure_cloud-free (free particle:
+# Figs. 5.5, 5.6, the long run), the second paper scene (SCENE_VARIANTS).
+# ---------------------------------------------------------------------------
+
+MC_METHODS = ["M", "MT", "TM", "TT", "T"]
+MC_GROUPS = {"": MC_METHODS, "Mid": ["M", "MT"], "Trap": ["TM", "TT", "T"]}  # quadrature of N
+MC_ELLS = [0, 2, 4, 6]
+MC_WORD = {0: "Zero", 2: "Two", 4: "Four", 6: "Six"}
+MC_MEASURE_TEX = {0: r"\mu", 2: r"\mu^{(2)}_{\text{mod}}", 4: r"\mu^{(4)}_{\text{mod}}", 6: r"\mu^{(6)}_{\text{mod}}"}
+
+
+def mc_measure(m):
+    """Column/key suffix of the measure mu^(m)_mod (m = 0: mu itself)."""
+    return "mu" if m == 0 else f"mu{m}"
+
+
+def mc_ranges(d):
+    """{group: {min, max, absmin, absmax}} over the methods of each MC_GROUPS group of a
+    {method: number} object (groups with a missing value are left out)."""
+    out = {}
+    if not isinstance(d, dict):
+        return out
+    for g, ms in MC_GROUPS.items():
+        vals = [d.get(m) for m in ms]
+        if all(is_number(v) and math.isfinite(v) for v in vals):
+            out[g or "all"] = {"min": min(vals), "max": max(vals),
+                               "absmin": min(abs(v) for v in vals), "absmax": max(abs(v) for v in vals)}
+    return out
+
+
+def mc_per_method_ranges(tree):
+    """mc_ranges of every {method: number} object of a JSON object, by key."""
+    out = {}
+    for k, v in (tree or {}).items() if isinstance(tree, dict) else ():
+        if isinstance(v, dict) and any(m in v for m in MC_METHODS):
+            out[k] = mc_ranges(v)
+    return out
+
+
+def mc_load_variant(path):
+    """{"summary", "scene", "run"} of a second-scene directory, or None without its summary.json."""
+    summary_path = os.path.join(path, "summary.json")
+    if not os.path.isfile(summary_path):
+        return None
+    s = load_json(summary_path)
+    if not isinstance(s, dict):
+        raise Malformed(f"{summary_path}: top level must be a JSON object")
+    for section in ("reproduced", "orders", "timing"):
+        if s.get(section) is not None and not isinstance(s[section], dict):
+            raise Malformed(f'{summary_path}: "{section}" must be an object')
+    run = {}
+    if os.path.isfile(os.path.join(path, "run.json")):
+        run = load_json(os.path.join(path, "run.json"))
+        run = run if isinstance(run, dict) else {}
+    scene = run.get("scene") if isinstance(run.get("scene"), dict) else {}
+    return {"summary": s, "scene": scene, "run": run}
+
+
+def mc_floats(rows, path, cols):
+    try:
+        return [[float(r[c]) for c in cols] for r in rows]
+    except ValueError:
+        raise Malformed(f"{path}: non-numeric value in the columns {list(cols)}") from None
+
+
+def mc_summary(s, scene, exp_dir, variants=None):
+    """Derived quantities of measure_cloud for the tables and macros (missing inputs give None).
+
+    s, scene and exp_dir are those of the harmonic scene (None if it has no results);
+    variants["free"] is mc_load_variant of the free-particle directory, or None."""
+    s = s or {}
+    sc = scene if isinstance(scene, dict) else {}
+    rep = s.get("reproduced") or {}
+    out = {"scene": {}, "scene_raw": sc, "ref": {}, "corr": {}, "raw": {}, "small": {}, "cost": {},
+           "range": {}, "ratio": {}, "free": {}}
+
+    def num(tree, *path):
+        v = lookup(tree, path)
+        return float(v) if is_number(v) else None
+
+    h, window = num(sc, "h"), num(sc, "ptp_window")
+    d = out["scene"]
+    if h:
+        d["h6"] = h ** 6
+    dt, snaps = num(sc, "shape", "snapshot_dt"), num(sc, "shape", "snapshots")
+    if dt is not None and snaps is not None:
+        d["shape_t_end"] = dt * snaps
+    te = num(sc, "energies", "t_end")
+    if h and te:
+        d["energy_steps"] = math.floor(te / h + 1e-9)
+    if exp_dir and os.path.isfile(os.path.join(exp_dir, "run.json")):
+        run = load_json(os.path.join(exp_dir, "run.json"))
+        if isinstance(run, dict) and is_number(run.get("threads")):
+            d["threads"] = run["threads"]
+    phi = (1 + math.sqrt(5)) / 2
+    d["hull_exact"] = 25 / 4 * (2 + math.sqrt(5)) / phi ** 4  # 600-cell of circumradius 1, edge 1/phi
+    hv = rep.get("hull_volume_initial_over_r4")
+    if is_number(hv):
+        d["hull_rel_err"] = abs(hv / d["hull_exact"] - 1)
+
+    # Figs. 5.2, 5.4: peak-to-peak over t <= window of V/V(0) - 1 in the method's own measure
+    # mu^(ell)_mod, raw and minus the reference's (the convex-hull artefact, common to both)
+    for ell in MC_ELLS:
+        path = os.path.join(exp_dir, f"volumes_phi{ell}.csv") if exp_dir else None
+        cols = ["t", "reference_mu"] + [f"{m}_{mc_measure(ell)}" for m in MC_METHODS]
+        rows = read_csv_rows(path, cols) if path else None
+        if not rows or window is None:
+            continue
+        vals = [v for v in mc_floats(rows, path, cols) if v[0] <= window + 1e-9]
+        ref = [v[1] / vals[0][1] - 1 for v in vals]
+        allref = [v[0] / vals[0][1] - 1 for v in mc_floats(rows, path, ["reference_mu"])]
+        if not out["ref"]:
+            out["ref"] = {"at_window": ref[-1], "at_end": allref[-1], "ptp": max(ref) - min(ref)}
+        raw, corr = {}, {}
+        for k, m in enumerate(MC_METHODS):
+            rel = [v[2 + k] / vals[0][2 + k] - 1 for v in vals]
+            raw[m] = max(rel) - min(rel)
+            diff = [a - b for a, b in zip(rel, ref)]
+            corr[m] = max(diff) - min(diff)
+        out["raw"][str(ell)], out["corr"][str(ell)] = raw, corr
+
+    # the order study: peak-to-peak at the largest step (r = order_study.radius)
+    path = os.path.join(exp_dir, "order_study.csv") if exp_dir else None
+    rows = read_csv_rows(path, ("method", "ell", "h", "ptp")) if path else None
+    hs = lookup(sc, ("order_study", "h"))
+    if rows and isinstance(hs, list) and hs and all(is_number(x) for x in hs):
+        hmax = max(hs)
+        for r, (ell, hh, p) in zip(rows, mc_floats(rows, path, ("ell", "h", "ptp"))):
+            if abs(hh / hmax - 1) < 1e-12:
+                out["small"].setdefault(str(int(ell)), {})[r["method"]] = p
+    noise = rep.get("order_study_noise")
+    if is_number(noise):
+        out["scene"]["noise_floor"] = 2 * noise
+
+    # cost: Phi^(4) from the centre for every order_study.h, N = floor(energies.t_end / h) steps. With a
+    # column t_end (= t_N = N h) the error is taken against the reference at t_N and every step size
+    # counts; without it, only the step sizes with t_N = energies.t_end do.
+    path = os.path.join(exp_dir, "timing_cost.csv") if exp_dir else None
+    cols = ("method", "h", "steps", "err", "wall_s", "ns_per_step", "newton_iterations_per_step")
+    rows = read_csv_rows(path, cols) if path else None
+    if rows and te:
+        at_tn = "t_end" in rows[0]
+        per = {}
+        for r, v in zip(rows, mc_floats(rows, path, cols[1:])):
+            per.setdefault(r["method"], []).append(dict(zip(cols[1:], v)))
+        c = out["cost"]
+        c["exact"], c["iters_first"], c["order"] = {}, {}, {}
+        for m, runs in per.items():
+            runs.sort(key=lambda x: -x["h"])
+            exact = [x for x in runs if abs(x["steps"] * x["h"] / te - 1) < 1e-9]
+            valid = runs if at_tn else exact
+            c["exact"][m] = [(x["h"], x["err"]) for x in exact]
+            if h is not None:
+                first = [x for x in runs if abs(x["h"] / h - 1) < 1e-12]
+                if first:
+                    c["iters_first"][m] = first[0]["newton_iterations_per_step"]
+            pts = [(math.log(x["h"]), math.log(x["err"])) for x in valid if x["h"] > 0 and x["err"] > 0]
+            slope = ti_slope([a for a, _ in pts], [b for _, b in pts]) if len(pts) >= 2 else None
+            if slope is not None:
+                c["order"][m] = slope
+        c["exact_h"] = sorted({x[0] for m in c["exact"] for x in c["exact"][m]}, reverse=True)
+        c["at_t_n"] = at_tn
+        c["fit_count"] = len({x["h"] for runs in per.values() for x in runs}) if at_tn else len(c["exact_h"])
+
+    # ratios per method
+    r = out["ratio"]
+    for key, num_key, den_key in (("zero_over_four_mu4", "ptp_phi0_mu4", "ptp_phi4_mu4"),):
+        a, b = rep.get(num_key), rep.get(den_key)
+        if isinstance(a, dict) and isinstance(b, dict):
+            r[key] = {m: a[m] / b[m] for m in MC_METHODS if is_number(a.get(m)) and is_number(b.get(m)) and b[m]}
+
+    # the free particle (second scene)
+    fv = (variants or {}).get("free")
+    if fv:
+        fs, fsc = fv["summary"], fv["scene"]
+        frep = fs.get("reproduced") or {}
+        f = out["free"]
+        f["reproduced"] = frep
+        f["timing"] = fs.get("timing") or {}
+        f["scene"] = fsc
+        e0, e4 = frep.get("err_at_t_end_phi0"), frep.get("err_at_t_end_phi4")
+        if isinstance(e0, dict) and isinstance(e4, dict):
+            f["err_ratio"] = {m: e0[m] / e4[m] for m in MC_METHODS
+                              if is_number(e0.get(m)) and is_number(e4.get(m)) and e4[m]}
+        l0, l4 = frep.get("long_err_phi0"), frep.get("long_err_phi4")
+        if isinstance(l0, dict) and isinstance(l4, dict):
+            f["long_err_ratio"] = {m: l0[m] / l4[m] for m in MC_METHODS
+                                   if is_number(l0.get(m)) and is_number(l4.get(m)) and l4[m]}
+        h0, h4 = frep.get("max_abs_H_err_phi0"), frep.get("max_abs_H_err_phi4")
+        if isinstance(h0, dict) and isinstance(h4, dict):
+            f["max_H_ratio"] = {m: h0[m] / h4[m] for m in MC_METHODS
+                                if is_number(h0.get(m)) and is_number(h4.get(m)) and h4[m]}
+        f["range"] = mc_per_method_ranges(frep)
+        for k in ("err_ratio", "long_err_ratio", "max_H_ratio"):
+            if k in f:
+                f["range"][k] = mc_ranges(f[k])
+        wall = (fs.get("timing") or {}).get("wall_s")
+        f["wall_s"] = wall if is_number(wall) else None
+
+    # ranges over the methods
+    rg = out["range"]
+    rg.update(mc_per_method_ranges(rep))
+    rg.update({f"order_{k}": v for k, v in mc_per_method_ranges(s.get("orders") or {}).items()})
+    for ell in MC_ELLS:
+        for src_key, tree in (("raw", out["raw"]), ("corr", out["corr"]), ("small", out["small"])):
+            if str(ell) in tree:
+                rg[f"{src_key}_{ell}"] = mc_ranges(tree[str(ell)])
+    for k, v in out["ratio"].items():
+        rg[f"ratio_{k}"] = mc_ranges(v)
+    fits = s.get("fits") or {}
+    for ell in MC_ELLS:
+        pts = {m: lookup(fits, (f"measure_ell{ell}", m, "points")) for m in MC_METHODS}
+        rg[f"fit_points_{ell}"] = mc_ranges(pts)
+    rg["ns_per_step"] = mc_ranges((s.get("timing") or {}).get("ns_per_step"))
+    rg["iters_first"] = mc_ranges(out["cost"].get("iters_first"))
+    rg["cost_order"] = mc_ranges(out["cost"].get("order"))
+    return out
+
+
+# Rows of the published-vs-reproduced table: (description, published statement, source, kind).
+# source: ("sum", key) summary["reproduced"][key][method]; ("derived", tree, key...) a
+# {method: value} of mc_summary; ("free", key) the free run's reproduced[key][method];
+# ("order", key) summary["orders"][key][method]; ("one", path) one value for all methods;
+# None: a group heading.
+MC_TABLE_ROWS = [
+    (r"\emph{Harmonic potential, 600-cell cloud, $r=@R@$ (Figs.~5.2, 5.4): ptp of $V(t)/V(0)-1$, "
+     r"$t\le@W@$}", None, None, None),
+    (r"Reference flow, in $\mu$", r"``nicely preserves'' until $t\approx20$",
+     ("one", ("summary", "reproduced", "ptp_reference_mu")), "sci"),
+    (r"$\Phi^{(4)}_h$, in $\mu$", r"oscillates", ("sum", "ptp_phi4_mu"), "sci"),
+    (r"$\Phi^{(4)}_h$, in $\mu^{(2)}_{\text{mod}}$", r"smaller", ("sum", "ptp_phi4_mu2"), "sci"),
+    (r"$\Phi^{(4)}_h$, in $\mu^{(4)}_{\text{mod}}$", "PTP4", ("sum", "ptp_phi4_mu4"), "sci"),
+    (r"\quad minus the reference (hull artefact removed)", r"---", ("derived", "corr", "4"), "sci"),
+    (r"$\Phi^{(0)}_h$, in $\mu$", r"large oscillations", ("sum", "ptp_phi0_mu"), "sci"),
+    (r"$\Phi^{(0)}_h$, in $\mu^{(2)}_{\text{mod}}$", r"that do not", ("sum", "ptp_phi0_mu2"), "sci"),
+    (r"$\Phi^{(0)}_h$, in $\mu^{(4)}_{\text{mod}}$", r"diminish", ("sum", "ptp_phi0_mu4"), "sci"),
+    (r"\emph{Harmonic potential, from $z_0$, $t\le@TE@$ (Fig.~5.3)}", None, None, None),
+    (r"$\Phi^{(4)}_h$: $\max_t|K^{(4)}_{\text{mod}}|$", r"order $h^6\approx2\cdot10^{-4}$ or smaller",
+     ("sum", "max_abs_K_mod4_phi4"), "sci01"),
+    (r"$\Phi^{(4)}_h$: $\max_t|H-H_0|$", r"close to $H_0=1$", ("sum", "max_abs_H_err_phi4"), "sci01"),
+    (r"$|H(@TE@)-H_0|$ of $\Phi^{(0)}_h$ over that of $\Phi^{(4)}_h$", r"little difference",
+     ("sum", "harmonic_H_drift_ratio"), "sig3"),
+    (r"\emph{Free particle, from $z_0$, $t\le@FTE@$ (Figs.~5.5, 5.6)}", None, None, None),
+    (r"$\Phi^{(4)}_h$: $\max_t|K^{(4)}_{\text{mod}}|$", r"very close to zero", ("free", "max_abs_K_mod4_phi4"), "sci01"),
+    (r"$\Phi^{(0)}_h$: $\max_t|K^{(4)}_{\text{mod}}|$", r"not so close to zero", ("free", "max_abs_K_mod4_phi0"), "sci01"),
+    (r"$\Phi^{(4)}_h$: $|H(@FTE@)-H_0|$", r"very little drift", ("free", "H_err_at_t_end_phi4"), "sci01"),
+    (r"$\Phi^{(0)}_h$: $|H(@FTE@)-H_0|$", r"drift", ("free", "H_err_at_t_end_phi0"), "sci01"),
+    (r"\quad the same over that of $\Phi^{(4)}_h$", r"---", ("free", "free_H_drift_ratio"), "sig3"),
+    (r"$\Phi^{(4)}_h$: error $\|z_j-z(t_j)\|_2$ at $t=@FTE@$", r"outperforms $\Phi^{(0)}_h$", ("free", "err_at_t_end_phi4"), "sci01"),
+    (r"$\Phi^{(0)}_h$: error at $t=@FTE@$", r"faster growth", ("free", "err_at_t_end_phi0"), "sci01"),
+    (r"\emph{Free particle, long run to $T=@T@$ (not in [003])}", None, None, None),
+    (r"$\Phi^{(4)}_h$: $H(T)-H_0$", r"---", ("free", "long_H_err_phi4"), "sci01"),
+    (r"$\Phi^{(0)}_h$: $H(T)-H_0$", r"---", ("free", "long_H_err_phi0"), "sci01"),
+    (r"$\Phi^{(4)}_h$: error at $T$", r"---", ("free", "long_err_phi4"), "sci01"),
+    (r"$\Phi^{(0)}_h$: error at $T$", r"---", ("free", "long_err_phi0"), "sci01"),
+    (r"\emph{Order of preservation of $\mu^{(\ell)}_{\text{mod}}$ by $\Phi^{(\ell)}_h$ (Cor.~4.3), $r=@RS@$}",
+     None, None, None),
+    (r"$\ell=0$", r"$2$", ("order", "measure_ell0"), "order"),
+    (r"$\ell=2$", r"$4$", ("order", "measure_ell2"), "order"),
+    (r"$\ell=4$", r"$6$", ("order", "measure_ell4"), "order"),
+    (r"$\ell=6$ (terms of order $h^6$ not used in [003])", r"($8$)", ("order", "measure_ell6"), "order"),
+]
+
+
+def mc_scene_tokens(derived):
+    """Values of the scenes that the generated table texts cite ("@H@" -> 0.25, ...)."""
+    mc = (derived or {}).get("mc") or {}
+    sc = mc.get("scene_raw") or {}
+    fsc = lookup(mc, ("free", "scene")) or {}
+
+    def tok(tree, path, kind):
+        v = lookup(tree, path)
+        if kind in ("vec", "max"):
+            ok = isinstance(v, list) and v and all(is_number(x) for x in v)
+            if kind == "max":
+                return fmt(max(v), "plain") if ok else NA
+            return "(" + ",".join(f"{x:g}" for x in v) + ")" if ok else NA
+        c = fmt(v, kind)
+        return NA if c is None else c
+
+    return {"@H@": tok(sc, ("h",), "plain"), "@R@": tok(sc, ("cloud", "radius"), "plain"),
+            "@W@": tok(sc, ("ptp_window",), "plain"), "@TE@": tok(sc, ("energies", "t_end"), "plain"),
+            "@FTE@": tok(fsc, ("energies", "t_end"), "plain"), "@T@": tok(fsc, ("long_run", "t_end"), "plain"),
+            "@RS@": tok(sc, ("order_study", "radius"), "tol"), "@Z0@": tok(sc, ("cloud", "center"), "vec"),
+            "@HMAX@": tok(sc, ("order_study", "h"), "max")}
+
+
+def mc_subst(text, tokens):
+    for k, v in tokens.items():
+        text = text.replace(k, v)
+    return text
+
+
+def mc_results_table(name, s, src, derived):
+    """Published statements of 003 Sec. 5 beside the reproduced values of the five methods."""
+    mc = (derived or {}).get("mc") or {}
+    rep, orders = s.get("reproduced") or {}, s.get("orders") or {}
+    frep = (mc.get("free") or {}).get("reproduced") or {}
+    pub = (s.get("published") or {}).get("ptp_phi4_mu4_approx")
+    tokens = mc_scene_tokens(derived)
+    lines = [HEADER.format(src=src)]
+    lines.append("\\begin{table}[htbp]\n\\centering\n\\footnotesize\n")
+    free_note = ("" if frep else
+                 " (free particle: no results, \\texttt{results/measure\\_cloud-free/summary.json} is missing)")
+    lines.append(mc_subst(
+        "\\caption{Published statements of Section~5 of [003] and the reproduced values of "
+        f"{experiment_title(name)} for the five discrete Lagrangians (5.1), $h=@H@$, $z_0=@Z0@${free_note}. "
+        "The column [003] quotes the text of the paper; its only number, the fluctuation in "
+        "$\\mu^{(4)}_{\\text{mod}}$ of Fig.~5.2, is read off the plot. Peak-to-peak (ptp) values are relative "
+        "to the initial volume in the same measure. $H_0=H(z_0)=1$; error: $\\|z_j-z(t_j)\\|_2$ against "
+        "the reference. Orders: least-squares slopes of the peak-to-peak value against $h$ "
+        "(Table~\\ref{tab:measure_cloud-orders}).}\n", tokens))
+    lines.append(f"\\label{{tab:{name}-table}}\n")
+    lines.append("\\setlength{\\tabcolsep}{3pt}\n")
+    lines.append("\\begin{tabular}{@{}p{0.27\\linewidth}p{0.15\\linewidth}rrrrr@{}}\n\\toprule\n")
+    lines.append("Quantity & [003] & M & MT & TM & TT & T \\\\\n\\midrule\n")
+    first = True
+    for label, published, source, kind in MC_TABLE_ROWS:
+        label = mc_subst(label, tokens)
+        if source is None:
+            if not first:
+                lines.append("\\addlinespace\n")
+            lines.append(f"\\multicolumn{{7}}{{@{{}}l}}{{{label}}} \\\\\n")
+            first = False
+            continue
+        if published == "PTP4":
+            published = (f"about ${sci(pub, 1)}$ (read off)" if is_number(pub) else NA)
+        if source[0] == "one":
+            v = lookup(s, source[1][1:]) if source[1][0] == "summary" else None
+            cells = [f"\\multicolumn{{5}}{{c}}{{{math_cell(fmt(v, kind))}}}"]
+        else:
+            if source[0] == "sum":
+                d = rep.get(source[1])
+            elif source[0] == "free":
+                d = frep.get(source[1])
+            elif source[0] == "order":
+                d = orders.get(source[1])
+            else:
+                d = lookup(mc, source[1:])
+            d = d if isinstance(d, dict) else {}
+            if kind == "sci01":  # one notation per row: scientific if any value is below 0.01
+                small = any(is_number(d.get(m)) and abs(d[m]) < 1e-2 for m in MC_METHODS)
+                kind = "sci" if small else "sci01"
+            cells = [math_cell(fmt(d.get(m), kind)) for m in MC_METHODS]
+        lines.append(f"\\raggedright {label} & \\raggedright {published} & " + " & ".join(cells) + " \\\\\n")
+    lines.append("\\bottomrule\n\\end{tabular}\n\\end{table}\n")
+    return "".join(lines)
+
+
+def mc_orders_table(name, s, src, derived):
+    """The order of measure preservation per method and ell, with the peak-to-peak values at
+    h = 0.25 on the tiny cloud and on the paper's cloud (raw and minus the reference)."""
+    mc = (derived or {}).get("mc") or {}
+    orders, fits = s.get("orders") or {}, s.get("fits") or {}
+    sc = mc.get("scene") or {}
+    lines = [HEADER.format(src=src)]
+    if not orders:
+        lines.append("\\begin{center}\\small No order study recorded for \\texttt{"
+                     f"{tex_escape(name)}" "}.\\end{center}\n")
+        return "".join(lines)
+    lines.append("\\begin{table}[htbp]\n\\centering\n\\footnotesize\n")
+    floor = sc.get("noise_floor")
+    floor_text = f"${fmt(floor, 'sci')}$" if is_number(floor) else NA
+    tokens = mc_scene_tokens(derived)
+    lines.append(mc_subst(
+        "\\caption{Order of measure preservation (not a table of [003]): $\\Phi^{(\\ell)}_h$ in its own "
+        "measure $\\mu^{(\\ell)}_{\\text{mod}}$, harmonic potential, peak-to-peak of $V(t)/V(0)-1$ over "
+        "$t\\le@W@$. Order: least-squares slope against $h$ on 600-cell clouds of radius $@RS@$, "
+        "in brackets the number of step sizes above twice the measured round-off noise "
+        f"({floor_text}) that enter the fit. Then the peak-to-peak value at $h=@HMAX@$ on that cloud, and on "
+        "the paper's cloud of radius $@R@$ (at $h=@H@$) minus the reference's peak-to-peak (the convex-hull "
+        "artefact), and as measured.}\n", tokens))
+    lines.append(f"\\label{{tab:{name}-orders}}\n")
+    lines.append("\\setlength{\\tabcolsep}{4pt}\n")
+    lines.append("\\begin{tabular}{@{}clrrrrr@{}}\n\\toprule\n")
+    lines.append("$\\ell$ & Quantity & M & MT & TM & TT & T \\\\\n\\midrule\n")
+    for i, ell in enumerate(MC_ELLS):
+        if i:
+            lines.append("\\addlinespace\n")
+        key = f"measure_ell{ell}"
+        o = orders.get(key) if isinstance(orders.get(key), dict) else {}
+        cells = []
+        for m in MC_METHODS:
+            v, pts = o.get(m), lookup(fits, (key, m, "points"))
+            c = math_cell(fmt(v, "order"))
+            if is_number(v) and is_number(pts):
+                c += f"\\,({int(pts)})"
+            cells.append(c)
+        expected = f"$\\ell+2={ell + 2}$"
+        lines.append(f"${ell}$ & order (expected {expected}) & " + " & ".join(cells) + " \\\\\n")
+        for label, tree in (("$r=@RS@$, $h=@HMAX@$", "small"), ("$r=@R@$ minus reference", "corr"),
+                            ("$r=@R@$, as measured", "raw")):
+            label = mc_subst(label, tokens)
+            d = (mc.get(tree) or {}).get(str(ell)) or {}
+            lines.append(f" & {label} & " + " & ".join(math_cell(fmt(d.get(m), "sci")) for m in MC_METHODS)
+                         + " \\\\\n")
+    lines.append("\\bottomrule\n\\end{tabular}\n\\end{table}\n")
+    return "".join(lines)
+
+
+def mc_timing_table(name, s, src, derived):
+    """Cost of measure_cloud: ns and Newton iterations per step of Phi^(4), and its error at t = 10."""
+    mc = (derived or {}).get("mc") or {}
+    timing = s.get("timing") or {}
+    ns = timing.get("ns_per_step") or {}
+    c = mc.get("cost") or {}
+    lines = [HEADER.format(src=src)]
+    if not isinstance(ns, dict) or not ns:
+        lines.append("\\begin{center}\\small No timing recorded for \\texttt{"
+                     f"{tex_escape(name)}" "}.\\end{center}\n")
+        return "".join(lines)
+    hexact = c.get("exact_h") or []
+    lines.append("\\begin{table}[htbp]\n\\centering\n\\small\n")
+    tokens = mc_scene_tokens(derived)
+    if c.get("at_t_n"):
+        order_text = (f"the least-squares slope of $\\log(\\text{{error}})$ against $\\log h$ over all "
+                      f"{fmt(c.get('fit_count'), 'int') or NA} step sizes of the order study, each error taken at "
+                      "the last step $t_N=\\lfloor @TE@/h\\rfloor h$ against the reference there")
+    else:
+        order_text = "the least-squares slope over the step sizes that divide @TE@"
+    lines.append(mc_subst(
+        f"\\caption{{Cost of {experiment_title(name)}: time of one step of $\\Phi^{{(4)}}_h$ (Newton's method on "
+        "the discrete momentum equation, exact $2\\times2$ Jacobian by forward-mode automatic "
+        "differentiation) at $h=@H@$ on the harmonic particle from $z_0=@Z0@$, median of the timed runs on one "
+        "thread; the Newton iterations per step there; the error at $t=@TE@$ for the step sizes that divide "
+        f"@TE@; and the order, {order_text}.}}\n", tokens))
+    lines.append(f"\\label{{tab:{name}-timing}}\n")
+    lines.append("\\begin{tabular}{@{}lrr" + "r" * len(hexact) + "r@{}}\n\\toprule\n")
+    hcells = " & ".join(f"$h={fmt(x, 'plain')}$" for x in hexact)
+    lines.append(f"Method & ns per step & Newton iterations & "
+                 + (mc_subst(f"\\multicolumn{{{len(hexact)}}}{{c}}{{Error at $t=@TE@$}} & ", tokens) if hexact else "")
+                 + "Order \\\\\n")
+    if hexact:
+        lines.append(f"\\cmidrule(lr){{4-{3 + len(hexact)}}}\n")
+    lines.append(" & & per step & " + (hcells + " & " if hexact else "") + " \\\\\n\\midrule\n")
+    errs = c.get("exact") or {}
+    for m in MC_METHODS:
+        e = dict(errs.get(m) or [])
+        cells = [math_cell(fmt(ns.get(m), "ns3")), math_cell(fmt((c.get("iters_first") or {}).get(m), "sig3"))]
+        cells += [math_cell(fmt(e.get(x), "sci")) for x in hexact]
+        cells.append(math_cell(fmt((c.get("order") or {}).get(m), "order")))
+        lines.append(f"{m} & " + " & ".join(cells) + " \\\\\n")
+    lines.append("\\bottomrule\n\\end{tabular}\n")
+    notes = []
+    if is_number(timing.get("newton_iterations_mean")):
+        notes.append(f"Newton iterations per step over all runs of the harmonic scene: "
+                     f"${fmt(timing['newton_iterations_mean'], 'sig3')}$")
+    fnewton = lookup(mc, ("free", "timing", "newton_iterations_mean"))
+    if is_number(fnewton):
+        notes.append(f"free particle: ${fmt(fnewton, 'sig3')}$")
+    if is_number(timing.get("wall_s")):
+        text = f"wall time of the harmonic run ${fmt(timing['wall_s'], 'seconds')}$\\,s"
+        threads = lookup(mc, ("scene", "threads"))
+        if is_number(threads):
+            text += f" on {int(threads)} thread{'s' if threads != 1 else ''}"
+        notes.append(text)
+    if notes:
+        lines.append("\\par\\smallskip\\parbox{\\linewidth}{\\footnotesize " + "; ".join(notes) + ".}\n")
+    lines.append("\\end{table}\n")
+    return "".join(lines)
+
+
 # Experiment-specific derived quantities (derived[key] = function(summary, scene, exp_dir)) and
 # published-vs-reproduced tables (function(name, summary, summary_path, derived)).
-DERIVED_SUMMARIES = {"lobatto_table": ("lt", lobatto_summary), "ti_drift": ("td", ti_summary)}
-RESULTS_TABLES = {"lobatto_table": lobatto_results_table, "ti_drift": ti_results_table}
+DERIVED_SUMMARIES = {"lobatto_table": ("lt", lobatto_summary), "ti_drift": ("td", ti_summary),
+                     "measure_cloud": ("mc", mc_summary)}
+RESULTS_TABLES = {"lobatto_table": lobatto_results_table, "ti_drift": ti_results_table,
+                  "measure_cloud": mc_results_table}
 # Timing tables of their own (function(name, summary, summary_path, derived)).
-TIMING_TABLES = {"ti_drift": ti_timing_table}
+TIMING_TABLES = {"ti_drift": ti_timing_table, "measure_cloud": mc_timing_table}
+# Further tables of an experiment: {suffix: function(name, summary, summary_path, derived)},
+# written to OUT_DIR/<name>_<suffix>.tex (placeholders without results).
+EXTRA_TABLES = {"measure_cloud": {"orders": mc_orders_table}}
+# Second paper scenes: RESULTS_ROOT/<name>-<variant> is read together with <name> (its
+# quantities enter <name>'s tables and macros) and is not an experiment of its own. The
+# derived-summary function of <name> gets them as variants={variant: {"summary", "scene",
+# "run"} or None}.
+SCENE_VARIANTS = {"measure_cloud": ["free"]}
+# Published keys whose reproduced counterpart has another key and shape:
+# {name: {published key: path into summary.json}}. measure_cloud: the fluctuation of
+# Fig. 5.2 read off the plot (one number) against the peak-to-peak values of the five methods.
+PUBLISHED_PAIRS = {"measure_cloud": {"ptp_phi4_mu4_approx": ("reproduced", "ptp_phi4_mu4")}}
 
 # Macros the text cites: (name, path into summary.json or a derived quantity, format).
 # A path starts with "summary", "scene" (run.json's resolved scene) or "derived".
@@ -1768,6 +2257,167 @@ MACROS["ti_drift"] = [
 ]
 
 
+def _mc_ptp_macros():
+    out = []
+    for ell in MC_ELLS:
+        for mm in MC_ELLS:
+            stem = f"MCptp{MC_WORD[ell]}Mu{MC_WORD[mm] if mm else ''}"
+            key = f"ptp_phi{ell}_{mc_measure(mm)}"
+            out += [(f"{stem}{m}", ("summary", "reproduced", key, m), "sci") for m in MC_METHODS]
+            for g in MC_GROUPS:
+                out += [(f"{stem}{g}Min", ("derived", "mc", "range", key, g or "all", "min"), "sci"),
+                        (f"{stem}{g}Max", ("derived", "mc", "range", key, g or "all", "max"), "sci"),
+                        (f"{stem}{g}Range", ("derived", "mc", "range", key, g or "all"), "range:sci")]
+    return out
+
+
+def _mc_per_ell_macros():
+    out = []
+    for ell in MC_ELLS:
+        w = MC_WORD[ell]
+        for stem, tree, kind in (("Corr", "corr", "sci"), ("Small", "small", "sci"), ("Raw", "raw", "sci")):
+            out += [(f"MC{stem.lower()}{w}{m}", ("derived", "mc", tree, str(ell), m), kind) for m in MC_METHODS]
+            for g in MC_GROUPS:
+                out += [(f"MC{stem.lower()}{w}{g}Min", ("derived", "mc", "range", f"{tree}_{ell}", g or "all", "min"), kind),
+                        (f"MC{stem.lower()}{w}{g}Max", ("derived", "mc", "range", f"{tree}_{ell}", g or "all", "max"), kind),
+                        (f"MC{stem.lower()}{w}{g}Range", ("derived", "mc", "range", f"{tree}_{ell}", g or "all"),
+                         f"range:{kind}")]
+        out += [(f"MCorder{w}{m}", ("summary", "orders", f"measure_ell{ell}", m), "order") for m in MC_METHODS]
+        out += [(f"MCorder{w}Min", ("derived", "mc", "range", f"order_measure_ell{ell}", "all", "min"), "order"),
+                (f"MCorder{w}Max", ("derived", "mc", "range", f"order_measure_ell{ell}", "all", "max"), "order"),
+                (f"MCorder{w}Range", ("derived", "mc", "range", f"order_measure_ell{ell}", "all"), "range:order"),
+                (f"MCfitPoints{w}Min", ("derived", "mc", "range", f"fit_points_{ell}", "all", "min"), "int"),
+                (f"MCfitPoints{w}Max", ("derived", "mc", "range", f"fit_points_{ell}", "all", "max"), "int"),
+                (f"MCfitPoints{w}Range", ("derived", "mc", "range", f"fit_points_{ell}", "all"), "range:int")]
+        out += [(f"MCfitHmin{w}{m}", ("summary", "fits", f"measure_ell{ell}", m, "h_min"), "sig3") for m in MC_METHODS]
+    return out
+
+
+def _mc_method_macros(prefix, src, key, kind, absolute=False):
+    """Per-method macros and their ranges (all, Mid = M and MT, Trap = TM, TT and T)."""
+    base = ("derived", "mc", "free") if src == "free" else ("summary",)
+    rbase = ("derived", "mc", "free", "range") if src == "free" else ("derived", "mc", "range")
+    if src == "derived":
+        base, rbase = ("derived", "mc"), ("derived", "mc", "range")
+    out = [(f"{prefix}{m}", base + (("reproduced",) if src in ("summary", "free") else ()) + (key, m), kind)
+           for m in MC_METHODS]
+    lo, hi = ("absmin", "absmax") if absolute else ("min", "max")
+    for g in MC_GROUPS:
+        out += [(f"{prefix}{g}Min", rbase + (key, g or "all", lo), kind),
+                (f"{prefix}{g}Max", rbase + (key, g or "all", hi), kind),
+                (f"{prefix}{g}Range", rbase + (key, g or "all"), ("absrange:" if absolute else "range:") + kind)]
+    return out
+
+
+MACROS["measure_cloud"] = [
+    # scene of the harmonic run (run.json) and quantities derived from it
+    ("MCh", ("scene", "h"), "plain"),
+    ("MChSix", ("derived", "mc", "scene", "h6"), "sci"),
+    ("MCtEnd", ("scene", "t_end"), "plain"),
+    ("MCwindow", ("scene", "ptp_window"), "plain"),
+    ("MCradius", ("scene", "cloud", "radius"), "plain"),
+    ("MCcenter", ("scene", "cloud", "center"), "vec"),
+    ("MCseed", ("scene", "seed"), "intplain"),
+    ("MCshapePoints", ("scene", "shape", "points"), "int"),
+    ("MCshapeRadius", ("scene", "shape", "radius"), "plain"),
+    ("MCshapeDt", ("scene", "shape", "snapshot_dt"), "plain"),
+    ("MCshapeTend", ("derived", "mc", "scene", "shape_t_end"), "plain"),
+    ("MCenergyTend", ("scene", "energies", "t_end"), "plain"),
+    ("MCenergySteps", ("derived", "mc", "scene", "energy_steps"), "int"),
+    ("MCorderRadius", ("scene", "order_study", "radius"), "tol"),
+    ("MCorderHmax", ("scene", "order_study", "h"), "max:plain"),
+    ("MCorderHmin", ("scene", "order_study", "h"), "min:plain"),
+    ("MCorderHcount", ("scene", "order_study", "h"), "len:int"),
+    ("MCorderTend", ("scene", "order_study", "t_end"), "plain"),
+    ("MCrtol", ("scene", "reference", "rtol"), "tol"),
+    ("MCatol", ("scene", "reference", "atol"), "tol"),
+    ("MCrepeats", ("scene", "timing", "repeats"), "int"),
+    ("MCthreads", ("derived", "mc", "scene", "threads"), "int"),
+    ("MCrunWall", ("summary", "timing", "wall_s"), "seconds"),
+    ("MCmaxOrder", ("summary", "reproduced", "max_modified_order"), "int"),
+    # checks
+    ("MCgoldenErr", ("summary", "reproduced", "golden_max_rel_err"), "err"),
+    ("MCrefSelfCheck", ("summary", "reproduced", "reference_self_check"), "err"),
+    ("MChullVolume", ("summary", "reproduced", "hull_volume_initial_over_r4"), "sig7"),
+    ("MChullExact", ("derived", "mc", "scene", "hull_exact"), "sig7"),
+    ("MChullRelErr", ("derived", "mc", "scene", "hull_rel_err"), "err"),
+    # Fig. 5.1
+    ("MCareaFirst", ("summary", "reproduced", "shape_area_sum", 0), "fixed3"),
+    ("MCareaLast", ("summary", "reproduced", "shape_area_sum", -1), "fixed3"),
+    # Figs. 5.2, 5.4: the reference
+    ("MCptpRef", ("summary", "reproduced", "ptp_reference_mu"), "sci"),
+    ("MCrefAtWindow", ("derived", "mc", "ref", "at_window"), "sci"),
+    ("MCrefAtEnd", ("derived", "mc", "ref", "at_end"), "sci"),
+] + _mc_ptp_macros() + _mc_per_ell_macros() + [
+    ("MCnoise", ("summary", "reproduced", "order_study_noise"), "sci"),
+    ("MCnoiseFloor", ("derived", "mc", "scene", "noise_floor"), "sci"),
+    ("MChProbe", ("summary", "reproduced", "order_study_h_probe"), "plain"),
+    ("MCratioZeroFourMin", ("derived", "mc", "range", "ratio_zero_over_four_mu4", "all", "min"), "ns3"),
+    ("MCratioZeroFourMax", ("derived", "mc", "range", "ratio_zero_over_four_mu4", "all", "max"), "ns3"),
+    ("MCratioZeroFourRange", ("derived", "mc", "range", "ratio_zero_over_four_mu4", "all"), "range:ns3"),
+] + (
+    # Fig. 5.3 and Phi^(0) on the harmonic particle
+    _mc_method_macros("MCestar", "summary", "Estar_minus_H0_phi4", "sci01", absolute=True)
+    + _mc_method_macros("MCmaxHFour", "summary", "max_abs_H_err_phi4", "sci01")
+    + _mc_method_macros("MCmaxHZero", "summary", "max_abs_H_err_phi0", "sci01")
+    + _mc_method_macros("MCmaxKEFour", "summary", "max_abs_K_E_phi4", "sci01")
+    + _mc_method_macros("MCmaxKmodFour", "summary", "max_abs_K_mod4_phi4", "sci01")
+    + _mc_method_macros("MCmaxKmodZero", "summary", "max_abs_K_mod4_phi0", "sci01")
+    + _mc_method_macros("MCerrFour", "summary", "err_at_t_end_phi4", "sci01")
+    + _mc_method_macros("MCerrZero", "summary", "err_at_t_end_phi0", "sci01")
+    + _mc_method_macros("MCharmRatio", "summary", "harmonic_H_drift_ratio", "sig3")
+    # Figs. 5.5, 5.6 and the long run: the free particle
+    + _mc_method_macros("MCfreeEstar", "free", "Estar_minus_H0_phi4", "sci01", absolute=True)
+    + _mc_method_macros("MCfreeHFour", "free", "H_err_at_t_end_phi4", "sci01")
+    + _mc_method_macros("MCfreeHZero", "free", "H_err_at_t_end_phi0", "sci01")
+    + _mc_method_macros("MCfreeMaxHFour", "free", "max_abs_H_err_phi4", "sci01")
+    + _mc_method_macros("MCfreeMaxHZero", "free", "max_abs_H_err_phi0", "sci01")
+    + _mc_method_macros("MCfreeKEFour", "free", "max_abs_K_E_phi4", "sci01")
+    + _mc_method_macros("MCfreeKEZero", "free", "max_abs_K_E_phi0", "sci01")
+    + _mc_method_macros("MCfreeKmodFour", "free", "max_abs_K_mod4_phi4", "sci01")
+    + _mc_method_macros("MCfreeKmodZero", "free", "max_abs_K_mod4_phi0", "sci01")
+    + _mc_method_macros("MCfreeErrFour", "free", "err_at_t_end_phi4", "sci01")
+    + _mc_method_macros("MCfreeErrZero", "free", "err_at_t_end_phi0", "err")
+    + _mc_method_macros("MCfreeRatio", "free", "free_H_drift_ratio", "sig3")
+    + _mc_method_macros("MClongHZero", "free", "long_H_err_phi0", "err", absolute=True)
+    + _mc_method_macros("MClongHFour", "free", "long_H_err_phi4", "sci01", absolute=True)
+    + _mc_method_macros("MClongErrZero", "free", "long_err_phi0", "err")
+    + _mc_method_macros("MClongErrFour", "free", "long_err_phi4", "err")
+) + [
+    ("MCfreeErrRatioMin", ("derived", "mc", "free", "range", "err_ratio", "all", "min"), "sig3"),
+    ("MCfreeErrRatioMax", ("derived", "mc", "free", "range", "err_ratio", "all", "max"), "sig3"),
+    ("MCfreeErrRatioRange", ("derived", "mc", "free", "range", "err_ratio", "all"), "range:sig3"),
+    ("MCfreeMaxHRatioMin", ("derived", "mc", "free", "range", "max_H_ratio", "all", "min"), "sig3"),
+    ("MCfreeMaxHRatioMax", ("derived", "mc", "free", "range", "max_H_ratio", "all", "max"), "sig3"),
+    ("MCfreeMaxHRatioRange", ("derived", "mc", "free", "range", "max_H_ratio", "all"), "range:sig3"),
+    ("MClongErrRatioMin", ("derived", "mc", "free", "range", "long_err_ratio", "all", "min"), "ns3"),
+    ("MClongErrRatioMax", ("derived", "mc", "free", "range", "long_err_ratio", "all", "max"), "ns3"),
+    ("MClongErrRatioRange", ("derived", "mc", "free", "range", "long_err_ratio", "all"), "range:ns3"),
+    ("MClongTend", ("derived", "mc", "free", "scene", "long_run", "t_end"), "plain"),
+    ("MCfreeTend", ("derived", "mc", "free", "scene", "energies", "t_end"), "plain"),
+    ("MCgoldenErrFree", ("derived", "mc", "free", "reproduced", "golden_max_rel_err"), "err"),
+    ("MCrefSelfCheckFree", ("derived", "mc", "free", "reproduced", "reference_self_check"), "err"),
+    ("MCfreeRunWall", ("derived", "mc", "free", "wall_s"), "seconds"),
+    ("MCnewtonMeanFree", ("derived", "mc", "free", "timing", "newton_iterations_mean"), "sig3"),
+    # cost
+    ("MCnewtonMean", ("summary", "timing", "newton_iterations_mean"), "sig3"),
+    ("MCnewtonFirstMin", ("derived", "mc", "range", "iters_first", "all", "min"), "sig3"),
+    ("MCnewtonFirstMax", ("derived", "mc", "range", "iters_first", "all", "max"), "sig3"),
+    ("MCnewtonFirstRange", ("derived", "mc", "range", "iters_first", "all"), "range:plain"),
+    ("MCnsMin", ("derived", "mc", "range", "ns_per_step", "all", "min"), "ns3"),
+    ("MCnsMax", ("derived", "mc", "range", "ns_per_step", "all", "max"), "ns3"),
+    ("MCnsRange", ("derived", "mc", "range", "ns_per_step", "all"), "range:ns3"),
+    ("MCcostOrderMin", ("derived", "mc", "range", "cost_order", "all", "min"), "order"),
+    ("MCcostOrderMax", ("derived", "mc", "range", "cost_order", "all", "max"), "order"),
+    ("MCcostOrderRange", ("derived", "mc", "range", "cost_order", "all"), "range:order"),
+    ("MCcostFitCount", ("derived", "mc", "cost", "fit_count"), "int"),
+    ("MCcostHexactOne", ("derived", "mc", "cost", "exact_h", 0), "plain"),
+    ("MCcostHexactTwo", ("derived", "mc", "cost", "exact_h", 1), "plain"),
+    ("MCcostHexactThree", ("derived", "mc", "cost", "exact_h", 2), "plain"),
+] + [(f"MCns{m}", ("summary", "timing", "ns_per_step", m), "ns3") for m in MC_METHODS]
+
+
+
 NA = r"\textit{n/a}"
 
 
@@ -1842,6 +2492,8 @@ def fmt(value, kind):
         return sig(value, 2)
     if kind == "sci":
         return sci(value)
+    if kind == "sci01":  # scientific below 0.01, else 2 significant digits (0.15, 2.3, 13)
+        return "0" if value == 0 else (sci(value) if abs(value) < 1e-2 else sig(value, 2))
     if kind == "fixed3":
         return f"{value:.3f}"
     if kind == "sig7":
@@ -1899,7 +2551,7 @@ def load_json(path):
         raise Malformed(f"{path}: not valid JSON: {e}") from None
 
 
-def check_summary(path, s):
+def check_summary(path, s, name=None):
     if not isinstance(s, dict):
         raise Malformed(f"{path}: top level must be a JSON object")
     pub = s.get("published")
@@ -1915,6 +2567,13 @@ def check_summary(path, s):
         if not (is_number(v) or (nested and all(is_number(x) for x in v.values()))):
             raise Malformed(f'{path}: published "{key}" must be a number or an object of numbers, '
                             f'got {json.dumps(v)}')
+        pair = PUBLISHED_PAIRS.get(name, {}).get(key)
+        if pair is not None:  # a published number against a value per method (or parameter)
+            r = lookup(s, pair)
+            if r is not None and not (isinstance(r, dict) and all(is_number(x) or x is None for x in r.values())):
+                raise Malformed(f'{path}: {".".join(pair)} (paired with published "{key}") must be an '
+                                f'object of numbers or null, got {json.dumps(r)}')
+            continue
         if key in orders:
             r = orders[key]
         elif key in reproduced:
@@ -2595,7 +3254,7 @@ def macros_file(name, s, scene, derived, src):
         lines.append(f"% No macros are cited for {name}.\n")
     sources = {"summary": s, "scene": scene, "derived": derived or {}}
     for macro, path, kind in specs:
-        value = lookup(sources.get(path[0]) or {}, path[1:]) if s is not None else None
+        value = lookup(sources.get(path[0]) or {}, path[1:])
         if kind.startswith(("min:", "max:")):  # a list reduced to its extreme
             numbers = value if isinstance(value, list) and value and all(map(is_number, value)) else None
             value = None if numbers is None else (min(numbers) if kind[:3] == "min" else max(numbers))
@@ -2605,6 +3264,15 @@ def macros_file(name, s, scene, derived, src):
             kind = kind[4:]
         if kind == "isa":  # an instruction set, as text
             body = ISA_NAMES.get(value, tex_escape(value)) if isinstance(value, str) else NA
+            lines.append(f"\\newcommand{{\\{macro}}}{{{body}}}\n")
+            continue
+        if kind.startswith(("range:", "absrange:")):  # {min, max[, absmin, absmax]} as "a--b", or "a" if equal
+            lo_key, hi_key = ("absmin", "absmax") if kind.startswith("abs") else ("min", "max")
+            kind = kind.split(":", 1)[1]
+            d = value if isinstance(value, dict) else {}
+            a, b = fmt(d.get(lo_key), kind), fmt(d.get(hi_key), kind)
+            body = (NA if a is None or b is None else
+                    f"\\ensuremath{{{a}}}" if a == b else f"\\ensuremath{{{a}}}--\\ensuremath{{{b}}}")
             lines.append(f"\\newcommand{{\\{macro}}}{{{body}}}\n")
             continue
         if kind == "vec":  # a list of numbers as (a, b, ...)
@@ -2617,22 +3285,33 @@ def macros_file(name, s, scene, derived, src):
     return "".join(lines)
 
 
-def render(name, exp_dir):
-    """{suffix: text} of the three files of one experiment; placeholders if exp_dir is None.
+def render(name, exp_dir, root=None):
+    """{suffix: text} of the files of one experiment; placeholders if exp_dir is None.
 
+    root is RESULTS_ROOT, where the second scenes of SCENE_VARIANTS are looked up.
     Reads and checks everything first, so that a malformed input raises before any file is written.
     """
+    variants = None
+    if name in SCENE_VARIANTS:
+        variants = {v: mc_load_variant(os.path.join(root, f"{name}-{v}")) if root else None
+                    for v in SCENE_VARIANTS[name]}
     if exp_dir is None:
         src = "(no results)"
+        derived = None
+        if variants and any(variants.values()) and name in DERIVED_SUMMARIES:
+            key, f = DERIVED_SUMMARIES[name]
+            derived = {key: f(None, None, None, variants=variants)}
         files = {"table": HEADER.format(src=src) + placeholder_box(name, "Published vs reproduced"),
                  "timing": HEADER.format(src=src) + placeholder_box(name, "Timing"),
-                 "macros": macros_file(name, None, None, None, src)}
+                 "macros": macros_file(name, None, None, derived, src)}
         if name in ORDER_TABLES:
             files["orders"] = HEADER.format(src=src) + placeholder_box(name, "Orders per initial condition")
+        for suffix in EXTRA_TABLES.get(name, {}):
+            files[suffix] = HEADER.format(src=src) + placeholder_box(name, suffix.capitalize())
         return files
     summary_path = os.path.join(exp_dir, "summary.json")
     s = load_json(summary_path)
-    check_summary(summary_path, s)
+    check_summary(summary_path, s, name)
     if s.get("experiment") not in (None, name):
         print(f"paper_tables.py: warning: {summary_path} names experiment {s.get('experiment')!r}",
               file=sys.stderr)
@@ -2676,7 +3355,7 @@ def render(name, exp_dir):
         derived["kernel"] = kernel_summary(name, s, run, scene)
     if name in DERIVED_SUMMARIES:
         key, f = DERIVED_SUMMARIES[name]
-        derived[key] = f(s, scene, exp_dir)
+        derived[key] = f(s, scene, exp_dir, variants=variants) if name in SCENE_VARIANTS else f(s, scene, exp_dir)
     if name in COST_TARGETS:
         timing_text = cost_timing_table(name, s, summary_path, derived)
     elif name in KERNEL_TIMING:
@@ -2692,6 +3371,8 @@ def render(name, exp_dir):
              "macros": macros_file(name, s, scene, derived, summary_path)}
     if name in ORDER_TABLES:
         files["orders"] = orders_table(name, s, scene, summary_path)
+    for suffix, f in EXTRA_TABLES.get(name, {}).items():
+        files[suffix] = f(name, s, summary_path, derived)
     return files
 
 
@@ -2708,9 +3389,11 @@ def main(argv):
         return 2
     present = sorted(d for d in os.listdir(root)
                      if os.path.isfile(os.path.join(root, d, "summary.json")))
-    names = KNOWN + [d for d in present if d not in KNOWN]
+    variant_dirs = {f"{n}-{v}" for n, vs in SCENE_VARIANTS.items() for v in vs}
+    names = KNOWN + [d for d in present if d not in KNOWN and d not in variant_dirs]
     try:
-        files = {name: render(name, os.path.join(root, name) if name in present else None) for name in names}
+        files = {name: render(name, os.path.join(root, name) if name in present else None, root)
+                 for name in names}
     except Malformed as e:
         print(f"paper_tables.py: malformed results: {e}", file=sys.stderr)
         return 2
@@ -2719,6 +3402,9 @@ def main(argv):
         for suffix, text in texts.items():
             write_atomic(os.path.join(out_dir, f"{name}_{suffix}.tex"), text)
         state = "tables written" if name in present else "not yet reproduced (placeholder)"
+        for v in SCENE_VARIANTS.get(name, []):
+            found = os.path.isfile(os.path.join(root, f"{name}-{v}", "summary.json"))
+            state += f"; scene {v} ({name}-{v}): " + ("read" if found else "no results")
         print(f"paper_tables.py: {name}: {state}", file=sys.stderr)
     return 0
 
