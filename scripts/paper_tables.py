@@ -1905,6 +1905,8 @@ MACROS = {
         ("EMtrajSteps", ("derived", "kernel", "trajectory_steps"), "sci"),
         ("EMtargetCart", ("derived", "kernel", "target", "cartesian"), "plain"),
         ("EMtargetPolar", ("derived", "kernel", "target", "polar"), "plain"),
+        ("EMverdictCart", ("derived", "kernel", "verdict", "cartesian"), "text"),
+        ("EMverdictPolar", ("derived", "kernel", "verdict", "polar"), "text"),
         ("EMceilCart", ("derived", "kernel", "ceiling", "cartesian", "lo"), "plain"),
         ("EMceilPolarLo", ("derived", "kernel", "ceiling", "polar", "lo"), "plain"),
         ("EMceilPolarHi", ("derived", "kernel", "ceiling", "polar", "hi"), "plain"),
@@ -3156,13 +3158,14 @@ def kernel_summary(name, s, run, scene):
     timing = s.get("timing") or {}
     ns = timing.get("ns_per_step_per_core") or {}
     walls = timing.get("map_wall_s") or {}
-    out = {"fraction": {}, "ceiling": {}, "target": cfg["target"]}
+    out = {"fraction": {}, "ceiling": {}, "target": cfg["target"], "verdict": {}}
     for key, _ in cfg["rows"]:
         lo, hi = cfg["ceiling"][key]
         out["ceiling"][key] = {"lo": lo, "hi": hi}
         v = ns.get(key) if isinstance(ns, dict) else None
         if is_number(v) and v > 0:
             out["fraction"][key] = {"lo": lo / v, "hi": hi / v}
+            out["verdict"][key] = "meets" if v <= cfg["target"][key] else "misses"
     if isinstance(walls, dict) and walls and all(is_number(w) for w in walls.values()):
         out["map_wall_s"] = sum(walls.values())
     grid = s.get("grid") or {}
@@ -3264,6 +3267,10 @@ def macros_file(name, s, scene, derived, src):
             kind = kind[4:]
         if kind == "isa":  # an instruction set, as text
             body = ISA_NAMES.get(value, tex_escape(value)) if isinstance(value, str) else NA
+            lines.append(f"\\newcommand{{\\{macro}}}{{{body}}}\n")
+            continue
+        if kind == "text":  # a word computed from the results
+            body = tex_escape(value) if isinstance(value, str) else NA
             lines.append(f"\\newcommand{{\\{macro}}}{{{body}}}\n")
             continue
         if kind.startswith(("range:", "absrange:")):  # {min, max[, absmin, absmax]} as "a--b", or "a" if equal
