@@ -108,3 +108,17 @@ TEST(Cli, LobattoMeshesBeyondTheStabilityBound) {
   expect_rejected("--set meshes=[2,10,20]", {"meshes", "unstable for h omega >= sqrt(42 - 6 sqrt(29))"},
                   bin_of("lobatto_table"));
 }
+
+// measure_cloud: the modified quantities exist for even orders up to the derived one only.
+TEST(Cli, MeasureCloudOddOrder) {
+  expect_rejected("--set cloud.ells=[0,3]", {"cloud.ells", "even order"}, bin_of("measure_cloud"));
+}
+TEST(Cli, MeasureCloudUnknownDiscretization) {
+  expect_rejected("--set methods=[\\\"M\\\",\\\"MM\\\"]", {"methods", "\"TT\""}, bin_of("measure_cloud"));
+}
+TEST(Cli, MeasureCloudUnknownPotential) {
+  expect_rejected("--set potential=\\\"quartic\\\"", {"potential", "\"harmonic\" \"free\""}, bin_of("measure_cloud"));
+}
+TEST(Cli, MeasureCloudWindowBeyondRun) {
+  expect_rejected("--set ptp_window=40", {"ptp_window", "t_end"}, bin_of("measure_cloud"));
+}
