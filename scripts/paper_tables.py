@@ -788,7 +788,8 @@ def ti_gamma(ts, sigmas, t0):
     return ti_slope([p[0] for p in pts], [p[1] for p in pts])
 
 
-def ti_floats(rows, path, cols):
+def csv_floats(rows, path, cols):
+    """The columns cols of CSV rows as floats (Malformed on a non-numeric value)."""
     try:
         return [[float(r[c]) for c in cols] for r in rows]
     except ValueError:
@@ -838,7 +839,7 @@ def ti_summary(s, scene, exp_dir):
     path = os.path.join(exp_dir, "oscillator.csv")
     rows = read_csv_rows(path, ("method", "omega_h", "max_global_err", "max_rel_H_err"))
     if rows:
-        vals = ti_floats(rows, path, ("omega_h", "max_global_err", "max_rel_H_err"))
+        vals = csv_floats(rows, path, ("omega_h", "max_global_err", "max_rel_H_err"))
         by = {}
         for r, (wh, g, e) in zip(rows, vals):
             by.setdefault(r["method"], {})[wh] = (g, e)
@@ -886,7 +887,7 @@ def ti_summary(s, scene, exp_dir):
     path = os.path.join(exp_dir, "fig2_pendulum.csv")
     rows = read_csv_rows(path, ("t", "shifted_energy_err", "H_err"))
     if rows and len(rows) > 2:
-        t, e, H = zip(*ti_floats(rows, path, ("t", "shifted_energy_err", "H_err")))
+        t, e, H = zip(*csv_floats(rows, path, ("t", "shifted_energy_err", "H_err")))
         f = out["fig2"]
         f["change"] = e[-1]
         f["U_max"] = PENDULUM_U_MAX
@@ -906,7 +907,7 @@ def ti_summary(s, scene, exp_dir):
     path = os.path.join(exp_dir, "fig3_hh3.csv")
     rows = read_csv_rows(path, ("t", "E_err", "H_err"))
     if rows and len(rows) > 2:
-        t, e, H = zip(*ti_floats(rows, path, ("t", "E_err", "H_err")))
+        t, e, H = zip(*csv_floats(rows, path, ("t", "E_err", "H_err")))
         f = out["fig3"]
         f["H_max"] = max(abs(v) for v in H)
         f["E_p2p"] = max(e) - min(e)
@@ -924,7 +925,7 @@ def ti_summary(s, scene, exp_dir):
     rows = read_csv_rows(path, ("t", "mu", "sigma"))
     f = out["fig4"]
     if rows and len(rows) > 2 and t_end:
-        t, mu, sigma = zip(*ti_floats(rows, path, ("t", "mu", "sigma")))
+        t, mu, sigma = zip(*csv_floats(rows, path, ("t", "mu", "sigma")))
         f["mu_first"], f["t_first"] = mu[1], t[1]
         late = [m for x, m in zip(t, mu) if x >= t_end / 10]
         if late:
@@ -944,7 +945,7 @@ def ti_summary(s, scene, exp_dir):
     rows = read_csv_rows(path, ("trajectory", "t", "E_err"))
     traj = {}
     if rows:
-        for r, (i, x, e) in zip(rows, ti_floats(rows, path, ("trajectory", "t", "E_err"))):
+        for r, (i, x, e) in zip(rows, csv_floats(rows, path, ("trajectory", "t", "E_err"))):
             traj.setdefault(int(i), []).append((x, e))
     outliers = rep.get("hh5_outliers")
     outliers = [int(i) for i in outliers if is_number(i)] if isinstance(outliers, list) else []
@@ -975,7 +976,7 @@ def ti_summary(s, scene, exp_dir):
             g = {"lo": w[0], "hi": w[1], "length": w[1] - w[0]}
             if rows is not None:
                 sel = [r for r in rows if r["window"] == label]
-                p2s = [v[0] for v in ti_floats(sel, path, ("p2",))]
+                p2s = [v[0] for v in csv_floats(sel, path, ("p2",))]
                 g["cuts"] = len(p2s)
                 if g["length"] > 0:
                     g["rate"] = len(p2s) / g["length"]
@@ -1002,7 +1003,7 @@ def ti_summary(s, scene, exp_dir):
     path = os.path.join(exp_dir, "fig6_scan.csv")
     rows = read_csv_rows(path, ("h", "trajectory", "max_H_err", "diverged", "diverge_step"))
     if rows and isinstance(hs, list) and len(hs) >= 2 and all(is_number(x) for x in hs):
-        vals = ti_floats(rows, path, ("h", "max_H_err", "diverged", "diverge_step"))
+        vals = csv_floats(rows, path, ("h", "max_H_err", "diverged", "diverge_step"))
         per_h = []
         for x in hs:
             sel = [v for v in vals if abs(v[0] / x - 1) < 1e-9]
@@ -1040,7 +1041,7 @@ def ti_summary(s, scene, exp_dir):
     path = os.path.join(exp_dir, "fig6_stats.csv")
     rows = read_csv_rows(path, ("t", "mu", "sigma", "H_err_rms", "Hhat_err_rms"))
     if rows and len(rows) > 2:
-        t, H, Hh = zip(*ti_floats(rows, path, ("t", "H_err_rms", "Hhat_err_rms")))
+        t, H, Hh = zip(*csv_floats(rows, path, ("t", "H_err_rms", "Hhat_err_rms")))
         later = [(a, b) for x, a, b in zip(t, H, Hh) if x > 0]
         f["Hhat_start"] = Hh[0] if t[0] == 0 else None
         f["H_rms_mean"] = sum(a for a, _ in later) / len(later)
@@ -1259,13 +1260,6 @@ def mc_load_variant(path):
     return {"summary": s, "scene": scene, "run": run}
 
 
-def mc_floats(rows, path, cols):
-    try:
-        return [[float(r[c]) for c in cols] for r in rows]
-    except ValueError:
-        raise Malformed(f"{path}: non-numeric value in the columns {list(cols)}") from None
-
-
 def mc_summary(s, scene, exp_dir, variants=None):
     """Derived quantities of measure_cloud for the tables and macros (missing inputs give None).
 
@@ -1309,9 +1303,9 @@ def mc_summary(s, scene, exp_dir, variants=None):
         rows = read_csv_rows(path, cols) if path else None
         if not rows or window is None:
             continue
-        vals = [v for v in mc_floats(rows, path, cols) if v[0] <= window + 1e-9]
+        vals = [v for v in csv_floats(rows, path, cols) if v[0] <= window + 1e-9]
         ref = [v[1] / vals[0][1] - 1 for v in vals]
-        allref = [v[0] / vals[0][1] - 1 for v in mc_floats(rows, path, ["reference_mu"])]
+        allref = [v[0] / vals[0][1] - 1 for v in csv_floats(rows, path, ["reference_mu"])]
         if not out["ref"]:
             out["ref"] = {"at_window": ref[-1], "at_end": allref[-1], "ptp": max(ref) - min(ref)}
         raw, corr = {}, {}
@@ -1328,49 +1322,50 @@ def mc_summary(s, scene, exp_dir, variants=None):
     hs = lookup(sc, ("order_study", "h"))
     if rows and isinstance(hs, list) and hs and all(is_number(x) for x in hs):
         hmax = max(hs)
-        for r, (ell, hh, p) in zip(rows, mc_floats(rows, path, ("ell", "h", "ptp"))):
+        for r, (ell, hh, p) in zip(rows, csv_floats(rows, path, ("ell", "h", "ptp"))):
             if abs(hh / hmax - 1) < 1e-12:
                 out["small"].setdefault(str(int(ell)), {})[r["method"]] = p
     noise = rep.get("order_study_noise")
     if is_number(noise):
         out["scene"]["noise_floor"] = 2 * noise
 
-    # cost: Phi^(4) from the centre for every order_study.h, N = floor(energies.t_end / h) steps. With a
-    # column t_end (= t_N = N h) the error is taken against the reference at t_N and every step size
-    # counts; without it, only the step sizes with t_N = energies.t_end do.
+    # cost: Phi^(4) from the centre for every order_study.h, N = floor(energies.t_end / h) steps, the
+    # error taken at t_N = N h against the reference there; the table shows the errors of the step
+    # sizes with t_N = energies.t_end.
     path = os.path.join(exp_dir, "timing_cost.csv") if exp_dir else None
     cols = ("method", "h", "steps", "err", "wall_s", "ns_per_step", "newton_iterations_per_step")
     rows = read_csv_rows(path, cols) if path else None
     if rows and te:
-        at_tn = "t_end" in rows[0]
         per = {}
-        for r, v in zip(rows, mc_floats(rows, path, cols[1:])):
+        for r, v in zip(rows, csv_floats(rows, path, cols[1:])):
             per.setdefault(r["method"], []).append(dict(zip(cols[1:], v)))
         c = out["cost"]
         c["exact"], c["iters_first"], c["order"] = {}, {}, {}
         for m, runs in per.items():
             runs.sort(key=lambda x: -x["h"])
             exact = [x for x in runs if abs(x["steps"] * x["h"] / te - 1) < 1e-9]
-            valid = runs if at_tn else exact
             c["exact"][m] = [(x["h"], x["err"]) for x in exact]
             if h is not None:
                 first = [x for x in runs if abs(x["h"] / h - 1) < 1e-12]
                 if first:
                     c["iters_first"][m] = first[0]["newton_iterations_per_step"]
-            pts = [(math.log(x["h"]), math.log(x["err"])) for x in valid if x["h"] > 0 and x["err"] > 0]
+            pts = [(math.log(x["h"]), math.log(x["err"])) for x in runs if x["h"] > 0 and x["err"] > 0]
             slope = ti_slope([a for a, _ in pts], [b for _, b in pts]) if len(pts) >= 2 else None
             if slope is not None:
                 c["order"][m] = slope
         c["exact_h"] = sorted({x[0] for m in c["exact"] for x in c["exact"][m]}, reverse=True)
-        c["at_t_n"] = at_tn
-        c["fit_count"] = len({x["h"] for runs in per.values() for x in runs}) if at_tn else len(c["exact_h"])
+        c["fit_count"] = len({x["h"] for runs in per.values() for x in runs})
+
+    def ratio(a, b):
+        """{method: a/b} of two {method: value}, or None."""
+        if not (isinstance(a, dict) and isinstance(b, dict)):
+            return None
+        return {m: a[m] / b[m] for m in MC_METHODS if is_number(a.get(m)) and is_number(b.get(m)) and b[m]}
 
     # ratios per method
-    r = out["ratio"]
-    for key, num_key, den_key in (("zero_over_four_mu4", "ptp_phi0_mu4", "ptp_phi4_mu4"),):
-        a, b = rep.get(num_key), rep.get(den_key)
-        if isinstance(a, dict) and isinstance(b, dict):
-            r[key] = {m: a[m] / b[m] for m in MC_METHODS if is_number(a.get(m)) and is_number(b.get(m)) and b[m]}
+    q = ratio(rep.get("ptp_phi0_mu4"), rep.get("ptp_phi4_mu4"))
+    if q is not None:
+        out["ratio"]["zero_over_four_mu4"] = q
 
     # the free particle (second scene)
     fv = (variants or {}).get("free")
@@ -1381,18 +1376,11 @@ def mc_summary(s, scene, exp_dir, variants=None):
         f["reproduced"] = frep
         f["timing"] = fs.get("timing") or {}
         f["scene"] = fsc
-        e0, e4 = frep.get("err_at_t_end_phi0"), frep.get("err_at_t_end_phi4")
-        if isinstance(e0, dict) and isinstance(e4, dict):
-            f["err_ratio"] = {m: e0[m] / e4[m] for m in MC_METHODS
-                              if is_number(e0.get(m)) and is_number(e4.get(m)) and e4[m]}
-        l0, l4 = frep.get("long_err_phi0"), frep.get("long_err_phi4")
-        if isinstance(l0, dict) and isinstance(l4, dict):
-            f["long_err_ratio"] = {m: l0[m] / l4[m] for m in MC_METHODS
-                                   if is_number(l0.get(m)) and is_number(l4.get(m)) and l4[m]}
-        h0, h4 = frep.get("max_abs_H_err_phi0"), frep.get("max_abs_H_err_phi4")
-        if isinstance(h0, dict) and isinstance(h4, dict):
-            f["max_H_ratio"] = {m: h0[m] / h4[m] for m in MC_METHODS
-                                if is_number(h0.get(m)) and is_number(h4.get(m)) and h4[m]}
+        for key, stem in (("err_ratio", "err_at_t_end"), ("long_err_ratio", "long_err"),
+                          ("max_H_ratio", "max_abs_H_err")):
+            q = ratio(frep.get(f"{stem}_phi0"), frep.get(f"{stem}_phi4"))
+            if q is not None:
+                f[key] = q
         f["range"] = mc_per_method_ranges(frep)
         for k in ("err_ratio", "long_err_ratio", "max_H_ratio"):
             if k in f:
@@ -1615,12 +1603,9 @@ def mc_timing_table(name, s, src, derived):
     hexact = c.get("exact_h") or []
     lines.append("\\begin{table}[htbp]\n\\centering\n\\small\n")
     tokens = mc_scene_tokens(derived)
-    if c.get("at_t_n"):
-        order_text = (f"the least-squares slope of $\\log(\\text{{error}})$ against $\\log h$ over all "
-                      f"{fmt(c.get('fit_count'), 'int') or NA} step sizes of the order study, each error taken at "
-                      "the last step $t_N=\\lfloor @TE@/h\\rfloor h$ against the reference there")
-    else:
-        order_text = "the least-squares slope over the step sizes that divide @TE@"
+    order_text = (f"the least-squares slope of $\\log(\\text{{error}})$ against $\\log h$ over all "
+                  f"{fmt(c.get('fit_count'), 'int') or NA} step sizes of the order study, each error taken at "
+                  "the last step $t_N=\\lfloor @TE@/h\\rfloor h$ against the reference there")
     lines.append(mc_subst(
         f"\\caption{{Cost of {experiment_title(name)}: time of one step of $\\Phi^{{(4)}}_h$ (Newton's method on "
         "the discrete momentum equation, exact $2\\times2$ Jacobian by forward-mode automatic "
@@ -2413,9 +2398,6 @@ MACROS["measure_cloud"] = [
     ("MCcostOrderMax", ("derived", "mc", "range", "cost_order", "all", "max"), "order"),
     ("MCcostOrderRange", ("derived", "mc", "range", "cost_order", "all"), "range:order"),
     ("MCcostFitCount", ("derived", "mc", "cost", "fit_count"), "int"),
-    ("MCcostHexactOne", ("derived", "mc", "cost", "exact_h", 0), "plain"),
-    ("MCcostHexactTwo", ("derived", "mc", "cost", "exact_h", 1), "plain"),
-    ("MCcostHexactThree", ("derived", "mc", "cost", "exact_h", 2), "plain"),
 ] + [(f"MCns{m}", ("summary", "timing", "ns_per_step", m), "ns3") for m in MC_METHODS]
 
 

@@ -21,6 +21,7 @@
 #include "geomint/geometry/hull_volume.hpp"
 #include "geomint/integrators/conformal_variational.hpp"
 #include "geomint/observables/order_fit.hpp"
+#include "geomint/reference/odeint_reference.hpp"
 #include "geomint/runner/experiment.hpp"
 #include "geomint/runner/timing.hpp"
 #include "geomint/sweep/parallel_map.hpp"
@@ -197,11 +198,6 @@ double convex_area(std::vector<std::array<double, 2>> p) {
   return 0.5 * std::abs(a);
 }
 
-double distance(const Point4& a, const Point4& b) {
-  double s = 0;
-  for (int k = 0; k < 4; ++k) s += (a[k] - b[k]) * (a[k] - b[k]);
-  return std::sqrt(s);
-}
 
 void run(Context& ctx) {
   const Scene& s = ctx.scene;
@@ -322,7 +318,7 @@ void run(Context& ctx) {
     const auto ref = reference_samples(sys, z0, h, n, rtol, atol);
     const auto ref_tight = reference_samples(sys, z0, h, n, 1e-2 * rtol, 1e-2 * atol);
     double self_check = 0;
-    for (std::size_t j = 0; j < ref.size(); ++j) self_check = std::max(self_check, distance(ref[j], ref_tight[j]));
+    for (std::size_t j = 0; j < ref.size(); ++j) self_check = std::max(self_check, phase_distance(as_state(ref[j]), as_state(ref_tight[j])));
     reproduced["reference_self_check"] = self_check;
     const double H0 = sys.H(as_state(z0));
     json H_end;
@@ -332,31 +328,37 @@ void run(Context& ctx) {
       for (Discretization d : methods)
         for (const char* q : {"H", "K_E", "K_mod", "E4", "err"}) cols.push_back(std::string(discretization_name(d)) + "_" + q);
       Csv csv(cols);
-      json max_H = json::object(), max_K = json::object(), max_Kmod = json::object(), err_end, Estar;
-      for (Discretization d : methods) Estar[discretization_name(d)] = ModifiedSeries(d, sys, h).E(ell, as_state(z0)) - H0;
+      const std::size_t M = methods.size();
+      std::vector<ModifiedSeries> ms;
+      std::vector<double> E_star, max_H(M, 0.0), max_K(M, 0.0), max_Kmod(M, 0.0), err_end(M), H_err_end(M);
+      for (Discretization d : methods) ms.emplace_back(d, sys, h), E_star.push_back(ms.back().E(ell, as_state(z0)));
       for (std::size_t j = 0; j <= static_cast<std::size_t>(n); ++j) {
         csv << static_cast<double>(j) * h << sys.H(as_state(ref[j]));
-        for (std::size_t k = 0; k < methods.size(); ++k) {
-          const ModifiedSeries ms(methods[k], sys, h);
+        for (std::size_t k = 0; k < M; ++k) {
           const Z z = as_state(runs[k].z[j]);
-          const double E = ms.E(ell, as_state(z0)), Kmod = ms.K4(z, E), err = distance(runs[k].z[j], ref[j]);
-          csv << sys.H(z) << sys.K(z, H0) << Kmod << ms.E(4, z) << err;
-          const char* name = discretization_name(methods[k]);
-          max_H[name] = std::max(max_H.value(name, 0.0), std::abs(sys.H(z) - H0));
-          max_K[name] = std::max(max_K.value(name, 0.0), std::abs(sys.K(z, H0)));
-          max_Kmod[name] = std::max(max_Kmod.value(name, 0.0), std::abs(Kmod));
-          if (j == static_cast<std::size_t>(n)) err_end[name] = err, H_end[std::to_string(ell)][name] = std::abs(sys.H(z) - H0);
+          const double H = sys.H(z), K = sys.K(z, H0), Kmod = ms[k].K4(z, E_star[k]);
+          const double err = phase_distance(z, as_state(ref[j]));
+          csv << H << K << Kmod << ms[k].E(4, z) << err;
+          max_H[k] = std::max(max_H[k], std::abs(H - H0)), max_K[k] = std::max(max_K[k], std::abs(K));
+          max_Kmod[k] = std::max(max_Kmod[k], std::abs(Kmod));
+          err_end[k] = err, H_err_end[k] = std::abs(H - H0);
         }
         csv.end_row();
+      }
+      json Estar, jmax_H, jmax_K, jmax_Kmod, jerr_end;
+      for (std::size_t k = 0; k < M; ++k) {
+        const char* name = discretization_name(methods[k]);
+        Estar[name] = E_star[k] - H0, jmax_H[name] = max_H[k], jmax_K[name] = max_K[k], jmax_Kmod[name] = max_Kmod[k];
+        jerr_end[name] = err_end[k], H_end[std::to_string(ell)][name] = H_err_end[k];
       }
       for (const auto& r : runs) newton_iterations += r.iterations, newton_steps += n;
       ctx.write("energies_phi" + std::to_string(ell) + ".csv", csv);
       const std::string p = "phi" + std::to_string(ell);
       reproduced["Estar_minus_H0_" + p] = Estar;
-      reproduced["max_abs_H_err_" + p] = max_H;
-      reproduced["max_abs_K_E_" + p] = max_K;
-      reproduced["max_abs_K_mod4_" + p] = max_Kmod;
-      reproduced["err_at_t_end_" + p] = err_end;
+      reproduced["max_abs_H_err_" + p] = jmax_H;
+      reproduced["max_abs_K_E_" + p] = jmax_K;
+      reproduced["max_abs_K_mod4_" + p] = jmax_Kmod;
+      reproduced["err_at_t_end_" + p] = jerr_end;
       reproduced["H_err_at_t_end_" + p] = H_end[std::to_string(ell)];
     }
     json ratio;
@@ -389,7 +391,8 @@ void run(Context& ctx) {
     for (std::size_t k = 0; k < M; ++k) {
       const char* name = discretization_name(methods[k]);
       H0_end[name] = sys.H(as_state(runs[k].z.back())) - H0, H4_end[name] = sys.H(as_state(runs[M + k].z.back())) - H0;
-      e0[name] = distance(runs[k].z.back(), ref), e4[name] = distance(runs[M + k].z.back(), ref);
+      e0[name] = phase_distance(as_state(runs[k].z.back()), as_state(ref)),
+      e4[name] = phase_distance(as_state(runs[M + k].z.back()), as_state(ref));
       newton_iterations += runs[k].iterations + runs[M + k].iterations, newton_steps += 2 * n;
     }
     reproduced["long_H_err_phi0"] = H0_end, reproduced["long_H_err_phi4"] = H4_end;
@@ -476,7 +479,7 @@ void run(Context& ctx) {
           do_not_optimize(tr.z.back());
         });
         const double ns = 1e9 * sec / static_cast<double>(n);
-        csv.row(discretization_name(d), hh, n, static_cast<double>(n) * hh, distance(tr.z.back(), ref), sec, ns,
+        csv.row(discretization_name(d), hh, n, static_cast<double>(n) * hh, phase_distance(as_state(tr.z.back()), as_state(ref)), sec, ns,
                 static_cast<double>(tr.iterations) / static_cast<double>(n));
         if (hh == h) ns_per_step[discretization_name(d)] = ns;
       }

@@ -35,6 +35,11 @@ inline std::optional<Discretization> parse_discretization(std::string_view s) {
   return std::nullopt;
 }
 
+// The quadratures of the product methods: N(qbar) or (N(q0) + N(q1))/2, L(qbar, v) or
+// (L(q0, v) + L(q1, v))/2 (first and second letter of the name; T is not a product).
+inline bool n_midpoint(Discretization d) { return d == Discretization::M || d == Discretization::MT; }
+inline bool l_midpoint(Discretization d) { return d == Discretization::M || d == Discretization::TM; }
+
 // Lambda_d(q0, q1; E, h) of 003 eq. (5.1): an approximation of (1/h) int_0^h N (L + E) dt.
 template <class S>
 S discrete_lagrangian(Discretization d, const NonholonomicParticle& sys, const Eigen::Matrix<S, 2, 1>& q0,
@@ -43,10 +48,8 @@ S discrete_lagrangian(Discretization d, const NonholonomicParticle& sys, const E
   const Eigen::Matrix<S, 2, 1> v = (q1 - q0) / h, qm = 0.5 * (q0 + q1);
   if (d == Discretization::T)
     return 0.5 * P::N(q0[1]) * (sys.L(q0, v) + E) + 0.5 * P::N(q1[1]) * (sys.L(q1, v) + E);
-  const bool n_mid = d == Discretization::M || d == Discretization::MT;
-  const bool l_mid = d == Discretization::M || d == Discretization::TM;
-  const S n = n_mid ? P::N(qm[1]) : S(0.5 * (P::N(q0[1]) + P::N(q1[1])));
-  const S l = l_mid ? sys.L(qm, v) : S(0.5 * (sys.L(q0, v) + sys.L(q1, v)));
+  const S n = n_midpoint(d) ? P::N(qm[1]) : S(0.5 * (P::N(q0[1]) + P::N(q1[1])));
+  const S l = l_midpoint(d) ? sys.L(qm, v) : S(0.5 * (sys.L(q0, v) + sys.L(q1, v)));
   return n * (l + E);
 }
 
@@ -67,8 +70,7 @@ Eigen::Matrix<S, 2, 1> discrete_momentum(Discretization d, const NonholonomicPar
     p[1] += half_h * P::N_y(qs[1]) * (sys.L(qs, v) + E);
     return p;
   }
-  const bool n_mid = d == Discretization::M || d == Discretization::MT;
-  const bool l_mid = d == Discretization::M || d == Discretization::TM;
+  const bool n_mid = n_midpoint(d), l_mid = l_midpoint(d);
   const S n = n_mid ? P::N(qm[1]) : S(0.5 * (P::N(q0[1]) + P::N(q1[1])));
   const S n_y = n_mid ? P::N_y(qm[1]) : P::N_y(qs[1]);
   const S l = l_mid ? sys.L(qm, v) : S(0.5 * (sys.L(q0, v) + sys.L(q1, v)));

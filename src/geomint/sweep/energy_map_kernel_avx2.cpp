@@ -11,12 +11,6 @@ void em_sincos(const double* x, double* s, double* c) {
     _mm256_store_pd(s + v, r.x), _mm256_store_pd(c + v, r.y);
   }
 }
-void em_rsqrt(const double* x, double* y) {
-  for (int v = 0; v < geomint::kEnergyMapBatch; v += 4) {
-    const auto q = _mm256_sqrt_pd(_mm256_load_pd(x + v));
-    _mm256_store_pd(y + v, _mm256_div_pd(_mm256_set1_pd(1.0), q));
-  }
-}
 }  // namespace
 
 #define GEOMINT_EM_KERNEL energy_map_kernel_avx2

@@ -26,5 +26,6 @@ void em_rsqrt(const double* x, double* y) {
 }
 }  // namespace
 
+#define GEOMINT_EM_HAS_RSQRT
 #define GEOMINT_EM_KERNEL energy_map_kernel_avx512
 #include "geomint/sweep/energy_map_kernel.inc"

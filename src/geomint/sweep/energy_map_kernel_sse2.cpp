@@ -11,12 +11,6 @@ void em_sincos(const double* x, double* s, double* c) {
     _mm_store_pd(s + v, r.x), _mm_store_pd(c + v, r.y);
   }
 }
-void em_rsqrt(const double* x, double* y) {
-  for (int v = 0; v < geomint::kEnergyMapBatch; v += 2) {
-    const auto q = _mm_sqrt_pd(_mm_load_pd(x + v));
-    _mm_store_pd(y + v, _mm_div_pd(_mm_set1_pd(1.0), q));
-  }
-}
 }  // namespace
 
 #define GEOMINT_EM_KERNEL energy_map_kernel_sse2
