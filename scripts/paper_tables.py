@@ -34,9 +34,7 @@ beside their value in exact arithmetic, from the closed form of 001 eqs. (13)-(1
 measure_cloud: the statements of 003 Sec. 5 beside the values of its five methods), and one in
 TIMING_TABLES its own timing table (ti_drift: ns per step and force evaluations per step of the
 three methods, and the wall times of the Fig. 4 and Fig. 6 ensembles; measure_cloud: ns and
-Newton iterations per step, errors and order of the five methods); a published key in
-PUBLISHED_PAIRS is paired with another summary path (measure_cloud: one published number
-against a value per method);
+Newton iterations per step, errors and order of the five methods);
 DERIVED_SUMMARIES adds quantities computed from its CSV files and scene for the macros.
 Orders are printed to 3 decimals; other values to
 4 significant digits in the tables and 2 in the macros, in scientific notation
@@ -1487,7 +1485,8 @@ def mc_results_table(name, s, src, derived):
     mc = (derived or {}).get("mc") or {}
     rep, orders = s.get("reproduced") or {}, s.get("orders") or {}
     frep = (mc.get("free") or {}).get("reproduced") or {}
-    pub = (s.get("published") or {}).get("ptp_phi4_mu4_approx")
+    pub_per_method = (s.get("published") or {}).get("ptp_phi4_mu4") or {}
+    pub = next((v for v in pub_per_method.values() if is_number(v)), None)  # the same for every method
     tokens = mc_scene_tokens(derived)
     lines = [HEADER.format(src=src)]
     lines.append("\\begin{table}[htbp]\n\\centering\n\\footnotesize\n")
@@ -1665,10 +1664,6 @@ EXTRA_TABLES = {"measure_cloud": {"orders": mc_orders_table}}
 # "run"} or None}.
 SCENE_VARIANTS = {"measure_cloud": ["free"]}
 # Published keys whose reproduced counterpart has another key and shape:
-# {name: {published key: path into summary.json}}. measure_cloud: the fluctuation of
-# Fig. 5.2 read off the plot (one number) against the peak-to-peak values of the five methods.
-PUBLISHED_PAIRS = {"measure_cloud": {"ptp_phi4_mu4_approx": ("reproduced", "ptp_phi4_mu4")}}
-
 # Macros the text cites: (name, path into summary.json or a derived quantity, format).
 # A path starts with "summary", "scene" (run.json's resolved scene) or "derived".
 MACROS = {
@@ -2551,13 +2546,6 @@ def check_summary(path, s, name=None):
         if not (is_number(v) or (nested and all(is_number(x) for x in v.values()))):
             raise Malformed(f'{path}: published "{key}" must be a number or an object of numbers, '
                             f'got {json.dumps(v)}')
-        pair = PUBLISHED_PAIRS.get(name, {}).get(key)
-        if pair is not None:  # a published number against a value per method (or parameter)
-            r = lookup(s, pair)
-            if r is not None and not (isinstance(r, dict) and all(is_number(x) or x is None for x in r.values())):
-                raise Malformed(f'{path}: {".".join(pair)} (paired with published "{key}") must be an '
-                                f'object of numbers or null, got {json.dumps(r)}')
-            continue
         if key in orders:
             r = orders[key]
         elif key in reproduced:
