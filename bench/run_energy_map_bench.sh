@@ -46,7 +46,7 @@ echo "== numpy: $HERE/peers/energy_map_numpy.py (${NUMPY_N} trajectories, median
 "$PY" - "$TMP/cpp.json" "$TMP/cpp.err" "$TMP/numpy.json" <<'EOF'
 import json, sys
 
-CEILING = {"cartesian": 0.35, "polar": 0.8}  # ns per trajectory-step: sqrt + divide (Cartesian), vector sin + cos (polar)
+CEILING = {"cartesian": 0.35, "polar": 0.8}  # ns per trajectory-step: sqrt + divide (Cartesian), vector sin + cos per step (polar; the kernels evaluate them once per block)
 cpp = json.load(open(sys.argv[1]))
 numpy = json.load(open(sys.argv[3]))
 

@@ -240,6 +240,7 @@ void run(Context& ctx) {
   const double ns_cart = 1e9 * wall_cart * ctx.threads / (steps_total * done_fraction);
   const double ns_polar = 1e9 * wall_polar * ctx.threads / (steps_total * done_fraction);
   timing["kernel_isa"] = kernels.front().isa;
+  timing["kernel_max_turn"] = kEnergyMapMaxTurn;  // polar: sin/cos by angle addition up to this turn
   timing["ns_per_step_per_core"] = {{"cartesian", ns_cart}, {"polar", ns_polar}};
   timing["scalar_ns_per_step"] = scalar_ns;
   timing["speedup_vs_scalar"] = {{"cartesian", scalar_ns["cartesian"].get<double>() / ns_cart},

@@ -2,7 +2,10 @@
 // against the scalar reference loop, and the masking of diverging lanes.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <tuple>
+#include <utility>
 #include <vector>
 
 #include "geomint/integrators/symplectic_euler.hpp"
@@ -103,4 +106,38 @@ TEST(EnergyMapScalar, MatchesTheGenericLibraryMethod) {
   const double ec = eps_of(cart, z0), ep = eps_of(polar, polar_from_cartesian(z0));
   EXPECT_NEAR(energy_map_scalar(Coordinates::cartesian, P, x0, y0).eps, ec, 1e-11 * ec);
   EXPECT_NEAR(energy_map_scalar(Coordinates::polar, P, x0, y0).eps, ep, 1e-11 * ep);
+}
+
+// Polar kernels turn sin and cos of theta by the angle-addition formula with Taylor
+// sin and cos of the turn h p_theta / (m r^2), and take the full sin and cos where the
+// turn exceeds kEnergyMapMaxTurn. These starts pass close to r = 0 within 30 steps, with
+// turns of ~2.5 per step, where the series would be off by ~1e-6: the kernels must match
+// the scalar loop all the same. (The passes make the motion chaotic: a short run.)
+TEST(EnergyMapKernel, LargeTurnsMatchTheScalarLoop) {
+  EnergyMapParams Q = P;
+  Q.steps = 40;
+  const std::vector<std::pair<double, double>> starts{{1.4225, -1.485}, {-1.4075, -1.495}, {1.4825, 1.5}, {-1.44, -1.47}};
+  const ElasticPendulumPolarWithGravity polar{1.0, {SpringPolarTerm{1.0, 1.0}, GravityPolarTerm{1.0, 0.02}}};
+  std::vector<double> x, y;
+  regular_batch(x, y);
+  for (std::size_t s = 0; s < starts.size(); ++s) {
+    std::tie(x[8 * s], y[8 * s]) = starts[s];
+    double max_turn = 0;  // max |theta_{j+1} - theta_j| along the library's symplectic Euler
+    auto z = polar_from_cartesian(make_state<2>(Vec<2>(starts[s].first, starts[s].second), Vec<2>(0.0, 0.0)));
+    for (std::int64_t j = 1; j <= Q.steps; ++j) {
+      const auto zn = symplectic_euler_pq(polar, z, Q.h);
+      max_turn = std::max(max_turn, std::fabs(zn.q[1] - z.q[1])), z = zn;
+    }
+    EXPECT_GT(max_turn, 4 * kEnergyMapMaxTurn) << s;
+  }
+  for (const auto& k : energy_map_kernels()) {
+    std::vector<EnergyMapPoint> out(kEnergyMapBatch);
+    k.run(Coordinates::polar, Q, x.data(), y.data(), out.data());
+    for (std::size_t s = 0; s < starts.size(); ++s) {
+      const auto ref = energy_map_scalar(Coordinates::polar, Q, x[8 * s], y[8 * s]);
+      ASSERT_EQ(ref.diverge_step, -1) << s;
+      EXPECT_EQ(out[8 * s].diverge_step, -1) << k.isa << " start " << s;
+      EXPECT_NEAR(out[8 * s].eps, ref.eps, 1e-10 * ref.eps) << k.isa << " start " << s;
+    }
+  }
 }

@@ -10,8 +10,9 @@
 //    symplectic_euler_pq on ElasticPendulumCartesian/Polar);
 //  - batch kernels: kEnergyMapBatch trajectories at once in structure-of-arrays
 //    form, SIMD across the batch, one translation unit per instruction set
-//    (SSE2, AVX2, AVX-512), chosen at run time by CPU detection. They differ
-//    from the scalar loop by round-off only (vector sin/cos are within a few ulp).
+//    (SSE2, AVX2 and AVX-512 with FMA), chosen at run time by CPU detection. They
+//    differ from the scalar loop by round-off only (fused multiply-adds, and sin/cos
+//    of theta carried by the angle-addition formula, within a few ulp).
 // A trajectory that reaches r <= 0, a non-finite value or an energy error above
 // `blowup` is marked diverged at that step; its lane is parked, never poisoning
 // the others. The batch kernels test for this once per block of steps and replay
@@ -38,6 +39,11 @@ struct EnergyMapPoint {
 };
 
 inline constexpr int kEnergyMapBatch = 64;
+
+// Polar batch kernels carry sin and cos of theta from step to step by the angle-addition
+// formula, with Taylor sin and cos of the turn theta_{j+1} - theta_j = h p_theta / (m r^2)
+// while |turn| <= kEnergyMapMaxTurn, and take the vector sin and cos beyond.
+inline constexpr double kEnergyMapMaxTurn = 0.5;
 
 // A batch kernel: integrates kEnergyMapBatch trajectories from (x0[i], y0[i]), p = 0.
 using EnergyMapKernel = void (*)(Coordinates, const EnergyMapParams&, const double* x0, const double* y0,
