@@ -4,6 +4,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <numbers>
 #include <tuple>
 #include <utility>
 #include <vector>
@@ -140,4 +142,43 @@ TEST(EnergyMapKernel, LargeTurnsMatchTheScalarLoop) {
       EXPECT_NEAR(out[8 * s].eps, ref.eps, 1e-10 * ref.eps) << k.isa << " start " << s;
     }
   }
+}
+
+// energy_map_turn: one turn from theta = 0 is Taylor sin d, cos d, within 2 ulp on |d| <= 0.5.
+TEST(EnergyMapTurn, GivesSinAndCosOfTheTurn) {
+  const double eps = std::numeric_limits<double>::epsilon();
+  for (int i = -1000; i <= 1000; ++i) {
+    const double d = kEnergyMapMaxTurn * i / 1000.0;
+    double s = 0.0, c = 1.0;
+    energy_map_turn(d, s, c);
+    EXPECT_NEAR(s, std::sin(d), 2 * eps * std::fabs(std::sin(d))) << d;
+    EXPECT_NEAR(c, std::cos(d), 2 * eps) << d;
+  }
+}
+
+// Carried through a block of 128 steps along polar symplectic Euler, sin and cos stay within
+// a few ulp of those of theta_j: the rounding of each turn (~1 ulp) adds up like a random walk,
+// sqrt(128) ~ 11 ulp; the test allows twice that. Starts at rest on the circle r = 1.6 (inside
+// the divergence boundary r = 2 + 0.04 cos theta) swing widely, with turns up to about 0.18.
+TEST(EnergyMapTurn, CarriedThroughABlockStaysWithinAFewUlpOfSinAndCosOfTheta) {
+  const ElasticPendulumPolarWithGravity polar{1.0, {SpringPolarTerm{1.0, 1.0}, GravityPolarTerm{1.0, 0.02}}};
+  const double eps = std::numeric_limits<double>::epsilon();
+  double worst = 0, max_turn = 0;
+  for (int i = 0; i < 16; ++i) {
+    const double phi = std::numbers::pi * (i + 0.5) / 16;
+    auto z = polar_from_cartesian(make_state<2>(Vec<2>(1.6 * std::sin(phi), 1.6 * std::cos(phi)), Vec<2>(0.0, 0.0)));
+    double s = 0, c = 0;
+    for (std::int64_t j = 0; j < P.steps; ++j) {
+      if (j % 128 == 0) s = std::sin(z.q[1]), c = std::cos(z.q[1]);
+      const auto zn = symplectic_euler_pq(polar, z, P.h);
+      const double turn = zn.q[1] - z.q[1];
+      ASSERT_LE(std::fabs(turn), kEnergyMapMaxTurn);
+      energy_map_turn(turn, s, c);
+      max_turn = std::max(max_turn, std::fabs(turn));
+      worst = std::max({worst, std::fabs(s - std::sin(zn.q[1])), std::fabs(c - std::cos(zn.q[1]))});
+      z = zn;
+    }
+  }
+  EXPECT_GT(max_turn, 0.15);
+  EXPECT_LT(worst, 2 * std::sqrt(128.0) * eps);
 }
