@@ -12,12 +12,9 @@ void energy_map_kernel_avx512(Coordinates, const EnergyMapParams&, const double*
 std::vector<EnergyMapKernelInfo> energy_map_kernels() {
   __builtin_cpu_init();
   std::vector<EnergyMapKernelInfo> k;
-  if (!__builtin_cpu_supports("fma")) {  // (every AVX2 and AVX-512 CPU we know of has FMA)
-    k.push_back({"sse2", energy_map_kernel_sse2});
-    return k;
-  }
-  if (__builtin_cpu_supports("avx512f")) k.push_back({"avx512", energy_map_kernel_avx512});
-  if (__builtin_cpu_supports("avx2")) k.push_back({"avx2", energy_map_kernel_avx2});
+  const bool fma = __builtin_cpu_supports("fma");  // the AVX2 and AVX-512 kernels use it
+  if (fma && __builtin_cpu_supports("avx512f")) k.push_back({"avx512", energy_map_kernel_avx512});
+  if (fma && __builtin_cpu_supports("avx2")) k.push_back({"avx2", energy_map_kernel_avx2});
   k.push_back({"sse2", energy_map_kernel_sse2});
   return k;
 }
