@@ -16,6 +16,7 @@
 #include "geomint/integrators/integrate.hpp"
 #include "geomint/integrators/runge_kutta4.hpp"
 #include "geomint/integrators/symplectic_euler.hpp"
+#include "geomint/methods/registry.hpp"
 #include "geomint/observables/error_norms.hpp"
 #include "geomint/observables/order_fit.hpp"
 #include "geomint/runner/experiment.hpp"
@@ -195,97 +196,120 @@ Schema schema() {
   return s;
 }
 
-void validate(const Scene& s) {
-  if (s.real("decay.h") * s.real("decay.alpha") > explicit_euler_info.real_bound)
+// ---- checks across keys, per study ----
+
+void check_decay(const Scene& s) {
+  if (s.real("decay.h") * s.real("decay.alpha") > method_info("explicit_euler").real_bound)
     s.reject("decay.h", "explicit Euler on y' = -alpha y is unstable for h > 2/alpha = " +
                             format_double(2.0 / s.real("decay.alpha")));
-  if (s.real("gompertz.h") * s.real("gompertz.b") > explicit_euler_info.real_bound)
+}
+
+void check_gompertz(const Scene& s) {
+  if (s.real("gompertz.h") * s.real("gompertz.b") > method_info("explicit_euler").real_bound)
     s.reject("gompertz.h", "explicit Euler is unstable at the Gompertz equilibrium for h > 2/b = " +
                                format_double(2.0 / s.real("gompertz.b")));
   if (std::log(s.real("gompertz.y0")) >= s.real("gompertz.a") / s.real("gompertz.b"))
     s.reject("gompertz.y0", "the transformation (18) needs 0 < y0 < e^{a/b}");
-  const double k = s.real("oscillator.k"), q0 = s.real("oscillator.q0");
-  const auto check_oscillator_step = [&](const char* key, double h) {
-    if (!(h < symplectic_euler_pq_info.oscillatory_bound))
-      s.reject(key, "symplectic Euler on the oscillator (omega = 1) is unstable for h >= 2");
-    if (!OscillatorCompensation{k, h}.defined(q0))
-      s.reject(key, "the transformation (82) needs |q0| < 1 + k h^2 = " + format_double(1 + k * h * h));
-  };
-  check_oscillator_step("oscillator.h", s.real("oscillator.h"));
+}
+
+// A step of symplectic Euler on the oscillator, with and without (82).
+void check_oscillator_step(const Scene& s, const char* key, double h) {
+  if (!(h < method_info("symplectic_euler_pq").oscillatory_bound))
+    s.reject(key, "symplectic Euler on the oscillator (omega = 1) is unstable for h >= 2");
+  if (!OscillatorCompensation{s.real("oscillator.k"), h}.defined(s.real("oscillator.q0")))
+    s.reject(key, "the transformation (82) needs |q0| < 1 + k h^2 = " +
+                      format_double(1 + s.real("oscillator.k") * h * h));
+}
+
+// Steps of the runs to convergence.t_end.
+void check_steps(const Scene& s, const char* key) {
   const double t_end = s.real("convergence.t_end");
-  for (const char* key : {"convergence.h", "timing.h"}) {
-    for (double h : s.reals(key)) {
-      check_oscillator_step(key, h);
-      const double n = static_cast<double>(steps_to(t_end, h));
-      if (n < 1 || std::abs(n * h - t_end) > 1e-9 * t_end)
-        s.reject(key, "each h must divide convergence.t_end = " + format_double(t_end));
-    }
+  for (double h : s.reals(key)) {
+    check_oscillator_step(s, key, h);
+    const double n = static_cast<double>(steps_to(t_end, h));
+    if (n < 1 || std::abs(n * h - t_end) > 1e-9 * t_end)
+      s.reject(key, "each h must divide convergence.t_end = " + format_double(t_end));
   }
 }
 
-void run(Context& ctx) {
-  const Scene& s = ctx.scene;
-  json published = {{"ee_decay", 1.0},                         // Sec. 2.3: explicit Euler is first order
-                     {"se_energy", 1.0},                        // Fig 9 / eq. (44)
-                     {"se_compensated_energy", 2.0},            // Fig 9, App. B
-                     {"decay_compensated_max_rel_err", 0.0},    // Sec. 2.3.1: "an exact solution"
-                     {"gompertz_compensated_max_rel_err", 0.0}};  // Sec. 2.3.2: "an exact numerical solution"
-  json reproduced, orders, fits, timing;
+State initial_state(const Scene& s) { return make_state(s.real("oscillator.q0"), s.real("oscillator.p0")); }
 
-  // Fig 2 and Fig 3.
-  ctx.progress("Figs 2, 3: explicit Euler in y and ybar");
+// ---- Fig 2 and Fig 3 ----
+
+void run_decay(Context& ctx) {
+  const Scene& s = ctx.scene;
+  ctx.progress("Fig 2: explicit Euler in y and ybar");
   const ExponentialDecay decay{s.real("decay.alpha")};
   const auto fig2 = scalar_figure(decay, DecayCompensation{decay.alpha}, s.real("decay.y0"), s.real("decay.h"),
                                   s.integer("decay.steps"));
   ctx.write("fig2_decay.csv", fig2.trajectory);
   ctx.write("fig2_decay_exact.csv", fig2.exact);
+  ctx.summary["published"]["decay_compensated_max_rel_err"] = 0.0;  // Sec. 2.3.1: "an exact solution"
+  ctx.summary["reproduced"]["decay_compensated_max_rel_err"] = fig2.compensated_max_rel_err;
+  ctx.summary["reproduced"]["decay_euler_max_rel_err"] = fig2.euler_max_rel_err;
+}
+
+void run_gompertz(Context& ctx) {
+  const Scene& s = ctx.scene;
+  ctx.progress("Fig 3: explicit Euler in y and ybar");
   const Gompertz gompertz{s.real("gompertz.a"), s.real("gompertz.b")};
   const double gy0 = s.real("gompertz.y0");
   const auto fig3 = scalar_figure(gompertz, GompertzCompensation{gompertz.a, gompertz.b, gy0}, gy0,
                                   s.real("gompertz.h"), s.integer("gompertz.steps"));
   ctx.write("fig3_gompertz.csv", fig3.trajectory);
   ctx.write("fig3_gompertz_exact.csv", fig3.exact);
-  reproduced["decay_compensated_max_rel_err"] = fig2.compensated_max_rel_err;
-  reproduced["decay_euler_max_rel_err"] = fig2.euler_max_rel_err;
-  reproduced["gompertz_compensated_max_rel_err"] = fig3.compensated_max_rel_err;
-  reproduced["gompertz_euler_max_rel_err"] = fig3.euler_max_rel_err;
+  ctx.summary["published"]["gompertz_compensated_max_rel_err"] = 0.0;  // Sec. 2.3.2: "an exact numerical solution"
+  ctx.summary["reproduced"]["gompertz_compensated_max_rel_err"] = fig3.compensated_max_rel_err;
+  ctx.summary["reproduced"]["gompertz_euler_max_rel_err"] = fig3.euler_max_rel_err;
+}
 
-  // Fig 8: phase portraits over oscillator.steps steps.
+// ---- Fig 8: phase portraits over oscillator.steps steps ----
+
+void run_oscillator(Context& ctx) {
+  const Scene& s = ctx.scene;
   ctx.progress("Fig 8: phase portraits");
   const Oscillator osc;
-  const State z0 = make_state(s.real("oscillator.q0"), s.real("oscillator.p0"));
+  const State z0 = initial_state(s);
   const double H0 = osc.H(z0);
-  {
-    const double h = s.real("oscillator.h"), k = s.real("oscillator.k");
-    const auto method = compensated(osc, k, h);
-    Csv phase({"j", "t", "q_se", "p_se", "q_compensated", "p_compensated", "energy_err_se", "energy_err_compensated"});
-    State z = z0, zb = method.pre(z0);
-    ErrorSeries err_se, err_comp;
-    double max_qhat = 0;
-    for (std::int64_t j = 0; j <= s.integer("oscillator.steps"); ++j) {
-      const State zc = method.post(zb, j);
-      const double e_se = osc.H(z) - H0, e_comp = osc.H(zc) - H0;
-      err_se.add(e_se), err_comp.add(e_comp);
-      max_qhat = std::max(max_qhat, std::abs(method.sys.map.qhat(zc.q[0])));
-      phase.row(j, static_cast<double>(j) * h, z.q[0], z.p[0], zc.q[0], zc.p[0], e_se, e_comp);
-      z = symplectic_euler_pq(osc, z, h);
-      zb = method.kernel(zb);
-    }
-    ctx.write("fig8_phase.csv", phase);
-    Csv exact({"t", "q", "p"});
-    for (int i = 0; i <= kExactCurvePoints; ++i) {
-      const double t = 2 * std::numbers::pi * i / kExactCurvePoints;
-      const State e = osc.exact(z0, t);
-      exact.row(t, e.q[0], e.p[0]);
-    }
-    ctx.write("fig8_exact.csv", exact);
-    reproduced["fig8_max_energy_err_se"] = err_se.max_abs();
-    reproduced["fig8_max_energy_err_compensated"] = err_comp.max_abs();
-    reproduced["fig8_max_abs_qhat"] = max_qhat;
+  const double h = s.real("oscillator.h"), k = s.real("oscillator.k");
+  const auto method = compensated(osc, k, h);
+  Csv phase({"j", "t", "q_se", "p_se", "q_compensated", "p_compensated", "energy_err_se", "energy_err_compensated"});
+  State z = z0, zb = method.pre(z0);
+  ErrorSeries err_se, err_comp;
+  double max_qhat = 0;
+  for (std::int64_t j = 0; j <= s.integer("oscillator.steps"); ++j) {
+    const State zc = method.post(zb, j);
+    const double e_se = osc.H(z) - H0, e_comp = osc.H(zc) - H0;
+    err_se.add(e_se), err_comp.add(e_comp);
+    max_qhat = std::max(max_qhat, std::abs(method.sys.map.qhat(zc.q[0])));
+    phase.row(j, static_cast<double>(j) * h, z.q[0], z.p[0], zc.q[0], zc.p[0], e_se, e_comp);
+    z = symplectic_euler_pq(osc, z, h);
+    zb = method.kernel(zb);
   }
+  ctx.write("fig8_phase.csv", phase);
+  Csv exact({"t", "q", "p"});
+  for (int i = 0; i <= kExactCurvePoints; ++i) {
+    const double t = 2 * std::numbers::pi * i / kExactCurvePoints;
+    const State e = osc.exact(z0, t);
+    exact.row(t, e.q[0], e.p[0]);
+  }
+  ctx.write("fig8_exact.csv", exact);
+  auto& reproduced = ctx.summary["reproduced"];
+  reproduced["fig8_max_energy_err_se"] = err_se.max_abs();
+  reproduced["fig8_max_energy_err_compensated"] = err_comp.max_abs();
+  reproduced["fig8_max_abs_qhat"] = max_qhat;
+}
 
-  // Fig 9: convergence of the energy error, one task per step size.
+// ---- Fig 9: convergence of the energy error, one task per step size ----
+
+void run_convergence(Context& ctx) {
+  const Scene& s = ctx.scene;
   ctx.progress("Fig 9: convergence");
+  const ExponentialDecay decay{s.real("decay.alpha")};
+  const Gompertz gompertz{s.real("gompertz.a"), s.real("gompertz.b")};
+  const double gy0 = s.real("gompertz.y0");
+  const State z0 = initial_state(s);
+  const double H0 = Oscillator{}.H(z0);
   const auto hs = s.reals("convergence.h");
   const double t_end = s.real("convergence.t_end"), k = s.real("oscillator.k");
   struct Row {
@@ -315,6 +339,7 @@ void run(Context& ctx) {
   const auto floor_at = [](double scale) { return 1e3 * std::numeric_limits<double>::epsilon() * scale; };
   const double floor = floor_at(std::max(H0, 1.0));
   Csv order_csv({"name", "order", "log10_c", "r2", "points", "h_min", "h_max"});
+  json orders, fits;
   const auto fit = [&](const char* name, const std::vector<double>& err, double fit_floor) {
     const OrderFit f = fit_order(hs, err, fit_floor);
     orders[name] = f.order;
@@ -329,12 +354,29 @@ void run(Context& ctx) {
   fit("se_energy_rms", se_rms, floor);
   fit("se_compensated_energy_rms", comp_rms, floor);
   ctx.write("orders.csv", order_csv);
+  ctx.summary["orders"] = orders;
+  ctx.summary["fits"] = fits;
+  json& published = ctx.summary["published"];
+  published["ee_decay"] = method_info("explicit_euler").order;                  // Sec. 2.3: first order
+  published["se_energy"] = method_info("symplectic_euler_pq").order;            // Fig 9 / eq. (44)
+  published["se_compensated_energy"] = method_info("compensated_symplectic_euler").order;  // Fig 9, App. B
+  ctx.summary["norms"] = {
+      {"energy", "max over t_j = j h in [0, convergence.t_end] of |H(q_j, p_j) - H(q_0, p_0)|; *_rms: eq. (50)"},
+      {"ee", "max over t_j in [0, convergence.t_end] of |y_j - y(t_j)|"},
+      {"compensated_max_rel_err", "max over the steps of Figs 2/3 of |Psi^{-1}(ybar_j) - y(t_j)| / |y(t_j)|"}};
+}
 
-  // What the accuracy costs: median wall time of each method to t_end over
-  // the steps timing.h (steps only: the transformation (41) applied once
-  // before and once after), serial; errors and force evaluations from
-  // separate (parallel) counting runs.
+// ---- What the accuracy costs: median wall time of each method to t_end over
+// the steps timing.h (steps only: the transformation (41) applied once before
+// and once after), serial; errors and force evaluations from separate
+// (parallel) counting runs. ----
+
+void run_timing(Context& ctx) {
+  const Scene& s = ctx.scene;
   ctx.progress("cost: timing");
+  const Oscillator osc;
+  const State z0 = initial_state(s);
+  const double t_end = s.real("convergence.t_end"), k = s.real("oscillator.k");
   const int repeats = static_cast<int>(s.integer("timing.repeats"));
   const auto time_se = [&](double h, std::int64_t n) {
     return median_seconds(repeats, [&] {
@@ -373,6 +415,7 @@ void run(Context& ctx) {
   }
   ctx.write("timing.csv", cost);
 
+  json& timing = ctx.summary["timing"];
   const double h8 = s.real("oscillator.h");
   const std::int64_t n_timing = s.integer("timing.steps");
   const double ns_se = 1e9 * time_se(h8, n_timing) / static_cast<double>(n_timing);
@@ -399,24 +442,29 @@ void run(Context& ctx) {
   } else {
     timing["error_at_equal_wall_time"] = nullptr;  // timing.h gives no common wall-time range
   }
-
-  ctx.summary["published"] = published;
-  ctx.summary["reproduced"] = reproduced;
-  ctx.summary["orders"] = orders;
-  ctx.summary["fits"] = fits;
-  ctx.summary["norms"] = {
-      {"energy", "max over t_j = j h in [0, convergence.t_end] of |H(q_j, p_j) - H(q_0, p_0)|; *_rms: eq. (50)"},
-      {"ee", "max over t_j in [0, convergence.t_end] of |y_j - y(t_j)|"},
-      {"compensated_max_rel_err", "max over the steps of Figs 2/3 of |Psi^{-1}(ybar_j) - y(t_j)| / |y(t_j)|"}};
-  ctx.summary["timing"] = timing;
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  const ExperimentSpec spec{"euler_compensation",
-                            "000 Figs 2, 3, 8, 9: order compensation by a change of variables (explicit Euler) "
-                            "and by a change of coordinates (symplectic Euler)",
-                            schema(), validate, run};
-  return run_experiment(argc, argv, spec, GEOMINT_EXPERIMENT_DIR);
+  ExperimentSpec spec{"euler_compensation",
+                      "000 Figs 2, 3, 8, 9: order compensation by a change of variables (explicit Euler) "
+                      "and by a change of coordinates (symplectic Euler)",
+                      schema(),
+                      {}};
+  spec.studies = {
+      {"decay", "000 Fig 2", {"fig2_decay.csv", "fig2_decay_exact.csv"}, {"decay"}, check_decay, run_decay},
+      {"gompertz", "000 Fig 3", {"fig3_gompertz.csv", "fig3_gompertz_exact.csv"}, {"gompertz"}, check_gompertz,
+       run_gompertz},
+      {"oscillator", "000 Fig 8", {"fig8_phase.csv", "fig8_exact.csv"}, {"oscillator"},
+       [](const Scene& s) { check_oscillator_step(s, "oscillator.h", s.real("oscillator.h")); }, run_oscillator},
+      {"convergence", "000 Fig 9", {"fig9_convergence.csv", "orders.csv"},
+       {"convergence", "oscillator.q0", "oscillator.p0", "oscillator.k", "decay.alpha", "decay.y0", "gompertz.a",
+        "gompertz.b", "gompertz.y0"},
+       [](const Scene& s) { check_steps(s, "convergence.h"); }, run_convergence},
+      {"timing", "cost: error against wall time and force evaluations", {"timing.csv"},
+       {"timing", "convergence.t_end", "oscillator.q0", "oscillator.p0", "oscillator.k", "oscillator.h"},
+       [](const Scene& s) { check_steps(s, "timing.h"); }, run_timing},
+  };
+  return run_experiment(argc, argv, std::move(spec), GEOMINT_EXPERIMENT_DIR);
 }

@@ -39,13 +39,17 @@ h = [0.1, 0.05, 0.025]
 fast = true
 )";
 
-std::string error_of(const std::string& text, const std::vector<std::string>& overrides = {}) {
+std::string error_of_file(const fs::path& file, const std::vector<std::string>& overrides = {}) {
   try {
-    Scene::load(scene_file(text), overrides, schema());
+    Scene::load(file, overrides, schema());
   } catch (const SceneError& e) {
     return e.what();
   }
   return "";
+}
+
+std::string error_of(const std::string& text, const std::vector<std::string>& overrides = {}) {
+  return error_of_file(scene_file(text), overrides);
 }
 
 }  // namespace
@@ -106,10 +110,67 @@ TEST(Scene, RejectsTypeErrors) {
 TEST(Scene, RejectsUnparsableValuesAndMissingKeys) {
   EXPECT_NE(error_of(valid, {"decay.h=abc"}).find("cannot read 'abc' as a number"), std::string::npos);
   EXPECT_NE(error_of(valid, {"decay.h"}).find("expected key=value"), std::string::npos);
+  EXPECT_NE(error_of("decay = [").find("not valid TOML"), std::string::npos);
+}
+
+TEST(Scene, KeysAreRequiredOnlyByTheStudiesThatRun) {
   std::string text = valid;
   text.erase(text.find("steps = 20"), 10);
-  EXPECT_NE(error_of(text).find("missing key 'decay.steps'"), std::string::npos);
-  EXPECT_NE(error_of("decay = [").find("not valid TOML"), std::string::npos);
+  const auto s = Scene::load(scene_file(text), {}, schema());  // loading needs no key
+  EXPECT_NO_THROW(s.require({"convergence", "decay.h"}, "study c", schema()));
+  try {
+    s.require({"decay"}, "study d", schema());
+    FAIL();
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find("missing key 'decay.steps' (an integer), needed by study d"), std::string::npos)
+        << e.what();
+  }
+}
+
+TEST(Scene, ReadsOutsideTheDeclaredKeysFail) {
+  const auto s = Scene::load(scene_file(valid), {}, schema());
+  s.restrict_reads({"decay"}, "study d");
+  EXPECT_DOUBLE_EQ(s.real("decay.h"), 0.3);
+  EXPECT_THROW(s.reals("convergence.h"), std::logic_error);
+  s.restrict_reads({});
+  EXPECT_EQ(s.reals("convergence.h").size(), 3u);
+}
+
+TEST(Scene, AnOverlayChangesOnlyWhatItNames) {
+  const fs::path base = scene_file(valid);
+  const auto s = Scene::load(scene_file("base = \"" + base.filename().string() + "\"\n[decay]\nh = 0.1\n"), {}, schema());
+  EXPECT_DOUBLE_EQ(s.real("decay.h"), 0.1);                 // from the overlay
+  EXPECT_EQ(s.integer("decay.steps"), 20);                  // the rest of [decay] from the base
+  EXPECT_EQ(s.reals("convergence.h").size(), 3u);           // other sections from the base
+  ASSERT_EQ(s.bases().size(), 1u);
+  EXPECT_FALSE(s.to_json().contains("base"));
+  // A value the base gave names the base file when rejected; one the overlay gave, the overlay.
+  try {
+    s.reject("decay.steps", "x");
+  } catch (const SceneError& e) {
+    EXPECT_NE(std::string(e.what()).find(base.string()), std::string::npos) << e.what();
+  }
+}
+
+TEST(Scene, BasesChainAndCyclesAreRefused) {
+  const fs::path a = scene_file(valid);
+  const fs::path b = scene_file("base = \"" + a.filename().string() + "\"\n[decay]\nsteps = 7\n");
+  const auto s = Scene::load(scene_file("base = \"" + b.filename().string() + "\"\n[decay]\nh = 0.2\n"), {}, schema());
+  EXPECT_EQ(s.integer("decay.steps"), 7);
+  EXPECT_DOUBLE_EQ(s.real("decay.h"), 0.2);
+  EXPECT_EQ(s.bases().size(), 2u);
+  const fs::path self = fs::temp_directory_path() / ("geomint_scene_self_" + std::to_string(::getpid()) + ".toml");
+  std::ofstream(self) << "base = \"" << self.filename().string() << "\"\n";
+  EXPECT_NE(error_of_file(self).find("already in the chain"), std::string::npos);
+  EXPECT_NE(error_of("base = \"no-such-file.toml\"\n").find("no such file"), std::string::npos);
+}
+
+TEST(Scene, AnAliasReadsAsItsKey) {
+  Schema sc = schema();
+  sc.alias("how", "method");
+  const auto s = Scene::load(scene_file("how = \"rk4\"\n"), {}, sc);
+  EXPECT_EQ(s.text("method"), "rk4");
+  EXPECT_EQ(Scene::load(scene_file(valid), {"how=\"rk4\""}, sc).text("method"), "rk4");
 }
 
 TEST(Scene, CrossKeyRejectNamesTheKeyAndValue) {

@@ -3,10 +3,12 @@
 #include <omp.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 
 #include <CLI/CLI.hpp>
 
@@ -18,30 +20,131 @@ void Context::progress(std::string_view what) const {
   if (::isatty(STDERR_FILENO)) std::cerr << "  " << what << '\n';
 }
 
+bool file_matches(std::string_view pattern, std::string_view name) {
+  const auto star = pattern.find('*');
+  if (star == std::string_view::npos) return pattern == name;
+  const auto head = pattern.substr(0, star), tail = pattern.substr(star + 1);
+  return name.size() >= head.size() + tail.size() && name.starts_with(head) && name.ends_with(tail);
+}
+
 namespace {
 
-std::string keys_help(const Schema& schema) {
-  std::string s = "\nScene keys (all required in the scene file; override any with --set key=value):\n";
-  for (const auto& e : schema.entries()) s += "  " + e.key + (e.doc.empty() ? "" : "  " + e.doc) + "\n";
+constexpr const char* kStudiesKey = "studies";
+
+std::string join(const std::vector<std::string>& v, const char* sep = ", ") {
+  std::string s;
+  for (std::size_t i = 0; i < v.size(); ++i) s += (i ? sep : "") + v[i];
+  return s;
+}
+
+std::vector<std::string> study_names(const ExperimentSpec& spec) {
+  std::vector<std::string> names;
+  for (const auto& st : spec.studies) names.push_back(st.name);
+  return names;
+}
+
+const Study* find_study(const ExperimentSpec& spec, std::string_view name) {
+  for (const auto& st : spec.studies)
+    if (st.name == name) return &st;
+  return nullptr;
+}
+
+// The studies the scene asks for (its `studies` list, else the studies whose
+// section it has), narrowed by --study; in the experiment's order.
+std::vector<const Study*> select_studies(const ExperimentSpec& spec, const Scene& scene,
+                                         const std::vector<std::string>& on_command_line) {
+  const std::string valid = " (the studies of " + spec.name + ": " + join(study_names(spec)) + ")";
+  std::vector<std::string> asked;
+  if (scene.has(kStudiesKey)) {
+    asked = scene.texts(kStudiesKey);  // the schema admits only study names
+  } else {
+    for (const auto& st : spec.studies)
+      if (scene.has(st.name)) asked.push_back(st.name);
+  }
+  for (const auto& name : on_command_line) {
+    if (!find_study(spec, name)) throw SceneError("--study " + name + ": no such study" + valid);
+    if (std::find(asked.begin(), asked.end(), name) == asked.end())
+      throw SceneError("--study " + name + ": the scene " + scene.file().string() + " does not ask for it (it asks for: " +
+                       (asked.empty() ? std::string("none") : join(asked)) + "; add it to the scene's studies list)");
+  }
+  std::vector<const Study*> out;
+  for (const auto& st : spec.studies) {
+    const bool in_scene = std::find(asked.begin(), asked.end(), st.name) != asked.end();
+    const bool on_line = on_command_line.empty() ||
+                         std::find(on_command_line.begin(), on_command_line.end(), st.name) != on_command_line.end();
+    if (in_scene && on_line) out.push_back(&st);
+  }
+  if (out.empty()) throw SceneError(scene.file().string() + ": the scene asks for no study" + valid);
+  return out;
+}
+
+// The paper scene, for the defaults --help shows (nullopt if it cannot be read).
+std::optional<Scene> paper_scene(const ExperimentSpec& spec, const std::string& dir) {
+  try {
+    return Scene::load(dir + "/" + spec.name + ".toml", {}, spec.schema);
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
+std::string studies_help(const ExperimentSpec& spec) {
+  std::string s = "\nStudies (a scene runs those in its `studies` list, else those whose section it has;\n"
+                  "--study NAME runs only NAME):\n";
+  for (const auto& st : spec.studies) s += "  " + st.name + "  " + st.makes + "  [" + join(st.files, " ") + "]\n";
+  return s;
+}
+
+std::string keys_help(const ExperimentSpec& spec, const std::string& dir) {
+  const auto paper = paper_scene(spec, dir);
+  const auto json = paper ? paper->to_json() : nlohmann::ordered_json();
+  std::string s = "\nScene keys (default: the paper scene " + dir + "/" + spec.name +
+                  ".toml; override any with --set key=value):\n";
+  for (const auto& e : spec.schema.entries()) {
+    std::string users;
+    for (const auto& st : spec.studies)
+      if (key_under(e.key, st.uses)) users += (users.empty() ? "" : ", ") + st.name;
+    std::string def = "(none)";
+    if (paper && paper->has(e.key)) {
+      const auto ptr = nlohmann::ordered_json::json_pointer("/" + [&] {
+        std::string p = e.key;
+        std::replace(p.begin(), p.end(), '.', '/');
+        return p;
+      }());
+      def = json.at(ptr).dump();
+    }
+    s += "  " + e.key + "  (" + type_name(e.type);
+    const std::string allowed = allowed_values(e);
+    if (!allowed.empty()) s += "; " + allowed;
+    s += ")  default " + def + "\n";
+    if (!e.doc.empty()) s += "      " + e.doc + "\n";
+    if (!users.empty() && e.key != kStudiesKey) s += "      used by: " + users + "\n";
+  }
+  for (const auto& [from, to] : spec.schema.aliases()) s += "  " + from + "  older spelling of " + to + "\n";
+  s += "\nExit codes: 0 done; 1 internal error; 2 bad input (before any work); 3 stopped with a checkpoint "
+       "(--resume continues)\n";
   return s;
 }
 
 }  // namespace
 
-int run_experiment(int argc, char** argv, const ExperimentSpec& spec, const std::string& experiment_dir) {
+int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string& experiment_dir) {
   const auto start = std::chrono::system_clock::now();
   const auto t0 = std::chrono::steady_clock::now();
   const std::string name = spec.name;
+  spec.schema.texts(kStudiesKey, study_names(spec), 0,
+                    "the studies this scene runs (default: every study whose section the scene has)");
 
   CLI::App app{spec.description, name};
   std::string scene_file;
-  bool quick = false;
+  bool quick = false, list_studies = false;
   std::string out_dir = "results/" + name;
   int threads = omp_get_max_threads();
-  std::vector<std::string> overrides;
+  std::vector<std::string> overrides, only;
   auto* scene_opt = app.add_option("--scene", scene_file, "Scene file (default: " + experiment_dir + "/" + name + ".toml)");
-  app.add_flag("--quick", quick, "Use the quick scene " + experiment_dir + "/quick.toml (seconds; for CI)")
+  app.add_flag("--quick", quick, "Use the quick scene " + experiment_dir + "/quick.toml (the paper scene, shortened; for CI)")
       ->excludes(scene_opt);
+  app.add_option("--study", only, "Run only this study of the scene (repeatable; see --list-studies)");
+  app.add_flag("--list-studies", list_studies, "Print each study: name, the figure or table it makes, its CSV files");
   app.add_option("--out", out_dir, "Output directory")->capture_default_str();
   app.add_option("--threads", threads, "Threads (results do not depend on it)")
       ->check(CLI::PositiveNumber)
@@ -50,7 +153,7 @@ int run_experiment(int argc, char** argv, const ExperimentSpec& spec, const std:
   bool resume = false;
   app.add_flag("--resume", resume,
                "Continue an interrupted run from the checkpoint in --out (experiments that write checkpoints)");
-  app.footer(keys_help(spec.schema));
+  app.footer(studies_help(spec) + keys_help(spec, experiment_dir));
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -59,13 +162,24 @@ int run_experiment(int argc, char** argv, const ExperimentSpec& spec, const std:
     std::cerr << name << ": " << e.what() << " (see --help)\n";
     return 2;
   }
+  if (list_studies) {
+    for (const auto& st : spec.studies) std::cout << st.name << '\t' << st.makes << '\t' << join(st.files, " ") << '\n';
+    return 0;
+  }
   if (scene_file.empty()) scene_file = experiment_dir + "/" + (quick ? std::string("quick") : name) + ".toml";
 
   std::optional<Scene> scene;
   std::optional<OutputDir> out;
+  std::vector<const Study*> studies;
   try {
     scene = Scene::load(scene_file, overrides, spec.schema);
-    if (spec.validate) spec.validate(*scene);
+    studies = select_studies(spec, *scene, only);
+    for (const Study* st : studies) {
+      scene->require(st->uses, "study " + st->name, spec.schema);
+      scene->restrict_reads(st->uses, "study " + st->name);
+      if (st->validate) st->validate(*scene);
+    }
+    scene->restrict_reads({});
     out.emplace(out_dir);
   } catch (const SceneError& e) {
     std::cerr << name << ": scene error: " << e.what() << '\n';
@@ -79,12 +193,28 @@ int run_experiment(int argc, char** argv, const ExperimentSpec& spec, const std:
   Context ctx(*scene, *out, threads);
   ctx.resume = resume;
   try {
-    spec.run(ctx);
+    std::vector<std::string> ran;
+    nlohmann::ordered_json study_wall = nlohmann::ordered_json::object();
+    for (const Study* st : studies) {
+      const auto ts = std::chrono::steady_clock::now();
+      const std::size_t files_before = out->written().size();
+      scene->restrict_reads(st->uses, "study " + st->name);
+      st->run(ctx);
+      scene->restrict_reads({});
+      for (std::size_t i = files_before; i < out->written().size(); ++i) {
+        const std::string& f = out->written()[i];
+        if (std::none_of(st->files.begin(), st->files.end(), [&](const std::string& p) { return file_matches(p, f); }))
+          throw std::logic_error("study " + st->name + " wrote " + f + ", which it does not declare");
+      }
+      study_wall[st->name] = std::chrono::duration<double>(std::chrono::steady_clock::now() - ts).count();
+      ran.push_back(st->name);
+    }
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
-    nlohmann::ordered_json summary = {{"experiment", name}};
+    nlohmann::ordered_json summary = {{"experiment", name}, {"studies", ran}};
     for (auto& [k, v] : ctx.summary.items()) summary[k] = v;
     summary["timing"]["wall_s"] = wall;
+    summary["timing"]["study_wall_s"] = study_wall;
     out->write("summary.json", summary.dump(2) + "\n");
 
     std::string command;
@@ -92,12 +222,17 @@ int run_experiment(int argc, char** argv, const ExperimentSpec& spec, const std:
     nlohmann::ordered_json run = {{"experiment", name}, {"build", build_info()}};
     run["command"] = command;
     run["scene_file"] = scene->file().string();
+    std::vector<std::string> bases;
+    for (const auto& b : scene->bases()) bases.push_back(b.string());
+    run["scene_bases"] = bases;
     run["overrides"] = overrides;
     run["scene"] = scene->to_json();
+    run["studies"] = ran;
     run["threads"] = threads;
     run["start_utc"] = utc_iso8601(start);
     run["end_utc"] = utc_iso8601(std::chrono::system_clock::now());
     run["wall_s"] = wall;
+    run["study_wall_s"] = study_wall;
     run["files"] = out->written();
     out->write("run.json", run.dump(2) + "\n");
   } catch (const Interrupted& e) {

@@ -33,19 +33,6 @@ std::string repr(const toml::node& node) {
   return "(table)";
 }
 
-const char* type_name(Schema::Type t) {
-  switch (t) {
-    case Schema::Type::real: return "a number";
-    case Schema::Type::integer: return "an integer";
-    case Schema::Type::reals: return "a list of numbers";
-    case Schema::Type::real_rows: return "a list of lists of numbers";
-    case Schema::Type::boolean: return "true or false";
-    case Schema::Type::text: return "a string";
-    case Schema::Type::texts: return "a list of strings";
-  }
-  return "?";
-}
-
 std::vector<std::string> split_dotted(std::string_view key) {
   std::vector<std::string> parts;
   std::size_t start = 0;
@@ -90,6 +77,39 @@ std::string Bound::describe() const {
   if (le) parts.push_back("<= " + fmt(*le));
   for (std::size_t i = 0; i < parts.size(); ++i) d += (i ? " and " : " ") + parts[i];
   return d;
+}
+
+std::string type_name(Schema::Type t) {
+  switch (t) {
+    case Schema::Type::real: return "a number";
+    case Schema::Type::integer: return "an integer";
+    case Schema::Type::reals: return "a list of numbers";
+    case Schema::Type::real_rows: return "a list of lists of numbers";
+    case Schema::Type::boolean: return "true or false";
+    case Schema::Type::text: return "a string";
+    case Schema::Type::texts: return "a list of strings";
+  }
+  return "?";
+}
+
+std::string allowed_values(const Schema::Entry& e) {
+  using T = Schema::Type;
+  std::string a;
+  if (e.type == T::real || e.type == T::integer || e.type == T::reals || e.type == T::real_rows) a = e.bound.describe();
+  if ((e.type == T::reals || e.type == T::texts) && e.min_len > 0)
+    a += (a.empty() ? "" : "; ") + std::string("at least ") + std::to_string(e.min_len) + " entries";
+  if (e.type == T::real_rows)
+    a += "; at least " + std::to_string(e.min_len) + " rows of " + std::to_string(e.row_len);
+  if (!e.choices.empty()) {
+    a += a.empty() ? "one of" : "; each one of";
+    for (const auto& c : e.choices) a += " \"" + c + "\"";
+  }
+  return a;
+}
+
+Schema& Schema::alias(std::string old_key, std::string key) {
+  aliases_.emplace_back(std::move(old_key), std::move(key));
+  return *this;
 }
 
 Schema& Schema::add(Entry e) {
@@ -191,24 +211,101 @@ std::optional<std::string> check(const Schema::Entry& e, const toml::node& node)
 
 }  // namespace
 
-Scene Scene::load(const std::filesystem::path& file, const std::vector<std::string>& overrides,
-                  const Schema& schema) {
-  Scene scene;
-  scene.file_ = file;
+namespace {
+
+constexpr int kMaxBaseDepth = 8;
+
+// Moves the value at dotted path `from` to `to` (an older spelling of a key).
+void rename_key(toml::table& t, const std::string& from, const std::string& to, const std::string& where) {
+  const auto node = t.at_path(from);
+  if (!node) return;
+  if (t.at_path(to)) throw SceneError(where + ": '" + from + "' and '" + to + "' are the same key; give only '" + to + "'");
+  const auto parts = split_dotted(from), target = split_dotted(to);
+  toml::table* parent = &t;
+  for (std::size_t i = 0; i + 1 < parts.size(); ++i) parent = (*parent)[parts[i]].as_table();
+  toml::table* dest = &t;
+  for (std::size_t i = 0; i + 1 < target.size(); ++i) {
+    if (!(*dest)[target[i]].as_table()) dest->insert_or_assign(target[i], toml::table{});
+    dest = (*dest)[target[i]].as_table();
+  }
+  (*parent)[parts.back()].node()->visit([&](const auto& n) { dest->insert_or_assign(target.back(), n); });
+  parent->erase(parts.back());
+}
+
+// Lays `over` onto `base`: tables merge key by key, every other value replaces.
+void merge_into(toml::table& base, const toml::table& over) {
+  for (const auto& [k, v] : over) {
+    auto* sub = base[k].as_table();
+    if (const auto* t = v.as_table(); t && sub) {
+      merge_into(*sub, *t);
+    } else {
+      v.visit([&, key = k](const auto& n) { base.insert_or_assign(key, n); });
+    }
+  }
+}
+
+struct Loaded {
+  toml::table table;
+  std::map<std::string, std::string, std::less<>> origin;
+  std::vector<std::filesystem::path> bases;
+};
+
+Loaded read_scene(const std::filesystem::path& file, const Schema& schema, std::vector<std::filesystem::path>& chain) {
   const std::string where = file.string();
+  if (std::filesystem::is_directory(file)) throw SceneError("--scene " + where + ": is a directory, not a scene file");
   if (!std::filesystem::is_regular_file(file)) throw SceneError("--scene " + where + ": no such file");
+  Loaded out;
+  toml::table own;
   try {
-    scene.table_ = toml::parse_file(where);
+    own = toml::parse_file(where);
   } catch (const toml::parse_error& err) {
     const auto& b = err.source().begin;
     throw SceneError(where + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) +
                      ": not valid TOML: " + std::string(err.description()));
   }
+  for (const auto& [from, to] : schema.aliases()) rename_key(own, from, to, where);
+  if (const auto base = own["base"]; base) {
+    if (!base.is_string()) throw SceneError(where + ": base must be a string naming the base scene file");
+    const std::filesystem::path base_file = file.parent_path() / *base.value<std::string>();
+    const auto canonical = std::filesystem::weakly_canonical(base_file);
+    for (const auto& seen : chain)
+      if (seen == canonical) throw SceneError(where + ": base " + base_file.string() + " is already in the chain of bases");
+    if (chain.size() >= kMaxBaseDepth) throw SceneError(where + ": more than " + std::to_string(kMaxBaseDepth) + " bases");
+    chain.push_back(canonical);
+    out = read_scene(base_file, schema, chain);
+    out.bases.insert(out.bases.begin(), base_file);
+    own.erase("base");
+  }
+  std::vector<std::string> keys;
+  leaf_keys(own, "", keys);
+  for (const auto& key : keys) out.origin[key] = "in " + where;
+  merge_into(out.table, own);
+  return out;
+}
+
+}  // namespace
+
+bool key_under(std::string_view key, const std::vector<std::string>& prefixes) {
+  for (const auto& p : prefixes)
+    if (key == p || (key.size() > p.size() && key.starts_with(p) && key[p.size()] == '.')) return true;
+  return false;
+}
+
+Scene Scene::load(const std::filesystem::path& file, const std::vector<std::string>& overrides,
+                  const Schema& schema) {
+  Scene scene;
+  scene.file_ = file;
+  const std::string where = file.string();
+  std::vector<std::filesystem::path> chain{std::filesystem::weakly_canonical(file)};
+  Loaded loaded = read_scene(file, schema, chain);
+  scene.table_ = std::move(loaded.table);
+  scene.origin_ = std::move(loaded.origin);
+  scene.bases_ = std::move(loaded.bases);
 
   std::vector<std::string> keys;
   leaf_keys(scene.table_, "", keys);
   for (const auto& key : keys) {
-    if (!schema.find(key)) throw SceneError(where + ": unknown key '" + key + "' (see --help for the keys)");
+    if (!schema.find(key)) throw SceneError(scene.origin_[key].substr(3) + ": unknown key '" + key + "' (see --help for the keys)");
   }
 
   for (const auto& assignment : overrides) {
@@ -216,8 +313,10 @@ Scene Scene::load(const std::filesystem::path& file, const std::vector<std::stri
     if (eq == std::string::npos || eq == 0) {
       throw SceneError("--set " + assignment + ": expected key=value");
     }
-    const std::string key = assignment.substr(0, eq);
+    std::string key = assignment.substr(0, eq);
     const std::string value = assignment.substr(eq + 1);
+    for (const auto& [from, to] : schema.aliases())
+      if (key == from) key = to;
     const auto* entry = schema.find(key);
     if (!entry) throw SceneError("--set " + key + "=" + value + ": unknown key '" + key + "' (see --help for the keys)");
     toml::table parsed;
@@ -234,28 +333,47 @@ Scene Scene::load(const std::filesystem::path& file, const std::vector<std::stri
       t = (*t)[parts[i]].as_table();
     }
     parsed.get("v")->visit([&](const auto& n) { t->insert_or_assign(parts.back(), n); });
-    scene.overridden_.push_back(key);
+    scene.origin_[key] = "from --set";
   }
 
   for (const auto& e : schema.entries()) {
     const auto node = scene.table_.at_path(e.key);
-    if (!node) throw SceneError(where + ": missing key '" + e.key + "' (" + type_name(e.type) + ")");
-    if (auto why = check(e, *node.node())) scene.reject(e.key, *why);
+    if (node)
+      if (auto why = check(e, *node.node())) scene.reject(e.key, *why);
   }
   return scene;
 }
 
+void Scene::require(const std::vector<std::string>& prefixes, std::string_view who, const Schema& schema) const {
+  for (const auto& e : schema.entries()) {
+    if (!key_under(e.key, prefixes) || table_.at_path(e.key)) continue;
+    std::string bases;
+    for (const auto& b : bases_) bases += ", base " + b.string();
+    throw SceneError(file_.string() + bases + ": missing key '" + e.key + "' (" + type_name(e.type) + "), needed by " +
+                     std::string(who));
+  }
+}
+
+void Scene::restrict_reads(std::vector<std::string> prefixes, std::string who) const {
+  readable_ = std::move(prefixes);
+  reader_ = std::move(who);
+}
+
+bool Scene::has(std::string_view key) const { return static_cast<bool>(table_.at_path(key)); }
+
 void Scene::reject(std::string_view key, std::string_view allowed) const {
-  const bool from_set = std::find(overridden_.begin(), overridden_.end(), key) != overridden_.end();
   const auto node = table_.at_path(key);
   const std::string value = node ? repr(*node.node()) : "(missing)";
-  throw SceneError(std::string(key) + " = " + value + (from_set ? " (from --set)" : " (in " + file_.string() + ")") +
-                   ": " + std::string(allowed));
+  const auto from = origin_.find(key);
+  throw SceneError(std::string(key) + " = " + value + " (" + (from != origin_.end() ? from->second : "in " + file_.string()) +
+                   "): " + std::string(allowed));
 }
 
 toml::node_view<const toml::node> Scene::at(std::string_view key) const {
+  if (!readable_.empty() && !key_under(key, readable_))
+    throw std::logic_error(reader_ + " reads the scene key '" + std::string(key) + "', which it does not declare");
   const auto node = table_.at_path(key);
-  if (!node) throw std::logic_error("Scene: key not in schema: " + std::string(key));
+  if (!node) throw std::logic_error("Scene: key not present (not required by the studies that run): " + std::string(key));
   return node;
 }
 

@@ -1,11 +1,18 @@
 #pragma once
 // Scenes: the parameters of one experiment run, from a TOML file plus
 // `--set key=value` overrides, validated against the experiment's schema
-// before any work is done. Every key is required (its one default lives in
-// the scene file); unknown keys, wrong types and out-of-range values are
-// rejected with a SceneError naming the key, the value and what is allowed.
+// before any work is done.
+//
+// A scene may name a base scene (`base = "<file>.toml"`, relative to its own
+// directory): the base is loaded first and the scene's keys are laid over it
+// (tables merge key by key; any other value, lists included, replaces the
+// base's). So a quick scene holds only what differs from the paper scene.
+// Every key present is checked for its type and range; which keys must be
+// present is decided by the studies that run (Scene::require): a parameter's
+// one default lives in the paper scene.
 #include <cstdint>
 #include <filesystem>
+#include <map>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -52,21 +59,42 @@ class Schema {
   Schema& boolean(std::string key, std::string doc = {});
   Schema& text(std::string key, std::vector<std::string> choices, std::string doc = {});
   Schema& texts(std::string key, std::vector<std::string> choices, std::size_t min_len, std::string doc = {});
+  // An older spelling of a key: scene files and --set may use it, it reads as `key`.
+  Schema& alias(std::string old_key, std::string key);
 
   const Entry* find(std::string_view key) const;
   const std::vector<Entry>& entries() const { return entries_; }
+  const std::vector<std::pair<std::string, std::string>>& aliases() const { return aliases_; }
 
  private:
   Schema& add(Entry e);
   std::vector<Entry> entries_;
+  std::vector<std::pair<std::string, std::string>> aliases_;  // (old, new)
 };
+
+// "a number", "a list of strings", ...: how --help and error messages name a type.
+std::string type_name(Schema::Type t);
+// What a key admits, in words: the range of a number, the choices of a string.
+std::string allowed_values(const Schema::Entry& e);
+
+// Does `key` fall under one of `prefixes` (equal, or prefix + "." + ...)?
+bool key_under(std::string_view key, const std::vector<std::string>& prefixes);
 
 class Scene {
  public:
-  // Loads `file`, applies the `key=value` overrides (values in TOML syntax:
-  // 0.1, 1e-3, [0.1, 0.05], true, "text"), and validates against `schema`.
+  // Loads `file` and its bases, applies the `key=value` overrides (values in
+  // TOML syntax: 0.1, 1e-3, [0.1, 0.05], true, "text"), and checks every key
+  // present against `schema` (unknown keys, types, ranges).
   static Scene load(const std::filesystem::path& file, const std::vector<std::string>& overrides,
                     const Schema& schema);
+
+  // Every schema key under one of `prefixes` must be present; `who` names what needs it.
+  void require(const std::vector<std::string>& prefixes, std::string_view who, const Schema& schema) const;
+  // Reads are restricted to the keys under `prefixes` (empty: no restriction), so
+  // that a study that reads a key it did not declare fails loudly.
+  void restrict_reads(std::vector<std::string> prefixes, std::string who = {}) const;
+
+  bool has(std::string_view key) const;  // a key or a section
 
   double real(std::string_view key) const;
   std::int64_t integer(std::string_view key) const;
@@ -79,14 +107,18 @@ class Scene {
   // For checks that involve several keys: throws the SceneError for `key`.
   [[noreturn]] void reject(std::string_view key, std::string_view allowed) const;
 
-  nlohmann::ordered_json to_json() const;  // the scene as resolved after overrides
+  nlohmann::ordered_json to_json() const;  // the scene as resolved after bases and overrides
   const std::filesystem::path& file() const { return file_; }
+  const std::vector<std::filesystem::path>& bases() const { return bases_; }  // base files, nearest first
 
  private:
   toml::node_view<const toml::node> at(std::string_view key) const;
   std::filesystem::path file_;
+  std::vector<std::filesystem::path> bases_;
   toml::table table_;
-  std::vector<std::string> overridden_;
+  std::map<std::string, std::string, std::less<>> origin_;  // leaf key -> "from --set" / "in FILE"
+  mutable std::vector<std::string> readable_;
+  mutable std::string reader_;
 };
 
 }  // namespace geomint
