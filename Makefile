@@ -7,7 +7,7 @@
 #   make test                     build, then ctest (unit, regression, stability, figures)
 #   make figures                  run every experiment's paper scene, render figures/out/*
 #   make paper                    figures + tables from summary.json + paper/main.pdf
-#   make experiment NAME=x [SCENE=v] ARGS='--set key=value'   one experiment (+ its figures)
+#   make experiment NAME=x [SCENE=v] ARGS='--study S --set key=value'   one experiment (+ the figures of what ran)
 #   make bench                    throughput benchmarks (Google Benchmark)
 #   make clean                    remove build/, results/, figures/out/, paper outputs
 
@@ -44,9 +44,9 @@ scene_id = $(if $(filter $(1),$(2)),$(1),$(1)-$(2))
 # One experiment with its paper scene (or SCENE=<variant>, or ARGS), then its figures.
 SCENE ?= $(NAME)
 experiment: build $(DEPS_STAMP)/figures.stamp
-	@test -n "$(NAME)" || { echo "usage: make experiment NAME=<one of: $(EXPERIMENTS)> [SCENE=<variant>] [ARGS='--set key=value']"; exit 2; }
+	@test -n "$(NAME)" || { echo "usage: make experiment NAME=<one of: $(EXPERIMENTS)> [SCENE=<variant>] [ARGS='--study S --set key=value']"; exit 2; }
 	$(BUILD)/bin/$(NAME) --scene experiments/$(NAME)/$(SCENE).toml --out $(RESULTS)/$(call scene_id,$(NAME),$(SCENE)) $(ARGS)
-	tests/figures/render_figures.sh $(RESULTS)/$(call scene_id,$(NAME),$(SCENE)) figures/out $(wildcard figures/$(call scene_id,$(NAME),$(SCENE))_*.gp)
+	tests/figures/render_figures.sh --only-available $(RESULTS)/$(call scene_id,$(NAME),$(SCENE)) figures/out $(wildcard figures/$(call scene_id,$(NAME),$(SCENE))_*.gp)
 
 figures: build $(DEPS_STAMP)/figures.stamp
 	@for name in $(EXPERIMENTS); do \

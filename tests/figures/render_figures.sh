@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Render gnuplot figure scripts and check them.
 #
-#   tests/figures/render_figures.sh RESULTS_DIR OUT_DIR SCRIPT...
+#   tests/figures/render_figures.sh [--only-available] RESULTS_DIR OUT_DIR SCRIPT...
 #
 # Runs, from the repository root (two levels above this file, so that the scripts'
 # `load 'figures/common.gp'` works), for each SCRIPT:
@@ -10,7 +10,13 @@
 # anything containing "warning" (any case) on stderr, or if OUT_DIR/NAME.pdf or
 # OUT_DIR/NAME.png (NAME = script basename without .gp) is missing or empty.
 # All scripts are tried; the exit status is 1 if any failed, 2 on a usage error.
+# --only-available skips (and names) each script whose input CSVs, as its
+# "# Input:" line lists them, are not all in RESULTS_DIR: a run of some of the
+# studies (--study) renders the figures of those studies only.
 set -u
+
+only_available=0
+if [ "${1:-}" = "--only-available" ]; then only_available=1; shift; fi
 
 if [ $# -lt 3 ]; then
     echo "usage: $0 RESULTS_DIR OUT_DIR SCRIPT..." >&2
@@ -36,6 +42,17 @@ fi
 scripts=()
 for s in "$@"; do scripts+=("$(abspath "$s")"); done
 
+# The CSVs named on a script's "# Input:" line that are missing from $results
+# (a <placeholder> in a name matches anything).
+missing_inputs() {
+    local line f pattern
+    line=$(grep -m1 '^# Input:' "$1") || return 0
+    for f in $(printf '%s\n' "$line" | grep -o '[A-Za-z0-9_<>-]*\.csv'); do
+        pattern=$(printf '%s' "$f" | sed 's/<[^>]*>/*/g')
+        compgen -G "$results/$pattern" >/dev/null || printf '%s ' "$f"
+    done
+}
+
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 cd "$root" || exit 1
 mkdir -p "$out" || exit 1
@@ -48,6 +65,9 @@ for script in "${scripts[@]}"; do
     why=""
     if [ ! -f "$script" ]; then
         why="script not found"
+    elif [ $only_available -eq 1 ] && missing=$(missing_inputs "$script") && [ -n "$missing" ]; then
+        echo "skip $name: no ${missing% } in $results (its study did not run)"
+        continue
     else
         rm -f "$out/$name.pdf" "$out/$name.png"        # no stale figure may pass the check
         gnuplot -e "results='$results'; out='$out'" "$script" 2>"$log"

@@ -59,21 +59,16 @@ TEST(Cli, StepThatDoesNotDivideTheInterval) {
 }
 
 TEST(Cli, SceneFileWithTypeError) {
-  std::ifstream in(std::string(GEOMINT_SOURCE_DIR) + "/experiments/euler_compensation/quick.toml");
-  std::stringstream ss;
-  ss << in.rdbuf();
-  std::string text = ss.str();
-  const auto at = text.find("k = 2.0");
-  ASSERT_NE(at, std::string::npos);
-  text.replace(at, 7, "k = \"two\"");
+  // An overlay of the paper scene with one wrong value: the key, the value and its file are named.
   fs::create_directories(work);
   const fs::path scene = work / "bad.toml";
-  std::ofstream(scene) << text;
+  std::ofstream(scene) << "base = \"" << GEOMINT_SOURCE_DIR << "/experiments/euler_compensation/euler_compensation.toml\"\n"
+                       << "[oscillator]\nk = \"two\"\n";
   const fs::path out = work / "out";
   fs::remove_all(out);
   const Outcome r = run("--scene " + scene.string() + " --out " + out.string());
   EXPECT_EQ(r.code, 2);
-  EXPECT_NE(r.err.find("oscillator.k = \"two\""), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("oscillator.k = \"two\" (in " + scene.string() + ")"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("must be a finite number > 0"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(out));
 }
@@ -121,4 +116,56 @@ TEST(Cli, MeasureCloudUnknownPotential) {
 }
 TEST(Cli, MeasureCloudWindowBeyondRun) {
   expect_rejected("--set ptp_window=40", {"ptp_window", "t_end"}, bin_of("measure_cloud"));
+}
+
+// Studies: the scene says what runs; --study narrows it; a study that does not
+// exist, or a scene that asks for none, is bad input.
+TEST(Cli, UnknownStudyNamesTheValidOnes) {
+  expect_rejected("--study nosuch", {"--study nosuch", "no such study", "decay, gompertz, oscillator, convergence, timing"});
+}
+TEST(Cli, SceneAskingForNoStudy) {
+  expect_rejected("--set studies=[]", {"asks for no study", "decay, gompertz"});
+}
+TEST(Cli, StudyTheSceneDoesNotAskFor) {
+  expect_rejected("--set studies=[\\\"decay\\\"] --study gompertz", {"--study gompertz", "does not ask for it", "decay"});
+}
+TEST(Cli, AStudyValidatesOnlyItsOwnKeys) {
+  // A step beyond the bound in another study's section is not looked at when that study does not run ...
+  const fs::path out = work / "only-decay";
+  fs::remove_all(out);
+  const Outcome r = run("--quick --study decay --set gompertz.h=99 --out " + out.string());
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(out / "fig2_decay.csv"));
+  EXPECT_FALSE(fs::exists(out / "fig3_gompertz.csv"));
+  // ... and is refused when it does.
+  expect_rejected("--study gompertz --set gompertz.h=99", {"gompertz.h", "unstable"});
+}
+TEST(Cli, MissingKeyIsNamedWithTheStudyThatNeedsIt) {
+  fs::create_directories(work);
+  const fs::path scene = work / "partial.toml";
+  std::ofstream(scene) << "[decay]\nalpha = 1.0\ny0 = 1.0\nh = 0.3\n";
+  const fs::path out = work / "out";
+  fs::remove_all(out);
+  const Outcome r = run("--scene " + scene.string() + " --out " + out.string());
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("missing key 'decay.steps' (an integer), needed by study decay"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out));
+}
+TEST(Cli, ListStudiesAndHelp) {
+  const fs::path listing = work / "studies.txt";
+  fs::create_directories(work);
+  ASSERT_EQ(std::system((bin + " --list-studies > " + listing.string()).c_str()), 0);
+  std::ifstream in(listing);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  EXPECT_NE(ss.str().find("convergence\t000 Fig 9\tfig9_convergence.csv orders.csv"), std::string::npos) << ss.str();
+  const fs::path help = work / "help.txt";
+  ASSERT_EQ(std::system((bin + " --help > " + help.string()).c_str()), 0);
+  std::ifstream hin(help);
+  std::stringstream hs;
+  hs << hin.rdbuf();
+  // Every key with its type, range, default (from the paper scene) and the studies that use it.
+  EXPECT_NE(hs.str().find("decay.h  (a number; a finite number > 0)  default 0.3"), std::string::npos) << hs.str();
+  EXPECT_NE(hs.str().find("used by: oscillator, convergence, timing"), std::string::npos);
+  EXPECT_NE(hs.str().find("Exit codes"), std::string::npos);
 }
