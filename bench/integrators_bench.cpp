@@ -1,7 +1,14 @@
 // Throughput of the steps compared in euler_compensation (one trajectory,
 // latency-bound): symplectic Euler with and without the compensating
-// transformation (82), RK4, and the pieces of the compensated step.
+// transformation (82), RK4, and the pieces of the compensated step. And what a
+// term costs that a scene switches off: a Stormer-Verlet step of the elastic
+// pendulum (000 eq. (73)) and of Henon-Heiles (004) with the term compiled out
+// (g = 0, c = 0 in the scene) against the same step multiplying it by zero.
 #include <benchmark/benchmark.h>
+
+#include "geomint/integrators/stormer_verlet.hpp"
+#include "geomint/systems/elastic_pendulum.hpp"
+#include "geomint/systems/henon_heiles.hpp"
 
 #include "geomint/integrators/runge_kutta4.hpp"
 #include "geomint/integrators/symplectic_euler.hpp"
@@ -55,6 +62,36 @@ void BM_CompensationInverse(benchmark::State& state) {
   }
 }
 BENCHMARK(BM_CompensationInverse);
+
+template <class Sys>
+void stormer_verlet_steps(benchmark::State& state, const Sys& sys, const Vec<2>& q0) {
+  KickState<2> s{make_state<2>(q0, Vec<2>(0.1, -0.2)), sys.force(q0)};
+  for (auto _ : state) {
+    s = stormer_verlet(sys, s, 0.01);
+    benchmark::DoNotOptimize(s);
+  }
+}
+
+void BM_PendulumWithoutGravityTerm(benchmark::State& state) {
+  stormer_verlet_steps(state, ElasticPendulumWithoutGravity{1.0, {SpringTerm{1.0, 1.0}}}, Vec<2>(0.5, 1.0));
+}
+BENCHMARK(BM_PendulumWithoutGravityTerm);
+
+void BM_PendulumGravityTimesZero(benchmark::State& state) {
+  stormer_verlet_steps(state, ElasticPendulumWithGravity{1.0, {SpringTerm{1.0, 1.0}, GravityTerm{1.0, 0.0}}},
+                       Vec<2>(0.5, 1.0));
+}
+BENCHMARK(BM_PendulumGravityTimesZero);
+
+void BM_HenonHeilesWithoutCoupling(benchmark::State& state) {
+  stormer_verlet_steps(state, HenonHeilesT<false>{{}, 5, 0.0}, Vec<2>(0.1, 0.2));
+}
+BENCHMARK(BM_HenonHeilesWithoutCoupling);
+
+void BM_HenonHeilesCouplingTimesZero(benchmark::State& state) {
+  stormer_verlet_steps(state, HenonHeilesT<true>{{}, 5, 0.0}, Vec<2>(0.1, 0.2));
+}
+BENCHMARK(BM_HenonHeilesCouplingTimesZero);
 
 }  // namespace
 

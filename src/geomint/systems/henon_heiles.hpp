@@ -41,18 +41,28 @@ inline double int_pow(double x, int n) {
   return r;
 }
 
-// 004 Figs 3-5: U = (q1^2 + q2^2)/2 + q1^2 q2 - q2^k / k.
-struct HenonHeiles : UnitMassSeparable<2> {
+// 004 Figs 3-5: U = (q1^2 + q2^2)/2 + c q1^2 q2 - q2^k / k, c = 1 in 004. The coupling term
+// c q1^2 q2 is compiled only if Coupling: a scene that sets c = 0 steps a system without it
+// (with_henon_heiles), not one that multiplies it by zero.
+template <bool Coupling = true>
+struct HenonHeilesT : UnitMassSeparable<2> {
   int k = 3;
+  double c = 1.0;  // coefficient of q1^2 q2 (read only if Coupling)
   double U(const Vec<2>& q) const {
-    return 0.5 * q.squaredNorm() + q[0] * q[0] * q[1] - int_pow(q[1], k) / k;
+    if constexpr (Coupling) return 0.5 * q.squaredNorm() + c * q[0] * q[0] * q[1] - int_pow(q[1], k) / k;
+    return 0.5 * q.squaredNorm() - int_pow(q[1], k) / k;
   }
   Vec<2> U_q(const Vec<2>& q) const {
-    return Vec<2>(q[0] + 2 * q[0] * q[1], q[1] + q[0] * q[0] - int_pow(q[1], k - 1));
+    if constexpr (Coupling) return Vec<2>(q[0] + 2 * c * q[0] * q[1], q[1] + c * q[0] * q[0] - int_pow(q[1], k - 1));
+    return Vec<2>(q[0], q[1] - int_pow(q[1], k - 1));
   }
   Mat<2> U_qq(const Vec<2>& q) const {
     Mat<2> J;
-    J << 1 + 2 * q[1], 2 * q[0], 2 * q[0], 1 - (k - 1) * int_pow(q[1], k - 2);
+    if constexpr (Coupling) {
+      J << 1 + 2 * c * q[1], 2 * c * q[0], 2 * c * q[0], 1 - (k - 1) * int_pow(q[1], k - 2);
+    } else {
+      J << 1, 0, 0, 1 - (k - 1) * int_pow(q[1], k - 2);
+    }
     return J;
   }
   Vec<2> U_qq_times(const Vec<2>& q, const Vec<2>& v) const { return U_qq(q) * v; }
@@ -67,5 +77,15 @@ struct HenonHeiles : UnitMassSeparable<2> {
     return k < 5 ? 0.0 : -(k - 1.0) * (k - 2) * (k - 3) * (k - 4) * int_pow(q[1], k - 5) * int_pow(a[1], 5);
   }
 };
+
+using HenonHeiles = HenonHeilesT<true>;
+
+// Calls f with the Henon-Heiles system of exponent k and coupling c, compiled without the
+// coupling term when c = 0.
+template <class F>
+decltype(auto) with_henon_heiles(int k, double c, F&& f) {
+  if (c == 0.0) return f(HenonHeilesT<false>{{}, k, 0.0});
+  return f(HenonHeilesT<true>{{}, k, c});
+}
 
 }  // namespace geomint
