@@ -336,8 +336,7 @@ void run_convergence(Context& ctx) {
   ctx.write("fig9_convergence.csv", conv);
 
   // Orders: least squares on log-log over the points above round-off.
-  const auto floor_at = [](double scale) { return 1e3 * std::numeric_limits<double>::epsilon() * scale; };
-  const double floor = floor_at(std::max(H0, 1.0));
+  const double floor = roundoff_floor(std::max(H0, 1.0));
   Csv order_csv({"name", "order", "log10_c", "r2", "points", "h_min", "h_max"});
   json orders, fits;
   const auto fit = [&](const char* name, const std::vector<double>& err, double fit_floor) {
@@ -346,8 +345,8 @@ void run_convergence(Context& ctx) {
     fits[name] = to_json(f);
     order_csv.row(name, f.order, f.log10_c, f.r2, f.points, f.h_min, f.h_max);
   };
-  fit("ee_decay", ee_decay, floor_at(s.real("decay.y0")));
-  fit("ee_gompertz", ee_gompertz, floor_at(gompertz.equilibrium()));
+  fit("ee_decay", ee_decay, roundoff_floor(s.real("decay.y0")));
+  fit("ee_gompertz", ee_gompertz, roundoff_floor(gompertz.equilibrium()));
   fit("se_energy", se_max, floor);
   fit("se_compensated_energy", comp_max, floor);
   fit("rk4_energy", rk4_max, floor);

@@ -12,6 +12,7 @@
 #include "geomint/systems/harmonic_oscillator.hpp"
 #include "geomint/systems/henon_heiles.hpp"
 #include "geomint/systems/lennard_jones.hpp"
+#include "geomint/systems/unsymmetric_pendulum.hpp"
 #include "geomint/transforms/processing.hpp"
 #include "geomint/transforms/rowlands_processors.hpp"
 

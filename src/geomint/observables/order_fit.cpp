@@ -10,7 +10,7 @@
 
 namespace geomint {
 
-OrderFit fit_order(std::span<const double> h, std::span<const double> err, double roundoff_floor, const char* what) {
+OrderFit fit_order(std::span<const double> h, std::span<const double> err, double min_err, const char* what) {
   if (h.size() != err.size()) throw std::invalid_argument("fit_order: h and err differ in length");
   OrderFit fit;
   fit.used.assign(h.size(), false);
@@ -18,7 +18,7 @@ OrderFit fit_order(std::span<const double> h, std::span<const double> err, doubl
   fit.h_min = std::numeric_limits<double>::infinity();
   fit.h_max = 0;
   for (std::size_t i = 0; i < h.size(); ++i) {
-    if (!(std::isfinite(err[i]) && err[i] > roundoff_floor && h[i] > 0)) continue;
+    if (!(std::isfinite(err[i]) && err[i] > min_err && h[i] > 0)) continue;
     fit.used[i] = true;
     x.push_back(std::log10(h[i]));
     y.push_back(std::log10(err[i]));

@@ -1,5 +1,6 @@
 #pragma once
 // Convergence orders: least-squares slope of log(error) against log(h).
+#include <limits>
 #include <span>
 #include <vector>
 
@@ -16,10 +17,14 @@ struct OrderFit {
   std::vector<bool> used; // per input point: inside the fit?
 };
 
-// Fits over the points whose error is finite and above `roundoff_floor`
+// The round-off floor of an error of a quantity of size `scale`: 1000 ulp. Errors
+// below it are at the round-off plateau and are left out of order fits.
+inline double roundoff_floor(double scale = 1.0) { return 1e3 * std::numeric_limits<double>::epsilon() * scale; }
+
+// Fits over the points whose error is finite and above `min_err`
 // (points at the round-off plateau would flatten the slope). Throws
 // std::invalid_argument if fewer than 3 points remain.
-OrderFit fit_order(std::span<const double> h, std::span<const double> err, double roundoff_floor,
+OrderFit fit_order(std::span<const double> h, std::span<const double> err, double min_err,
                   const char* what = "fit_order");
 
 // The fit as summary.json reports it: order, log10_c, r2, points, h_min, h_max.

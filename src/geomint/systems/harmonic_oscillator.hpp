@@ -55,6 +55,8 @@ struct NonlinearPendulum {
   double U(const Vec<1>& q) const { return -std::cos(q[0]); }
   Vec<1> U_q(const Vec<1>& q) const { return Vec<1>(std::sin(q[0])); }
   Mat<1> U_qq(const Vec<1>& q) const { return Mat<1>::Constant(std::cos(q[0])); }
+  Vec<1> U_qq_times(const Vec<1>& q, const Vec<1>& v) const { return U_qq(q) * v; }
+  Vec<1> force(const Vec<1>& q) const { return -U_q(q); }
 };
 
 }  // namespace geomint

@@ -1,38 +1,13 @@
 #pragma once
-// The test problems of 004 (simplified Takahashi-Imada), unit mass:
-//   the unsymmetric pendulum U = -cos q + 0.2 sin 2q (004 Fig. 2) and the
-//   Henon-Heiles-type potential U = (q1^2 + q2^2)/2 + q1^2 q2 - q2^k/k (004 Figs 3-5, k = 3 and 5).
+// The Henon-Heiles-type potential of 004 (simplified Takahashi-Imada), unit mass:
+//   U = (q1^2 + q2^2)/2 + q1^2 q2 - q2^k/k (004 Figs 3-5, k = 3 and 5).
 #include <cmath>
 
 #include "geomint/core/state.hpp"
+#include "geomint/systems/unit_mass.hpp"
+#include "geomint/systems/unsymmetric_pendulum.hpp"
 
 namespace geomint {
-
-// H = p^2/2 + U(q) with the derivatives the Takahashi-Imada methods need.
-template <int D>
-struct UnitMassSeparable {
-  using State = PhaseState<D>;
-  static constexpr bool separable = true;
-  double mass() const { return 1.0; }
-  Vec<D> inv_mass(const Vec<D>& p) const { return p; }
-  Vec<D> H_p(const Vec<D>&, const Vec<D>& p) const { return p; }
-  Mat<D> H_qp(const Vec<D>&, const Vec<D>&) const { return Mat<D>::Zero(); }
-  Mat<D> H_pp(const Vec<D>&, const Vec<D>&) const { return Mat<D>::Identity(); }
-};
-
-// 004 Fig. 2: U = -cos q + 0.2 sin 2q.
-struct UnsymmetricPendulum : UnitMassSeparable<1> {
-  double U(const Vec<1>& q) const { return -std::cos(q[0]) + 0.2 * std::sin(2 * q[0]); }
-  Vec<1> U_q(const Vec<1>& q) const { return Vec<1>(std::sin(q[0]) + 0.4 * std::cos(2 * q[0])); }
-  Mat<1> U_qq(const Vec<1>& q) const { return Mat<1>::Constant(std::cos(q[0]) - 0.8 * std::sin(2 * q[0])); }
-  Vec<1> U_qq_times(const Vec<1>& q, const Vec<1>& v) const { return U_qq(q) * v; }
-  Vec<1> force(const Vec<1>& q) const { return -U_q(q); }
-  Vec<1> H_q(const Vec<1>& q, const Vec<1>&) const { return U_q(q); }
-  double H(const State& z) const { return 0.5 * z.p.squaredNorm() + U(z.q); }
-  // Higher directional derivatives (one degree of freedom: U^(k)(a^k) = U^(k)(q) a^k).
-  double U4(const Vec<1>& q, const Vec<1>& a) const { return (-std::cos(q[0]) + 3.2 * std::sin(2 * q[0])) * std::pow(a[0], 4); }
-  double U5(const Vec<1>& q, const Vec<1>& a) const { return (std::sin(q[0]) + 6.4 * std::cos(2 * q[0])) * std::pow(a[0], 5); }
-};
 
 // x^n for a small integer n >= 0 (std::pow is slow in the inner loop).
 inline double int_pow(double x, int n) {
