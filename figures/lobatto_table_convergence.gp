@@ -1,11 +1,12 @@
 # Convergence of the Lobatto scheme of Dubois & Rojas-Quintero (2025).
 # Left, Table 1: harmonic oscillator over one period, N steps, h = T/N; maxima over the steps of
 # the absolute errors of p, q and H (Lobatto), of the discrete energy H_d (15) (round-off), and
-# of q for the Simpson scheme and the implicit midpoint rule. Black crosses: the values printed in
+# of q for the methods of the scene key table1.methods (the paper scene: the Simpson scheme and the
+# implicit midpoint rule). Black crosses: the values printed in
 # the paper's Table 1 (summary.json published.*_err_N<N>).
 # Right, beyond the paper: nonlinear Lagrangians (Newton on the internal nodes), phase-space
-# error |z_N − z(t_end)|_2 against an odeint reference: the pendulum L = q̇²/2 + cos q (Lobatto,
-# Simpson, midpoint) and a 2-DOF elastic pendulum (Lobatto).
+# error |z_N − z(t_end)|_2 against an odeint reference: the pendulum L = q̇²/2 + cos q (Lobatto and
+# the methods of nonlinear.methods; the paper scene: Simpson, midpoint) and a 2-DOF elastic pendulum (Lobatto).
 # Dashed: lines with the fitted order of summary.json (orders.*) as slope, drawn through the
 # centroid (in log–log) of the points shown; the fit itself leaves out points within the
 # round-off / reference-accuracy floor (see experiments/lobatto_table).
@@ -22,20 +23,39 @@ eval need_num('Q0', scene_full('nonlinear.pendulum_q0'))
 Z0 = sprintf("(%s, %s, %s, %s)", scene_num('nonlinear.elastic_initial.0.0'), scene_num('nonlinear.elastic_initial.0.1'), \
              scene_num('nonlinear.elastic_initial.0.2'), scene_num('nonlinear.elastic_initial.0.3'))
 
+# the compared methods, by label: Table 1's (scene key table1.methods, columns <label>_q_err) and the
+# nonlinear study's (nonlinear.methods, columns <label>_pendulum_err)
+header_labels(file, suffix) = system(sprintf("head -n 1 '%s' | tr ',' '\\n' | sed -n 's/_%s$//p' | tr '\\n' ' '", file, suffix))
+T1M = header_labels(T1, 'q_err')
+NLM = header_labels(NL, 'pendulum_err')
+ALLM = T1M . NLM
+IDX(m) = sum [i = 1:words(ALLM)] (word(ALLM, i) eq m ? i : 0)
+do for [i = 1:words(ALLM)] {   # styles for methods other than Simpson's and the midpoint rule, and their guides (+ 10)
+    c = word("#009E73 #CC79A7 #56B4E9 #882255 #999999 #000000 #E69F00 #0072B2 #D55E00", (i - 1) % 9 + 1)
+    eval sprintf("set style line %d lc rgb '%s' lw 1.0 pt %d ps 0.7", 60 + i, c, (2 * i) % 14 + 1)
+    eval sprintf("set style line %d lc rgb '%s' lw 0.9 dt (8,4) pt %d ps 0.7", 70 + i, c, (2 * i) % 14 + 1)
+}
+esc(s) = strstrt(s, "_") == 0 ? s : s[1:strstrt(s, "_") - 1] . "\\_" . esc(s[strstrt(s, "_") + 1:])   # (enhanced text)
+MSTYLE(m) = m eq "simpson" ? LS_SIMP : m eq "midpoint" ? LS_MID : 60 + IDX(m)
+MLABEL(m) = m eq "midpoint" ? "implicit midpoint" : esc(m)
+
 # series: name, file, column, summary order key (or "" for none), style, label
-S1 = "p q H Hd simpson midpoint"
-S1F = "p q H simpson midpoint"          # (the series with an order: all but H_d)
-COL1(s)  = s eq "simpson" ? "simpson_q_err" : s eq "midpoint" ? "midpoint_q_err" : s."_err"
+LOB1(s)  = s eq "p" || s eq "q" || s eq "H" || s eq "Hd"           # (the Lobatto series of Table 1)
+S1 = "p q H Hd " . T1M
+S1F = "p q H " . T1M                    # (the series with an order: all but H_d)
+COL1(s)  = LOB1(s) ? s."_err" : s."_q_err"
 ORD1(s)  = s eq "p" ? "lobatto_p" : s eq "q" ? "lobatto_q" : s eq "H" ? "lobatto_H" : s eq "Hd" ? "" : s
-STY1(s)  = s eq "p" ? LS_LOB : s eq "q" ? LS_LOB2 : s eq "H" ? LS_LOB3 : s eq "Hd" ? LS_LOB4 : s eq "simpson" ? LS_SIMP : LS_MID
+STY1(s)  = s eq "p" ? LS_LOB : s eq "q" ? LS_LOB2 : s eq "H" ? LS_LOB3 : s eq "Hd" ? LS_LOB4 : MSTYLE(s)
 LAB1(s)  = s eq "p" ? "Lobatto, momentum p" : s eq "q" ? "Lobatto, state q" : s eq "H" ? "Lobatto, energy H" \
-         : s eq "Hd" ? "Lobatto, discrete energy H_d (15)" : s eq "simpson" ? "Simpson [2], state q" : "implicit midpoint, state q"
-S2 = "pendulum_err elastic_err simpson_pendulum_err midpoint_pendulum_err"
+         : s eq "Hd" ? "Lobatto, discrete energy H_d (15)" : s eq "simpson" ? "Simpson [2], state q" : MLABEL(s).", state q"
+S2 = "pendulum_err elastic_err"
+do for [m in NLM] { S2 = S2 . " " . m . "_pendulum_err" }
+MOF(s)   = s[1:strlen(s) - strlen("_pendulum_err")]           # (the method of a compared series)
 ORD2(s)  = s eq "pendulum_err" ? "lobatto_nonlinear_pendulum" : s eq "elastic_err" ? "lobatto_elastic_pendulum" \
-         : s eq "simpson_pendulum_err" ? "simpson_nonlinear_pendulum" : "midpoint_nonlinear_pendulum"
-STY2(s)  = s eq "pendulum_err" ? LS_LOB : s eq "elastic_err" ? LS_LOB2 : s eq "simpson_pendulum_err" ? LS_SIMP : LS_MID
+         : MOF(s)."_nonlinear_pendulum"
+STY2(s)  = s eq "pendulum_err" ? LS_LOB : s eq "elastic_err" ? LS_LOB2 : MSTYLE(MOF(s))
 LAB2(s)  = s eq "pendulum_err" ? "Lobatto, pendulum" : s eq "elastic_err" ? "Lobatto, elastic pendulum (2 DOF)" \
-         : s eq "simpson_pendulum_err" ? "Simpson, pendulum" : "implicit midpoint, pendulum"
+         : MOF(s) eq "simpson" ? "Simpson, pendulum" : MLABEL(MOF(s)).", pendulum"
 ORDER(key) = (o = summary_num('orders.'.key), o eq "?" ? NaN : real(o))
 ORDTXT(key) = key eq "" ? "round-off, no order" : (o = summary_num('orders.'.key), o eq "?" ? "order: not in summary.json" : sprintf("order %.2f", real(o)))
 

@@ -4,6 +4,7 @@
 # midpoint rule for comparison (as the paper's text says). q (left) and p (right) are drawn in
 # separate panels, p unscaled (the paper's Fig. 1 rescales p to share one axis with q).
 # Lines between the markers only guide the eye: a scheme gives values at t_j = j h alone.
+# The methods are those of the scene key figure1.methods (the columns q_<label>, p_<label>).
 # Input: fig1_N<N>.csv (N from the scene key figure1.meshes), fig1_exact.csv,
 # run.json (oscillator parameters, the two N).
 if (!exists("results")) results = 'results/lobatto_table'
@@ -19,9 +20,17 @@ T = 2 * pi / OMEGA
 EXACT = csv('fig1_exact.csv')
 FIG(n) = csv(sprintf('fig1_N%d.csv', n))
 
-METHODS = "lobatto simpson midpoint"
-LABEL(m) = m eq "lobatto" ? "Lobatto (13)–(14)" : m eq "simpson" ? "Simpson [2]" : "implicit midpoint"
-STYLE(m) = m eq "lobatto" ? LS_LOB : m eq "simpson" ? LS_SIMP : LS_MID
+# the methods of the scene key figure1.methods, by label: the columns q_<label> of the CSV
+METHODS = system(sprintf("head -n 1 '%s' | tr ',' '\\n' | sed -n 's/^q_//p' | tr '\\n' ' '", FIG(N1)))
+if (words(METHODS) == 0) { exit error sprintf("%s: no column q_<method>", FIG(N1)) }
+IDX(m) = sum [i = 1:words(METHODS)] (word(METHODS, i) eq m ? i : 0)
+do for [i = 1:words(METHODS)] {   # styles for methods other than the paper's three
+    eval sprintf("set style line %d lc rgb '%s' lw 1.0 pt %d ps 0.7", 60 + i, word("#009E73 #CC79A7 #56B4E9 #882255 #999999 #000000 #E69F00 #0072B2 #D55E00", (i - 1) % 9 + 1), (2 * i) % 14 + 1)
+}
+esc(s) = strstrt(s, "_") == 0 ? s : s[1:strstrt(s, "_") - 1] . "\\_" . esc(s[strstrt(s, "_") + 1:])   # (enhanced text)
+LABEL(m) = m eq "lobatto" ? "Lobatto (13)–(14)" : m eq "simpson" ? "Simpson [2]" : m eq "midpoint" ? "implicit midpoint" : esc(m)
+SHORT(m) = m eq "lobatto" ? "Lobatto" : m eq "simpson" ? "Simpson" : esc(m)
+STYLE(m) = m eq "lobatto" ? LS_LOB : m eq "simpson" ? LS_SIMP : m eq "midpoint" ? LS_MID : 60 + IDX(m)
 
 # the largest error over the steps, per N, method and variable: ERR_<N>_<var>_<method>
 do for [n in sprintf("%d %d", N1, N2)] {
@@ -32,9 +41,15 @@ do for [n in sprintf("%d %d", N1, N2)] {
         eval sprintf("ERR_%s_p_%s = STATS_max", n, m)
     }
 }
-ERRS(n, v) = sprintf("max_j error: Lobatto %.1e, Simpson %.1e, midpoint %.1e", \
-                     value(sprintf("ERR_%d_%s_lobatto", n, v)), value(sprintf("ERR_%d_%s_simpson", n, v)), \
-                     value(sprintf("ERR_%d_%s_midpoint", n, v)))
+# "max_j error: Lobatto 1.2e-03, Simpson ..." per N and variable: ERRS_<N>_<var>
+do for [n in sprintf("%d %d", N1, N2)] {
+    do for [v in "q p"] {
+        e = ""
+        do for [m in METHODS] { e = e . sprintf("%s %s %.1e", e eq "" ? "" : ",", SHORT(m), value(sprintf("ERR_%s_%s_%s", n, v, m))) }
+        eval sprintf("ERRS_%s_%s = 'max_j error:%s'", n, v, e)
+    }
+}
+ERRS(n, v) = value(sprintf("ERRS_%d_%s", n, v))
 
 do for [fmt in FORMATS] {
     eval term(fmt, 'lobatto_table_fig1', 17, 14)

@@ -2,7 +2,8 @@
 # harmonic oscillator: spectral radius ρ of the one-step map Φ against h ω, drawn as ρ − 1 on a
 # logarithmic axis; ρ − 1 ≤ 10^{−14} is drawn at 10^{−14}: there the eigenvalues have modulus 1 to
 # round-off (the scan's ρ − 1 scatters up to a few 10^{−15} where the map is stable),
-# with the Simpson scheme for comparison. Shaded: the intervals where the Lobatto scan finds
+# with the methods of the scene key stability.methods for comparison (the paper scene: the Simpson
+# scheme; a processed method by its kernel). Shaded: the intervals where the Lobatto scan finds
 # ρ ≤ 1 + 10^{−12} (summary.json reproduced.stable_set_h_omega, grid points of the scan).
 # Vertical lines: the computed first loss of stability (summary.json reproduced.stability_bound,
 # to compare with the paper's bound (10), √(42 − 6√29)); h ω = √10 and √30, where δ of eq. (7)
@@ -22,8 +23,24 @@ clip(r) = r - 1 > FLOOR ? r - 1 : FLOOR
 stats ST using "h_omega" nooutput
 XMIN = STATS_min; XMAX = STATS_max
 NPTS = STATS_records
-stats ST using (clip(column("spectral_radius"))):(clip(column("spectral_radius_simpson"))) nooutput
-YMAX = STATS_max_x > STATS_max_y ? STATS_max_x : STATS_max_y
+# the methods scanned with Lobatto (scene key stability.methods), by label: the columns spectral_radius_<label>
+METHODS = system(sprintf("head -n 1 '%s' | tr ',' '\\n' | sed -n 's/^spectral_radius_//p' | tr '\\n' ' '", ST))
+IDX(m) = sum [i = 1:words(METHODS)] (word(METHODS, i) eq m ? i : 0)
+do for [i = 1:words(METHODS)] {   # styles for methods other than Simpson's
+    eval sprintf("set style line %d lc rgb '%s' lw 1.0", 60 + i, word("#009E73 #CC79A7 #D55E00 #882255 #999999 #000000 #56B4E9 #E69F00 #0072B2", (i - 1) % 9 + 1))
+}
+esc(s) = strstrt(s, "_") == 0 ? s : s[1:strstrt(s, "_") - 1] . "\\_" . esc(s[strstrt(s, "_") + 1:])   # (enhanced text)
+LABEL(m) = m eq "simpson" ? "Simpson [2]" : esc(m)
+STYLE(m) = m eq "simpson" ? LS_SIMP : 60 + IDX(m)
+# the compared curves and their key entries as plot clauses (none without compared methods)
+COMPARED = words(METHODS) == 0 ? "" : 'for [m in METHODS] ST using "h_omega":(clip(column("spectral_radius_".m))) with lines ls STYLE(m), '
+COMPARED_KEY = words(METHODS) == 0 ? "" : 'for [m in METHODS] keyentry with lines ls STYLE(m) title LABEL(m), '
+stats ST using (clip(column("spectral_radius"))) nooutput
+YMAX = STATS_max
+do for [m in METHODS] {
+    stats ST using (clip(column("spectral_radius_".m))) nooutput
+    YMAX = STATS_max > YMAX ? STATS_max : YMAX
+}
 
 # the stable intervals of the scan, from summary.json: SL_k, SR_k for k = 1 .. NS
 NS = 0
@@ -76,8 +93,7 @@ do for [fmt in FORMATS] {
         set arrow i from LX(i), graph 0 to LX(i), graph 1 nohead ls 90 + LK(i) front
         set label i LN(i) at LX(i), graph 0.985 right rotate by 90 offset LO(i), 0 front font ",8" tc rgb (LK(i) == 3 ? '#555555' : '#000000')
     }
-    plot ST using "h_omega":(clip(column("spectral_radius_simpson"))) with lines ls LS_SIMP, \
-         ST using "h_omega":(clip(column("spectral_radius"))) with lines ls LS_LOB lw 1.4
+    plot @COMPARED ST using "h_omega":(clip(column("spectral_radius"))) with lines ls LS_LOB lw 1.4
 
     unset object; unset arrow; unset label
     set lmargin at screen 0.02; set rmargin at screen 0.98
@@ -87,7 +103,7 @@ do for [fmt in FORMATS] {
     set key center center horizontal Left reverse maxrows 3 samplen 3 width -2
     plot 2 with lines notitle, \
          keyentry with lines ls LS_LOB lw 1.4 title "Lobatto (13)–(14)", \
-         keyentry with lines ls LS_SIMP title "Simpson [2]", \
+         @COMPARED_KEY \
          keyentry with boxes fillcolor rgb C_STABLE fillstyle solid 1.0 noborder title "Lobatto stable (ρ ≤ 1 + 10^{-12})", \
          for [k = 1:3] keyentry with lines ls 90 + k title (k == 1 ? "computed first bound ≈ √(42−6√29), eq. (10)" \
                                                              : k == 2 ? "h ω = √10, √30: δ = 0, eq. (7)" \

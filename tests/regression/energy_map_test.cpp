@@ -62,8 +62,8 @@ TEST(EnergyMap, CartesianAngularMomentumIsKeptToRoundoff) {
 }
 
 TEST(EnergyMap, ResumeGivesTheSameMap) {
-  // Stop after one round of batches, resume, and compare with an uninterrupted run.
-  const std::string bin = std::string(GEOMINT_BIN_DIR) + "/energy_map --quick --set grid.nx=48 --set grid.ny=48 ";
+  // Stop after one round of batches, resume, and compare with an uninterrupted run (the map study alone).
+  const std::string bin = std::string(GEOMINT_BIN_DIR) + "/energy_map --quick --study map --set grid.nx=48 --set grid.ny=48 ";
   const fs::path a = dir.parent_path() / "energy_map-resume", b = dir.parent_path() / "energy_map-straight";
   fs::remove_all(a), fs::remove_all(b);
   const int stopped = std::system((bin + "--set checkpoint.stop_after=1 --out " + a.string() + " 2>/dev/null").c_str());
