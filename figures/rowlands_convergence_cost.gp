@@ -1,8 +1,10 @@
 # What the accuracy of Fig. 4 (Takács & Fülöp (2025), Sec. 3.3) costs (work-precision):
 # phase-space error at t_max of Störmer–Verlet, of the Rowlands method with either processors, and
 # of three Boost.Odeint steppers (classical RK4, McLachlan's fourth-order symplectic RKN SB3a,
-# velocity Verlet = Störmer–Verlet), against the wall time of one run (left) and against the
-# number of force evaluations in one run (right), on the planar elastic pendulum.
+# velocity Verlet = Störmer–Verlet), and of Forest–Ruth (the standard fourth-order composition,
+# 3 force evaluations per step), against the wall time of one run (left) and against the number
+# of force evaluations in one run (right), on the planar elastic pendulum. The methods are those
+# of timing.csv (the scene's timing.methods, by registry label): ours, then odeint's, any others after.
 # Input: timing.csv (one row per method and step size h; one run = pre- and postprocessing once),
 # run.json (pendulum parameters, initial condition and repetitions, for the title).
 if (!exists("results")) results = 'results/rowlands_convergence'
@@ -11,15 +13,27 @@ set encoding utf8    # (so that the key width counts characters, not bytes)
 TIMING = csv('timing.csv')
 stats TIMING using (column("h") * column("steps")) nooutput
 T = STATS_max
-METHODS = "sv rowlands rowlands_cheap odeint_velocity_verlet odeint_rkn_sb3a odeint_rk4"   # (key: ours | odeint)
+# the methods of timing.csv (column "method", registry labels), in the key's order: ours | odeint | others
+CSV_METHODS = system(sprintf("awk -F, 'NR > 1 && !seen[$1]++ { printf \"%%s \", $1 }' '%s'", TIMING))
+PREFERRED = "sv rowlands rowlands_cheap forest_ruth odeint_velocity_verlet odeint_rkn_sb3a odeint_rk4"
+in_list(list, w) = strstrt(" ".list." ", " ".w." ") > 0
+METHODS = ""
+do for [m in PREFERRED] { if (in_list(CSV_METHODS, m)) { METHODS = METHODS.m." " } }
+do for [m in CSV_METHODS] { if (!in_list(PREFERRED, m)) { METHODS = METHODS.m." " } }
+nosub(s) = (_u = strstrt(s, "_")) ? s[1:_u-1]." ".nosub(s[_u+1:]) : s  # (a label as key text: no subscripts)
 LABEL(m) = m eq "sv"             ? "Störmer–Verlet (26)–(28)" \
          : m eq "rowlands"       ? "Rowlands, processors (32)–(33), h²/12" \
          : m eq "rowlands_cheap" ? "Rowlands, cheap processors (34)–(37)" \
+         : m eq "forest_ruth"    ? "Forest–Ruth, order 4 (3 forces per step)" \
          : m eq "odeint_rk4"     ? "odeint: classical RK4" \
          : m eq "odeint_rkn_sb3a" ? "odeint: symplectic RKN SB3a, order 4" \
-         : m eq "odeint_velocity_verlet" ? "odeint: velocity Verlet (= Störmer–Verlet)" : m
+         : m eq "odeint_velocity_verlet" ? "odeint: velocity Verlet (= Störmer–Verlet)" : nosub(m)
+# Forest-Ruth and any further method: black (crosses), grey (stars)
+LS_FR    = 28; set style line LS_FR    lc rgb '#000000' lw 1.0 pt 2 ps 0.75
+LS_OTHER = 29; set style line LS_OTHER lc rgb '#777777' lw 1.0 pt 3 ps 0.75
 STYLE(m) = m eq "sv" ? LS_SV : m eq "rowlands" ? LS_ROW : m eq "rowlands_cheap" ? LS_ROWCH \
-         : m eq "odeint_rk4" ? LS_RK4 : m eq "odeint_rkn_sb3a" ? LS_RKN : LS_VV
+         : m eq "forest_ruth" ? LS_FR : m eq "odeint_rk4" ? LS_RK4 : m eq "odeint_rkn_sb3a" ? LS_RKN \
+         : m eq "odeint_velocity_verlet" ? LS_VV : LS_OTHER
 # the rows of each method in a datablock $T_<method>, columns: wall_s, force_evals, phase_err
 do for [m in METHODS] {
     eval sprintf("set table $T_%s separator comma", m)

@@ -2,7 +2,10 @@
 # Rowlands method (kernel (31) with processors) on the planar elastic pendulum in Cartesian
 # coordinates (App. A): energy error, eq. (50), against h (left); phase-space error at t_max (right).
 # Besides the paper's two methods: the cheap processors (34)–(37), the kernel without processing,
-# and the processors (32)–(33) with the coefficient h²/24 as printed (which give only order 2).
+# the processors (32)–(33) with the coefficient h²/24 as printed (which give only order 2), and
+# Forest–Ruth, the standard fourth-order composition of three Störmer–Verlet steps (3 force
+# evaluations per step), the order-4 peer of the processed method. The methods are those of the
+# CSV (the scene's `methods`, by registry label): the paper's in a fixed order, any others after.
 # Dashed lines: least-squares fits from orders.csv, drawn over the h range they were fitted on.
 # Input: fig4_convergence.csv, orders.csv (the rows of initial condition `ic`, default 0, the one
 # the paper scene draws), run.json (pendulum parameters and initial condition, for the title).
@@ -13,15 +16,29 @@ if (!exists("ic")) ic = 0
 CONV = csv('fig4_convergence.csv')
 sel(col) = (column("initial") == ic) ? column(col) : NaN     # the rows of initial condition ic
 
-METHODS = "sv kernel rowlands_printed rowlands rowlands_cheap"        # (column prefixes)
+# the methods: the column prefixes of the *_phase columns (registry labels)
+CSV_METHODS = system(sprintf("head -n 1 '%s' | tr ',' '\n' | sed -n 's/_phase$//p' | tr '\n' ' '", CONV))
+PREFERRED = "sv kernel rowlands_printed rowlands rowlands_cheap forest_ruth"   # (the key's order)
+in_list(list, w) = strstrt(" ".list." ", " ".w." ") > 0
+METHODS = ""
+do for [m in PREFERRED] { if (in_list(CSV_METHODS, m)) { METHODS = METHODS.m." " } }
+do for [m in CSV_METHODS] { if (!in_list(PREFERRED, m)) { METHODS = METHODS.m." " } }
 FIT(m)   = m eq "kernel" ? "kernel_unprocessed" : m                   # (name prefix in orders.csv)
+nosub(s) = (_u = strstrt(s, "_")) ? s[1:_u-1]." ".nosub(s[_u+1:]) : s  # (a label as key text: no subscripts)
 LABEL(m) = m eq "sv"       ? "Störmer–Verlet (26)–(28)" \
          : m eq "rowlands" ? "Rowlands, processors (32)–(33), h²/12" \
          : m eq "rowlands_cheap" ? "Rowlands, cheap processors (34)–(37)" \
          : m eq "kernel"   ? "Rowlands kernel (31) alone" \
-         : "(32)–(33) as printed, h^2/24"
+         : m eq "rowlands_printed" ? "(32)–(33) as printed, h^2/24" \
+         : m eq "forest_ruth" ? "Forest–Ruth (3 forces per step)" : nosub(m)
+# Forest-Ruth and any further method: black (cross), grey (star); fits dotted (+ 10, as in common.gp)
+C_FR = '#000000'
+LS_FR    = 28; set style line LS_FR    lc rgb C_FR lw 1.0 pt 2 ps 0.75
+LS_OTHER = 29; set style line LS_OTHER lc rgb '#777777' lw 1.0 pt 3 ps 0.75
+set style line LS_FR + 10    lc rgb C_FR lw 0.9 dt (2,3) pt 2 ps 0.75
+set style line LS_OTHER + 10 lc rgb '#777777' lw 0.9 dt (2,3) pt 3 ps 0.75
 STYLE(m) = m eq "sv" ? LS_SV : m eq "rowlands" ? LS_ROW : m eq "rowlands_cheap" ? LS_ROWCH \
-         : m eq "kernel" ? LS_KERNEL : LS_PRINTED
+         : m eq "kernel" ? LS_KERNEL : m eq "rowlands_printed" ? LS_PRINTED : m eq "forest_ruth" ? LS_FR : LS_OTHER
 FITSTYLE(m) = STYLE(m) + 10
 
 # fitted orders of initial condition ic: eval fit_at('sv_energy') defines sv_energy_order, _c,
@@ -44,7 +61,7 @@ Z0 = sprintf("initial condition (x, y, p_x, p_y) = (%s, %s, %s, %s)", scene_num(
              scene_num(sprintf('initial.%d.1', ic)), scene_num(sprintf('initial.%d.2', ic)), scene_num(sprintf('initial.%d.3', ic)))
 
 do for [fmt in FORMATS] {
-    eval term(fmt, 'rowlands_convergence_fig4', 17, 12)
+    eval term(fmt, 'rowlands_convergence_fig4', 17, 12 + 0.5 * (words(METHODS) - 5))   # (room for the key)
     set multiplot layout 1,2 title sprintf("{/:Bold Fig. 4:} planar elastic pendulum, Cartesian coordinates: %s\n%s; dashed (dotted) lines: least-squares fits over the h range fitted", PARAMS, Z0)
     set format x "%g"
     eval LOGTICS("1 2 5")  # the h range may span less than a decade
@@ -52,7 +69,7 @@ do for [fmt in FORMATS] {
     set format y LOGFMT
     set xlabel "step size h"
     set key outside below center vertical Left reverse samplen 3 width -6
-    set bmargin 9.5   # same for both panels, so that their axes line up
+    set bmargin 3.5 + 1.2 * words(METHODS)   # same for both panels, so that their axes line up
     set autoscale xfix
     set offsets graph 0.04, graph 0.04, 0, 0
 

@@ -1,22 +1,23 @@
 // rowlands_convergence: 000 (Takacs & Fulop 2025) Fig. 4 -- Stormer-Verlet
 // (26)-(28) against the Rowlands method (30)-(37) on the elastic pendulum
 // (73): energy error (50) and phase-space error at t_max against h, for
-// several initial conditions; and what the accuracy costs, against odeint's
-// own steppers.
+// several initial conditions (study `convergence`); and what the accuracy
+// costs, against odeint's own steppers (study `timing`). The methods are
+// named by the scene (any registered method that steps the pendulum); CSV
+// columns and summary keys use their registry labels.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
-#include <boost/numeric/odeint.hpp>
-
 #include "geomint/integrators/integrate.hpp"
-#include "geomint/integrators/rowlands.hpp"
-#include "geomint/integrators/stormer_verlet.hpp"
+#include "geomint/methods/methods.hpp"
+#include "geomint/methods/registry.hpp"
 #include "geomint/observables/error_norms.hpp"
 #include "geomint/observables/order_fit.hpp"
 #include "geomint/reference/odeint_reference.hpp"
@@ -25,63 +26,30 @@
 #include "geomint/sweep/parallel_map.hpp"
 #include "geomint/systems/counting.hpp"
 #include "geomint/systems/elastic_pendulum.hpp"
-#include "geomint/transforms/processing.hpp"
-#include "geomint/transforms/rowlands_processors.hpp"
 
 using namespace geomint;
 using json = nlohmann::ordered_json;
-namespace odeint = boost::numeric::odeint;
 
 namespace {
 
 using State = PhaseState<2>;
 
-// Methods of the convergence study (processed methods on (q, p)).
-const std::vector<std::string> kMethods = {"sv", "rowlands", "rowlands_cheap", "kernel", "rowlands_printed"};
-// Methods of the cost study: ours and odeint's.
-const std::vector<std::string> kCostMethods = {"sv",         "rowlands",       "rowlands_cheap",
-                                               "odeint_rk4", "odeint_rkn_sb3a", "odeint_velocity_verlet"};
-
-template <class Sys, class F>
-auto with_method(const std::string& name, const Sys& sys, F&& f) {
-  if (name == "sv") return f(stormer_verlet_method(sys));
-  if (name == "rowlands") return f(rowlands_method(sys));
-  if (name == "rowlands_cheap") return f(rowlands_cheap_method(sys));
-  if (name == "kernel") return f(rowlands_kernel_method(sys));
-  if (name == "rowlands_printed") return f(rowlands_method(sys, rowlands_processor_coefficient_printed));
-  throw std::logic_error("unknown processed method " + name);
+// The label of a method (CSV columns, summary keys) and the prefix of its orders.
+std::string label_of(const std::string& method) { return std::string(method_info(method).label); }
+std::string order_name(const std::string& method) {
+  const std::string label = label_of(method);
+  return label == "kernel" ? "kernel_unprocessed" : label;  // (the kernel's orders keep their published key)
 }
 
-// One of odeint's steppers, n steps of h from z0 (t_j = j h).
-template <class Sys>
-State odeint_run(const std::string& name, const Sys& sys, const State& z0, double h, std::int64_t n) {
-  using Arr = std::array<double, 2>;
-  const auto time = [h](std::int64_t j) { return static_cast<double>(j) * h; };
-  if (name == "odeint_rk4") {
-    odeint::runge_kutta4<OdeintState<2>> stepper;
-    auto x = to_odeint<2>(z0);
-    const auto rhs = odeint_rhs(sys);
-    for (std::int64_t j = 0; j < n; ++j) stepper.do_step(rhs, x, time(j), h);
-    return from_odeint<2>(x);
+// What the scene may name: every registered method that steps the (separable)
+// elastic pendulum, by name or label.
+std::vector<std::string> method_choices() {
+  std::vector<std::string> out;
+  for (const auto& name : methods_for<Counting<ElasticPendulumWithGravity>>()) {
+    out.push_back(name);
+    if (label_of(name) != name) out.push_back(label_of(name));
   }
-  const auto arr = [](const Vec<2>& v) { return Arr{v[0], v[1]}; };
-  const auto vec = [](const Arr& a) { return Vec<2>(a[0], a[1]); };
-  if (name == "odeint_rkn_sb3a") {  // separable: dq/dt = M^{-1} p, dp/dt = -U_q(q)
-    odeint::symplectic_rkn_sb3a_mclachlan<Arr> stepper;
-    auto x = std::make_pair(arr(z0.q), arr(z0.p));
-    const auto dq = [&](const Arr& p, Arr& dqdt) { dqdt = arr(sys.inv_mass(vec(p))); };
-    const auto dp = [&](const Arr& q, Arr& dpdt) { dpdt = arr(sys.force(vec(q))); };
-    for (std::int64_t j = 0; j < n; ++j) stepper.do_step(std::make_pair(dq, dp), x, time(j), h);
-    return make_state<2>(vec(x.first), vec(x.second));
-  }
-  if (name == "odeint_velocity_verlet") {  // x'' = a(x) on (x, v), v = M^{-1} p
-    odeint::velocity_verlet<Arr> stepper;
-    auto x = std::make_pair(arr(z0.q), arr(sys.inv_mass(z0.p)));
-    const auto acc = [&](const Arr& q, const Arr&, Arr& a, double) { a = arr(sys.inv_mass(sys.force(vec(q)))); };
-    for (std::int64_t j = 0; j < n; ++j) stepper.do_step(acc, x, time(j), h);
-    return make_state<2>(vec(x.first), sys.mass_times(vec(x.second)));
-  }
-  throw std::logic_error("unknown odeint method " + name);
+  return out;
 }
 
 struct Errors {
@@ -105,40 +73,60 @@ Errors convergence_run(const std::string& method, const Sys& sys, const State& z
   return e;
 }
 
-// Final-only run (eq. (23)) of any method of the cost study.
-template <class Sys>
-State final_run(const std::string& method, const Sys& sys, const State& z0, double h, std::int64_t n) {
-  if (method.starts_with("odeint_")) return odeint_run(method, sys, z0, h, n);
-  return with_method(method, sys, [&](const auto& m) { return integrate_processed(m, z0, h, n); });
-}
-
 State state_of(const std::vector<double>& row) { return make_state<2>(Vec<2>(row[0], row[1]), Vec<2>(row[2], row[3])); }
 
+ElasticPendulumParams pendulum_of(const Scene& s) {
+  return {s.real("pendulum.l"), s.real("pendulum.m"), s.real("pendulum.k"), s.real("pendulum.g")};
+}
+
 Schema schema() {
+  const auto choices = method_choices();
   Schema s;
   s.real("pendulum.l", positive(), "relaxed spring length l (000 eq. (73))")
       .real("pendulum.m", positive(), "mass m")
       .real("pendulum.k", positive(), "spring stiffness k")
       .real("pendulum.g", non_negative(), "gravitational acceleration g (0: no gravity term)")
       .real_rows("initial", 4, any_finite(), 1,
-                 "initial conditions [x, y, px, py]; the first is drawn in Fig. 4, orders are fitted for each")
+                 "initial conditions [x, y, px, py]; the first is drawn in Fig. 4 and timed, orders are fitted for each")
       .real("t_end", positive(), "t_max: end of every run (000 Fig. 4: 4)")
-      .reals("h", positive(), 3, "step sizes; each divides t_end and h sqrt(k/m) < 2")
-      .texts("methods", kMethods, 1, "methods of the convergence study")
+      .reals("h", positive(), 3,
+             "step sizes; each divides t_end, and h sqrt(k/m) is below the oscillatory bound of every named method")
+      .texts("methods", choices, 1, "methods of the convergence study (registry names or labels)")
       .real("reference.rtol", positive(), "relative tolerance of the odeint Bulirsch-Stoer reference")
       .real("reference.atol", positive(), "absolute tolerance of the odeint Bulirsch-Stoer reference")
-      .texts("timing.methods", kCostMethods, 1, "methods of the cost study")
+      .texts("timing.methods", choices, 1, "methods of the cost study (registry names or labels)")
       .integer("timing.repeats", at_least(1), "timed repetitions per run (the median is reported)");
   return s;
 }
 
-void validate(const Scene& s) {
-  const double omega = std::sqrt(s.real("pendulum.k") / s.real("pendulum.m"));
+// The methods named under `key`: each once, each able to step the pendulum,
+// and every h sqrt(k/m) below each one's oscillatory bound (the registry's).
+void check_methods(const Scene& s, const char* key) {
+  const auto methods = s.texts(key);
+  const ElasticPendulumParams p = pendulum_of(s);
+  const double omega = std::sqrt(p.k / p.m);
+  std::vector<std::string> labels;
+  for (const auto& m : methods) {
+    if (std::find(labels.begin(), labels.end(), label_of(m)) != labels.end())
+      s.reject(key, "each method once (" + m + " is named twice)");
+    labels.push_back(label_of(m));
+    try {
+      with_elastic_pendulum(p, [&](const auto& sys) { return with_method(m, sys, [](const auto&) { return 0; }); });
+    } catch (const std::invalid_argument& e) {
+      s.reject(key, e.what());
+    }
+    const double bound = method_info(m).oscillatory_bound;  // NaN: not declared, no check
+    if (bound == 0.0) s.reject(key, m + " is unstable on the oscillator for every h > 0");
+    for (double h : s.reals("h"))
+      if (!std::isnan(bound) && !(h * omega < bound))
+        s.reject("h", m + " is unstable for h sqrt(k/m) >= " + format_double(bound) + ", i.e. h >= " +
+                          format_double(bound / omega) + " (named in " + key + ")");
+  }
+}
+
+void check_common(const Scene& s) {
   const double t_end = s.real("t_end");
   for (double h : s.reals("h")) {
-    if (!(h * omega < stormer_verlet_info.oscillatory_bound))
-      s.reject("h", "Stormer-Verlet is unstable for h sqrt(k/m) >= 2, i.e. h >= " +
-                        format_double(stormer_verlet_info.oscillatory_bound / omega));
     const double n = static_cast<double>(steps_to(t_end, h));
     if (n < 1 || std::abs(n * h - t_end) > 1e-9 * t_end) s.reject("h", "each h must divide t_end = " + format_double(t_end));
   }
@@ -146,17 +134,20 @@ void validate(const Scene& s) {
     if (std::hypot(row[0], row[1]) == 0.0) s.reject("initial", "the spring force is singular at x = y = 0");
 }
 
+// ---- Fig. 4: convergence of every named method, for every initial condition ----
+
 template <class Sys>
-void run_with(Context& ctx, const Sys& sys) {
+void convergence_with(Context& ctx, const Sys& sys) {
   const Scene& s = ctx.scene;
   const auto hs = s.reals("h");
   const auto initial = s.real_rows("initial");
   const auto methods = s.texts("methods");
   const double t_end = s.real("t_end"), rtol = s.real("reference.rtol"), atol = s.real("reference.atol");
-  json published = {{"sv_energy", 2.0}, {"sv_phase", 2.0},   // Fig. 4
-                     {"rowlands_energy", 4.0}, {"rowlands_phase", 4.0},
-                     {"rowlands_cheap_phase", 4.0}};         // Sec. 3.3: the cheap processors keep order 4
-  json reproduced, orders, fits, timing;
+  const auto order_of = [](const char* m) { return static_cast<double>(method_info(m).order); };
+  const json published = {{"sv_energy", order_of("stormer_verlet")}, {"sv_phase", order_of("stormer_verlet")},  // Fig. 4
+                          {"rowlands_energy", order_of("rowlands")}, {"rowlands_phase", order_of("rowlands")},
+                          {"rowlands_cheap_phase", order_of("rowlands_cheap")}};  // Sec. 3.3: the cheap processors keep order 4
+  json reproduced, fits;
 
   // References, one per initial condition, and their self-check at 100x tighter tolerances.
   ctx.progress("references (odeint Bulirsch-Stoer)");
@@ -191,7 +182,7 @@ void run_with(Context& ctx, const Sys& sys) {
   });
   std::vector<std::string> columns = {"initial", "h", "steps"};
   for (const auto& m : methods)
-    for (const char* q : {"_energy_rms", "_energy_max", "_phase", "_evals"}) columns.push_back(m + q);
+    for (const char* q : {"_energy_rms", "_energy_max", "_phase", "_evals"}) columns.push_back(label_of(m) + q);
   Csv conv(columns);
   for (std::size_t task = 0; task < runs.size(); ++task) {
     conv << static_cast<std::int64_t>(task / nh) << hs[task % nh] << steps_to(t_end, hs[task % nh]);
@@ -209,7 +200,7 @@ void run_with(Context& ctx, const Sys& sys) {
   for (std::size_t i = 0; i < initial.size(); ++i) {
     json o;
     for (std::size_t k = 0; k < methods.size(); ++k) {
-      const std::string name = methods[k] == "kernel" ? "kernel_unprocessed" : methods[k];
+      const std::string name = order_name(methods[k]);
       std::vector<double> rms, mx, ph;
       for (std::size_t j = 0; j < nh; ++j) {
         const Errors& e = runs[i * nh + j][k];
@@ -219,7 +210,14 @@ void run_with(Context& ctx, const Sys& sys) {
       for (const auto& [suffix, err, floor] : {std::tuple{"_energy", &rms, energy_floor * std::max(H0, 1.0)},
                                                std::tuple{"_energy_max", &mx, energy_floor * std::max(H0, 1.0)},
                                                std::tuple{"_phase", &ph, phase_floor}}) {
-        const OrderFit f = fit_order(hs, *err, floor);
+        const OrderFit f = [&] {
+          try {
+            return fit_order(hs, *err, floor, (name + suffix).c_str());
+          } catch (const std::invalid_argument& e) {
+            throw std::runtime_error(std::string(e.what()) + " (initial condition " + std::to_string(i) + ", floor " +
+                                     format_double(floor) + ": the errors reach round-off or the reference's accuracy there; add larger h)");
+          }
+        }();
         o[name + suffix] = f.order;
         if (i == 0) fits[name + suffix] = to_json(f);
         order_csv.row(static_cast<std::int64_t>(i), name + suffix, f.order, f.log10_c, f.r2, f.points, f.h_min, f.h_max);
@@ -229,71 +227,111 @@ void run_with(Context& ctx, const Sys& sys) {
     }
     by_initial.push_back(o);
   }
-  orders = by_initial[0];
   ctx.write("orders.csv", order_csv);
   reproduced["reference_self_check"] = self_check;
   reproduced["reference_margin"] = min_phase / self_check;  // must be >= 100 (checked by the tests)
 
-  // What the accuracy costs: median wall time of each method from initial[0]
-  // to t_end (pre once, post once, eq. (23)); force evaluations and phase
-  // errors from separate counting runs.
-  ctx.progress("cost: timing");
-  const auto cost_methods = s.texts("timing.methods");
-  const int repeats = static_cast<int>(s.integer("timing.repeats"));
-  const State z0 = state_of(initial[0]);
-  struct Count {
-    std::int64_t evals = 0;
-    double phase = 0;
-  };
-  const auto counts = parallel_map(cost_methods.size() * nh, [&](std::size_t task) {
-    Count c;
-    const Counting<Sys> counted{sys, &c.evals};
-    const double h = hs[task % nh];
-    c.phase = phase_distance(final_run(cost_methods[task / nh], counted, z0, h, steps_to(t_end, h)), refs[0].z);
-    return c;
-  });
-  Csv cost({"method", "h", "steps", "wall_s", "ns_per_step", "force_evals", "phase_err"});
-  json ns_per_step;
-  const double h_ns = *std::min_element(hs.begin(), hs.end());
-  for (std::size_t task = 0; task < counts.size(); ++task) {
-    const std::string& m = cost_methods[task / nh];
-    const double h = hs[task % nh];
-    const std::int64_t n = steps_to(t_end, h);
-    const double wall = median_seconds(repeats, [&] { do_not_optimize(final_run(m, sys, z0, h, n)); });
-    cost.row(m, h, n, wall, 1e9 * wall / static_cast<double>(n), counts[task].evals, counts[task].phase);
-    if (h == h_ns) ns_per_step[m] = 1e9 * wall / static_cast<double>(n);
-  }
-  ctx.write("timing.csv", cost);
-  timing["ns_per_step"] = ns_per_step;
-  if (ns_per_step.contains("sv") && ns_per_step.contains("rowlands"))
-    timing["ns_per_step_ratio_rowlands_over_sv"] = ns_per_step["rowlands"].get<double>() / ns_per_step["sv"].get<double>();
-  timing["method"] = "median of timing.repeats runs after one warm-up, steady_clock, single thread, from initial[0] "
-                     "to t_end (pre- and postprocessing once); ns_per_step at the smallest h";
-
   ctx.summary["published"] = published;
   ctx.summary["reproduced"] = reproduced;
-  ctx.summary["orders"] = orders;
+  ctx.summary["orders"] = by_initial[0];
   ctx.summary["orders_by_initial"] = by_initial;
   ctx.summary["fits"] = fits;
   ctx.summary["norms"] = {
       {"energy", "eq. (50): sqrt(sum_{j=0}^{N} (H(z_j) - H(z_0))^2 / N), z_j postprocessed at every step"},
       {"energy_max", "max over j of |H(z_j) - H(z_0)|"},
       {"phase", "|z_N - z(t_end)|_2 over (x, y, px, py), against the odeint Bulirsch-Stoer reference"}};
+}
+
+// One run of eq. (23) with every call in it inlined: each method is timed with its step
+// inlined into the loop, however many other methods this executable instantiates.
+template <class M>
+[[gnu::flatten, gnu::noinline]] State final_state(const M& m, const State& z0, double h, std::int64_t n) {
+  return integrate_processed(m, z0, h, n);
+}
+
+// ---- What the accuracy costs: median wall time of each method from
+// initial[0] to t_end (pre once, post once, eq. (23)); force evaluations and
+// phase errors (against the reference at initial[0]) from separate counting runs. ----
+
+template <class Sys>
+void timing_with(Context& ctx, const Sys& sys) {
+  const Scene& s = ctx.scene;
+  const auto hs = s.reals("h");
+  const std::size_t nh = hs.size();
+  const double t_end = s.real("t_end");
+  const auto methods = s.texts("timing.methods");
+  const int repeats = static_cast<int>(s.integer("timing.repeats"));
+  const State z0 = state_of(s.real_rows("initial")[0]);
+  ctx.progress("cost: reference (odeint Bulirsch-Stoer)");
+  const State z_ref = reference_solution(sys, z0, t_end, s.real("reference.rtol"), s.real("reference.atol"));
+
+  ctx.progress("cost: timing");
+  struct Count {
+    std::int64_t evals = 0;
+    double phase = 0;
+  };
+  const auto counts = parallel_map(methods.size() * nh, [&](std::size_t task) {
+    Count c;
+    const Counting<Sys> counted{sys, &c.evals};
+    const double h = hs[task % nh];
+    const std::int64_t n = steps_to(t_end, h);
+    const State zN = with_method(methods[task / nh], counted, [&](const auto& m) { return integrate_processed(m, z0, h, n); });
+    c.phase = phase_distance(zN, z_ref);
+    return c;
+  });
+  Csv cost({"method", "h", "steps", "wall_s", "ns_per_step", "force_evals", "phase_err"});
+  json ns_per_step, timing;
+  const double h_ns = *std::min_element(hs.begin(), hs.end());
+  for (std::size_t task = 0; task < counts.size(); ++task) {
+    const std::string label = label_of(methods[task / nh]);
+    const double h = hs[task % nh];
+    const std::int64_t n = steps_to(t_end, h);
+    const double wall = with_method(methods[task / nh], sys, [&](const auto& m) {  // (the dispatch outside the clock)
+      return median_seconds(repeats, [&] { do_not_optimize(final_state(m, z0, h, n)); });
+    });
+    cost.row(label, h, n, wall, 1e9 * wall / static_cast<double>(n), counts[task].evals, counts[task].phase);
+    if (h == h_ns) ns_per_step[label] = 1e9 * wall / static_cast<double>(n);
+  }
+  ctx.write("timing.csv", cost);
+  timing["ns_per_step"] = ns_per_step;
+  if (ns_per_step.contains("sv") && ns_per_step.contains("rowlands"))
+    timing["ns_per_step_ratio_rowlands_over_sv"] = ns_per_step["rowlands"].get<double>() / ns_per_step["sv"].get<double>();
+  timing["method"] = "median of timing.repeats runs after one warm-up, steady_clock, single thread, from initial[0] "
+                     "to t_end (pre- and postprocessing once, every call inlined); ns_per_step at the smallest h";
   ctx.summary["timing"] = timing;
 }
 
-void run(Context& ctx) {
-  const Scene& s = ctx.scene;
-  const ElasticPendulumParams p{s.real("pendulum.l"), s.real("pendulum.m"), s.real("pendulum.k"), s.real("pendulum.g")};
-  with_elastic_pendulum(p, [&](const auto& sys) { run_with(ctx, sys); });
+void run_convergence(Context& ctx) {
+  with_elastic_pendulum(pendulum_of(ctx.scene), [&](const auto& sys) { convergence_with(ctx, sys); });
+}
+
+void run_timing(Context& ctx) {
+  with_elastic_pendulum(pendulum_of(ctx.scene), [&](const auto& sys) { timing_with(ctx, sys); });
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-  const ExperimentSpec spec{"rowlands_convergence",
-                            "000 Fig. 4: Stormer-Verlet against the Rowlands method on the elastic pendulum, "
-                            "with what the accuracy costs",
-                            schema(), validate, run};
-  return run_experiment(argc, argv, spec, GEOMINT_EXPERIMENT_DIR);
+  ExperimentSpec spec{"rowlands_convergence",
+                      "000 Fig. 4: Stormer-Verlet against the Rowlands method on the elastic pendulum, "
+                      "with what the accuracy costs",
+                      schema(),
+                      {}};
+  spec.studies = {
+      {"convergence", "000 Fig 4", {"fig4_convergence.csv", "orders.csv", "reference.csv"},
+       {"initial", "t_end", "h", "methods", "pendulum", "reference"},
+       [](const Scene& s) {
+         check_common(s);
+         check_methods(s, "methods");
+       },
+       run_convergence},
+      {"timing", "cost: error against wall time and force evaluations, against odeint's steppers", {"timing.csv"},
+       {"timing", "initial", "t_end", "h", "pendulum", "reference"},
+       [](const Scene& s) {
+         check_common(s);
+         check_methods(s, "timing.methods");
+       },
+       run_timing},
+  };
+  return run_experiment(argc, argv, std::move(spec), GEOMINT_EXPERIMENT_DIR);
 }
