@@ -1,14 +1,19 @@
-// One step of each integrator against values computed by hand, and the
-// structural properties (adjointness, symplecticity) of symplectic Euler.
+// One step of each integrator against values computed by hand, the
+// structural properties (adjointness, symplecticity) of symplectic Euler, and
+// the method registry's lookups and dispatch by name.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <stdexcept>
+#include <string>
 
 #include "geomint/integrators/explicit_euler.hpp"
 #include "geomint/integrators/integrate.hpp"
 #include "geomint/integrators/runge_kutta4.hpp"
 #include "geomint/integrators/symplectic_euler.hpp"
+#include "geomint/methods/methods.hpp"
 #include "geomint/systems/counting.hpp"
 #include "geomint/systems/exponential_decay.hpp"
 #include "geomint/systems/hamiltonian_field.hpp"
@@ -104,10 +109,26 @@ TEST(Counting, ForceEvaluationsPerStep) {
   EXPECT_EQ(n, 40);  // four stages
 }
 
-TEST(MethodInfo, DeclaredOrdersAndBounds) {
-  EXPECT_EQ(explicit_euler_info.order, 1);
-  EXPECT_EQ(symplectic_euler_pq_info.order, 1);
-  EXPECT_EQ(runge_kutta4_info.order, 4);
-  EXPECT_DOUBLE_EQ(explicit_euler_info.real_bound, 2.0);
-  EXPECT_DOUBLE_EQ(symplectic_euler_pq_info.oscillatory_bound, 2.0);
+// The registry's lookups (the declared values themselves: tests/verification).
+TEST(MethodRegistry, FindsByNameOrLabelAndNamesTheValidNames) {
+  EXPECT_EQ(&method_info("stormer_verlet"), &method_info("sv"));
+  EXPECT_EQ(method_info("ee").name, "explicit_euler");
+  EXPECT_EQ(find_method("no_such_method"), nullptr);
+  try {
+    method_info("no_such_method");
+    FAIL() << "no exception";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("symplectic_euler_pq"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(family_name(method_info("rowlands").family), "processed");
+}
+
+TEST(MethodRegistry, WithMethodBindsByNameAndRefusesWhatCannotStepTheSystem) {
+  const auto z = with_method("se", HarmonicOscillator{}, [](const auto& m) { return integrate_processed(m, make_state(1.0, 0.5), 0.1, 1); });
+  EXPECT_DOUBLE_EQ(z.p[0], 0.4);  // as SymplecticEuler.PqOneStepOnOscillator
+  EXPECT_THROW(with_method("no_such_method", HarmonicOscillator{}, [](const auto&) { return 0; }), std::invalid_argument);
+  EXPECT_THROW(with_method("lobatto", transformed, [](const auto&) { return 0; }), std::invalid_argument);  // not mechanical
+  const auto names = methods_for<Transformed>();  // non-separable H: symplectic Euler and the explicit methods
+  EXPECT_NE(std::find(names.begin(), names.end(), "symplectic_euler_qp"), names.end());
+  EXPECT_EQ(std::find(names.begin(), names.end(), "stormer_verlet"), names.end());
 }

@@ -31,17 +31,4 @@ PhaseState<D> make_state(const Vec<D>& q, const Vec<D>& p) {
 
 inline PhaseState<1> make_state(double q, double p) { return make_state<1>(Vec<1>(q), Vec<1>(p)); }
 
-// Metadata every integrator carries: scenes pick methods by name, tests check
-// the declared order by slope, experiments reject steps beyond a known bound.
-struct MethodInfo {
-  const char* name;      // as used in scenes, CSV columns and summary.json
-  int order;             // classical order (effective order for processed methods)
-  const char* equation;  // where the method is defined
-  // Linear stability: the method is stable for h*|lambda| <= real_bound on
-  // y' = lambda*y (lambda < 0) and for h*omega < oscillatory_bound on the
-  // harmonic oscillator q'' = -omega^2 q; 0 means unstable for every h > 0.
-  double real_bound;
-  double oscillatory_bound;
-};
-
 }  // namespace geomint

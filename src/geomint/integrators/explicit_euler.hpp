@@ -1,9 +1,8 @@
 #pragma once
 #include "geomint/core/state.hpp"
+#include "geomint/methods/registry.hpp"  // its order, bounds and citation: method_info("explicit_euler")
 
 namespace geomint {
-
-inline constexpr MethodInfo explicit_euler_info{"explicit_euler", 1, "000 eq. (9)", 2.0, 0.0};
 
 // 000 eq. (9): y^{j+1} = y^j + h f(y^j).
 template <class Sys, class Y>

@@ -18,6 +18,7 @@
 
 #include "geomint/core/state.hpp"
 #include "geomint/integrators/newton.hpp"
+#include "geomint/methods/registry.hpp"  // orders, bounds, citations: method_info("lobatto"), ("simpson"), ("implicit_midpoint")
 
 namespace geomint {
 
@@ -60,11 +61,6 @@ inline GalerkinRule<3> lobatto_rule() {
 }
 // Simpson's rule on 0, 1/2, 1 with P2 elements (001 ref. [2]).
 inline GalerkinRule<2> simpson_rule() { return make_galerkin_rule<2>({0.0, 0.5, 1.0}, {1.0 / 6, 4.0 / 6, 1.0 / 6}); }
-
-// Linear stability on the oscillator: 001 eq. (10), h w < sqrt(42 - 6 sqrt(29)) = 3.1127;
-// Simpson's scheme: h w < sqrt(8) (the spectral radius of its one-step map; tests/unit).
-inline const MethodInfo lobatto_info{"lobatto", 6, "001 eq. (2)-(11)", 0.0, std::sqrt(42.0 - 6.0 * std::sqrt(29.0))};
-inline const MethodInfo simpson_info{"simpson", 4, "001 ref. [2] (P2, Simpson's rule)", 0.0, std::sqrt(8.0)};
 
 // The implicit stage of one step: unknowns X = (Q_1, ..., Q_S).
 template <int S, class Sys>
@@ -130,8 +126,6 @@ typename Sys::State galerkin_step(const GalerkinRule<S>& R, const Sys& sys, cons
   (void)D;
   return next;
 }
-
-inline const MethodInfo implicit_midpoint_info{"midpoint", 2, "implicit midpoint rule (001 ref. [10])", 0.0, INFINITY};
 
 // The implicit midpoint rule for L = qdot^T M qdot/2 - V(q): Z = z_j + (h/2) f(Z), z_{j+1} = 2 Z - z_j,
 // f = (M^{-1} p, -grad V(q)); Newton on Z.

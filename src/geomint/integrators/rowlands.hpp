@@ -4,10 +4,9 @@
 // are in transforms/rowlands_processors.hpp).
 #include "geomint/core/state.hpp"
 #include "geomint/integrators/stormer_verlet.hpp"
+#include "geomint/methods/registry.hpp"  // its order, bounds and citation: method_info("rowlands_kernel")
 
 namespace geomint {
-
-inline constexpr MethodInfo rowlands_kernel_info{"rowlands_kernel", 2, "000 eq. (30)-(31)", 0.0, 2.0};
 
 // -grad Uhat for Uhat = U - h^2/24 U_q M^{-1} U_q (000 eq. (30)):
 // Fhat = -U_q + (h^2/12) U_qq M^{-1} U_q  (one gradient, one Hessian-vector product).

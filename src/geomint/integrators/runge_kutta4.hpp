@@ -1,11 +1,8 @@
 #pragma once
 #include "geomint/core/state.hpp"
+#include "geomint/methods/registry.hpp"  // its order, bounds and citation: method_info("rk4")
 
 namespace geomint {
-
-// Stability: real-axis interval [-2.785, 0]; imaginary-axis interval |h w| <= 2 sqrt(2).
-inline constexpr MethodInfo runge_kutta4_info{"rk4", 4, "classical RK4 (Hairer, Norsett, Wanner I, Table 1.2)",
-                                              2.785293563405282, 2.8284271247461903};
 
 // The classical fourth-order Runge-Kutta method (non-symplectic baseline).
 template <class Sys, class Y>

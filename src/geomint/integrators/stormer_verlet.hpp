@@ -1,11 +1,9 @@
 #pragma once
 // Stormer-Verlet (kick-drift-kick) for separable H = p^T M^{-1} p / 2 + U(q).
 #include "geomint/core/state.hpp"
+#include "geomint/methods/registry.hpp"  // its order, bounds and citation: method_info("stormer_verlet")
 
 namespace geomint {
-
-// Stable on the harmonic oscillator for h*omega < 2.
-inline constexpr MethodInfo stormer_verlet_info{"stormer_verlet", 2, "000 eq. (26)-(28)", 0.0, 2.0};
 
 // The state of a kick-drift-kick method: (q, p) and the force at q, which the
 // last kick of a step computes and the first kick of the next step reuses

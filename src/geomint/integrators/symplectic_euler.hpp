@@ -4,14 +4,10 @@
 // (newton.hpp) with the Jacobian I +- h H_qp, to round-off.
 #include "geomint/core/state.hpp"
 #include "geomint/integrators/newton.hpp"
+#include "geomint/methods/registry.hpp"  // its order, bounds and citation: method_info("symplectic_euler_pq")
 #include "geomint/systems/frozen.hpp"
 
 namespace geomint {
-
-// Stable on the harmonic oscillator for h*omega < 2 (trace of the one-step map 2 - h^2 w^2).
-inline constexpr MethodInfo symplectic_euler_pq_info{"symplectic_euler_pq", 1, "000 eq. (42)-(43)", 0.0, 2.0};
-inline constexpr MethodInfo symplectic_euler_qp_info{"symplectic_euler_qp", 1,
-                                                     "adjoint of 000 eq. (42)-(43) (000 footnote 3)", 0.0, 2.0};
 
 // 000 eq. (42)-(43): p^{j+1} = p^j - h H_q(q^j, p^{j+1});  q^{j+1} = q^j + h H_p(q^j, p^{j+1}).
 template <class Sys, class State>

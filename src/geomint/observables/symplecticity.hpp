@@ -36,4 +36,10 @@ Mat<2 * D> step_jacobian_fd(const Method& method, const PhaseState<D>& z, double
   return J;
 }
 
+// The same, Richardson-extrapolated: (4 J(d/2) - J(d)) / 3, truncation error O(d^4).
+template <class Method, int D>
+Mat<2 * D> step_jacobian_richardson(const Method& method, const PhaseState<D>& z, double h, double d) {
+  return (4 * step_jacobian_fd(method, z, h, d / 2) - step_jacobian_fd(method, z, h, d)) / 3;
+}
+
 }  // namespace geomint

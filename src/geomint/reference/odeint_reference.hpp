@@ -4,6 +4,7 @@
 // landing exactly on the requested time. Experiments check its accuracy in
 // the run: the solution at 100x tighter tolerances must agree to well below
 // the smallest error they fit.
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -51,6 +52,16 @@ typename Sys::State reference_solution(const Sys& sys, const typename Sys::State
   odeint::bulirsch_stoer<OdeintState<D>> stepper(atol, rtol);
   odeint::integrate_adaptive(stepper, odeint_rhs(sys), x, 0.0, t_end, std::min(1e-3, t_end));
   return from_odeint<D>(x);
+}
+
+// The same for a first-order system x' = sys.rhs(x) on std::array (the equations (3.8) of 003).
+template <class Sys, std::size_t N>
+std::array<double, N> reference_solution(const Sys& sys, std::array<double, N> x, double t_end, double rtol, double atol) {
+  namespace odeint = boost::numeric::odeint;
+  odeint::bulirsch_stoer<std::array<double, N>> stepper(atol, rtol);
+  odeint::integrate_adaptive(stepper, [&sys](const std::array<double, N>& y, std::array<double, N>& dydt, double) { dydt = sys.rhs(y); },
+                             x, 0.0, t_end, std::min(1e-3, t_end));
+  return x;
 }
 
 // The l2 distance of two phase-space points (all of q and p).
