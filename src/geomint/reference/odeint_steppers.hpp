@@ -1,9 +1,10 @@
 #pragma once
 // Boost.Odeint's fixed-step steppers, the peers of our methods, as processed
 // methods on (q, p) (processing.hpp) whose kernel state is odeint's state. A
-// stepper that keeps nothing between steps is made for each step;
-// velocity_verlet, which caches the acceleration at the current point,
-// travels with the state.
+// Runge-Kutta stepper keeps only scratch space between steps: one lives in the
+// kernel (so a bound method steps one trajectory at a time, as every driver
+// here does); velocity_verlet, which caches the acceleration at the current
+// point, travels with the state.
 #include <array>
 #include <utility>
 
@@ -27,14 +28,23 @@ Vec<D> to_vec(const std::array<double, D>& a) {
 }
 }  // namespace detail
 
+// One step of an explicit Runge-Kutta stepper of odeint; `stepper` is scratch space only.
+template <class Stepper, class Rhs>
+struct OdeintStep {
+  Rhs rhs;
+  mutable Stepper stepper;
+  template <class X>
+  X operator()(X x, double h) const {
+    stepper.do_step(rhs, x, 0.0, h);
+    return x;
+  }
+};
+
 // An explicit Runge-Kutta stepper of odeint (runge_kutta4, runge_kutta_fehlberg78) on z' = J grad H (000 eq. (20)).
 template <class Stepper, class Sys>
 auto odeint_explicit_method(const Sys& sys) {
   constexpr int D = Sys::State::dof;
-  return Processed{[&sys](OdeintState<D> x, double h) {
-                     Stepper().do_step(odeint_rhs(sys), x, 0.0, h);
-                     return x;
-                   },
+  return Processed{OdeintStep<Stepper, decltype(odeint_rhs(sys))>{odeint_rhs(sys), Stepper()},
                    [](const typename Sys::State& z, double) { return to_odeint<D>(z); },
                    [](const OdeintState<D>& x, double) { return from_odeint<D>(x); }};
 }
