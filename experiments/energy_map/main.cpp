@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "geomint/integrators/integrate.hpp"
+#include "geomint/core/integrate.hpp"
 #include "geomint/integrators/symplectic_euler.hpp"
 #include "geomint/io/atomic_file.hpp"
 #include "geomint/methods/registry.hpp"
@@ -259,7 +259,7 @@ void run_first_integrals(Context& ctx) {
     change.push_back(worst);
   }
   ctx.write("first_integrals.csv", fi);
-  const OrderFit px_fit = fit_order(hs, change, 1e3 * std::numeric_limits<double>::epsilon());
+  const OrderFit px_fit = fit_order(hs, change, roundoff_floor());
 
   // The angular momentum is a quadratic invariant of symplectic Euler (a P-series
   // method), preserved exactly in exact arithmetic; in floating point the

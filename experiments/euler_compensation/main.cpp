@@ -12,11 +12,13 @@
 #include <string>
 #include <vector>
 
+#include "geomint/core/integrate.hpp"
 #include "geomint/integrators/explicit_euler.hpp"
-#include "geomint/integrators/integrate.hpp"
 #include "geomint/integrators/runge_kutta4.hpp"
 #include "geomint/integrators/symplectic_euler.hpp"
+#include "geomint/methods/methods.hpp"
 #include "geomint/methods/registry.hpp"
+#include "geomint/methods/scene_methods.hpp"
 #include "geomint/observables/error_norms.hpp"
 #include "geomint/observables/order_fit.hpp"
 #include "geomint/runner/experiment.hpp"
@@ -78,27 +80,21 @@ ScalarFigure scalar_figure(const Sys& sys, const Psi& psi, double y0, double h, 
 using Oscillator = HarmonicOscillator;
 using State = Oscillator::State;
 
-// The compensated method: pre-transform by (41) once, step symplectic Euler
-// (42)-(43) in (qbar, pbar), map back by (41) wherever a result is wanted.
-template <class Sys>
-struct Compensated {
-  PointTransformed<Sys, OscillatorCompensation> sys;
-  double h;
-  State pre(const State& z) const { return sys.to_transformed(z); }
-  State kernel(const State& zb) const { return symplectic_euler_pq(sys, zb, h); }
-  State post(const State& zb, std::int64_t j) const {
-    const State z = sys.to_original(zb);
-    if (!std::isfinite(z.q[0]) || !std::isfinite(z.p[0])) {
-      throw IntegrationError("compensating transformation (82) undefined at step " + std::to_string(j) +
-                             ": |qhat| >= 1 (increase oscillator.k or decrease h)");
-    }
-    return z;
-  }
-};
+// The methods of Figs 8 and 9, by registry name: symplectic Euler in the
+// coordinates of (82) needs the k of (82); the others come from the dispatch.
+template <class Sys, class F>
+auto with_oscillator_method(std::string_view name, const Sys& osc, double k, F&& f) {
+  if (method_info(name).name == CompensatedSymplecticEuler::info.name)
+    return f(CompensatedSymplecticEuler::bind(osc, k));
+  return with_method(name, osc, f);
+}
 
-template <class Sys>
-Compensated<Sys> compensated(const Sys& osc, double k, double h) {
-  return {PointTransformed<Sys, OscillatorCompensation>{osc, OscillatorCompensation{k, h}}, h};
+// A non-finite state is (82) left undefined (|qhat| >= 1): say where.
+void check_finite(const State& z, const std::string& method, std::int64_t j, double h) {
+  if (!std::isfinite(z.q[0]) || !std::isfinite(z.p[0]))
+    throw IntegrationError(method + ": non-finite state at step " + std::to_string(j) + ", t = " +
+                           format_double(static_cast<double>(j) * h) +
+                           " (for the compensating transformation (82): |qhat| >= 1; increase oscillator.k or decrease h)");
 }
 
 struct EnergyRun {
@@ -106,37 +102,18 @@ struct EnergyRun {
   std::int64_t force_evals = 0;
 };
 
-// One convergence run of each method to t = N h, counting force evaluations.
-EnergyRun run_se(const State& z0, double h, std::int64_t n) {
-  EnergyRun r;
-  const Counting<Oscillator> sys{{}, &r.force_evals};
-  const double H0 = sys.H(z0);
-  ErrorSeries e;
-  integrate_n_steps([&](const State& z) { return symplectic_euler_pq(sys, z, h); }, z0, n,
-                    [&](std::int64_t, const State& z) { e.add(sys.H(z) - H0); });
-  r.max_err = e.max_abs(), r.rms_err = e.rms50();
-  return r;
-}
-
-EnergyRun run_se_compensated(const State& z0, double h, double k, std::int64_t n) {
+// One convergence run of a method to t = N h, counting force evaluations.
+EnergyRun energy_run(const std::string& method, const State& z0, double h, double k, std::int64_t n) {
   EnergyRun r;
   const Oscillator osc;
-  const auto method = compensated(Counting<Oscillator>{osc, &r.force_evals}, k, h);
   const double H0 = osc.H(z0);
   ErrorSeries e;
-  integrate_n_steps([&](const State& zb) { return method.kernel(zb); }, method.pre(z0), n,
-                    [&](std::int64_t j, const State& zb) { e.add(osc.H(method.post(zb, j)) - H0); });
-  r.max_err = e.max_abs(), r.rms_err = e.rms50();
-  return r;
-}
-
-EnergyRun run_rk4(const State& z0, double h, std::int64_t n) {
-  EnergyRun r;
-  const HamiltonianField field{Counting<Oscillator>{{}, &r.force_evals}};
-  const double H0 = field.sys.H(z0);
-  ErrorSeries e;
-  integrate_n_steps([&](const State& z) { return runge_kutta4(field, z, h); }, z0, n,
-                    [&](std::int64_t, const State& z) { e.add(field.sys.H(z) - H0); });
+  with_oscillator_method(method, Counting<Oscillator>{osc, &r.force_evals}, k, [&](const auto& m) {
+    return integrate(m, z0, h, n, [&](std::int64_t j, const State& z) {
+      check_finite(z, method, j, h);
+      e.add(osc.H(z) - H0);
+    });
+  });
   r.max_err = e.max_abs(), r.rms_err = e.rms50();
   return r;
 }
@@ -145,17 +122,16 @@ EnergyRun run_rk4(const State& z0, double h, std::int64_t n) {
 template <class Sys>
 double euler_max_err(const Sys& sys, double y0, double h, std::int64_t n) {
   ErrorSeries e;
-  integrate_n_steps([&](double y) { return explicit_euler(sys, y, h); }, y0, n,
-                    [&](std::int64_t j, double y) { e.add(y - sys.exact(y0, static_cast<double>(j) * h)); });
+  integrate(one_step_method([&](double y, double dt) { return explicit_euler(sys, y, dt); }), y0, h, n,
+            [&](std::int64_t j, double y) { e.add(y - sys.exact(y0, static_cast<double>(j) * h)); });
   return e.max_abs();
 }
 
-struct OscillatorRuns {
-  EnergyRun se, comp, rk4;
-};
-
-OscillatorRuns oscillator_runs(const State& z0, double h, double k, std::int64_t n) {
-  return {run_se(z0, h, n), run_se_compensated(z0, h, k, n), run_rk4(z0, h, n)};
+std::vector<EnergyRun> oscillator_runs(const std::vector<std::string>& methods, const State& z0, double h, double k,
+                                       std::int64_t n) {
+  std::vector<EnergyRun> runs;
+  for (const auto& m : methods) runs.push_back(energy_run(m, z0, h, k, n));
+  return runs;
 }
 
 // log-log interpolation of err(wall) at `wall`, on a curve sorted by wall time; NaN outside it.
@@ -170,6 +146,13 @@ double error_at_wall_time(std::vector<std::pair<double, double>> curve, double w
     }
   }
   return std::numeric_limits<double>::quiet_NaN();
+}
+
+// What Figs 8-9 and the cost study may name: the methods that step the oscillator, and (82).
+std::vector<std::string> oscillator_method_choices() {
+  auto names = methods_for<Counting<Oscillator>>();
+  names.emplace_back(CompensatedSymplecticEuler::info.name);
+  return method_choices<Counting<Oscillator>>(names);
 }
 
 Schema schema() {
@@ -188,8 +171,12 @@ Schema schema() {
       .real("oscillator.h", positive(), "step of symplectic Euler (Fig 8); h < 2 (stability)")
       .real("oscillator.k", positive(), "parameter k of (82), qhat = q / (1 + k h^2)")
       .integer("oscillator.steps", at_least(1), "number of steps in Fig 8")
+      .texts("convergence.methods", oscillator_method_choices(), 1,
+             "methods of Fig 9 on the oscillator (registry names or labels); compensated_symplectic_euler uses "
+             "oscillator.k")
       .reals("convergence.h", positive(), 3, "steps of the convergence study (Fig 9); each divides t_end")
       .real("convergence.t_end", positive(), "errors are maxima over t in [0, t_end]")
+      .texts("timing.methods", oscillator_method_choices(), 1, "methods of the cost study (registry names or labels)")
       .reals("timing.h", positive(), 3, "steps of the work-precision runs (to convergence.t_end)")
       .integer("timing.repeats", at_least(1), "timed repetitions per measurement (the median is reported)")
       .integer("timing.steps", at_least(1), "steps of the run that measures ns per step");
@@ -212,20 +199,24 @@ void check_gompertz(const Scene& s) {
     s.reject("gompertz.y0", "the transformation (18) needs 0 < y0 < e^{a/b}");
 }
 
-// A step of symplectic Euler on the oscillator, with and without (82).
+// A step h of Fig 8: symplectic Euler stable, the transformation (82) defined at q0.
 void check_oscillator_step(const Scene& s, const char* key, double h) {
-  if (!(h < method_info("symplectic_euler_pq").oscillatory_bound))
-    s.reject(key, "symplectic Euler on the oscillator (omega = 1) is unstable for h >= 2");
+  check_oscillatory_bound(s, key, key, "symplectic_euler_pq", h, "omega = 1");
   if (!OscillatorCompensation{s.real("oscillator.k"), h}.defined(s.real("oscillator.q0")))
     s.reject(key, "the transformation (82) needs |q0| < 1 + k h^2 = " +
                       format_double(1 + s.real("oscillator.k") * h * h));
 }
 
-// Steps of the runs to convergence.t_end.
-void check_steps(const Scene& s, const char* key) {
+// The methods of `methods_key` at the steps of `key` (runs to convergence.t_end): each method
+// once, every step below its bound (and (82) defined, if named), and each h dividing t_end.
+void check_steps(const Scene& s, const char* key, const char* methods_key) {
+  check_distinct_methods(s, methods_key);
   const double t_end = s.real("convergence.t_end");
   for (double h : s.reals(key)) {
-    check_oscillator_step(s, key, h);
+    for (const auto& m : s.texts(methods_key)) {
+      if (method_info(m).name == CompensatedSymplecticEuler::info.name) check_oscillator_step(s, key, h);
+      else check_oscillatory_bound(s, key, methods_key, m, h, "omega = 1");
+    }
     const double n = static_cast<double>(steps_to(t_end, h));
     if (n < 1 || std::abs(n * h - t_end) > 1e-9 * t_end)
       s.reject(key, "each h must divide convergence.t_end = " + format_double(t_end));
@@ -272,20 +263,22 @@ void run_oscillator(Context& ctx) {
   const State z0 = initial_state(s);
   const double H0 = osc.H(z0);
   const double h = s.real("oscillator.h"), k = s.real("oscillator.k");
-  const auto method = compensated(osc, k, h);
+  const auto se = SymplecticEulerPQ::bind(osc);
+  const auto compensated = CompensatedSymplecticEuler::bind(osc, k);
   Csv phase({"j", "t", "q_se", "p_se", "q_compensated", "p_compensated", "energy_err_se", "energy_err_compensated"});
-  State z = z0, zb = method.pre(z0);
+  const std::int64_t n = s.integer("oscillator.steps");
+  std::vector<State> zs;
+  integrate(se, z0, h, n, [&](std::int64_t, const State& z) { zs.push_back(z); });
   ErrorSeries err_se, err_comp;
   double max_qhat = 0;
-  for (std::int64_t j = 0; j <= s.integer("oscillator.steps"); ++j) {
-    const State zc = method.post(zb, j);
+  integrate(compensated, z0, h, n, [&](std::int64_t j, const State& zc) {
+    check_finite(zc, "compensated_symplectic_euler", j, h);
+    const State& z = zs[static_cast<std::size_t>(j)];
     const double e_se = osc.H(z) - H0, e_comp = osc.H(zc) - H0;
     err_se.add(e_se), err_comp.add(e_comp);
-    max_qhat = std::max(max_qhat, std::abs(method.sys.map.qhat(zc.q[0])));
+    max_qhat = std::max(max_qhat, std::abs(OscillatorCompensation{k, h}.qhat(zc.q[0])));
     phase.row(j, static_cast<double>(j) * h, z.q[0], z.p[0], zc.q[0], zc.p[0], e_se, e_comp);
-    z = symplectic_euler_pq(osc, z, h);
-    zb = method.kernel(zb);
-  }
+  });
   ctx.write("fig8_phase.csv", phase);
   Csv exact({"t", "q", "p"});
   for (int i = 0; i <= kExactCurvePoints; ++i) {
@@ -312,25 +305,34 @@ void run_convergence(Context& ctx) {
   const double H0 = Oscillator{}.H(z0);
   const auto hs = s.reals("convergence.h");
   const double t_end = s.real("convergence.t_end"), k = s.real("oscillator.k");
+  const auto methods = s.texts("convergence.methods");
   struct Row {
-    OscillatorRuns osc;
+    std::vector<EnergyRun> osc;  // one per method
     double ee_decay, ee_gompertz;
   };
   const auto rows = parallel_map(hs.size(), [&](std::size_t i) {
     const double h = hs[i];
     const std::int64_t n = steps_to(t_end, h);
-    return Row{oscillator_runs(z0, h, k, n), euler_max_err(decay, s.real("decay.y0"), h, n),
+    return Row{oscillator_runs(methods, z0, h, k, n), euler_max_err(decay, s.real("decay.y0"), h, n),
                euler_max_err(gompertz, gy0, h, n)};
   });
-  Csv conv({"h", "steps", "se_max", "se_compensated_max", "rk4_max", "se_rms", "se_compensated_rms", "rk4_rms",
-            "se_evals", "se_compensated_evals", "rk4_evals", "ee_decay_max", "ee_gompertz_max"});
-  std::vector<double> se_max, comp_max, rk4_max, se_rms, comp_rms, ee_decay, ee_gompertz;
+  // Columns: h, steps, then per method (by label) the max and the eq. (50) errors and the force evaluations.
+  std::vector<std::string> columns{"h", "steps"};
+  for (const char* suffix : {"_max", "_rms", "_evals"})
+    for (const auto& m : methods) columns.push_back(label_of(m) + suffix);
+  columns.insert(columns.end(), {"ee_decay_max", "ee_gompertz_max"});
+  Csv conv(columns);
+  std::vector<std::vector<double>> max_err(methods.size()), rms_err(methods.size());
+  std::vector<double> ee_decay, ee_gompertz;
   for (std::size_t i = 0; i < hs.size(); ++i) {
-    const auto& [se, comp, rk4] = rows[i].osc;
-    conv.row(hs[i], steps_to(t_end, hs[i]), se.max_err, comp.max_err, rk4.max_err, se.rms_err, comp.rms_err,
-             rk4.rms_err, se.force_evals, comp.force_evals, rk4.force_evals, rows[i].ee_decay, rows[i].ee_gompertz);
-    se_max.push_back(se.max_err), comp_max.push_back(comp.max_err), rk4_max.push_back(rk4.max_err);
-    se_rms.push_back(se.rms_err), comp_rms.push_back(comp.rms_err);
+    const auto& runs = rows[i].osc;
+    conv << hs[i] << steps_to(t_end, hs[i]);
+    for (const auto& r : runs) conv << r.max_err;
+    for (const auto& r : runs) conv << r.rms_err;
+    for (const auto& r : runs) conv << r.force_evals;
+    conv.row(rows[i].ee_decay, rows[i].ee_gompertz);
+    for (std::size_t m = 0; m < methods.size(); ++m)
+      max_err[m].push_back(runs[m].max_err), rms_err[m].push_back(runs[m].rms_err);
     ee_decay.push_back(rows[i].ee_decay), ee_gompertz.push_back(rows[i].ee_gompertz);
   }
   ctx.write("fig9_convergence.csv", conv);
@@ -339,7 +341,7 @@ void run_convergence(Context& ctx) {
   const double floor = roundoff_floor(std::max(H0, 1.0));
   Csv order_csv({"name", "order", "log10_c", "r2", "points", "h_min", "h_max"});
   json orders, fits;
-  const auto fit = [&](const char* name, const std::vector<double>& err, double fit_floor) {
+  const auto fit = [&](const std::string& name, const std::vector<double>& err, double fit_floor) {
     const OrderFit f = fit_order(hs, err, fit_floor);
     orders[name] = f.order;
     fits[name] = to_json(f);
@@ -347,18 +349,18 @@ void run_convergence(Context& ctx) {
   };
   fit("ee_decay", ee_decay, roundoff_floor(s.real("decay.y0")));
   fit("ee_gompertz", ee_gompertz, roundoff_floor(gompertz.equilibrium()));
-  fit("se_energy", se_max, floor);
-  fit("se_compensated_energy", comp_max, floor);
-  fit("rk4_energy", rk4_max, floor);
-  fit("se_energy_rms", se_rms, floor);
-  fit("se_compensated_energy_rms", comp_rms, floor);
+  for (std::size_t m = 0; m < methods.size(); ++m) fit(label_of(methods[m]) + "_energy", max_err[m], floor);
+  for (std::size_t m = 0; m < methods.size(); ++m) fit(label_of(methods[m]) + "_energy_rms", rms_err[m], floor);
   ctx.write("orders.csv", order_csv);
   ctx.summary["orders"] = orders;
   ctx.summary["fits"] = fits;
   json& published = ctx.summary["published"];
   published["ee_decay"] = method_info("explicit_euler").order;                  // Sec. 2.3: first order
-  published["se_energy"] = method_info("symplectic_euler_pq").order;            // Fig 9 / eq. (44)
-  published["se_compensated_energy"] = method_info("compensated_symplectic_euler").order;  // Fig 9, App. B
+  for (const auto& m : methods) {  // Fig 9 publishes the orders of symplectic Euler (eq. (44)) and of App. B
+    const MethodInfo& info = method_info(m);
+    if (info.name == "symplectic_euler_pq" || info.name == "compensated_symplectic_euler")
+      published[std::string(info.label) + "_energy"] = info.order;
+  }
   ctx.summary["norms"] = {
       {"energy", "max over t_j = j h in [0, convergence.t_end] of |H(q_j, p_j) - H(q_0, p_0)|; *_rms: eq. (50)"},
       {"ee", "max over t_j in [0, convergence.t_end] of |y_j - y(t_j)|"},
@@ -377,67 +379,56 @@ void run_timing(Context& ctx) {
   const State z0 = initial_state(s);
   const double t_end = s.real("convergence.t_end"), k = s.real("oscillator.k");
   const int repeats = static_cast<int>(s.integer("timing.repeats"));
-  const auto time_se = [&](double h, std::int64_t n) {
-    return median_seconds(repeats, [&] {
-      do_not_optimize(integrate_n_steps([&](const State& z) { return symplectic_euler_pq(osc, z, h); }, z0, n));
-    });
-  };
-  const auto time_comp = [&](double h, std::int64_t n) {
-    const auto method = compensated(osc, k, h);
-    return median_seconds(repeats, [&] {
-      const State zb = integrate_n_steps([&](const State& x) { return method.kernel(x); }, method.pre(z0), n);
-      do_not_optimize(method.post(zb, n));
-    });
-  };
-  const HamiltonianField field{osc};
-  const auto time_rk4 = [&](double h, std::int64_t n) {
-    return median_seconds(repeats, [&] {
-      do_not_optimize(integrate_n_steps([&](const State& z) { return runge_kutta4(field, z, h); }, z0, n));
+  const auto methods = s.texts("timing.methods");
+  const auto seconds = [&](const std::string& method, double h, std::int64_t n) {
+    return with_oscillator_method(method, osc, k, [&](const auto& m) {
+      return median_seconds(repeats, [&] { do_not_optimize(integrate_inlined(m, z0, h, n)); });
     });
   };
   const auto timing_hs = s.reals("timing.h");
   const auto timing_runs = parallel_map(timing_hs.size(), [&](std::size_t i) {
-    return oscillator_runs(z0, timing_hs[i], k, steps_to(t_end, timing_hs[i]));
+    return oscillator_runs(methods, z0, timing_hs[i], k, steps_to(t_end, timing_hs[i]));
   });
   Csv cost({"method", "h", "steps", "wall_s", "ns_per_step", "force_evals", "energy_err_max"});
-  std::vector<std::pair<double, double>> curve_se, curve_comp, curve_rk4;
+  std::vector<std::vector<std::pair<double, double>>> curves(methods.size());  // (wall, error) per method
   for (std::size_t i = 0; i < timing_hs.size(); ++i) {
     const double h = timing_hs[i];
     const std::int64_t n = steps_to(t_end, h);
-    const auto record = [&](const char* name, double wall, const EnergyRun& r, auto& curve) {
-      cost.row(name, h, n, wall, 1e9 * wall / static_cast<double>(n), r.force_evals, r.max_err);
-      curve.emplace_back(wall, r.max_err);
-    };
-    record("se", time_se(h, n), timing_runs[i].se, curve_se);
-    record("se_compensated", time_comp(h, n), timing_runs[i].comp, curve_comp);
-    record("rk4", time_rk4(h, n), timing_runs[i].rk4, curve_rk4);
+    for (std::size_t m = 0; m < methods.size(); ++m) {
+      const double wall = seconds(methods[m], h, n);
+      const EnergyRun& r = timing_runs[i][m];
+      cost.row(label_of(methods[m]), h, n, wall, 1e9 * wall / static_cast<double>(n), r.force_evals, r.max_err);
+      curves[m].emplace_back(wall, r.max_err);
+    }
   }
   ctx.write("timing.csv", cost);
 
   json& timing = ctx.summary["timing"];
   const double h8 = s.real("oscillator.h");
   const std::int64_t n_timing = s.integer("timing.steps");
-  const double ns_se = 1e9 * time_se(h8, n_timing) / static_cast<double>(n_timing);
-  const double ns_comp = 1e9 * time_comp(h8, n_timing) / static_cast<double>(n_timing);
-  const double ns_rk4 = 1e9 * time_rk4(h8, n_timing) / static_cast<double>(n_timing);
-  timing["ns_per_step"] = {{"se", ns_se}, {"se_compensated", ns_comp}, {"rk4", ns_rk4}};
-  timing["ns_per_step_ratio_compensated_over_se"] = ns_comp / ns_se;
+  json ns_per_step;
+  for (const auto& m : methods)
+    ns_per_step[label_of(m)] = 1e9 * seconds(m, h8, n_timing) / static_cast<double>(n_timing);
+  timing["ns_per_step"] = ns_per_step;
+  if (ns_per_step.contains("se") && ns_per_step.contains("se_compensated"))
+    timing["ns_per_step_ratio_compensated_over_se"] =
+        ns_per_step["se_compensated"].get<double>() / ns_per_step["se"].get<double>();
   timing["method"] = "median of timing.repeats runs after one warm-up, steady_clock, single thread; "
                      "ns_per_step at oscillator.h over timing.steps steps";
   // Error at equal wall time: at the geometric middle of the wall-time range
-  // that all three methods cover.
+  // that all methods cover.
   double w_lo = 0, w_hi = std::numeric_limits<double>::infinity();
-  for (const auto* curve : {&curve_se, &curve_comp, &curve_rk4}) {
-    const auto [lo, hi] = std::minmax_element(curve->begin(), curve->end());
+  for (const auto& curve : curves) {
+    const auto [lo, hi] = std::minmax_element(curve.begin(), curve.end());
     w_lo = std::max(w_lo, lo->first), w_hi = std::min(w_hi, hi->first);
   }
   const auto or_null = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
   if (w_lo < w_hi) {
     const double w_star = std::sqrt(w_lo * w_hi);
-    timing["error_at_equal_wall_time"] = {{"wall_s", w_star},
-                                          {"se", or_null(error_at_wall_time(curve_se, w_star))},
-                                          {"se_compensated", or_null(error_at_wall_time(curve_comp, w_star))},
-                                          {"rk4", or_null(error_at_wall_time(curve_rk4, w_star))}};
+    json at_wall{{"wall_s", w_star}};
+    for (std::size_t m = 0; m < methods.size(); ++m)
+      at_wall[label_of(methods[m])] = or_null(error_at_wall_time(curves[m], w_star));
+    timing["error_at_equal_wall_time"] = at_wall;
   } else {
     timing["error_at_equal_wall_time"] = nullptr;  // timing.h gives no common wall-time range
   }
@@ -460,10 +451,10 @@ int main(int argc, char** argv) {
       {"convergence", "000 Fig 9", {"fig9_convergence.csv", "orders.csv"},
        {"convergence", "oscillator.q0", "oscillator.p0", "oscillator.k", "decay.alpha", "decay.y0", "gompertz.a",
         "gompertz.b", "gompertz.y0"},
-       [](const Scene& s) { check_steps(s, "convergence.h"); }, run_convergence},
+       [](const Scene& s) { check_steps(s, "convergence.h", "convergence.methods"); }, run_convergence},
       {"timing", "cost: error against wall time and force evaluations", {"timing.csv"},
        {"timing", "convergence.t_end", "oscillator.q0", "oscillator.p0", "oscillator.k", "oscillator.h"},
-       [](const Scene& s) { check_steps(s, "timing.h"); }, run_timing},
+       [](const Scene& s) { check_steps(s, "timing.h", "timing.methods"); }, run_timing},
   };
   return run_experiment(argc, argv, std::move(spec), GEOMINT_EXPERIMENT_DIR);
 }

@@ -17,12 +17,15 @@
 #include <vector>
 
 #include "geomint/analysis/linear_stability.hpp"
+#include "geomint/core/compensated_sum.hpp"
 #include "geomint/integrators/galerkin_variational.hpp"
-#include "geomint/integrators/integrate.hpp"
+#include "geomint/core/integrate.hpp"
 #include "geomint/integrators/symplectic_euler.hpp"
 #include "geomint/methods/methods.hpp"
 #include "geomint/methods/registry.hpp"
+#include "geomint/methods/scene_methods.hpp"
 #include "geomint/observables/drift.hpp"
+#include "geomint/observables/error_norms.hpp"
 #include "geomint/observables/order_fit.hpp"
 #include "geomint/observables/symplecticity.hpp"
 #include "geomint/reference/odeint_reference.hpp"
@@ -44,7 +47,6 @@ using Z1 = PhaseState<1>;
 constexpr double kNonlinearOmega = 1.0;
 
 double lobatto_bound() { return method_info("lobatto").oscillatory_bound; }  // 001 eq. (10)
-std::string label_of(const std::string& method) { return std::string(method_info(method).label); }
 
 // 001 eq. (15) from the computed map: H_d = (Phi_qp p^2 - Phi_pq q^2) / 2, i.e. c/(2 delta) p^2 - b/(2 delta) q^2.
 double discrete_energy(const Mat<2>& Phi, const Z1& z) {
@@ -101,30 +103,9 @@ Schema schema() {
 
 // ---- checks across keys, per study ----
 
-// Each method once.
-void check_distinct(const Scene& s, const char* key) {
-  auto m = s.texts(key);
-  std::sort(m.begin(), m.end());
-  if (std::adjacent_find(m.begin(), m.end()) != m.end()) s.reject(key, "each method at most once");
-}
-
-// `method` at h omega = hw: below the oscillatory bound the registry declares (none declared: no
-// check). Blamed on the step key, or on the methods key if the method is unstable for every h.
-// `formula`: how the paper writes the bound, if it does.
-void check_bound(const Scene& s, const char* step_key, const char* methods_key, const std::string& method, double hw,
-                 const std::string& what, const std::string& formula = {}) {
-  const double bound = method_info(method).oscillatory_bound;
-  if (!std::isnan(bound) && !(hw < bound))
-    s.reject(bound > 0 ? step_key : methods_key,
-             method + " is unstable " +
-                 (bound > 0 ? "for h omega >= " + (formula.empty() ? "" : formula + " = ") + format_double(bound)
-                            : std::string("for every h > 0")) +
-                 " on the oscillator (methods/registry.hpp), here h omega = " + format_double(hw) + " (" + what + ")");
-}
-
 // The Lobatto scheme at h omega = hw (001 eq. (10)).
 void check_lobatto(const Scene& s, const char* key, double hw, const std::string& what) {
-  check_bound(s, key, key, "lobatto", hw, what + "; 001 eq. (10)", "sqrt(42 - 6 sqrt(29))");
+  check_oscillatory_bound(s, key, key, "lobatto", hw, what + "; 001 eq. (10)", "sqrt(42 - 6 sqrt(29))");
 }
 
 // Whole numbers of steps per period N at `key`; Lobatto (the subject, if `lobatto`) and the
@@ -135,17 +116,17 @@ void check_meshes(const Scene& s, const char* key, const char* methods_key, bool
     const double hw = 2 * std::numbers::pi / n;
     const std::string what = "h omega = 2 pi / N at N = " + format_double(n);
     if (lobatto) check_lobatto(s, key, hw, what);
-    for (const auto& m : s.texts(methods_key)) check_bound(s, key, methods_key, m, hw, what);
+    for (const auto& m : s.texts(methods_key)) check_oscillatory_bound(s, key, methods_key, m, hw, what);
   }
 }
 
 void check_table1(const Scene& s) {
-  check_distinct(s, "table1.methods");
+  check_distinct_methods(s, "table1.methods");
   check_meshes(s, "meshes", "table1.methods", true);
 }
 
 void check_figure1(const Scene& s) {
-  check_distinct(s, "figure1.methods");
+  check_distinct_methods(s, "figure1.methods");
   check_meshes(s, "figure1.meshes", "figure1.methods", false);
 }
 
@@ -155,25 +136,25 @@ void check_long_run(const Scene& s) {
 }
 
 void check_stability(const Scene& s) {
-  check_distinct(s, "stability.methods");
+  check_distinct_methods(s, "stability.methods");
   if (!(s.real("stability.hw_max") > s.real("stability.hw_min"))) s.reject("stability.hw_max", "must exceed stability.hw_min");
 }
 
 // `method` (of `methods_key`) stable at every step of nonlinear.h, at the pendulums' linear frequency 1.
 void check_pendulum_steps(const Scene& s, const char* methods_key, const std::string& method) {
   for (double h : s.reals("nonlinear.h"))
-    check_bound(s, "nonlinear.h", methods_key, method, h * kNonlinearOmega, "h = " + format_double(h) + ", frequency 1");
+    check_oscillatory_bound(s, "nonlinear.h", methods_key, method, h * kNonlinearOmega, "h = " + format_double(h) + ", frequency 1");
 }
 
 void check_nonlinear(const Scene& s) {
-  check_distinct(s, "nonlinear.methods");
+  check_distinct_methods(s, "nonlinear.methods");
   for (double h : s.reals("nonlinear.h"))
     check_lobatto(s, "nonlinear.h", h * kNonlinearOmega, "h = " + format_double(h) + ", frequency 1");
   for (const auto& m : s.texts("nonlinear.methods")) check_pendulum_steps(s, "nonlinear.methods", m);
 }
 
 void check_timing(const Scene& s) {
-  check_distinct(s, "timing.methods");
+  check_distinct_methods(s, "timing.methods");
   for (const auto& m : s.texts("timing.methods")) check_pendulum_steps(s, "timing.methods", m);
 }
 
@@ -196,7 +177,7 @@ template <class Sys>
 std::vector<Z1> trajectory(const std::string& method, const Sys& sys, const Z1& z0, double h, std::int64_t n) {
   std::vector<Z1> zs;
   with_method(method, sys, [&](const auto& m) {
-    integrate_processed(m, z0, h, n, [&](std::int64_t, const Z1& z) { zs.push_back(z); });
+    integrate(m, z0, h, n, [&](std::int64_t, const Z1& z) { zs.push_back(z); });
   });
   return zs;
 }
@@ -243,7 +224,7 @@ void run_table1(Context& ctx) {
     hs.push_back(h), ep.push_back(p), eq.push_back(q), eH.push_back(H);
   }
   ctx.write("table1.csv", t1);
-  const double floor = 1e3 * std::numeric_limits<double>::epsilon();
+  const double floor = roundoff_floor();
   json orders = json::object();
   orders["lobatto_p"] = fit_order(hs, ep, floor, "lobatto_p").order;
   orders["lobatto_q"] = fit_order(hs, eq, floor, "lobatto_q").order;
@@ -454,7 +435,7 @@ void run_nonlinear(Context& ctx) {
           it_e / static_cast<double>(n), {}};
     for (const auto& m : methods)
       r.compared.push_back(phase_distance(
-          with_method(m, pend, [&](const auto& method) { return integrate_processed(method, pz0, h, n); }), pref));
+          with_method(m, pend, [&](const auto& method) { return integrate(method, pz0, h, n); }), pref));
     return r;
   });
   std::vector<std::string> columns = {"h", "pendulum_err", "pendulum_newton_iterations", "elastic_err",
@@ -506,11 +487,11 @@ void run_timing(Context& ctx) {
       const std::int64_t n = steps_to(t_end, h);
       std::int64_t evals = 0;
       const double err = phase_distance(with_method(m, Counting<NonlinearPendulum>{pend, &evals}, [&](const auto& method) {
-                                          return integrate_processed(method, pz0, h, n);
+                                          return integrate(method, pz0, h, n);
                                         }),
                                         pref);
       const double wall = with_method(m, pend, [&](const auto& method) {
-        return median_seconds(repeats, [&] { do_not_optimize(integrate_processed(method, pz0, h, n)); });
+        return median_seconds(repeats, [&] { do_not_optimize(integrate(method, pz0, h, n)); });
       });
       cost << label << h << n << wall << 1e9 * wall / static_cast<double>(n) << evals << err;
       cost.end_row();

@@ -25,6 +25,7 @@
 #include "geomint/geometry/hull_volume.hpp"
 #include "geomint/integrators/conformal_variational.hpp"
 #include "geomint/methods/registry.hpp"
+#include "geomint/observables/error_norms.hpp"
 #include "geomint/observables/order_fit.hpp"
 #include "geomint/reference/odeint_reference.hpp"
 #include "geomint/runner/experiment.hpp"
@@ -158,13 +159,8 @@ Trajectory run_phi(Discretization d, const NonholonomicParticle& sys, double h, 
   const double E = ModifiedSeries(d, sys, h).E(ell, as_state(z0));
   Trajectory t;
   t.z.reserve(static_cast<std::size_t>(n) + 1);
-  t.z.push_back(z0);
-  Z z = as_state(z0);
-  for (std::int64_t j = 0; j < n; ++j) {
-    const auto step = conformal_variational_step(d, sys, z, h, E);
-    z = step.z, t.iterations += step.newton_iterations;
-    t.z.push_back(to_array(z));
-  }
+  integrate(conformal_variational_method(d, sys, E, &t.iterations), as_state(z0), h, n,
+            [&](std::int64_t, const Z& z) { t.z.push_back(to_array(z)); });
   return t;
 }
 

@@ -15,9 +15,10 @@
 #include <utility>
 #include <vector>
 
-#include "geomint/integrators/integrate.hpp"
+#include "geomint/core/integrate.hpp"
 #include "geomint/methods/methods.hpp"
 #include "geomint/methods/registry.hpp"
+#include "geomint/methods/scene_methods.hpp"
 #include "geomint/observables/error_norms.hpp"
 #include "geomint/observables/order_fit.hpp"
 #include "geomint/reference/odeint_reference.hpp"
@@ -35,21 +36,9 @@ namespace {
 using State = PhaseState<2>;
 
 // The label of a method (CSV columns, summary keys) and the prefix of its orders.
-std::string label_of(const std::string& method) { return std::string(method_info(method).label); }
 std::string order_name(const std::string& method) {
   const std::string label = label_of(method);
   return label == "kernel" ? "kernel_unprocessed" : label;  // (the kernel's orders keep their published key)
-}
-
-// What the scene may name: every registered method that steps the (separable)
-// elastic pendulum, by name or label.
-std::vector<std::string> method_choices() {
-  std::vector<std::string> out;
-  for (const auto& name : methods_for<Counting<ElasticPendulumWithGravity>>()) {
-    out.push_back(name);
-    if (label_of(name) != name) out.push_back(label_of(name));
-  }
-  return out;
 }
 
 struct Errors {
@@ -66,7 +55,7 @@ Errors convergence_run(const std::string& method, const Sys& sys, const State& z
   const double H0 = sys.H(z0);
   ErrorSeries energy;
   const State zN = with_method(method, counted, [&](const auto& m) {
-    return integrate_processed(m, z0, h, n, [&](std::int64_t, const State& z) { energy.add(sys.H(z) - H0); });
+    return integrate(m, z0, h, n, [&](std::int64_t, const State& z) { energy.add(sys.H(z) - H0); });
   });
   e.energy_rms = energy.rms50(), e.energy_max = energy.max_abs();
   e.phase = phase_distance(zN, z_ref);
@@ -80,7 +69,7 @@ ElasticPendulumParams pendulum_of(const Scene& s) {
 }
 
 Schema schema() {
-  const auto choices = method_choices();
+  const auto choices = method_choices<Counting<ElasticPendulumWithGravity>>();
   Schema s;
   s.real("pendulum.l", positive(), "relaxed spring length l (000 eq. (73))")
       .real("pendulum.m", positive(), "mass m")
@@ -102,26 +91,12 @@ Schema schema() {
 // The methods named under `key`: each once, each able to step the pendulum,
 // and every h sqrt(k/m) below each one's oscillatory bound (the registry's).
 void check_methods(const Scene& s, const char* key) {
-  const auto methods = s.texts(key);
   const ElasticPendulumParams p = pendulum_of(s);
+  with_elastic_pendulum(p, [&](const auto& sys) { check_methods(s, key, sys); });
   const double omega = std::sqrt(p.k / p.m);
-  std::vector<std::string> labels;
-  for (const auto& m : methods) {
-    if (std::find(labels.begin(), labels.end(), label_of(m)) != labels.end())
-      s.reject(key, "each method once (" + m + " is named twice)");
-    labels.push_back(label_of(m));
-    try {
-      with_elastic_pendulum(p, [&](const auto& sys) { return with_method(m, sys, [](const auto&) { return 0; }); });
-    } catch (const std::invalid_argument& e) {
-      s.reject(key, e.what());
-    }
-    const double bound = method_info(m).oscillatory_bound;  // NaN: not declared, no check
-    if (bound == 0.0) s.reject(key, m + " is unstable on the oscillator for every h > 0");
+  for (const auto& m : s.texts(key))
     for (double h : s.reals("h"))
-      if (!std::isnan(bound) && !(h * omega < bound))
-        s.reject("h", m + " is unstable for h sqrt(k/m) >= " + format_double(bound) + ", i.e. h >= " +
-                          format_double(bound / omega) + " (named in " + key + ")");
-  }
+      check_oscillatory_bound(s, "h", key, m, h * omega, "h sqrt(k/m) at h = " + format_double(h) + ", named in " + key);
 }
 
 void check_common(const Scene& s) {
@@ -192,7 +167,7 @@ void convergence_with(Context& ctx, const Sys& sys) {
   ctx.write("fig4_convergence.csv", conv);
 
   // Orders, per initial condition; the reference error bounds what can be fitted.
-  const double energy_floor = 1e3 * std::numeric_limits<double>::epsilon();
+  const double energy_floor = roundoff_floor();
   const double phase_floor = std::max(100.0 * self_check, energy_floor);
   Csv order_csv({"initial", "name", "order", "log10_c", "r2", "points", "h_min", "h_max"});
   json by_initial = json::array();
@@ -242,13 +217,6 @@ void convergence_with(Context& ctx, const Sys& sys) {
       {"phase", "|z_N - z(t_end)|_2 over (x, y, px, py), against the odeint Bulirsch-Stoer reference"}};
 }
 
-// One run of eq. (23) with every call in it inlined: each method is timed with its step
-// inlined into the loop, however many other methods this executable instantiates.
-template <class M>
-[[gnu::flatten, gnu::noinline]] State final_state(const M& m, const State& z0, double h, std::int64_t n) {
-  return integrate_processed(m, z0, h, n);
-}
-
 // ---- What the accuracy costs: median wall time of each method from
 // initial[0] to t_end (pre once, post once, eq. (23)); force evaluations and
 // phase errors (against the reference at initial[0]) from separate counting runs. ----
@@ -275,7 +243,7 @@ void timing_with(Context& ctx, const Sys& sys) {
     const Counting<Sys> counted{sys, &c.evals};
     const double h = hs[task % nh];
     const std::int64_t n = steps_to(t_end, h);
-    const State zN = with_method(methods[task / nh], counted, [&](const auto& m) { return integrate_processed(m, z0, h, n); });
+    const State zN = with_method(methods[task / nh], counted, [&](const auto& m) { return integrate(m, z0, h, n); });
     c.phase = phase_distance(zN, z_ref);
     return c;
   });
@@ -287,7 +255,7 @@ void timing_with(Context& ctx, const Sys& sys) {
     const double h = hs[task % nh];
     const std::int64_t n = steps_to(t_end, h);
     const double wall = with_method(methods[task / nh], sys, [&](const auto& m) {  // (the dispatch outside the clock)
-      return median_seconds(repeats, [&] { do_not_optimize(final_state(m, z0, h, n)); });
+      return median_seconds(repeats, [&] { do_not_optimize(integrate_inlined(m, z0, h, n)); });
     });
     cost.row(label, h, n, wall, 1e9 * wall / static_cast<double>(n), counts[task].evals, counts[task].phase);
     if (h == h_ns) ns_per_step[label] = 1e9 * wall / static_cast<double>(n);

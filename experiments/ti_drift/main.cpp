@@ -21,11 +21,12 @@
 #include <vector>
 
 #include "geomint/analysis/linear_stability.hpp"
-#include "geomint/integrators/integrate.hpp"
+#include "geomint/core/integrate.hpp"
 #include "geomint/integrators/runge_kutta4.hpp"
 #include "geomint/integrators/takahashi_imada.hpp"
 #include "geomint/methods/methods.hpp"
 #include "geomint/methods/registry.hpp"
+#include "geomint/methods/scene_methods.hpp"
 #include "geomint/observables/linear_fit.hpp"
 #include "geomint/observables/modified_energy.hpp"
 #include "geomint/observables/order_fit.hpp"
@@ -38,7 +39,7 @@
 #include "geomint/systems/harmonic_oscillator.hpp"
 #include "geomint/systems/henon_heiles.hpp"
 #include "geomint/systems/lennard_jones.hpp"
-#include "geomint/transforms/processing.hpp"
+#include "geomint/systems/unsymmetric_pendulum.hpp"
 
 using namespace geomint;
 using json = nlohmann::ordered_json;
@@ -57,37 +58,6 @@ void put(Context& ctx, const char* section, const json& values) {
   for (const auto& [k, v] : values.items()) ctx.summary[section][k] = v;
 }
 
-std::string label_of(const std::string& method) { return std::string(method_info(method).label); }
-
-// Is omega h beyond a method's oscillatory bound (NaN: none declared)?
-bool beyond_bound(double omega_h, double bound) { return !std::isnan(bound) && !(omega_h < bound); }
-
-// The scene names of the methods that can step Sys, and their labels.
-template <class Sys>
-std::vector<std::string> method_choices() {
-  std::vector<std::string> out;
-  for (const auto& name : methods_for<Sys>()) {
-    out.push_back(name);
-    if (label_of(name) != name) out.push_back(label_of(name));
-  }
-  return out;
-}
-
-// Rejects `key` unless every method it names is named once and can step sys (with_kernel throws otherwise).
-template <class Sys>
-void check_methods(const Scene& s, const char* key, const Sys& sys) {
-  std::vector<std::string> labels;
-  for (const auto& m : s.texts(key)) {
-    if (std::find(labels.begin(), labels.end(), label_of(m)) != labels.end())
-      s.reject(key, "each method once (" + m + " is named twice)");
-    labels.push_back(label_of(m));
-    try {
-      with_kernel(m, sys, [](const auto&) { return 0; });
-    } catch (const std::invalid_argument& e) {
-      s.reject(key, e.what());
-    }
-  }
-}
 
 // Henon-Heiles start with q1 = 0 and p1 > 0 from H0 (004 Sect. 5).
 template <class HH>
@@ -111,10 +81,15 @@ void check_hh_start(const Scene& s, const std::string& section, const HH& hh) {
                                   std::to_string(hh.k) + ") needs U(0, q2) + p2^2/2 < hh.H0 = " + short_num(H0));
 }
 
-HenonHeiles ensemble_system(const Scene& s) { return {{}, static_cast<int>(s.integer("hh.k"))}; }
+// Calls f with the Henon-Heiles system of Figs 4-5: exponent hh.k, coupling hh.coupling (compiled out if 0).
+template <class F>
+decltype(auto) with_ensemble_system(const Scene& s, F&& f) {
+  return with_henon_heiles(static_cast<int>(s.integer("hh.k")), s.real("hh.coupling"), f);
+}
 
 // Start i of the Fig. 4 ensemble: (hh3.q2, hh3.p2) perturbed, each trajectory its own stream seeded by (seed, i).
-Z2 ensemble_start(const Scene& s, const HenonHeiles& hhk, std::size_t i) {
+template <class HH>
+Z2 ensemble_start(const Scene& s, const HH& hhk, std::size_t i) {
   std::seed_seq seq{static_cast<std::uint64_t>(s.integer("ensemble.seed")), static_cast<std::uint64_t>(i)};
   std::mt19937_64 rng(seq);
   std::uniform_real_distribution<double> u(-s.real("ensemble.perturbation"), s.real("ensemble.perturbation"));
@@ -194,7 +169,7 @@ void run_oscillator(Context& ctx) {
       if (beyond_bound(osc.w * h, m.bound)) continue;  // (TI at h = h_eff: omega h_eff < 2 sqrt(3))
       const auto [g, e] = with_method(m.name, osc, [&](const auto& method) {  // processed where it has processing
         double gm = 0, em = 0;
-        integrate_processed(method, z0, h, std::llround(std::floor(T1 / h)), [&](std::int64_t j, const Z1& z) {
+        integrate(method, z0, h, std::llround(std::floor(T1 / h)), [&](std::int64_t j, const Z1& z) {
           const Z1 ex = osc.exact(z0, static_cast<double>(j) * h);
           gm = std::max(gm, std::hypot(z.p[0] - ex.p[0], z.q[0] - ex.q[0]));  // (|e_p|^2 + w^2 |e_q|^2)^(1/2)
           em = std::max(em, std::abs(osc.H(z) - osc.H(z0)) / osc.H(z0));
@@ -225,7 +200,7 @@ void run_oscillator(Context& ctx) {
       std::vector<double> h, e;
       for (const auto& p : m.pts)
         if (p.h <= kFitMaxOmegaH) h.push_back(p.h), e.push_back(energy ? p.e : p.g);
-      orders[name] = fit_order(h, e, 1e3 * std::numeric_limits<double>::epsilon(), name.c_str()).order;
+      orders[name] = fit_order(h, e, roundoff_floor(), name.c_str()).order;
     }
     evals[m.label] = m.evals;
     eff_bound[m.label] = m.bound * 2 / static_cast<double>(m.evals);  // in omega h_eff
@@ -262,9 +237,9 @@ void run_pendulum(Context& ctx) {
   // (4.3)'s rate averaged along the exact orbit (RK4 at step 1e-3 over 2000 time units).
   double predicted = 0;
   const std::int64_t n_ref = 2000000;
-  integrate_n_steps([&](const Z1& z) { return runge_kutta4(HamiltonianField{up}, z, 1e-3); }, p0, n_ref,
-                    [&](std::int64_t j, const Z1& z) { predicted += j > 0 ? simplified_ti_drift_rate(up, z, h) : 0.0; });
-  integrate_processed(simplified_ti_method(up, false), p0, h, n, [&](std::int64_t j, const Z1& z) {
+  integrate(RungeKutta4::bind(up), p0, 1e-3, n_ref,
+            [&](std::int64_t j, const Z1& z) { predicted += j > 0 ? simplified_ti_drift_rate(up, z, h) : 0.0; });
+  integrate(simplified_ti_method(up, false), p0, h, n, [&](std::int64_t j, const Z1& z) {
     if (j % every) return;
     const double t = static_cast<double>(j) * h, e = shifted_energy(up, z, h) - E0;
     f2.row(t, e, up.H(z) - up.H(p0));
@@ -292,7 +267,7 @@ void run_hh3(Context& ctx) {
   Csv f3({"t", "E_err", "H_err"});
   std::vector<double> ts, es;
   double worst = 0;
-  integrate_processed(simplified_ti_method(hh, false), start, h, n, [&](std::int64_t j, const Z2& z) {
+  integrate(simplified_ti_method(hh, false), start, h, n, [&](std::int64_t j, const Z2& z) {
     if (j % every) return;
     const double t = static_cast<double>(j) * h, e = simplified_ti_modified_energy(hh, z, h) - E0;
     f3.row(t, e, hh.H(z) - hh.H(start));
@@ -306,12 +281,12 @@ void run_hh3(Context& ctx) {
 // ---- Fig. 4: Henon-Heiles k, an ensemble: mean and standard deviation of the E error;
 // Fig. 5: Poincare cuts of its trajectory with the largest error ----
 
-void run_ensemble(Context& ctx) {
+template <class HH>
+void ensemble_with(Context& ctx, const HH& hhk) {
   const Scene& s = ctx.scene;
   ctx.progress("Fig. 4: ensemble");
   const double h = s.real("h");
   const std::int64_t samples = s.integer("samples");
-  const HenonHeiles hhk = ensemble_system(s);
   const auto M = static_cast<std::size_t>(s.integer("ensemble.size"));
   const std::int64_t n4 = steps_to(s.real("t_end"), h), every4 = std::max<std::int64_t>(1, n4 / samples);
   std::vector<Z2> starts(M);
@@ -320,7 +295,7 @@ void run_ensemble(Context& ctx) {
   const auto series = parallel_map(M, [&](std::size_t i) {
     std::vector<double> e;
     const double E0 = simplified_ti_modified_energy(hhk, starts[i], h);
-    integrate_processed(simplified_ti_method(hhk, false), starts[i], h, n4, [&](std::int64_t j, const Z2& z) {
+    integrate(simplified_ti_method(hhk, false), starts[i], h, n4, [&](std::int64_t j, const Z2& z) {
       if (j % every4 == 0) e.push_back(simplified_ti_modified_energy(hhk, z, h) - E0);
     });
     return e;
@@ -377,7 +352,7 @@ void run_ensemble(Context& ctx) {
   const double tw = static_cast<double>(per) * static_cast<double>(every4) * h;
   Csv f5({"window", "t", "q2", "p2"});
   Z2 prev = starts[worst_i];
-  integrate_processed(simplified_ti_method(hhk, false), starts[worst_i], h, n4, [&](std::int64_t j, const Z2& z) {
+  integrate(simplified_ti_method(hhk, false), starts[worst_i], h, n4, [&](std::int64_t j, const Z2& z) {
     const double t = static_cast<double>(j) * h;
     for (const auto& [label, w] : {std::pair{"growth", steep}, std::pair{"no_growth", flat}}) {
       if (j > 0 && t >= static_cast<double>(w) * tw && t < static_cast<double>(w + 1) * tw && prev.q[0] < 0 &&
@@ -393,9 +368,14 @@ void run_ensemble(Context& ctx) {
   reproduced["poincare_windows"] = {{"growth", {static_cast<double>(steep) * tw, static_cast<double>(steep + 1) * tw}},
                                     {"no_growth", {static_cast<double>(flat) * tw, static_cast<double>(flat + 1) * tw}}};
   put(ctx, "reproduced", reproduced);
-  put(ctx, "published", {{"hh5_mu_final", -0.11e-6}, {"hh5_sigma_final", 0.54e-6},  // Fig. 4, t = 2.5e6
-                         {"hh5_sigma_exponent", 0.5}});
+  if (s.real("hh.coupling") == 1.0)  // the paper's potential
+    put(ctx, "published", {{"hh5_mu_final", -0.11e-6}, {"hh5_sigma_final", 0.54e-6},  // Fig. 4, t = 2.5e6
+                           {"hh5_sigma_exponent", 0.5}});
   put(ctx, "timing", {{"fig4_wall_s", wall4}});
+}
+
+void run_ensemble(Context& ctx) {
+  with_ensemble_system(ctx.scene, [&](const auto& hhk) { ensemble_with(ctx, hhk); });
 }
 
 // ---- Fig. 6: the Lennard-Jones cluster ----
@@ -425,7 +405,7 @@ void run_lj(Context& ctx) {
     const double Hs = lj.H(start);
     double worst = 0;
     std::int64_t diverged = -1;
-    integrate_processed(simplified_ti_method(lj, false), start, hh, steps_to(s.real("lj.scan_t"), hh),
+    integrate(simplified_ti_method(lj, false), start, hh, steps_to(s.real("lj.scan_t"), hh),
                         [&](std::int64_t j, const Z18& z) {
                           if (diverged >= 0) return;
                           const double e = std::abs(lj.H(z) - Hs);
@@ -459,7 +439,7 @@ void run_lj(Context& ctx) {
     Series r;
     const Z18 start = lj_start(i);
     const double E0 = simplified_ti_modified_energy(lj, start, hl), Hs = lj.H(start);
-    integrate_processed(simplified_ti_method(lj, false), start, hl, nl, [&](std::int64_t j, const Z18& z) {
+    integrate(simplified_ti_method(lj, false), start, hl, nl, [&](std::int64_t j, const Z18& z) {
       if (j % every_l) return;
       r.E.push_back(simplified_ti_modified_energy(lj, z, hl) - E0);
       r.H.push_back(lj.H(z) - Hs);
@@ -524,17 +504,10 @@ void run_symplecticity(Context& ctx) {
 // ---- Cost: ns per step of each named method's kernel (no processing, as Figs 2-6
 // use them) on Henon-Heiles k, from the ensemble's first start ----
 
-// n steps of a method with every call in the loop inlined: each method is timed with its step
-// inlined, however many other methods this executable instantiates.
-template <class M, class Z>
-[[gnu::flatten, gnu::noinline]] Z final_state(const M& m, const Z& z0, double h, std::int64_t n) {
-  return integrate_processed(m, z0, h, n);
-}
-
-void run_timing(Context& ctx) {
+template <class HH>
+void timing_with(Context& ctx, const HH& hhk) {
   const Scene& s = ctx.scene;
   ctx.progress("cost: ns per step");
-  const HenonHeiles hhk = ensemble_system(s);
   const Z2 z = ensemble_start(s, hhk, 0);
   const double h = s.real("h");
   const std::int64_t n = s.integer("timing.steps");
@@ -542,13 +515,17 @@ void run_timing(Context& ctx) {
   json ns_per_step;
   for (const auto& m : s.texts("timing.methods"))
     ns_per_step[label_of(m)] = with_kernel(m, hhk, [&](const auto& kernel) {
-      return 1e9 * median_seconds(repeats, [&] { do_not_optimize(final_state(kernel, z, h, n)); }) /
+      return 1e9 * median_seconds(repeats, [&] { do_not_optimize(integrate_inlined(kernel, z, h, n)); }) /
              static_cast<double>(n);
     });
   put(ctx, "timing",
       {{"ns_per_step", ns_per_step},
        {"method", "median of " + std::to_string(repeats) + " runs of " + std::to_string(n) +
                       " steps, single thread, every call inlined; fig4_wall_s, fig6_wall_s: the ensembles on --threads threads"}});
+}
+
+void run_timing(Context& ctx) {
+  with_ensemble_system(ctx.scene, [&](const auto& hhk) { timing_with(ctx, hhk); });
 }
 
 Schema schema() {
@@ -568,6 +545,9 @@ Schema schema() {
       .real("hh3.t_end", positive(), "Fig. 3 time span")
       .integer("hh.k", at_least(3), "exponent k of Fig. 4 (004: 5)")
       .real("hh.H0", positive(), "energy of the Henon-Heiles starts (004: 1/8)")
+      .real("hh.coupling", any_finite(),
+            "coefficient c of c q1^2 q2 in the potential of Figs 4-5 (004: 1); c = 0 removes the term from the "
+            "compiled step")
       .real("t_end", positive(), "Fig. 4 time span (004: 2.5e6)")
       .integer("ensemble.size", at_least(2), "Fig. 4 trajectories (004: 100)")
       .integer("ensemble.seed", non_negative(), "seed; trajectory i uses its own stream (seed, i)")
@@ -610,7 +590,7 @@ int main(int argc, char** argv) {
        run_hh3},
       {"ensemble", "004 Figs 4, 5", {"fig4_stats.csv", "fig4_trajectories.csv", "fig5_poincare.csv"},
        {"h", "t_end", "samples", "hh", "ensemble", "hh3.q2", "hh3.p2"},
-       [](const Scene& s) { check_hh_start(s, "hh3", ensemble_system(s)); },
+       [](const Scene& s) { with_ensemble_system(s, [&](const auto& hh) { check_hh_start(s, "hh3", hh); }); },
        run_ensemble},
       {"lj", "004 Fig 6", {"fig6_*.csv"}, {"lj", "samples"}, nullptr, run_lj},
       {"symplecticity", "004 Sect. 1.3: TI symplectic, the simplified TI only volume-preserving", {},
@@ -622,7 +602,7 @@ int main(int argc, char** argv) {
        run_symplecticity},
       {"timing", "cost: ns per step of each method", {},
        {"timing", "h", "hh", "hh3.q2", "hh3.p2", "ensemble.seed", "ensemble.perturbation"},
-       [](const Scene& s) { check_methods(s, "timing.methods", ensemble_system(s)); }, run_timing},
+       [](const Scene& s) { with_ensemble_system(s, [&](const auto& hh) { check_methods(s, "timing.methods", hh); }); }, run_timing},
   };
   return run_experiment(argc, argv, std::move(spec), GEOMINT_EXPERIMENT_DIR);
 }

@@ -7,8 +7,9 @@
 #include <numbers>
 
 #include "geomint/integrators/explicit_euler.hpp"
-#include "geomint/integrators/integrate.hpp"
+#include "geomint/core/integrate.hpp"
 #include "geomint/integrators/symplectic_euler.hpp"
+#include "geomint/methods/methods.hpp"
 #include "geomint/observables/drift.hpp"
 #include "geomint/systems/exponential_decay.hpp"
 #include "geomint/systems/harmonic_oscillator.hpp"
@@ -42,11 +43,10 @@ TEST(Stability, SymplecticEulerNearItsBoundFor1e5Periods) {
   const std::int64_t n = steps_for_periods(h);
   WindowMaxima windows(n / 100);
   double worst_invariant = 0;
-  const auto z = integrate_n_steps([&](const auto& x) { return symplectic_euler_pq(osc, x, h); }, z0, n,
-                                   [&](std::int64_t, const auto& x) {
-                                     windows.add(osc.H(x) - osc.H(z0));
-                                     worst_invariant = std::max(worst_invariant, std::abs(invariant(x) - invariant(z0)));
-                                   });
+  const auto z = integrate(SymplecticEulerPQ::bind(osc), z0, h, n, [&](std::int64_t, const auto& x) {
+    windows.add(osc.H(x) - osc.H(z0));
+    worst_invariant = std::max(worst_invariant, std::abs(invariant(x) - invariant(z0)));
+  });
   EXPECT_TRUE(std::isfinite(z.q[0]) && std::isfinite(z.p[0]));
   EXPECT_LT(worst_invariant, 1e-9);
   const auto& m = windows.maxima();
@@ -60,17 +60,15 @@ TEST(Stability, CompensatedSymplecticEulerFor1e5Periods) {
   // bounded and shows no drift.
   const HarmonicOscillator osc;
   const double h = 0.3;
-  const PointTransformed sys{osc, OscillatorCompensation{2.0, h}};
+  const OscillatorCompensation compensation{2.0, h};
   const auto z0 = make_state(1.0, 0.0);
   const std::int64_t n = steps_for_periods(h);
   WindowMaxima windows(n / 100);
   double max_qhat = 0;
-  integrate_n_steps([&](const auto& x) { return symplectic_euler_pq(sys, x, h); }, sys.to_transformed(z0), n,
-                    [&](std::int64_t, const auto& xb) {
-                      const auto x = sys.to_original(xb);
-                      windows.add(osc.H(x) - osc.H(z0));
-                      max_qhat = std::max(max_qhat, std::abs(sys.map.qhat(x.q[0])));
-                    });
+  integrate(CompensatedSymplecticEuler::bind(osc, compensation.k), z0, h, n, [&](std::int64_t, const auto& x) {
+    windows.add(osc.H(x) - osc.H(z0));
+    max_qhat = std::max(max_qhat, std::abs(compensation.qhat(x.q[0])));
+  });
   EXPECT_LT(max_qhat, 0.9);
   const auto& m = windows.maxima();
   EXPECT_TRUE(std::isfinite(m.back()));

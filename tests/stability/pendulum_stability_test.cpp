@@ -9,7 +9,7 @@
 
 #include "geomint/observables/drift.hpp"
 #include "geomint/systems/elastic_pendulum.hpp"
-#include "geomint/transforms/processing.hpp"
+#include "geomint/core/integrate.hpp"
 #include "geomint/transforms/rowlands_processors.hpp"
 
 using namespace geomint;
@@ -24,7 +24,7 @@ WindowMaxima energy_windows(const auto& method, double h) {
   const auto n = std::llround(1e5 * 2 * std::numbers::pi / h);
   WindowMaxima w(n / 100);
   const double H0 = sys.H(z0);
-  integrate_processed(method, z0, h, n, [&](std::int64_t, const PhaseState<2>& z) { w.add(sys.H(z) - H0); });
+  integrate(method, z0, h, n, [&](std::int64_t, const PhaseState<2>& z) { w.add(sys.H(z) - H0); });
   return w;
 }
 

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "geomint/integrators/explicit_euler.hpp"
-#include "geomint/integrators/integrate.hpp"
+#include "geomint/core/integrate.hpp"
 #include "geomint/integrators/runge_kutta4.hpp"
 #include "geomint/integrators/symplectic_euler.hpp"
 #include "geomint/methods/methods.hpp"
@@ -101,11 +101,10 @@ TEST(SymplecticEuler, TransformedStepIsSymplectic) {
 TEST(Counting, ForceEvaluationsPerStep) {
   std::int64_t n = 0;
   const Counting<HarmonicOscillator> sys{{}, &n};
-  integrate_n_steps([&](const auto& z) { return symplectic_euler_pq(sys, z, 0.1); }, make_state(1.0, 0.0), 10);
+  integrate(SymplecticEulerPQ::bind(sys), make_state(1.0, 0.0), 0.1, 10);
   EXPECT_EQ(n, 10);  // explicit: one H_q per step
   n = 0;
-  const HamiltonianField field{sys};
-  integrate_n_steps([&](const auto& z) { return runge_kutta4(field, z, 0.1); }, make_state(1.0, 0.0), 10);
+  integrate(RungeKutta4::bind(sys), make_state(1.0, 0.0), 0.1, 10);
   EXPECT_EQ(n, 40);  // four stages
 }
 
@@ -124,7 +123,7 @@ TEST(MethodRegistry, FindsByNameOrLabelAndNamesTheValidNames) {
 }
 
 TEST(MethodRegistry, WithMethodBindsByNameAndRefusesWhatCannotStepTheSystem) {
-  const auto z = with_method("se", HarmonicOscillator{}, [](const auto& m) { return integrate_processed(m, make_state(1.0, 0.5), 0.1, 1); });
+  const auto z = with_method("se", HarmonicOscillator{}, [](const auto& m) { return integrate(m, make_state(1.0, 0.5), 0.1, 1); });
   EXPECT_DOUBLE_EQ(z.p[0], 0.4);  // as SymplecticEuler.PqOneStepOnOscillator
   EXPECT_THROW(with_method("no_such_method", HarmonicOscillator{}, [](const auto&) { return 0; }), std::invalid_argument);
   EXPECT_THROW(with_method("lobatto", transformed, [](const auto&) { return 0; }), std::invalid_argument);  // not mechanical

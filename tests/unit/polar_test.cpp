@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "geomint/integrators/integrate.hpp"
+#include "geomint/core/integrate.hpp"
 #include "geomint/integrators/symplectic_euler.hpp"
 #include "geomint/reference/odeint_reference.hpp"
 #include "geomint/systems/elastic_pendulum.hpp"
@@ -61,9 +61,11 @@ TEST(Polar, SymplecticEulerTrajectoriesAgreeAsHTendsToZero) {
   double previous = 0;
   for (double h : {0.01, 0.005, 0.0025}) {
     const auto n = std::llround(2.0 / h);
-    const auto zc = integrate_n_steps([&](const auto& z) { return symplectic_euler_pq(cart, z, h); }, z0, n);
-    const auto zp = integrate_n_steps([&](const auto& z) { return symplectic_euler_pq(polar, z, h); },
-                                      polar_from_cartesian(z0), n);
+    const auto step = [](const auto& sys) {
+      return one_step_method([&sys](const auto& z, double dt) { return symplectic_euler_pq(sys, z, dt); });
+    };
+    const auto zc = integrate(step(cart), z0, h, n);
+    const auto zp = integrate(step(polar), polar_from_cartesian(z0), h, n);
     const double gap = distance(cartesian_from_polar(zp), zc);
     if (previous > 0) EXPECT_NEAR(previous / gap, 2.0, 0.1);
     previous = gap;

@@ -9,7 +9,7 @@
 #include "geomint/integrators/stormer_verlet.hpp"
 #include "geomint/observables/order_fit.hpp"
 #include "geomint/systems/elastic_pendulum.hpp"
-#include "geomint/transforms/processing.hpp"
+#include "geomint/core/integrate.hpp"
 #include "geomint/transforms/rowlands_processors.hpp"
 
 using namespace geomint;
@@ -91,10 +91,10 @@ TEST(Processing, FinalOnlyRunEqualsTheObservedRun) {
   const double h = 0.05;
   for (int n : {0, 1, 7}) {
     const auto m = rowlands_cheap_method(sys);
-    const auto observed = integrate_processed(m, z0, h, n, [](auto, const auto&) {});
-    EXPECT_EQ(distance(observed, integrate_processed(m, z0, h, n)), 0.0) << n;
+    const auto observed = integrate(m, z0, h, n, [](auto, const auto&) {});
+    EXPECT_EQ(distance(observed, integrate(m, z0, h, n)), 0.0) << n;
     const auto e = rowlands_method(sys);
-    EXPECT_EQ(distance(integrate_processed(e, z0, h, n, [](auto, const auto&) {}), integrate_processed(e, z0, h, n)),
+    EXPECT_EQ(distance(integrate(e, z0, h, n, [](auto, const auto&) {}), integrate(e, z0, h, n)),
               0.0);
   }
 }

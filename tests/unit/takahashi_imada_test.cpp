@@ -3,9 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <type_traits>
 #include <vector>
 
 #include "geomint/integrators/takahashi_imada.hpp"
+#include "geomint/observables/error_norms.hpp"
 #include "geomint/observables/modified_energy.hpp"
 #include "geomint/observables/symplecticity.hpp"
 #include "geomint/observables/order_fit.hpp"
@@ -13,7 +15,7 @@
 #include "geomint/systems/henon_heiles.hpp"
 #include "geomint/systems/lennard_jones.hpp"
 #include "geomint/systems/unsymmetric_pendulum.hpp"
-#include "geomint/transforms/processing.hpp"
+#include "geomint/core/integrate.hpp"
 #include "geomint/transforms/rowlands_processors.hpp"
 
 using namespace geomint;
@@ -24,7 +26,7 @@ const double alpha = takahashi_imada_alpha;
 // Positions q_0..q_n of a plain (unprocessed) method.
 std::vector<double> positions(const auto& method, PhaseState<1> z0, double h, int n) {
   std::vector<double> q;
-  integrate_processed(method, z0, h, n, [&](auto, const PhaseState<1>& z) { q.push_back(z.q[0]); });
+  integrate(method, z0, h, n, [&](auto, const PhaseState<1>& z) { q.push_back(z.q[0]); });
   return q;
 }
 }  // namespace
@@ -52,7 +54,7 @@ TEST(TakahashiImada, MaxRelativeEnergyErrorMatchesTheClosedForm) {
     const double x = wh * wh, closed = x * x * x / (36 * (x * x - 12 * x + 48));
     double worst = 0;
     const auto m = takahashi_imada_method(osc, true);
-    integrate_processed(m, make_state(0.0, 1.0), wh, 20000,
+    integrate(m, make_state(0.0, 1.0), wh, 20000,
                         [&](auto, const PhaseState<1>& z) { worst = std::max(worst, std::abs(osc.H(z) - 0.5) / 0.5); });
     EXPECT_NEAR(worst, closed, 2e-3 * closed) << wh;
   }
@@ -65,12 +67,12 @@ TEST(TakahashiImada, OrdersOnTheOscillator) {
   for (double h = 0.2; h > 0.01; h /= 2) {
     const int n = static_cast<int>(std::lround(10.0 / h));
     double eg = 0, eh = 0, es = 0;
-    integrate_processed(takahashi_imada_method(osc, true), make_state(0.0, 1.0), h, n, [&](auto j, const PhaseState<1>& z) {
+    integrate(takahashi_imada_method(osc, true), make_state(0.0, 1.0), h, n, [&](auto j, const PhaseState<1>& z) {
       const auto ex = osc.exact(make_state(0.0, 1.0), static_cast<double>(j) * h);
       eg = std::max(eg, std::hypot(z.p[0] - ex.p[0], z.q[0] - ex.q[0]));
       eh = std::max(eh, std::abs(osc.H(z) - 0.5));
     });
-    integrate_processed(stormer_verlet_method(osc), make_state(0.0, 1.0), h, n, [&](auto j, const PhaseState<1>& z) {
+    integrate(stormer_verlet_method(osc), make_state(0.0, 1.0), h, n, [&](auto j, const PhaseState<1>& z) {
       const auto ex = osc.exact(make_state(0.0, 1.0), static_cast<double>(j) * h);
       es = std::max(es, std::hypot(z.p[0] - ex.p[0], z.q[0] - ex.q[0]));
     });
@@ -133,7 +135,7 @@ TEST(ModifiedEnergy, ConservedToSixthOrderAlongTheSimplifiedMethodOnHenonHeiles3
   for (double h : {0.2, 0.1, 0.05}) {
     double worst = 0;
     const double E0 = simplified_ti_modified_energy(hh, z0, h);
-    integrate_processed(simplified_ti_method(hh, false), z0, h, std::lround(100 / h), [&](auto, const PhaseState<2>& z) {
+    integrate(simplified_ti_method(hh, false), z0, h, std::lround(100 / h), [&](auto, const PhaseState<2>& z) {
       worst = std::max(worst, std::abs(simplified_ti_modified_energy(hh, z, h) - E0));
     });
     hs.push_back(h), es.push_back(worst);
@@ -162,4 +164,22 @@ TEST(LennardJones, DerivativesAgainstFiniteDifferences) {
   const auto U4 = [&](const Vec<18>& x) { return lj.U4(x, a); };
   const double fd5 = (along(U4, e / 10) - along(U4, -e / 10)) / (e / 5);
   EXPECT_NEAR(lj.U5(q, a), fd5, 1e-4 * (1 + std::abs(fd5)));
+}
+
+TEST(HenonHeiles, ZeroCouplingIsCompiledOutAndOneIsThePaperPotential) {
+  // with_henon_heiles(k, 0) steps a system without the term c q1^2 q2 (not one that multiplies it by 0),
+  // and with c = 1 the same bits as the paper's potential.
+  const Vec<2> q(0.3, -0.2), p(0.1, 0.4);
+  with_henon_heiles(5, 0.0, [&](const auto& hh) {
+    EXPECT_TRUE((std::is_same_v<std::decay_t<decltype(hh)>, HenonHeilesT<false>>));
+    const HenonHeilesT<true> times_zero{{}, 5, 0.0};
+    EXPECT_EQ(hh.U_q(q), times_zero.U_q(q));
+    EXPECT_EQ(hh.U(q), times_zero.U(q));
+  });
+  with_henon_heiles(5, 1.0, [&](const auto& hh) {
+    const HenonHeiles paper{{}, 5};
+    const auto a = simplified_ti_method(hh, false), b = simplified_ti_method(paper, false);
+    EXPECT_EQ(phase_distance(integrate(a, make_state<2>(q, p), 0.1, 100), integrate(b, make_state<2>(q, p), 0.1, 100)),
+              0.0);
+  });
 }

@@ -8,7 +8,7 @@
 #include <Eigen/SVD>
 
 #include "geomint/core/state.hpp"
-#include "geomint/transforms/processing.hpp"
+#include "geomint/core/integrate.hpp"
 
 namespace geomint {
 
@@ -25,7 +25,7 @@ Mat<2> one_step_matrix(const Step& step) {
 // pass its kernel with trivial processors (with_kernel): the kernel decides stability.
 template <class Method>
 Mat<2> one_step_matrix(const Method& method, double h) {
-  return one_step_matrix([&](const PhaseState<1>& z) { return integrate_processed(method, z, h, 1); });
+  return one_step_matrix([&](const PhaseState<1>& z) { return integrate(method, z, h, 1); });
 }
 
 // The same matrix with rows and columns in 001's order (p, q), eq. (13).

@@ -7,6 +7,7 @@
 // One step solves the first equation for q_{j+1} by Newton's method with the
 // exact 2x2 Jacobian from forward-mode automatic differentiation.
 #include <array>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -15,6 +16,7 @@
 #include <Eigen/Core>
 #include <unsupported/Eigen/AutoDiff>
 
+#include "geomint/core/integrate.hpp"
 #include "geomint/integrators/newton.hpp"
 #include "geomint/systems/nonholonomic_particle.hpp"
 
@@ -117,6 +119,17 @@ inline ConformalVariationalStep conformal_variational_step(Discretization d, con
   out.z.q = q1;
   out.z.p = discrete_momentum<double>(d, sys, z.q, q1, h, E, +1);
   return out;
+}
+
+// Psi_{h,E} as a method on (q, p) at fixed E, for integrate(); the Newton iterations of its
+// steps are added to *iterations if given.
+inline auto conformal_variational_method(Discretization d, const NonholonomicParticle& sys, double E,
+                                         std::int64_t* iterations = nullptr) {
+  return one_step_method([d, &sys, E, iterations](const PhaseState<2>& z, double h) {
+    const ConformalVariationalStep step = conformal_variational_step(d, sys, z, h, E);
+    if (iterations) *iterations += step.newton_iterations;
+    return step.z;
+  });
 }
 
 }  // namespace geomint

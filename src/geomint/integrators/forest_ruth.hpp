@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "geomint/integrators/stormer_verlet.hpp"
-#include "geomint/transforms/processing.hpp"
+#include "geomint/core/integrate.hpp"
 
 namespace geomint {
 

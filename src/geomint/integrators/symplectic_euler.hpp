@@ -2,6 +2,7 @@
 // Symplectic Euler, both variants. For separable H = T(p) + U(q) both are
 // explicit; otherwise the implicit stage is solved by Newton's method
 // (newton.hpp) with the Jacobian I +- h H_qp, to round-off.
+#include "geomint/core/compensated_sum.hpp"
 #include "geomint/core/state.hpp"
 #include "geomint/integrators/newton.hpp"
 #include "geomint/methods/registry.hpp"  // its order, bounds and citation: method_info("symplectic_euler_pq")
@@ -50,17 +51,6 @@ State symplectic_euler_qp(const Sys& sys, const State& z, double h) {
 }  // namespace geomint
 
 namespace geomint {
-
-// Compensated summation (Kahan; as in Hairer's GNI codes): s + x with the
-// rounding error of earlier additions carried in c, so that long runs do not
-// random-walk the round-off.
-template <class V>
-void compensated_add(V& s, V& c, const V& x) {
-  const V y = x - c;
-  const V t = s + y;
-  c = (t - s) - y;
-  s = t;
-}
 
 template <int D>
 struct CompensatedState {

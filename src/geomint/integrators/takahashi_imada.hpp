@@ -9,7 +9,7 @@
 
 #include "geomint/core/state.hpp"
 #include "geomint/integrators/stormer_verlet.hpp"
-#include "geomint/transforms/processing.hpp"
+#include "geomint/core/integrate.hpp"
 
 namespace geomint {
 

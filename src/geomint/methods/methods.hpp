@@ -2,7 +2,7 @@
 // The registered methods: one type per method with its registry entry `info`
 // (registry.hpp) and, where it steps a system generically, `applies<Sys>` and
 // `bind(sys)`, a processed method (transforms/processing.hpp) for
-// integrate_processed; a processed method also has `bind_kernel(sys)`, its
+// integrate; a processed method also has `bind_kernel(sys)`, its
 // kernel with trivial processors. The list `registered_methods` is the source
 // of both method_registry() and with_method(). Adding a method: its stepper
 // header, its type here, one line in the list.
@@ -23,7 +23,8 @@
 #include "geomint/methods/registry.hpp"
 #include "geomint/reference/odeint_steppers.hpp"
 #include "geomint/systems/hamiltonian_field.hpp"
-#include "geomint/transforms/processing.hpp"
+#include "geomint/core/integrate.hpp"
+#include "geomint/transforms/point_transform.hpp"
 #include "geomint/transforms/rowlands_processors.hpp"
 
 namespace geomint {
@@ -58,13 +59,6 @@ concept SeparableSystem = HamiltonianSystem<Sys> && MechanicalSystem<Sys> && Sys
 
 inline constexpr double every_h = std::numeric_limits<double>::infinity();  // stable for every step
 inline constexpr double no_bound = std::numeric_limits<double>::quiet_NaN();  // not applicable or not declared
-
-// A one-step map z -> step(z, h) as a processed method with trivial processors.
-inline constexpr auto unprocessed = [](const auto& z, double) { return z; };
-template <class Step>
-auto one_step_method(Step step) {
-  return Processed{step, unprocessed, unprocessed};
-}
 
 // The system as a first-order ODE: itself, or z' = J grad H (000 eq. (20)).
 template <class Sys>
@@ -135,6 +129,15 @@ struct CompensatedSymplecticEuler {
       .kernel_order = 1, .real_bound = no_bound, .oscillatory_bound = no_bound, .properties = property::symplectic,
       .applies_to = "harmonic oscillator (74), amplitude 1",
       .citation = "000 eq. (82), App. B: symplectic Euler (42)-(43) after the point transformation (82), (41)"};
+  // Not in the dispatch by name: (82) has a parameter k of its own. Pre: (41) with Q of (82); kernel:
+  // symplectic Euler in (qbar, pbar); post: the inverse of (41) (NaN where |qhat| >= 1).
+  template <class Sys>
+  static auto bind(const Sys& osc, double k) {
+    const auto in = [osc, k](double h) { return PointTransformed{osc, OscillatorCompensation{k, h}}; };
+    return Processed{[in](const PhaseState<1>& zb, double h) { return symplectic_euler_pq(in(h), zb, h); },
+                     [in](const PhaseState<1>& z, double h) { return in(h).to_transformed(z); },
+                     [in](const PhaseState<1>& zb, double h) { return in(h).to_original(zb); }};
+  }
 };
 
 struct StormerVerlet {
@@ -494,6 +497,16 @@ decltype(auto) with_kernel(std::string_view name_or_label, const Sys& sys, F&& f
 template <class Sys>
 std::vector<std::string> methods_for() {
   return detail::names_for<Sys>(registered_methods{});
+}
+
+// What a scene may name for a study on Sys: the registry names of the methods that can step it and,
+// as shorter spellings, their labels.
+template <class Sys>
+std::vector<std::string> method_choices(std::vector<std::string> names = methods_for<Sys>()) {
+  std::vector<std::string> out = names;
+  for (const auto& name : names)
+    if (method_info(name).label != name) out.emplace_back(method_info(name).label);
+  return out;
 }
 
 }  // namespace geomint

@@ -6,6 +6,7 @@
 // scene name or by label), `geomint-methods` prints the table, and
 // tests/verification checks every entry.
 #include <span>
+#include <string>
 #include <string_view>
 
 namespace geomint {
@@ -38,6 +39,8 @@ std::span<const MethodInfo> method_registry();  // all entries, in a fixed order
 const MethodInfo* find_method(std::string_view name_or_label);
 // Throws std::invalid_argument naming the valid names.
 const MethodInfo& method_info(std::string_view name_or_label);
+// The label (CSV column and summary-key prefix) of a method named by its name or label.
+inline std::string label_of(std::string_view name_or_label) { return std::string(method_info(name_or_label).label); }
 std::string_view family_name(Family);
 
 }  // namespace geomint

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdint>
 
+#include "geomint/core/state.hpp"
+
 namespace geomint {
 
 // Accumulates e_j = value_j - value_0 (or any error sequence) over j = 0..J and
@@ -27,5 +29,11 @@ class ErrorSeries {
 };
 
 inline double relative_error(double approx, double exact) { return std::abs(approx - exact) / std::abs(exact); }
+
+// The l2 distance of two phase-space points (all of q and p).
+template <int D>
+double phase_distance(const PhaseState<D>& a, const PhaseState<D>& b) {
+  return std::sqrt((a.q - b.q).squaredNorm() + (a.p - b.p).squaredNorm());
+}
 
 }  // namespace geomint

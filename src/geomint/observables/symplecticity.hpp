@@ -2,7 +2,7 @@
 // Symplecticity of a one-step map: the defect max |J^T Omega J - Omega| of its
 // Jacobian J (000 eq. (21)), and J of a processed method by central differences.
 #include "geomint/core/state.hpp"
-#include "geomint/transforms/processing.hpp"
+#include "geomint/core/integrate.hpp"
 
 namespace geomint {
 
@@ -30,7 +30,7 @@ Mat<2 * D> step_jacobian_fd(const Method& method, const PhaseState<D>& z, double
     PhaseState<D> a = z, b = z;
     (c < D ? a.q[c] : a.p[c - D]) += d;
     (c < D ? b.q[c] : b.p[c - D]) -= d;
-    const auto za = integrate_processed(method, a, h, 1), zb = integrate_processed(method, b, h, 1);
+    const auto za = integrate(method, a, h, 1), zb = integrate(method, b, h, 1);
     J.col(c) << (za.q - zb.q) / (2 * d), (za.p - zb.p) / (2 * d);
   }
   return J;

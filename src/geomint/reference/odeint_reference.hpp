@@ -64,10 +64,4 @@ std::array<double, N> reference_solution(const Sys& sys, std::array<double, N> x
   return x;
 }
 
-// The l2 distance of two phase-space points (all of q and p).
-template <int D>
-double phase_distance(const PhaseState<D>& a, const PhaseState<D>& b) {
-  return std::sqrt((a.q - b.q).squaredNorm() + (a.p - b.p).squaredNorm());
-}
-
 }  // namespace geomint

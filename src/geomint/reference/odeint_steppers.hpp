@@ -11,7 +11,7 @@
 #include <boost/numeric/odeint.hpp>
 
 #include "geomint/reference/odeint_reference.hpp"
-#include "geomint/transforms/processing.hpp"
+#include "geomint/core/integrate.hpp"
 
 namespace geomint {
 

@@ -2,7 +2,10 @@
 // Wall-clock timing for the cost figures and summary.json (never for pass/fail).
 #include <algorithm>
 #include <chrono>
+#include <cstdint>
 #include <vector>
+
+#include "geomint/core/integrate.hpp"
 
 namespace geomint {
 
@@ -25,6 +28,13 @@ double median_seconds(int repeats, const F& f) {
   std::sort(t.begin(), t.end());
   const std::size_t n = t.size();
   return n % 2 ? t[n / 2] : 0.5 * (t[n / 2 - 1] + t[n / 2]);
+}
+
+// n steps of eq. (23) (pre once, post once) with every call in the loop inlined: each method is
+// timed with its step inlined, however many other methods the executable instantiates.
+template <class M, class Z>
+[[gnu::flatten, gnu::noinline]] Z integrate_inlined(const M& m, const Z& z0, double h, std::int64_t n) {
+  return integrate(m, z0, h, n);
 }
 
 }  // namespace geomint

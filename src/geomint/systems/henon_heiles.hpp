@@ -5,7 +5,6 @@
 
 #include "geomint/core/state.hpp"
 #include "geomint/systems/unit_mass.hpp"
-#include "geomint/systems/unsymmetric_pendulum.hpp"
 
 namespace geomint {
 

@@ -15,7 +15,7 @@
 #include "geomint/core/state.hpp"
 #include "geomint/integrators/rowlands.hpp"
 #include "geomint/integrators/stormer_verlet.hpp"
-#include "geomint/transforms/processing.hpp"
+#include "geomint/core/integrate.hpp"
 
 namespace geomint {
 

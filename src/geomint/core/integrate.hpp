@@ -1,11 +1,16 @@
 #pragma once
-// Processed methods, 000 eq. (22)-(23): Phi^n = post o kernel^n o pre. The
-// preprocessor is applied once, the kernel n times, the postprocessor only
-// where a result is wanted. The kernel runs on a state of its own (for
-// kick-drift-kick kernels it carries the cached force); `pre(z, h)` maps a
-// phase-space point into it and `post` maps back, either pointwise,
-// `post(s, h)`, or from the kernel states at steps j-1, j, j+1,
-// `post(prev, cur, next, h)` (000 eq. (36)-(37)).
+// The one step interface and the one driver.
+//
+// A method is a processed method, 000 eq. (22)-(23): Phi^n = post o kernel^n o
+// pre. The kernel runs on a state of its own (for kick-drift-kick kernels it
+// carries the cached force): `kernel(s, h)` is the step, `pre(z, h)` maps a
+// phase-space point into the kernel's state once, and `post` maps back only
+// where a result is wanted, either pointwise, `post(s, h)`, or from the kernel
+// states at steps j-1, j, j+1, `post(prev, cur, next, h)` (000 eq. (36)-(37)).
+// A plain one-step map is the processed method with identity processors
+// (one_step_method). `integrate` drives any of them with an integer step
+// counter: t_j = j h is computed by the observer, never accumulated.
+#include <cmath>
 #include <cstdint>
 
 namespace geomint {
@@ -20,6 +25,16 @@ struct Processed {
 template <class Kernel, class Pre, class Post>
 Processed(Kernel, Pre, Post) -> Processed<Kernel, Pre, Post>;
 
+// A one-step map z -> step(z, h) as a processed method with identity processors.
+inline constexpr auto unprocessed = [](const auto& z, double) { return z; };
+template <class Step>
+auto one_step_method(Step step) {
+  return Processed{step, unprocessed, unprocessed};
+}
+
+// The number of steps of size h to t_end (scenes check that h divides t_end).
+inline std::int64_t steps_to(double t_end, double h) { return std::llround(t_end / h); }
+
 namespace detail {
 template <class M, class S>
 concept StencilPost = requires(const M& m, const S& s, double h) { m.post(s, s, s, h); };
@@ -29,7 +44,7 @@ concept StencilPost = requires(const M& m, const S& s, double h) { m.post(s, s, 
 // stencil postprocessor needs the kernel state at j-1 for j = 0, taken as
 // kernel(s_0, -h) (the inverse step of a symmetric kernel), and at n+1.
 template <class M, class Z, class Observer>
-Z integrate_processed(const M& m, const Z& z0, double h, std::int64_t n, Observer&& observe) {
+Z integrate(const M& m, const Z& z0, double h, std::int64_t n, Observer&& observe) {
   auto cur = m.pre(z0, h);
   using S = decltype(cur);
   if constexpr (detail::StencilPost<M, S>) {
@@ -52,9 +67,10 @@ Z integrate_processed(const M& m, const Z& z0, double h, std::int64_t n, Observe
   }
 }
 
-// 000 eq. (23) as it is meant to be used: pre once, n kernel steps, post once.
+// 000 eq. (23) as it is meant to be used: pre once, n kernel steps, post once
+// (the loop that timing runs measure).
 template <class M, class Z>
-Z integrate_processed(const M& m, const Z& z0, double h, std::int64_t n) {
+Z integrate(const M& m, const Z& z0, double h, std::int64_t n) {
   auto s = m.pre(z0, h);
   using S = decltype(s);
   if constexpr (detail::StencilPost<M, S>) {
