@@ -16,8 +16,13 @@ if (!exists("ic")) ic = 0
 CONV = csv('fig4_convergence.csv')
 sel(col) = (column("initial") == ic) ? column(col) : NaN     # the rows of initial condition ic
 
-# the methods: the column prefixes of the *_phase columns (registry labels)
-CSV_METHODS = system(sprintf("head -n 1 '%s' | tr ',' '\n' | sed -n 's/_phase$//p' | tr '\n' ' '", CONV))
+# the methods: the column prefixes of the *_evals columns (registry labels); the panels: the
+# observables the scene named (energy_error: *_energy_rms columns, phase_error: *_phase columns)
+HEADER = system(sprintf("head -n 1 '%s'", CONV))
+CSV_METHODS = system(sprintf("head -n 1 '%s' | tr ',' '\n' | sed -n 's/_evals$//p' | tr '\n' ' '", CONV))
+HAS_ENERGY = strstrt(HEADER, "_energy_rms") > 0
+HAS_PHASE = strstrt(HEADER.",", "_phase,") > 0
+QUANTITIES = (HAS_ENERGY ? "energy " : "") . (HAS_PHASE ? "phase" : "")
 PREFERRED = "sv kernel rowlands_printed rowlands rowlands_cheap forest_ruth"   # (the key's order)
 in_list(list, w) = strstrt(" ".list." ", " ".w." ") > 0
 METHODS = ""
@@ -47,7 +52,7 @@ _row_ic(n, col) = (strcol("name") eq n && column("initial") == ic) ? column(col)
 _get_ic(n, col, var) = sprintf("undefine STATS_*; stats csv('orders.csv') using (_row_ic('%s','%s')) nooutput; %s = STATS_max; ", n, col, var)
 fit_at(n) = _get_ic(n, 'order', n.'_order') . _get_ic(n, 'log10_c', n.'_c') \
           . _get_ic(n, 'h_min', n.'_hmin')  . _get_ic(n, 'h_max', n.'_hmax')
-do for [m in METHODS] { do for [q in "energy phase"] { eval fit_at(FIT(m).'_'.q) } }
+do for [m in METHODS] { do for [q in QUANTITIES] { eval fit_at(FIT(m).'_'.q) } }
 # the fitted line err = 10^c h^order from h_min (t = 0) to h_max (t = 1): straight in log-log
 fit_h(n, t)   = value(n.'_hmin') * (value(n.'_hmax') / value(n.'_hmin'))**t
 fit_err(n, t) = powerlaw(fit_h(n, t), value(n.'_c'), value(n.'_order'))
@@ -61,8 +66,10 @@ Z0 = sprintf("initial condition (x, y, p_x, p_y) = (%s, %s, %s, %s)", scene_num(
              scene_num(sprintf('initial.%d.1', ic)), scene_num(sprintf('initial.%d.2', ic)), scene_num(sprintf('initial.%d.3', ic)))
 
 do for [fmt in FORMATS] {
-    eval term(fmt, 'rowlands_convergence_fig4', 17, 12 + 0.5 * (words(METHODS) - 5))   # (room for the key)
-    set multiplot layout 1,2 title sprintf("{/:Bold Fig. 4:} planar elastic pendulum, Cartesian coordinates: %s\n%s; dashed (dotted) lines: least-squares fits over the h range fitted", PARAMS, Z0)
+    NP = words(QUANTITIES)    # one panel per observable; the title in more lines on one panel
+    SEP = NP == 1 ? "\n" : " "
+    eval term(fmt, 'rowlands_convergence_fig4', NP == 1 ? 11 : 17, 12 + 0.5 * (words(METHODS) - 5) + (NP == 1 ? 1 : 0))
+    set multiplot layout 1,NP title sprintf("{/:Bold Fig. 4:} planar elastic pendulum, Cartesian coordinates:%s%s\n%s;%sdashed (dotted) lines: least-squares fits over the h range fitted", SEP, PARAMS, Z0, SEP)
     set format x "%g"
     eval LOGTICS("1 2 5")  # the h range may span less than a decade
     set logscale xy
@@ -73,6 +80,7 @@ do for [fmt in FORMATS] {
     set autoscale xfix
     set offsets graph 0.04, graph 0.04, 0, 0
 
+    if (HAS_ENERGY) {
     set title "energy error, eq. (50)"
     set ylabel "(J^{−1} Σ_{j=0}^{J} (H(q^j, p^j) − H_0)^2)^{1/2}"
     plot for [m in METHODS] CONV using "h":(sel(m.'_energy_rms')) with points ls STYLE(m) notitle, \
@@ -80,7 +88,9 @@ do for [fmt in FORMATS] {
                 with lines ls FITSTYLE(m) notitle, \
          for [m in METHODS] keyentry with linespoints ls FITSTYLE(m) \
                 title sprintf("%s, order %.2f", LABEL(m), value(FIT(m).'_energy_order'))
+    }
 
+    if (HAS_PHASE) {
     set title "phase-space error at t_{max}"
     set ylabel "|z^N − z(t_{max})|_2,  z = (x, y, p_x, p_y)"
     plot for [m in METHODS] CONV using "h":(sel(m.'_phase')) with points ls STYLE(m) notitle, \
@@ -88,6 +98,7 @@ do for [fmt in FORMATS] {
                 with lines ls FITSTYLE(m) notitle, \
          for [m in METHODS] keyentry with linespoints ls FITSTYLE(m) \
                 title sprintf("%s, order %.2f", LABEL(m), value(FIT(m).'_phase_order'))
+    }
     unset multiplot
     unset output
 }

@@ -47,18 +47,32 @@ struct Errors {
   std::int64_t force_evals = 0;           // with postprocessing at every step
 };
 
+// What the convergence study records (the scene's `observables`).
+struct Observables {
+  bool energy = false;  // "energy_error": H along the run (postprocessed at every step)
+  bool phase = false;   // "phase_error": z_N against the reference (only then is a reference computed)
+};
+
+Observables observables_of(const Scene& s) {
+  const auto named = s.texts("observables");
+  const auto has = [&](const char* o) { return std::find(named.begin(), named.end(), o) != named.end(); };
+  return {has("energy_error"), has("phase_error")};
+}
+
+// One run of a method; z_ref is read only for the phase error.
 template <class Sys>
-Errors convergence_run(const std::string& method, const Sys& sys, const State& z0, const State& z_ref, double h,
-                       std::int64_t n) {
+Errors convergence_run(const std::string& method, const Sys& sys, const State& z0, const State* z_ref, double h,
+                       std::int64_t n, Observables obs) {
   Errors e;
   const Counting<Sys> counted{sys, &e.force_evals};
   const double H0 = sys.H(z0);
   ErrorSeries energy;
   const State zN = with_method(method, counted, [&](const auto& m) {
+    if (!obs.energy) return integrate(m, z0, h, n);  // pre once, post once (eq. (23))
     return integrate(m, z0, h, n, [&](std::int64_t, const State& z) { energy.add(sys.H(z) - H0); });
   });
-  e.energy_rms = energy.rms50(), e.energy_max = energy.max_abs();
-  e.phase = phase_distance(zN, z_ref);
+  if (obs.energy) e.energy_rms = energy.rms50(), e.energy_max = energy.max_abs();
+  if (obs.phase) e.phase = phase_distance(zN, *z_ref);
   return e;
 }
 
@@ -81,6 +95,9 @@ Schema schema() {
       .reals("h", positive(), 3,
              "step sizes; each divides t_end, and h sqrt(k/m) is below the oscillatory bound of every named method")
       .texts("methods", choices, 1, "methods of the convergence study (registry names or labels)")
+      .texts("observables", {"energy_error", "phase_error"}, 1,
+             "what the convergence study records: energy_error (eq. (50) and the max over the run), phase_error "
+             "(|z_N - z(t_end)|_2 against the odeint reference, computed only if named)")
       .real("reference.rtol", positive(), "relative tolerance of the odeint Bulirsch-Stoer reference")
       .real("reference.atol", positive(), "absolute tolerance of the odeint Bulirsch-Stoer reference")
       .texts("timing.methods", choices, 1, "methods of the cost study (registry names or labels)")
@@ -117,20 +134,21 @@ void convergence_with(Context& ctx, const Sys& sys) {
   const auto hs = s.reals("h");
   const auto initial = s.real_rows("initial");
   const auto methods = s.texts("methods");
+  const Observables obs = observables_of(s);
   const double t_end = s.real("t_end"), rtol = s.real("reference.rtol"), atol = s.real("reference.atol");
   const auto order_of = [](const char* m) { return static_cast<double>(method_info(m).order); };
-  const json published = {{"sv_energy", order_of("stormer_verlet")}, {"sv_phase", order_of("stormer_verlet")},  // Fig. 4
+  const json published_all = {{"sv_energy", order_of("stormer_verlet")}, {"sv_phase", order_of("stormer_verlet")},  // Fig. 4
                           {"rowlands_energy", order_of("rowlands")}, {"rowlands_phase", order_of("rowlands")},
                           {"rowlands_cheap_phase", order_of("rowlands_cheap")}};  // Sec. 3.3: the cheap processors keep order 4
   json reproduced, fits;
 
   // References, one per initial condition, and their self-check at 100x tighter tolerances.
-  ctx.progress("references (odeint Bulirsch-Stoer)");
+  if (obs.phase) ctx.progress("references (odeint Bulirsch-Stoer)");
   struct Ref {
     State z;
     double self_check;
   };
-  const auto refs = parallel_map(initial.size(), [&](std::size_t i) {
+  const auto refs = parallel_map(obs.phase ? initial.size() : 0, [&](std::size_t i) {
     const State z0 = state_of(initial[i]);
     const State a = reference_solution(sys, z0, t_end, rtol, atol);
     const State b = reference_solution(sys, z0, t_end, rtol / 100, atol / 100);
@@ -143,7 +161,7 @@ void convergence_with(Context& ctx, const Sys& sys) {
                 refs[i].self_check);
     self_check = std::max(self_check, refs[i].self_check);
   }
-  ctx.write("reference.csv", ref_csv);
+  if (obs.phase) ctx.write("reference.csv", ref_csv);
 
   // Convergence: one task per (initial condition, h), all methods in it.
   ctx.progress("Fig. 4: convergence");
@@ -152,16 +170,25 @@ void convergence_with(Context& ctx, const Sys& sys) {
     const std::size_t i = task / nh;
     const double h = hs[task % nh];
     std::vector<Errors> out;
-    for (const auto& m : methods) out.push_back(convergence_run(m, sys, state_of(initial[i]), refs[i].z, h, steps_to(t_end, h)));
+    for (const auto& m : methods)
+      out.push_back(convergence_run(m, sys, state_of(initial[i]), obs.phase ? &refs[i].z : nullptr, h,
+                                    steps_to(t_end, h), obs));
     return out;
   });
   std::vector<std::string> columns = {"initial", "h", "steps"};
-  for (const auto& m : methods)
-    for (const char* q : {"_energy_rms", "_energy_max", "_phase", "_evals"}) columns.push_back(label_of(m) + q);
+  for (const auto& m : methods) {
+    if (obs.energy) columns.insert(columns.end(), {label_of(m) + "_energy_rms", label_of(m) + "_energy_max"});
+    if (obs.phase) columns.push_back(label_of(m) + "_phase");
+    columns.push_back(label_of(m) + "_evals");
+  }
   Csv conv(columns);
   for (std::size_t task = 0; task < runs.size(); ++task) {
     conv << static_cast<std::int64_t>(task / nh) << hs[task % nh] << steps_to(t_end, hs[task % nh]);
-    for (const auto& e : runs[task]) conv << e.energy_rms << e.energy_max << e.phase << e.force_evals;
+    for (const auto& e : runs[task]) {
+      if (obs.energy) conv << e.energy_rms << e.energy_max;
+      if (obs.phase) conv << e.phase;
+      conv << e.force_evals;
+    }
     conv.end_row();
   }
   ctx.write("fig4_convergence.csv", conv);
@@ -182,9 +209,11 @@ void convergence_with(Context& ctx, const Sys& sys) {
         rms.push_back(e.energy_rms), mx.push_back(e.energy_max), ph.push_back(e.phase);
       }
       const double H0 = std::abs(sys.H(state_of(initial[i])));
-      for (const auto& [suffix, err, floor] : {std::tuple{"_energy", &rms, energy_floor * std::max(H0, 1.0)},
-                                               std::tuple{"_energy_max", &mx, energy_floor * std::max(H0, 1.0)},
-                                               std::tuple{"_phase", &ph, phase_floor}}) {
+      std::vector<std::tuple<const char*, const std::vector<double>*, double>> fitted;
+      if (obs.energy)
+        fitted = {{"_energy", &rms, energy_floor * std::max(H0, 1.0)}, {"_energy_max", &mx, energy_floor * std::max(H0, 1.0)}};
+      if (obs.phase) fitted.emplace_back("_phase", &ph, phase_floor);
+      for (const auto& [suffix, err, floor] : fitted) {
         const OrderFit f = [&] {
           try {
             return fit_order(hs, *err, floor, (name + suffix).c_str());
@@ -203,18 +232,26 @@ void convergence_with(Context& ctx, const Sys& sys) {
     by_initial.push_back(o);
   }
   ctx.write("orders.csv", order_csv);
-  reproduced["reference_self_check"] = self_check;
-  reproduced["reference_margin"] = min_phase / self_check;  // must be >= 100 (checked by the tests)
+  if (obs.phase) {
+    reproduced["reference_self_check"] = self_check;
+    reproduced["reference_margin"] = min_phase / self_check;  // must be >= 100 (checked by the tests)
+  }
 
+  json published;  // the paper's orders of what this run fitted
+  for (const auto& [key, order] : published_all.items())
+    if (by_initial[0].contains(key)) published[key] = order;
   ctx.summary["published"] = published;
-  ctx.summary["reproduced"] = reproduced;
+  if (!reproduced.empty()) ctx.summary["reproduced"] = reproduced;
   ctx.summary["orders"] = by_initial[0];
   ctx.summary["orders_by_initial"] = by_initial;
   ctx.summary["fits"] = fits;
-  ctx.summary["norms"] = {
-      {"energy", "eq. (50): sqrt(sum_{j=0}^{N} (H(z_j) - H(z_0))^2 / N), z_j postprocessed at every step"},
-      {"energy_max", "max over j of |H(z_j) - H(z_0)|"},
-      {"phase", "|z_N - z(t_end)|_2 over (x, y, px, py), against the odeint Bulirsch-Stoer reference"}};
+  json norms;
+  if (obs.energy) {
+    norms["energy"] = "eq. (50): sqrt(sum_{j=0}^{N} (H(z_j) - H(z_0))^2 / N), z_j postprocessed at every step";
+    norms["energy_max"] = "max over j of |H(z_j) - H(z_0)|";
+  }
+  if (obs.phase) norms["phase"] = "|z_N - z(t_end)|_2 over (x, y, px, py), against the odeint Bulirsch-Stoer reference";
+  ctx.summary["norms"] = norms;
 }
 
 // ---- What the accuracy costs: median wall time of each method from
@@ -287,7 +324,7 @@ int main(int argc, char** argv) {
                       {}};
   spec.studies = {
       {"convergence", "000 Fig 4", {"fig4_convergence.csv", "orders.csv", "reference.csv"},
-       {"initial", "t_end", "h", "methods", "pendulum", "reference"},
+       {"initial", "t_end", "h", "methods", "observables", "pendulum", "reference"},
        [](const Scene& s) {
          check_common(s);
          check_methods(s, "methods");

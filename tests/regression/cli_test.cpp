@@ -196,3 +196,24 @@ TEST(Cli, CompensatedMethodRefusesASingularStep) {
   expect_rejected("--study convergence --set oscillator.q0=1.5 --set 'convergence.h=[0.1, 0.05, 0.025]'",
                   {"convergence.h", "(82)"});
 }
+
+// Only the observables the scene names are computed: without phase_error no reference solution is
+// computed or written, and no phase column, order or reference check appears.
+TEST(Cli, RowlandsEnergyErrorAloneComputesNoReference) {
+  const fs::path out = work / "energy_only";
+  fs::remove_all(out);
+  const Outcome r = run("--quick --study convergence --set 'observables=[\"energy_error\"]' --out " + out.string(),
+                        bin_of("rowlands_convergence"));
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_FALSE(fs::exists(out / "reference.csv"));
+  std::ifstream csv(out / "fig4_convergence.csv");
+  std::string header;
+  std::getline(csv, header);
+  EXPECT_NE(header.find("sv_energy_rms"), std::string::npos) << header;
+  EXPECT_EQ(header.find("_phase"), std::string::npos) << header;
+  std::ifstream summary(out / "summary.json");
+  std::stringstream ss;
+  ss << summary.rdbuf();
+  EXPECT_EQ(ss.str().find("_phase"), std::string::npos);
+  EXPECT_EQ(ss.str().find("reference_self_check"), std::string::npos);
+}
