@@ -112,7 +112,7 @@ TEST(Cli, MeasureCloudUnknownDiscretization) {
   expect_rejected("--set methods=[\\\"M\\\",\\\"MM\\\"]", {"methods", "\"TT\""}, bin_of("measure_cloud"));
 }
 TEST(Cli, MeasureCloudUnknownPotential) {
-  expect_rejected("--set potential=\\\"quartic\\\"", {"potential", "\"harmonic\" \"free\""}, bin_of("measure_cloud"));
+  expect_rejected("--set potential=\\\"quartic\\\"", {"potential", "\"harmonic\", \"free\""}, bin_of("measure_cloud"));
 }
 TEST(Cli, MeasureCloudWindowBeyondRun) {
   expect_rejected("--set ptp_window=40", {"ptp_window", "t_end"}, bin_of("measure_cloud"));

@@ -103,7 +103,7 @@ TEST(Scene, RejectsTypeErrors) {
   EXPECT_NE(err.find("must be a finite number > 0"), std::string::npos) << err;
   EXPECT_NE(error_of(valid, {"decay.steps=2.5"}).find("must be an integer"), std::string::npos);
   EXPECT_NE(error_of(valid, {"flags.fast=1"}).find("true or false"), std::string::npos);
-  EXPECT_NE(error_of(valid, {"method=\"euler\""}).find("one of \"se\" \"rk4\""), std::string::npos);
+  EXPECT_NE(error_of(valid, {"method=\"euler\""}).find("one of \"se\", \"rk4\""), std::string::npos);
   EXPECT_NE(error_of(valid, {"initial=[[1, 2, 3]]"}).find("lists of 2 numbers"), std::string::npos);
 }
 
@@ -181,4 +181,22 @@ TEST(Scene, CrossKeyRejectNamesTheKeyAndValue) {
   } catch (const SceneError& e) {
     EXPECT_NE(std::string(e.what()).find("decay.h = 0.3 (in "), std::string::npos) << e.what();
   }
+}
+
+TEST(Scene, AnErrorInAnOlderSpellingNamesIt) {
+  Schema aliased;
+  aliased.texts("studies", {"a", "b"}, 0, "studies").alias("observables", "studies");
+  const auto error = [&](const std::string& text, const std::vector<std::string>& overrides) {
+    try {
+      Scene::load(scene_file(text), overrides, aliased);
+    } catch (const SceneError& e) {
+      return std::string(e.what());
+    }
+    return std::string();
+  };
+  EXPECT_NE(error("observables = [\"c\"]\n", {}).find("as 'observables', the older name of 'studies'"),
+            std::string::npos);
+  EXPECT_EQ(error("studies = []\n", {"observables=[\"c\"]"}),
+            "studies = [\"c\"] (from --set as 'observables', the older name of 'studies'): must be a list of strings, "
+            "each one of \"a\", \"b\"");
 }

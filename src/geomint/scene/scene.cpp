@@ -189,10 +189,12 @@ std::optional<std::string> check(const Schema::Entry& e, const toml::node& node)
     case Schema::Type::text:
     case Schema::Type::texts: {
       const bool list = e.type == Schema::Type::texts;
-      std::string allowed = list ? "must be a list of at least " + std::to_string(e.min_len) + " strings" : "must be a string";
+      std::string allowed = !list           ? "must be a string"
+                            : e.min_len == 0 ? "must be a list of strings"
+                                             : "must be a list of at least " + std::to_string(e.min_len) + " strings";
       if (!e.choices.empty()) {
-        allowed += list ? ", each one of" : ", one of";
-        for (const auto& c : e.choices) allowed += " \"" + c + "\"";
+        allowed += list ? ", each one of " : ", one of ";
+        for (std::size_t i = 0; i < e.choices.size(); ++i) allowed += (i ? ", \"" : "\"") + e.choices[i] + "\"";
       }
       const auto ok = [&](const toml::node& n) {
         return n.is_string() && (e.choices.empty() || std::find(e.choices.begin(), e.choices.end(),
@@ -216,9 +218,10 @@ namespace {
 constexpr int kMaxBaseDepth = 8;
 
 // Moves the value at dotted path `from` to `to` (an older spelling of a key).
-void rename_key(toml::table& t, const std::string& from, const std::string& to, const std::string& where) {
+// Moves `from` to `to` (an older spelling); returns whether `from` was there.
+bool rename_key(toml::table& t, const std::string& from, const std::string& to, const std::string& where) {
   const auto node = t.at_path(from);
-  if (!node) return;
+  if (!node) return false;
   if (t.at_path(to)) throw SceneError(where + ": '" + from + "' and '" + to + "' are the same key; give only '" + to + "'");
   const auto parts = split_dotted(from), target = split_dotted(to);
   toml::table* parent = &t;
@@ -230,6 +233,12 @@ void rename_key(toml::table& t, const std::string& from, const std::string& to, 
   }
   (*parent)[parts.back()].node()->visit([&](const auto& n) { dest->insert_or_assign(target.back(), n); });
   parent->erase(parts.back());
+  return true;
+}
+
+// Where a key's value came from, naming the older spelling if that is what was written.
+std::string spelled_as(const std::string& origin, const std::string& given, const std::string& key) {
+  return given == key ? origin : origin + " as '" + given + "', the older name of '" + key + "'";
 }
 
 // Lays `over` onto `base`: tables merge key by key, every other value replaces.
@@ -263,7 +272,9 @@ Loaded read_scene(const std::filesystem::path& file, const Schema& schema, std::
     throw SceneError(where + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) +
                      ": not valid TOML: " + std::string(err.description()));
   }
-  for (const auto& [from, to] : schema.aliases()) rename_key(own, from, to, where);
+  std::map<std::string, std::string> spelled;  // new key -> the older spelling this file used
+  for (const auto& [from, to] : schema.aliases())
+    if (rename_key(own, from, to, where)) spelled[to] = from;
   if (const auto base = own["base"]; base) {
     if (!base.is_string()) throw SceneError(where + ": base must be a string naming the base scene file");
     const std::filesystem::path base_file = file.parent_path() / *base.value<std::string>();
@@ -278,7 +289,10 @@ Loaded read_scene(const std::filesystem::path& file, const Schema& schema, std::
   }
   std::vector<std::string> keys;
   leaf_keys(own, "", keys);
-  for (const auto& key : keys) out.origin[key] = "in " + where;
+  for (const auto& key : keys) {
+    const auto old = spelled.find(key);
+    out.origin[key] = spelled_as("in " + where, old == spelled.end() ? key : old->second, key);
+  }
   merge_into(out.table, own);
   return out;
 }
@@ -313,8 +327,8 @@ Scene Scene::load(const std::filesystem::path& file, const std::vector<std::stri
     if (eq == std::string::npos || eq == 0) {
       throw SceneError("--set " + assignment + ": expected key=value");
     }
-    std::string key = assignment.substr(0, eq);
-    const std::string value = assignment.substr(eq + 1);
+    const std::string given = assignment.substr(0, eq), value = assignment.substr(eq + 1);
+    std::string key = given;
     for (const auto& [from, to] : schema.aliases())
       if (key == from) key = to;
     const auto* entry = schema.find(key);
@@ -333,7 +347,7 @@ Scene Scene::load(const std::filesystem::path& file, const std::vector<std::stri
       t = (*t)[parts[i]].as_table();
     }
     parsed.get("v")->visit([&](const auto& n) { t->insert_or_assign(parts.back(), n); });
-    scene.origin_[key] = "from --set";
+    scene.origin_[key] = spelled_as("from --set", given, key);
   }
 
   for (const auto& e : schema.entries()) {
