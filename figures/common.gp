@@ -179,3 +179,20 @@ LS_TD_TI_FIT  = 112; set style line LS_TD_TI_FIT  lc rgb C_TI  lw 0.9 dt (8,4)
 LS_TD_STI_FIT = 113; set style line LS_TD_STI_FIT lc rgb C_STI lw 1.2 dt (8,4)
 # time as the colour of points (Fig. 5): eval PALETTE_TIME (viridis, cut before its light yellow end)
 PALETTE_TIME = "set palette defined (0 '#440154', 0.25 '#3B528B', 0.5 '#21908C', 0.75 '#5DC863', 1 '#B5DE2B')"
+
+# ---- methods named by the scene (registry labels in the CSV columns) -------
+in_list(list, w) = strstrt(" ".list." ", " ".w." ") > 0
+word_index(list, w) = sum [i = 1:words(list)] (word(list, i) eq w ? i : 0)   # 0 if w is not in list
+nosub(s) = (_u = strstrt(s, "_")) ? s[1:_u-1]." ".nosub(s[_u+1:]) : s         # a label as key text (no subscripts)
+# eval ORDER_METHODS sets METHODS to the words of CSV_METHODS, those in PREFERRED first and in its order
+ORDER_METHODS = 'METHODS = ""; ' \
+              . 'do for [m in PREFERRED] { if (in_list(CSV_METHODS, m)) { METHODS = METHODS.m." " } }; ' \
+              . 'do for [m in CSV_METHODS] { if (!in_list(PREFERRED, m)) { METHODS = METHODS.m." " } }'
+# Forest-Ruth (in no paper here: the standard order-4 composition) and any further method: black
+# crosses and grey stars; their fits dotted (style + 10)
+C_FR = '#000000'
+C_OTHER = '#777777'
+LS_FR    = 28; set style line LS_FR    lc rgb C_FR    lw 1.0 pt 2 ps 0.75
+LS_OTHER = 29; set style line LS_OTHER lc rgb C_OTHER lw 1.0 pt 3 ps 0.75
+set style line LS_FR + 10    lc rgb C_FR    lw 0.9 dt (2,3) pt 2 ps 0.75
+set style line LS_OTHER + 10 lc rgb C_OTHER lw 0.9 dt (2,3) pt 3 ps 0.75

@@ -29,15 +29,13 @@ header_labels(file, suffix) = system(sprintf("head -n 1 '%s' | tr ',' '\\n' | se
 T1M = header_labels(T1, 'q_err')
 NLM = header_labels(NL, 'pendulum_err')
 ALLM = T1M . NLM
-IDX(m) = sum [i = 1:words(ALLM)] (word(ALLM, i) eq m ? i : 0)
 do for [i = 1:words(ALLM)] {   # styles for methods other than Simpson's and the midpoint rule, and their guides (+ 10)
     c = word("#009E73 #CC79A7 #56B4E9 #882255 #999999 #000000 #E69F00 #0072B2 #D55E00", (i - 1) % 9 + 1)
     eval sprintf("set style line %d lc rgb '%s' lw 1.0 pt %d ps 0.7", 60 + i, c, (2 * i) % 14 + 1)
     eval sprintf("set style line %d lc rgb '%s' lw 0.9 dt (8,4) pt %d ps 0.7", 70 + i, c, (2 * i) % 14 + 1)
 }
-esc(s) = strstrt(s, "_") == 0 ? s : s[1:strstrt(s, "_") - 1] . "\\_" . esc(s[strstrt(s, "_") + 1:])   # (enhanced text)
-MSTYLE(m) = m eq "simpson" ? LS_SIMP : m eq "midpoint" ? LS_MID : 60 + IDX(m)
-MLABEL(m) = m eq "midpoint" ? "implicit midpoint" : esc(m)
+MSTYLE(m) = m eq "simpson" ? LS_SIMP : m eq "midpoint" ? LS_MID : 60 + word_index(ALLM, m)
+MLABEL(m) = m eq "midpoint" ? "implicit midpoint" : nosub(m)
 
 # series: name, file, column, summary order key (or "" for none), style, label
 LOB1(s)  = s eq "p" || s eq "q" || s eq "H" || s eq "Hd"           # (the Lobatto series of Table 1)

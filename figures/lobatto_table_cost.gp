@@ -15,18 +15,16 @@ T = STATS_max
 # the methods of the scene key timing.methods, by label, in the order of timing.csv
 METHODS = system(sprintf("awk -F, 'NR > 1 && !seen[$1]++ { printf \"%%s \", $1 }' '%s'", TIMING))
 if (words(METHODS) == 0) { exit error sprintf("%s: no rows", TIMING) }
-IDX(m) = sum [i = 1:words(METHODS)] (word(METHODS, i) eq m ? i : 0)
 do for [i = 1:words(METHODS)] {   # styles for methods other than these five
     eval sprintf("set style line %d lc rgb '%s' lw 1.0 pt %d ps 0.7", 60 + i, word("#882255 #56B4E9 #999999 #000000 #E69F00 #0072B2 #D55E00 #009E73 #CC79A7", (i - 1) % 9 + 1), (2 * i) % 14 + 1)
 }
-esc(s) = strstrt(s, "_") == 0 ? s : s[1:strstrt(s, "_") - 1] . "\\_" . esc(s[strstrt(s, "_") + 1:])   # (enhanced text)
 LABEL(m) = m eq "lobatto"  ? "Lobatto (13)–(14), Newton" \
          : m eq "simpson"  ? "Simpson [2], Newton" \
          : m eq "midpoint" ? "implicit midpoint, Newton" \
          : m eq "odeint_rk4" ? "odeint: classical RK4" \
-         : m eq "odeint_rkf78" ? "odeint: Runge–Kutta–Fehlberg 7(8), fixed step" : esc(m)
+         : m eq "odeint_rkf78" ? "odeint: Runge–Kutta–Fehlberg 7(8), fixed step" : nosub(m)
 STYLE(m) = m eq "lobatto" ? LS_LOB : m eq "simpson" ? LS_SIMP : m eq "midpoint" ? LS_MID \
-         : m eq "odeint_rk4" ? LS_RK4 : m eq "odeint_rkf78" ? LS_RKF78 : 60 + IDX(m)
+         : m eq "odeint_rk4" ? LS_RK4 : m eq "odeint_rkf78" ? LS_RKF78 : 60 + word_index(METHODS, m)
 # the rows of each method in a datablock $T_<method>, columns: wall_s, force_evals, error
 do for [m in METHODS] {
     eval sprintf("set table $T_%s separator comma", m)

@@ -23,14 +23,12 @@ FIG(n) = csv(sprintf('fig1_N%d.csv', n))
 # the methods of the scene key figure1.methods, by label: the columns q_<label> of the CSV
 METHODS = system(sprintf("head -n 1 '%s' | tr ',' '\\n' | sed -n 's/^q_//p' | tr '\\n' ' '", FIG(N1)))
 if (words(METHODS) == 0) { exit error sprintf("%s: no column q_<method>", FIG(N1)) }
-IDX(m) = sum [i = 1:words(METHODS)] (word(METHODS, i) eq m ? i : 0)
 do for [i = 1:words(METHODS)] {   # styles for methods other than the paper's three
     eval sprintf("set style line %d lc rgb '%s' lw 1.0 pt %d ps 0.7", 60 + i, word("#009E73 #CC79A7 #56B4E9 #882255 #999999 #000000 #E69F00 #0072B2 #D55E00", (i - 1) % 9 + 1), (2 * i) % 14 + 1)
 }
-esc(s) = strstrt(s, "_") == 0 ? s : s[1:strstrt(s, "_") - 1] . "\\_" . esc(s[strstrt(s, "_") + 1:])   # (enhanced text)
-LABEL(m) = m eq "lobatto" ? "Lobatto (13)–(14)" : m eq "simpson" ? "Simpson [2]" : m eq "midpoint" ? "implicit midpoint" : esc(m)
-SHORT(m) = m eq "lobatto" ? "Lobatto" : m eq "simpson" ? "Simpson" : esc(m)
-STYLE(m) = m eq "lobatto" ? LS_LOB : m eq "simpson" ? LS_SIMP : m eq "midpoint" ? LS_MID : 60 + IDX(m)
+LABEL(m) = m eq "lobatto" ? "Lobatto (13)–(14)" : m eq "simpson" ? "Simpson [2]" : m eq "midpoint" ? "implicit midpoint" : nosub(m)
+SHORT(m) = m eq "lobatto" ? "Lobatto" : m eq "simpson" ? "Simpson" : nosub(m)
+STYLE(m) = m eq "lobatto" ? LS_LOB : m eq "simpson" ? LS_SIMP : m eq "midpoint" ? LS_MID : 60 + word_index(METHODS, m)
 
 # the largest error over the steps, per N, method and variable: ERR_<N>_<var>_<method>
 do for [n in sprintf("%d %d", N1, N2)] {

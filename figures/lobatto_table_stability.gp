@@ -25,13 +25,11 @@ XMIN = STATS_min; XMAX = STATS_max
 NPTS = STATS_records
 # the methods scanned with Lobatto (scene key stability.methods), by label: the columns spectral_radius_<label>
 METHODS = system(sprintf("head -n 1 '%s' | tr ',' '\\n' | sed -n 's/^spectral_radius_//p' | tr '\\n' ' '", ST))
-IDX(m) = sum [i = 1:words(METHODS)] (word(METHODS, i) eq m ? i : 0)
 do for [i = 1:words(METHODS)] {   # styles for methods other than Simpson's
     eval sprintf("set style line %d lc rgb '%s' lw 1.0", 60 + i, word("#009E73 #CC79A7 #D55E00 #882255 #999999 #000000 #56B4E9 #E69F00 #0072B2", (i - 1) % 9 + 1))
 }
-esc(s) = strstrt(s, "_") == 0 ? s : s[1:strstrt(s, "_") - 1] . "\\_" . esc(s[strstrt(s, "_") + 1:])   # (enhanced text)
-LABEL(m) = m eq "simpson" ? "Simpson [2]" : esc(m)
-STYLE(m) = m eq "simpson" ? LS_SIMP : 60 + IDX(m)
+LABEL(m) = m eq "simpson" ? "Simpson [2]" : nosub(m)
+STYLE(m) = m eq "simpson" ? LS_SIMP : 60 + word_index(METHODS, m)
 # the compared curves and their key entries as plot clauses (none without compared methods)
 COMPARED = words(METHODS) == 0 ? "" : 'for [m in METHODS] ST using "h_omega":(clip(column("spectral_radius_".m))) with lines ls STYLE(m), '
 COMPARED_KEY = words(METHODS) == 0 ? "" : 'for [m in METHODS] keyentry with lines ls STYLE(m) title LABEL(m), '

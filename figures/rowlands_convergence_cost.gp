@@ -16,11 +16,7 @@ T = STATS_max
 # the methods of timing.csv (column "method", registry labels), in the key's order: ours | odeint | others
 CSV_METHODS = system(sprintf("awk -F, 'NR > 1 && !seen[$1]++ { printf \"%%s \", $1 }' '%s'", TIMING))
 PREFERRED = "sv rowlands rowlands_cheap forest_ruth odeint_velocity_verlet odeint_rkn_sb3a odeint_rk4"
-in_list(list, w) = strstrt(" ".list." ", " ".w." ") > 0
-METHODS = ""
-do for [m in PREFERRED] { if (in_list(CSV_METHODS, m)) { METHODS = METHODS.m." " } }
-do for [m in CSV_METHODS] { if (!in_list(PREFERRED, m)) { METHODS = METHODS.m." " } }
-nosub(s) = (_u = strstrt(s, "_")) ? s[1:_u-1]." ".nosub(s[_u+1:]) : s  # (a label as key text: no subscripts)
+eval ORDER_METHODS
 LABEL(m) = m eq "sv"             ? "Störmer–Verlet (26)–(28)" \
          : m eq "rowlands"       ? "Rowlands, processors (32)–(33), h²/12" \
          : m eq "rowlands_cheap" ? "Rowlands, cheap processors (34)–(37)" \
@@ -28,9 +24,6 @@ LABEL(m) = m eq "sv"             ? "Störmer–Verlet (26)–(28)" \
          : m eq "odeint_rk4"     ? "odeint: classical RK4" \
          : m eq "odeint_rkn_sb3a" ? "odeint: symplectic RKN SB3a, order 4" \
          : m eq "odeint_velocity_verlet" ? "odeint: velocity Verlet (= Störmer–Verlet)" : nosub(m)
-# Forest-Ruth and any further method: black (crosses), grey (stars)
-LS_FR    = 28; set style line LS_FR    lc rgb '#000000' lw 1.0 pt 2 ps 0.75
-LS_OTHER = 29; set style line LS_OTHER lc rgb '#777777' lw 1.0 pt 3 ps 0.75
 STYLE(m) = m eq "sv" ? LS_SV : m eq "rowlands" ? LS_ROW : m eq "rowlands_cheap" ? LS_ROWCH \
          : m eq "forest_ruth" ? LS_FR : m eq "odeint_rk4" ? LS_RK4 : m eq "odeint_rkn_sb3a" ? LS_RKN \
          : m eq "odeint_velocity_verlet" ? LS_VV : LS_OTHER

@@ -24,24 +24,14 @@ HAS_ENERGY = strstrt(HEADER, "_energy_rms") > 0
 HAS_PHASE = strstrt(HEADER.",", "_phase,") > 0
 QUANTITIES = (HAS_ENERGY ? "energy " : "") . (HAS_PHASE ? "phase" : "")
 PREFERRED = "sv kernel rowlands_printed rowlands rowlands_cheap forest_ruth"   # (the key's order)
-in_list(list, w) = strstrt(" ".list." ", " ".w." ") > 0
-METHODS = ""
-do for [m in PREFERRED] { if (in_list(CSV_METHODS, m)) { METHODS = METHODS.m." " } }
-do for [m in CSV_METHODS] { if (!in_list(PREFERRED, m)) { METHODS = METHODS.m." " } }
+eval ORDER_METHODS
 FIT(m)   = m eq "kernel" ? "kernel_unprocessed" : m                   # (name prefix in orders.csv)
-nosub(s) = (_u = strstrt(s, "_")) ? s[1:_u-1]." ".nosub(s[_u+1:]) : s  # (a label as key text: no subscripts)
 LABEL(m) = m eq "sv"       ? "Störmer–Verlet (26)–(28)" \
          : m eq "rowlands" ? "Rowlands, processors (32)–(33), h²/12" \
          : m eq "rowlands_cheap" ? "Rowlands, cheap processors (34)–(37)" \
          : m eq "kernel"   ? "Rowlands kernel (31) alone" \
          : m eq "rowlands_printed" ? "(32)–(33) as printed, h^2/24" \
          : m eq "forest_ruth" ? "Forest–Ruth (3 forces per step)" : nosub(m)
-# Forest-Ruth and any further method: black (cross), grey (star); fits dotted (+ 10, as in common.gp)
-C_FR = '#000000'
-LS_FR    = 28; set style line LS_FR    lc rgb C_FR lw 1.0 pt 2 ps 0.75
-LS_OTHER = 29; set style line LS_OTHER lc rgb '#777777' lw 1.0 pt 3 ps 0.75
-set style line LS_FR + 10    lc rgb C_FR lw 0.9 dt (2,3) pt 2 ps 0.75
-set style line LS_OTHER + 10 lc rgb '#777777' lw 0.9 dt (2,3) pt 3 ps 0.75
 STYLE(m) = m eq "sv" ? LS_SV : m eq "rowlands" ? LS_ROW : m eq "rowlands_cheap" ? LS_ROWCH \
          : m eq "kernel" ? LS_KERNEL : m eq "rowlands_printed" ? LS_PRINTED : m eq "forest_ruth" ? LS_FR : LS_OTHER
 FITSTYLE(m) = STYLE(m) + 10

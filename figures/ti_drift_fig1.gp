@@ -29,10 +29,7 @@ FIT_FLOOR = 1e3 * 2.0**-52   # ... and error above the round-off floor 10^3 ε
 # the simplified TI (it coincides with TI on the oscillator)
 CSV_METHODS = system(sprintf("awk -F, 'NR > 1 && !seen[$1]++ { printf \"%%s \", $1 }' '%s'", OSC))
 PREFERRED = "sv ti sti forest_ruth"
-in_list(list, w) = strstrt(" ".list." ", " ".w." ") > 0
-METHODS = ""
-do for [m in PREFERRED] { if (in_list(CSV_METHODS, m)) { METHODS = METHODS.m." " } }
-do for [m in CSV_METHODS] { if (!in_list(PREFERRED, m)) { METHODS = METHODS.m." " } }
+eval ORDER_METHODS
 FITTED = ""
 do for [m in METHODS] { if (m ne "sti") { FITTED = FITTED.m." " } }
 do for [m in METHODS] {
@@ -41,13 +38,12 @@ do for [m in METHODS] {
     eval need_num('BOUND_'.m, summary_real('equal_work.omega_h_eff_bound.'.m))
 }
 # Forest-Ruth and any further method: black crosses / grey stars; fits dotted (style + 10)
-LS_TD_FR    = 104; set style line LS_TD_FR    lc rgb '#000000' lw 1.0 dt (2,3) pt 2 ps 0.75
-LS_TD_OTHER = 105; set style line LS_TD_OTHER lc rgb '#777777' lw 1.0 dt (2,3) pt 3 ps 0.75
-set style line LS_TD_FR + 10    lc rgb '#000000' lw 0.9 dt (2,3)
-set style line LS_TD_OTHER + 10 lc rgb '#777777' lw 0.9 dt (2,3)
+LS_TD_FR    = 104; set style line LS_TD_FR    lc rgb C_FR    lw 1.0 dt (2,3) pt 2 ps 0.75
+LS_TD_OTHER = 105; set style line LS_TD_OTHER lc rgb C_OTHER lw 1.0 dt (2,3) pt 3 ps 0.75
+set style line LS_TD_FR + 10    lc rgb C_FR    lw 0.9 dt (2,3)
+set style line LS_TD_OTHER + 10 lc rgb C_OTHER lw 0.9 dt (2,3)
 STYLE(m) = m eq "sv" ? LS_TD_SV : m eq "ti" ? LS_TD_TI : m eq "sti" ? LS_TD_STI : m eq "forest_ruth" ? LS_TD_FR : LS_TD_OTHER
-COLOR(m) = m eq "sv" ? C_SV : m eq "ti" ? C_TI : m eq "sti" ? C_STI : m eq "forest_ruth" ? '#000000' : '#777777'
-nosub(s) = (_u = strstrt(s, "_")) ? s[1:_u-1]." ".nosub(s[_u+1:]) : s  # (a label as key text: no subscripts)
+COLOR(m) = m eq "sv" ? C_SV : m eq "ti" ? C_TI : m eq "sti" ? C_STI : m eq "forest_ruth" ? C_FR : C_OTHER
 SHORT(m) = m eq "sv" ? "SV" : m eq "ti" ? "TI" : m eq "sti" ? "simplified TI" : m eq "forest_ruth" ? "Forest–Ruth" : nosub(m)
 NAME(m) = m eq "sv" ? "SV (1.3)" : m eq "ti" ? "TI (1.4), processed" : m eq "sti" ? "simplified TI (1.6), processed" : SHORT(m)
 STEP(m) = (_e = value('EVALS_'.m)) == 2 ? "h = h_{eff}" : _e == 1 ? "h = h_{eff}/2" : sprintf("h = %gh_{eff}/2", _e)
