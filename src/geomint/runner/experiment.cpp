@@ -13,6 +13,7 @@
 #include <CLI/CLI.hpp>
 
 #include "geomint/io/run_info.hpp"
+#include "geomint/runner/published.hpp"
 
 namespace geomint {
 
@@ -171,6 +172,18 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
   std::optional<Scene> scene;
   std::optional<OutputDir> out;
   std::vector<const Study*> studies;
+  const std::filesystem::path published_file = std::filesystem::path(experiment_dir) / "published.toml";
+  std::vector<Published> published;
+  try {
+    if (std::filesystem::exists(published_file)) published = read_published(published_file);
+    for (const Published& p : published)
+      if (!find_study(spec, p.study))
+        throw PublishedError(published_file.string() + ": [" + p.key + "]: no study '" + p.study + "' (studies: " +
+                             join(study_names(spec)) + ")");
+  } catch (const PublishedError& e) {
+    std::cerr << name << ": published values: " << e.what() << '\n';
+    return 2;
+  }
   try {
     scene = Scene::load(scene_file, overrides, spec.schema);
     studies = select_studies(spec, *scene, only);
@@ -213,6 +226,7 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
 
     nlohmann::ordered_json summary = {{"experiment", name}, {"studies", ran}};
     for (auto& [k, v] : ctx.summary.items()) summary[k] = v;
+    apply_published(published, summary, scene->to_json(), ran);
     summary["timing"]["wall_s"] = wall;
     summary["timing"]["study_wall_s"] = study_wall;
     out->write("summary.json", summary.dump(2) + "\n");
@@ -222,6 +236,7 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
     nlohmann::ordered_json run = {{"experiment", name}, {"build", build_info()}};
     run["command"] = command;
     run["scene_file"] = scene->file().string();
+    if (!published.empty()) run["published_file"] = published_file.string();
     std::vector<std::string> bases;
     for (const auto& b : scene->bases()) bases.push_back(b.string());
     run["scene_bases"] = bases;

@@ -1,0 +1,227 @@
+#include "geomint/runner/published.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdlib>
+#include <string_view>
+
+#include <toml++/toml.h>
+
+#include "geomint/io/csv.hpp"
+
+namespace geomint {
+
+namespace {
+
+using json = nlohmann::ordered_json;
+
+const std::vector<std::string> kFields = {"study", "value", "where", "summary", "compare", "requires", "expect", "note"};
+
+[[noreturn]] void fail(const std::filesystem::path& file, const std::string& key, const std::string& what) {
+  throw PublishedError(file.string() + ": [" + key + "]: " + what);
+}
+
+// A TOML number, string or boolean, or (for `requires`) an array of them, as JSON.
+json scalar(const toml::node& n, const std::filesystem::path& file, const std::string& key, bool arrays = false) {
+  if (const auto* a = n.as_array(); a && arrays) {
+    json out = json::array();
+    for (const auto& x : *a) out.push_back(scalar(x, file, key));
+    return out;
+  }
+  if (const auto v = n.value<double>(); v && (n.is_floating_point() || n.is_integer())) {
+    if (!std::isfinite(*v)) fail(file, key, "values must be finite numbers");
+    return *v;
+  }
+  if (const auto s = n.value<std::string>()) return *s;
+  if (const auto b = n.value<bool>()) return *b;
+  fail(file, key, "values must be numbers, strings or booleans");
+}
+
+std::string text(const toml::table& t, const char* field, const std::filesystem::path& file, const std::string& key,
+                 bool required) {
+  const auto n = t[field];
+  if (!n) {
+    if (required) fail(file, key, std::string("missing '") + field + "'");
+    return {};
+  }
+  if (!n.is_string()) fail(file, key, std::string("'") + field + "' must be a string");
+  return *n.value<std::string>();
+}
+
+double parameter(const std::string& s) {  // a key of a value table, read as a number
+  char* end = nullptr;
+  const double v = std::strtod(s.c_str(), &end);
+  return (end && *end == '\0' && end != s.c_str()) ? v : std::nan("");
+}
+
+// |reproduced - published| relative to |published| for "rel", absolute otherwise.
+double difference(const std::string& compare, double published, double reproduced) {
+  const double d = reproduced - published;
+  return compare == "rel" ? d / std::abs(published) : d;
+}
+
+}  // namespace
+
+const json* json_at(const json& j, const std::string& dotted) {
+  const json* node = &j;
+  std::string_view rest = dotted;
+  while (!rest.empty()) {
+    const std::size_t dot = rest.find('.');
+    const std::string part(rest.substr(0, dot));
+    rest = dot == std::string_view::npos ? std::string_view{} : rest.substr(dot + 1);
+    if (node->is_object()) {
+      const auto it = node->find(part);
+      if (it == node->end()) return nullptr;
+      node = &*it;
+    } else if (node->is_array()) {
+      const double i = parameter(part);
+      if (!(i >= 0 && i == std::floor(i) && i < static_cast<double>(node->size()))) return nullptr;
+      node = &(*node)[static_cast<std::size_t>(i)];
+    } else {
+      return nullptr;
+    }
+  }
+  return node;
+}
+
+std::vector<Published> read_published(const std::filesystem::path& file) {
+  toml::table doc;
+  try {
+    doc = toml::parse_file(file.string());
+  } catch (const toml::parse_error& err) {
+    throw PublishedError(file.string() + ":" + std::to_string(err.source().begin.line) + ": not valid TOML: " +
+                         std::string(err.description()));
+  }
+  std::vector<std::pair<std::uint32_t, Published>> by_line;  // (toml++ iterates a table by key)
+  for (const auto& [k, node] : doc) {
+    const std::string key(k.str());
+    const auto* t = node.as_table();
+    if (!t) fail(file, key, "each published quantity is a table");
+    for (const auto& [field, _] : *t)
+      if (std::find(kFields.begin(), kFields.end(), std::string(field.str())) == kFields.end())
+        fail(file, key, "unknown field '" + std::string(field.str()) + "'");
+    Published p;
+    p.key = key;
+    p.study = text(*t, "study", file, key, true);
+    p.where = text(*t, "where", file, key, true);
+    p.summary = text(*t, "summary", file, key, true);
+    p.note = text(*t, "note", file, key, false);
+    if (const std::string e = text(*t, "expect", file, key, false); !e.empty()) {
+      if (e != "reproduced" && e != "differs") fail(file, key, "expect must be \"reproduced\" or \"differs\"");
+      p.expect = e;
+    }
+    const auto value = (*t)["value"];
+    if (!value) fail(file, key, "missing 'value'");
+    if (const auto* vt = value.as_table()) {
+      p.value = json::object();
+      for (const auto& [param, v] : *vt) {
+        if (std::isnan(parameter(std::string(param.str())))) fail(file, key, "the keys of a value table are numbers");
+        p.value[std::string(param.str())] = scalar(v, file, key);
+      }
+    } else {
+      p.value = scalar(*value.node(), file, key);
+    }
+    if (const auto c = (*t)["compare"]) {
+      const auto* ct = c.as_table();
+      if (!ct || ct->size() != 1) fail(file, key, "compare is { rel = x }, { abs = x } or { order = x }");
+      const auto first = ct->cbegin();
+      p.compare = std::string(first->first.str());
+      const auto tv = first->second.value<double>();
+      if ((p.compare != "rel" && p.compare != "abs" && p.compare != "order") || !tv || !(*tv >= 0) || !std::isfinite(*tv))
+        fail(file, key, "compare is { rel = x }, { abs = x } or { order = x } with a finite x >= 0");
+      p.tolerance = *tv;
+      const auto numeric = [](const json& v) { return v.is_number(); };
+      if (!(p.value.is_number() ||
+            (p.value.is_object() && std::all_of(p.value.begin(), p.value.end(), numeric))))
+        fail(file, key, "a compared value is a number or a table of numbers");
+      if (p.compare == "rel" && p.value.is_number() && p.value.get<double>() == 0.0)
+        fail(file, key, "a relative comparison needs a published value != 0 (use abs)");
+    }
+    if (const auto r = (*t)["requires"]) {
+      const auto* rt = r.as_table();
+      if (!rt) fail(file, key, "requires is a table of scene keys and values");
+      for (const auto& [sk, sv] : *rt) p.requires_[std::string(sk.str())] = scalar(sv, file, key, true);
+    }
+    by_line.emplace_back(node.source().begin.line, std::move(p));
+  }
+  std::stable_sort(by_line.begin(), by_line.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+  std::vector<Published> out;
+  for (auto& [line, p] : by_line) out.push_back(std::move(p));
+  return out;
+}
+
+std::optional<json> compare_published(const Published& e, const json& summary, const json& scene,
+                                      const std::vector<std::string>& studies_ran) {
+  if (std::find(studies_ran.begin(), studies_ran.end(), e.study) == studies_ran.end()) return std::nullopt;
+  std::string why_not;  // why the scene does not allow the comparison
+  for (const auto& [key, wanted] : e.requires_.items()) {
+    const json* actual = json_at(scene, key);
+    if (!actual || *actual != wanted)
+      why_not += (why_not.empty() ? "" : "; ") + key + " = " + (actual ? actual->dump() : "(none)") + ", published at " +
+                 wanted.dump();
+  }
+  const json* reproduced = json_at(summary, e.summary);
+  if (!why_not.empty()) {
+    json c = {{"where", e.where}, {"published", e.value}, {"reproduced", reproduced ? *reproduced : json(nullptr)},
+              {"verdict", "not comparable"}, {"reason", why_not}};
+    if (!e.note.empty()) c["note"] = e.note;
+    return c;
+  }
+  if (!reproduced)
+    throw std::logic_error("published " + e.key + ": study " + e.study + " ran but wrote no " + e.summary);
+  json c = {{"where", e.where}, {"published", e.value}, {"reproduced", *reproduced}};
+  if (!e.compare.empty()) c["compare"] = {{e.compare, e.tolerance}};
+  // The pairs (published, reproduced) to compare: one, or one per parameter of a value table.
+  std::vector<std::pair<std::string, std::pair<double, const json*>>> pairs;
+  if (e.value.is_number()) {
+    pairs.push_back({"", {e.value.get<double>(), reproduced}});
+  } else if (e.value.is_object()) {
+    // Keyed as the reproduced values are (e.g. h as %.17g), matched by the number.
+    json published = json::object();
+    for (const auto& [param, v] : e.value.items()) {
+      const json* r = nullptr;
+      std::string at;
+      if (reproduced->is_object())
+        for (const auto& [rk, rv] : reproduced->items())
+          if (std::abs(parameter(rk) - parameter(param)) <= 1e-12 * std::abs(parameter(param))) r = &rv, at = rk;
+      if (!r) throw std::logic_error("published " + e.key + ": " + e.summary + " has no value at " + param);
+      published[at] = v;
+      if (v.is_number()) pairs.push_back({at, {v.get<double>(), r}});
+    }
+    c["published"] = published;
+  }
+  std::string verdict = "reported";
+  if (!e.compare.empty()) {
+    bool within = true;
+    json diff = e.value.is_number() ? json() : json::object();
+    for (const auto& [param, pr] : pairs) {
+      const auto& [pub, rep] = pr;
+      // A reproduced value that is not a finite number is never within any tolerance.
+      const double r = rep->is_number() ? rep->get<double>() : std::nan("");
+      const double d = difference(e.compare, pub, r);
+      within = within && std::isfinite(d) && std::abs(d) <= e.tolerance;
+      const json dj = std::isfinite(d) ? json(d) : json(nullptr);
+      if (param.empty()) diff = dj;
+      else diff[param] = dj;
+    }
+    c["difference"] = diff;
+    verdict = within ? "reproduced" : "differs";
+  }
+  c["verdict"] = verdict;
+  if (e.expect != "reproduced") c["expect"] = e.expect;
+  if (!e.note.empty()) c["note"] = e.note;
+  return c;
+}
+
+void apply_published(const std::vector<Published>& entries, json& summary, const json& scene,
+                     const std::vector<std::string>& studies_ran) {
+  for (const Published& e : entries) {
+    auto c = compare_published(e, summary, scene, studies_ran);
+    if (!c) continue;
+    summary["published"][e.key] = (*c)["published"];
+    summary["comparisons"][e.key] = std::move(*c);
+  }
+}
+
+}  // namespace geomint

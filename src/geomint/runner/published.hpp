@@ -1,0 +1,62 @@
+#pragma once
+// What the papers printed, as data: experiments/<name>/published.toml holds
+// one table per published quantity,
+//
+//   [p_err_N10]
+//   study = "table1"                      # the study that reproduces it
+//   value = 8.95e-6                       # or a table keyed by a parameter: { "0.1" = 2.5e-11, ... }
+//   where = "001 Table 1, N = 10"         # seed, figure / table / equation
+//   summary = "reproduced.p_err_N10"      # the reproduced value in summary.json (dotted path)
+//   compare = { rel = 0.03 }              # or { abs = 1e-13 }, { order = 0.1 } (|difference| <= 0.1);
+//                                         # without compare the value is reported, not compared
+//   requires = { "long_run.periods" = 100000.0 }   # scene values under which it is comparable
+//   expect = "differs"                    # a known discrepancy (default: "reproduced")
+//   note = "..."                          # why the reproduction differs, if it does
+//
+// After the studies ran, every entry of a study that ran is set against the
+// summary: summary.published.<key> is the published value and
+// summary.comparisons.<key> holds where, published, reproduced, difference,
+// compare, verdict and note. The verdict is "reproduced" or "differs" (by the
+// tolerance), "reported" (no compare), or "not comparable" (the scene differs
+// from `requires`). An entry of a study that ran whose reproduced value is
+// missing is an internal error: the run never reports a comparison it did not make.
+#include <filesystem>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+namespace geomint {
+
+struct PublishedError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+struct Published {
+  std::string key, study, where, summary, note;
+  std::string expect = "reproduced";
+  nlohmann::ordered_json value;     // a number, or an object of numbers keyed by a parameter
+  std::string compare;              // "rel", "abs", "order" or "" (reported only)
+  double tolerance = 0;
+  nlohmann::ordered_json requires_ = nlohmann::ordered_json::object();  // dotted scene key -> value
+};
+
+// The entries of a published.toml, in file order; throws PublishedError naming the file and the entry.
+std::vector<Published> read_published(const std::filesystem::path& file);
+
+// The verdict of one entry against a summary and a resolved scene (Scene::to_json()); nullopt if the
+// entry's study did not run.
+std::optional<nlohmann::ordered_json> compare_published(const Published& entry, const nlohmann::ordered_json& summary,
+                                                        const nlohmann::ordered_json& scene,
+                                                        const std::vector<std::string>& studies_ran);
+
+// Sets summary.published and summary.comparisons from every entry of a study that ran.
+void apply_published(const std::vector<Published>& entries, nlohmann::ordered_json& summary,
+                     const nlohmann::ordered_json& scene, const std::vector<std::string>& studies_ran);
+
+// The value at a dotted path ("reproduced.p_err_N10", "initial.0.1"), or nullptr if there is none.
+const nlohmann::ordered_json* json_at(const nlohmann::ordered_json& j, const std::string& dotted);
+
+}  // namespace geomint

@@ -1,0 +1,142 @@
+// Published values as data (runner/published.hpp): reading published.toml and the verdicts.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "geomint/runner/published.hpp"
+
+using namespace geomint;
+using json = nlohmann::ordered_json;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path published_file(const std::string& text) {
+  static int count = 0;
+  const fs::path p = fs::temp_directory_path() /
+                     ("geomint_published_test_" + std::to_string(::getpid()) + "_" + std::to_string(count++) + ".toml");
+  std::ofstream(p) << text;
+  return p;
+}
+
+std::string error_of(const std::string& text) {
+  try {
+    read_published(published_file(text));
+  } catch (const PublishedError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+const std::string kEntries = R"(
+[p_err]
+study = "table1"
+value = 1.0e-6
+where = "Table 1"
+summary = "reproduced.p_err"
+compare = { rel = 0.03 }
+
+[order]
+study = "convergence"
+value = 4
+where = "Fig. 4"
+summary = "orders.sv"
+compare = { order = 0.1 }
+
+[growth]
+study = "long_run"
+value = { "0.1" = 2.5e-11, "0.05" = 5.0e-14 }
+where = "Fig. 2"
+summary = "reproduced.growth"
+compare = { abs = 1e-12 }
+requires = { "long_run.periods" = 100000.0 }
+note = "round-off below h = 0.1"
+
+[shown]
+study = "table1"
+value = 3
+where = "text"
+summary = "reproduced.shown"
+)";
+
+json verdict(const Published& e, const json& summary, const json& scene = json::object()) {
+  const auto c = compare_published(e, summary, scene, {"table1", "convergence", "long_run"});
+  return c ? (*c)["verdict"] : json(nullptr);
+}
+
+}  // namespace
+
+TEST(Published, ReadsTheEntriesInFileOrder) {
+  const auto entries = read_published(published_file(kEntries));
+  ASSERT_EQ(entries.size(), 4u);
+  EXPECT_EQ(entries[0].key, "p_err");
+  EXPECT_EQ(entries[0].compare, "rel");
+  EXPECT_EQ(entries[0].tolerance, 0.03);
+  EXPECT_EQ(entries[1].key, "order");
+  EXPECT_EQ(entries[2].key, "growth");
+  EXPECT_EQ(entries[2].requires_["long_run.periods"], 100000.0);
+  EXPECT_EQ(entries[3].compare, "");
+}
+
+TEST(Published, RejectsMalformedEntries) {
+  EXPECT_NE(error_of("[a]\nstudy = \"s\"\nvalue = 1\nwhere = \"w\"\n").find("missing 'summary'"), std::string::npos);
+  EXPECT_NE(error_of("[a]\nstudy = \"s\"\nvalue = 1\nwhere = \"w\"\nsummary = \"x\"\ncolour = 1\n").find("unknown field"),
+            std::string::npos);
+  EXPECT_NE(error_of("[a]\nstudy = \"s\"\nvalue = 0\nwhere = \"w\"\nsummary = \"x\"\ncompare = { rel = 0.1 }\n")
+                .find("!= 0"),
+            std::string::npos);
+  EXPECT_NE(error_of("[a]\nstudy = \"s\"\nvalue = 1\nwhere = \"w\"\nsummary = \"x\"\ncompare = { near = 0.1 }\n")
+                .find("compare is"),
+            std::string::npos);
+  EXPECT_NE(error_of("[a]\nstudy = \"s\"\nvalue = 1\nwhere = \"w\"\nsummary = \"x\"\nexpect = \"maybe\"\n").find("expect"),
+            std::string::npos);
+  EXPECT_NE(error_of("[a\n").find("not valid TOML"), std::string::npos);
+}
+
+TEST(Published, VerdictsByTolerance) {
+  const auto e = read_published(published_file(kEntries));
+  EXPECT_EQ(verdict(e[0], {{"reproduced", {{"p_err", 1.02e-6}}}}), "reproduced");
+  EXPECT_EQ(verdict(e[0], {{"reproduced", {{"p_err", 1.04e-6}}}}), "differs");
+  EXPECT_EQ(verdict(e[0], {{"reproduced", {{"p_err", nullptr}}}}), "differs");  // NaN written as null: never within
+  EXPECT_EQ(verdict(e[1], {{"orders", {{"sv", 4.08}}}}), "reproduced");
+  EXPECT_EQ(verdict(e[1], {{"orders", {{"sv", 3.85}}}}), "differs");
+  EXPECT_EQ(verdict(e[3], {{"reproduced", {{"shown", 7}}}}), "reported");
+}
+
+TEST(Published, ValueTablesMatchTheReproducedKeysByNumber) {
+  const auto e = read_published(published_file(kEntries));
+  const json scene = {{"long_run", {{"periods", 100000}}}};
+  const json summary = {{"reproduced", {{"growth", {{"0.10000000000000001", 2.51e-11}, {"0.050000000000000003", -3e-13}}}}}};
+  const auto c = compare_published(e[2], summary, scene, {"long_run"});
+  ASSERT_TRUE(c);
+  EXPECT_EQ((*c)["verdict"], "reproduced");
+  EXPECT_EQ((*c)["published"]["0.10000000000000001"], 2.5e-11);  // keyed as the reproduced values
+  EXPECT_EQ((*c)["note"], "round-off below h = 0.1");
+  const json far = {{"reproduced", {{"growth", {{"0.10000000000000001", 2.5e-11}, {"0.050000000000000003", 2e-12}}}}}};
+  EXPECT_EQ(verdict(e[2], far, scene), "differs");
+  const json missing = {{"reproduced", {{"growth", {{"0.10000000000000001", 2.5e-11}}}}}};
+  EXPECT_THROW(verdict(e[2], missing, scene), std::logic_error);
+}
+
+TEST(Published, OtherSceneParametersAreNotComparable) {
+  const auto e = read_published(published_file(kEntries));
+  const json scene = {{"long_run", {{"periods", 1000}}}};
+  const auto c = compare_published(e[2], json::object(), scene, {"long_run"});
+  ASSERT_TRUE(c);
+  EXPECT_EQ((*c)["verdict"], "not comparable");
+  EXPECT_NE((*c)["reason"].get<std::string>().find("long_run.periods = 1000, published at 100000"), std::string::npos);
+}
+
+TEST(Published, OnlyStudiesThatRanAndNeverAMissingValue) {
+  const auto e = read_published(published_file(kEntries));
+  EXPECT_FALSE(compare_published(e[0], json::object(), json::object(), {"convergence"}));
+  EXPECT_THROW(compare_published(e[0], json::object(), json::object(), {"table1"}), std::logic_error);
+  json summary = {{"reproduced", {{"p_err", 1.0e-6}, {"shown", 3}}}};
+  apply_published(e, summary, json::object(), {"table1"});
+  EXPECT_EQ(summary["published"]["p_err"], 1.0e-6);
+  EXPECT_EQ(summary["comparisons"]["p_err"]["verdict"], "reproduced");
+  EXPECT_FALSE(summary["comparisons"].contains("order"));
+}
