@@ -22,26 +22,13 @@ const json& summary() { return summary_of("euler_compensation"); }
 
 }  // namespace
 
-TEST(EulerCompensation, FittedOrdersMatchThePaper) {
-  const auto& o = summary()["orders"];
-  EXPECT_NEAR(o["ee_decay"].get<double>(), 1.0, 0.1);               // explicit Euler: order 1
-  EXPECT_NEAR(o["se_energy"].get<double>(), 1.0, 0.1);              // Fig 9, eq. (44)
-  EXPECT_NEAR(o["se_compensated_energy"].get<double>(), 2.0, 0.1);  // Fig 9, Appendix B
-}
+// The published orders of Fig. 9 and the exactness of Figs 2-3: Published.EulerCompensation
+// (published_test.cpp), with the tolerances of experiments/euler_compensation/published.toml.
 
-TEST(EulerCompensation, PublishedValuesAreRecorded) {
-  const auto& p = summary()["published"];
-  EXPECT_EQ(p["se_energy"].get<double>(), 1.0);
-  EXPECT_EQ(p["se_compensated_energy"].get<double>(), 2.0);
-  EXPECT_EQ(p["ee_decay"].get<double>(), 1.0);
-}
-
-TEST(EulerCompensation, EulerInTheCompensatingCoordinateIsExact) {
-  // Sections 2.3.1-2.3.2: exact up to round-off.
+TEST(EulerCompensation, EulerInTheOriginalCoordinateIsVisiblyOff) {
+  // Figs 2-3: at the same steps, Euler in y is off by more than 10 % while Euler in ybar is exact.
   const auto& r = summary()["reproduced"];
-  EXPECT_LE(r["decay_compensated_max_rel_err"].get<double>(), 1e-12);
-  EXPECT_LE(r["gompertz_compensated_max_rel_err"].get<double>(), 1e-12);
-  EXPECT_GT(r["decay_euler_max_rel_err"].get<double>(), 0.1);  // ... while Euler in y is visibly off
+  EXPECT_GT(r["decay_euler_max_rel_err"].get<double>(), 0.1);
   EXPECT_GT(r["gompertz_euler_max_rel_err"].get<double>(), 0.1);
 }
 

@@ -17,9 +17,11 @@
 // summary: summary.published.<key> is the published value and
 // summary.comparisons.<key> holds where, published, reproduced, difference,
 // compare, verdict and note. The verdict is "reproduced" or "differs" (by the
-// tolerance), "reported" (no compare), or "not comparable" (the scene differs
-// from `requires`). An entry of a study that ran whose reproduced value is
-// missing is an internal error: the run never reports a comparison it did not make.
+// tolerance), "reported" (no compare), "not comparable" (the scene differs
+// from `requires`) or "not computed" (the study ran without computing it, e.g.
+// for other methods); a value table with a parameter the run did not compute
+// is an internal error. The regression tests require every comparison of the
+// quick scenes to be made.
 #include <filesystem>
 #include <optional>
 #include <stdexcept>
