@@ -136,10 +136,6 @@ void convergence_with(Context& ctx, const Sys& sys) {
   const auto methods = s.texts("methods");
   const Observables obs = observables_of(s);
   const double t_end = s.real("t_end"), rtol = s.real("reference.rtol"), atol = s.real("reference.atol");
-  const auto order_of = [](const char* m) { return static_cast<double>(method_info(m).order); };
-  const json published_all = {{"sv_energy", order_of("stormer_verlet")}, {"sv_phase", order_of("stormer_verlet")},  // Fig. 4
-                          {"rowlands_energy", order_of("rowlands")}, {"rowlands_phase", order_of("rowlands")},
-                          {"rowlands_cheap_phase", order_of("rowlands_cheap")}};  // Sec. 3.3: the cheap processors keep order 4
   json reproduced, fits;
 
   // References, one per initial condition, and their self-check at 100x tighter tolerances.
@@ -237,10 +233,6 @@ void convergence_with(Context& ctx, const Sys& sys) {
     reproduced["reference_margin"] = min_phase / self_check;  // must be >= 100 (checked by the tests)
   }
 
-  json published;  // the paper's orders of what this run fitted
-  for (const auto& [key, order] : published_all.items())
-    if (by_initial[0].contains(key)) published[key] = order;
-  ctx.summary["published"] = published;
   if (!reproduced.empty()) ctx.summary["reproduced"] = reproduced;
   ctx.summary["orders"] = by_initial[0];
   ctx.summary["orders_by_initial"] = by_initial;
