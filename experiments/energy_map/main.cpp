@@ -281,8 +281,6 @@ void run_first_integrals(Context& ctx) {
   }
   ctx.write("angular_momentum.csv", lcsv);
 
-  ctx.summary["published"] = {{"polar_px_change_per_step", 2.0},     // Sec. 5.2.1: p_x^{j+1} = p_x^j + O(h^2)
-                              {"cartesian_L_max_rel_drift", 0.0}};  // Sec. 5.2.2: exactly preserved
   ctx.summary["reproduced"]["cartesian_L_max_rel_drift"] = L_drift;  // with compensated summation
   ctx.summary["reproduced"]["cartesian_L_max_rel_drift_plain"] = L_drift_plain;
   ctx.summary["orders"] = {{"polar_px_change_per_step", px_fit.order}};

@@ -40,3 +40,4 @@ void expect_published(const std::string& experiment) {
 TEST(Published, LobattoTable) { expect_published("lobatto_table"); }
 TEST(Published, EulerCompensation) { expect_published("euler_compensation"); }
 TEST(Published, RowlandsConvergence) { expect_published("rowlands_convergence"); }
+TEST(Published, EnergyMap) { expect_published("energy_map"); }
