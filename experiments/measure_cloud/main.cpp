@@ -388,11 +388,6 @@ void run_volumes(Context& ctx) {
       put(ctx, "reproduced", "ptp_phi" + std::to_string(ell) + "_" + measure_name(all_measures[m]), ptp);
     }
   }
-  // 003 Sec. 5.2.1: the fluctuations of every curve of Fig. 5.2 (mu^(4)_mod) are "about 2e-4 of the
-  // initial volume", read off the plot
-  json pub;
-  for (Discretization d : methods) pub[discretization_name(d)] = 2e-4;
-  put(ctx, "published", "ptp_phi4_mu4", pub);
 }
 
 // ---- Figs 5.3, 5.5, 5.6: energies and errors along Phi^(4) and Phi^(0) from the centre ----
@@ -562,13 +557,6 @@ void run_order_study(Context& ctx) {
     }
     orders[key] = o;
     if (!f.empty()) fits[key] = f;
-    // 003 Cor. 4.3: Phi^(ell) preserves mu^(ell)_mod to O(h^(ell + 2)) with every discretization, as the
-    // registry declares (one value per discretization, as the orders)
-    if (const MethodInfo* phi = find_method("phi" + std::to_string(es[e]))) {
-      json declared;
-      for (const auto& [name, order] : o.items()) declared[name] = phi->measure_order;
-      put(ctx, "published", key, declared);
-    }
   }
   ctx.summary["orders"] = orders;
   if (!fits.empty()) ctx.summary["fits"] = fits;

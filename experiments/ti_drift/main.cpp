@@ -215,10 +215,6 @@ void run_oscillator(Context& ctx) {
   double lo = 3.0, hi = 3.9;
   for (int it = 0; it < 60; ++it) (radius(0.5 * (lo + hi)) <= 1 + 1e-12 ? lo : hi) = 0.5 * (lo + hi);
   put(ctx, "reproduced", {{"ti_stability_bound", lo}});
-  put(ctx, "published", {{"ti_solution", static_cast<double>(method_info("takahashi_imada").order)},
-                         {"ti_energy", 6.0},  // Sect. 1.4: the closed form y^6/(36 (...)), O(h^6) on the oscillator
-                         {"sv_energy", static_cast<double>(method_info("stormer_verlet").order)},
-                         {"ti_stability_bound", ti_bound}});
 }
 
 // ---- Fig. 2: unsymmetric pendulum, the shifted energy H + h^2 H_3 along the simplified method ----
@@ -275,7 +271,6 @@ void run_hh3(Context& ctx) {
   });
   ctx.write("fig3_hh3.csv", f3);
   put(ctx, "reproduced", {{"hh3_drift_slope", slope(ts, es)}, {"hh3_max_E_err", worst}});
-  put(ctx, "published", {{"hh3_drift_slope", 0.0}});  // Fig. 3: "no drift"
 }
 
 // ---- Fig. 4: Henon-Heiles k, an ensemble: mean and standard deviation of the E error;
@@ -368,9 +363,6 @@ void ensemble_with(Context& ctx, const HH& hhk) {
   reproduced["poincare_windows"] = {{"growth", {static_cast<double>(steep) * tw, static_cast<double>(steep + 1) * tw}},
                                     {"no_growth", {static_cast<double>(flat) * tw, static_cast<double>(flat + 1) * tw}}};
   put(ctx, "reproduced", reproduced);
-  if (s.real("hh.coupling") == 1.0)  // the paper's potential
-    put(ctx, "published", {{"hh5_mu_final", -0.11e-6}, {"hh5_sigma_final", 0.54e-6},  // Fig. 4, t = 2.5e6
-                           {"hh5_sigma_exponent", 0.5}});
   put(ctx, "timing", {{"fig4_wall_s", wall4}});
 }
 
@@ -477,7 +469,6 @@ void run_lj(Context& ctx) {
   reproduced["lj_sigma_exponent"] = lt.size() >= 2 ? slope(lt, ls) : std::nan("");
   reproduced["lj_H_err_max"] = H_max;
   put(ctx, "reproduced", reproduced);
-  put(ctx, "published", {{"lj_mu_final", 0.091e-6}, {"lj_sigma_final", 3.08e-6}, {"lj_sigma_exponent", 0.5}});  // Fig. 6
   put(ctx, "timing", {{"fig6_wall_s", wall6}});
 }
 

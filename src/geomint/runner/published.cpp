@@ -116,10 +116,7 @@ std::vector<Published> read_published(const std::filesystem::path& file) {
     if (!value) fail(file, key, "missing 'value'");
     if (const auto* vt = value.as_table()) {
       p.value = json::object();
-      for (const auto& [param, v] : *vt) {
-        if (std::isnan(parameter(std::string(param.str())))) fail(file, key, "the keys of a value table are numbers");
-        p.value[std::string(param.str())] = scalar(v, file, key);
-      }
+      for (const auto& [param, v] : *vt) p.value[std::string(param.str())] = scalar(v, file, key);
     } else {
       p.value = scalar(*value.node(), file, key);
     }
@@ -182,19 +179,30 @@ std::optional<json> compare_published(const Published& e, const json& summary, c
   if (e.value.is_number()) {
     pairs.push_back({"", {e.value.get<double>(), reproduced}});
   } else if (e.value.is_object()) {
-    // Keyed as the reproduced values are (e.g. h as %.17g), matched by the number.
-    json published = json::object();
+    // Keyed as the reproduced values are: a name (a method's label) exactly, a number (e.g. h, written
+    // as %.17g) by its value. A parameter the run did not compute (a method the scene does not name)
+    // is listed, not compared.
+    json published = json::object(), missing = json::array();
     for (const auto& [param, v] : e.value.items()) {
       const json* r = nullptr;
-      std::string at;
+      std::string at = param;
       if (reproduced->is_object())
-        for (const auto& [rk, rv] : reproduced->items())
-          if (std::abs(parameter(rk) - parameter(param)) <= 1e-12 * std::abs(parameter(param))) r = &rv, at = rk;
-      if (!r) throw std::logic_error("published " + e.key + ": " + e.summary + " has no value at " + param);
+        for (const auto& [rk, rv] : reproduced->items()) {
+          const double a = parameter(rk), b = parameter(param);
+          if (rk == param || (!std::isnan(b) && std::abs(a - b) <= 1e-12 * std::abs(b))) r = &rv, at = rk;
+        }
       published[at] = v;
-      if (v.is_number()) pairs.push_back({at, {v.get<double>(), r}});
+      if (!r) missing.push_back(param);
+      else if (v.is_number()) pairs.push_back({at, {v.get<double>(), r}});
     }
     c["published"] = published;
+    if (!missing.empty()) c["not_computed"] = missing;
+    if (missing.size() == e.value.size()) {
+      c["verdict"] = "not computed";
+      c["reason"] = "this scene computes " + e.summary + " for none of the published parameters";
+      if (!e.note.empty()) c["note"] = e.note;
+      return c;
+    }
   }
   std::string verdict = "reported";
   if (!e.compare.empty()) {
