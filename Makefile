@@ -5,7 +5,7 @@
 #   make deps                     install the Debian packages for build, test and figures
 #   make build                    configure (Release) and build into build/
 #   make test                     build, then ctest (unit, regression, stability, figures)
-#   make figures                  run every experiment's paper scene, render figures/out/*
+#   make figures                  run every experiment's paper scene, render figures/out/* (only what changed)
 #   make paper                    figures + tables from summary.json + paper/main.pdf
 #   make experiment NAME=x [SCENE=v] ARGS='--study S --set key=value'   one experiment (+ the figures of what ran)
 #   make bench                    throughput benchmarks (Google Benchmark)
@@ -18,7 +18,7 @@ CMAKE_ARGS ?=
 EXPERIMENTS := $(notdir $(patsubst %/,%,$(dir $(wildcard experiments/*/main.cpp))))
 DEPS_STAMP := .deps
 
-.PHONY: all deps build test figures paper experiment bench clean
+.PHONY: all deps build test figures figure-files paper experiment bench clean
 all: build
 
 $(DEPS_STAMP)/%.stamp: scripts/install-deps.sh
@@ -48,17 +48,29 @@ experiment: build $(DEPS_STAMP)/figures.stamp
 	$(BUILD)/bin/$(NAME) --scene experiments/$(NAME)/$(SCENE).toml --out $(RESULTS)/$(call scene_id,$(NAME),$(SCENE)) $(ARGS)
 	tests/figures/render_figures.sh --only-available $(RESULTS)/$(call scene_id,$(NAME),$(SCENE)) figures/out $(wildcard figures/$(call scene_id,$(NAME),$(SCENE))_*.gp)
 
+# Every paper scene experiments/<name>/<scene>.toml (not quick*, not published.toml) has the id
+# <name> or <name>-<scene>. Its results are remade when the binary, a scene file of the experiment
+# (the scene, its bases) or its published.toml is newer than results/<id>/run.json (written last,
+# after the CSVs); each figure when its script, figures/common.gp or the run is newer than it.
+PAPER_SCENES := $(filter-out %/published.toml,$(foreach n,$(EXPERIMENTS),$(filter-out experiments/$(n)/quick%,$(wildcard experiments/$(n)/*.toml))))
+id_of = $(call scene_id,$(word 2,$(subst /, ,$(1))),$(basename $(notdir $(1))))
+define SCENE_RULES
+$(RESULTS)/$(3)/run.json: $(BUILD)/bin/$(1) $(2) $(filter-out experiments/$(1)/quick%,$(wildcard experiments/$(1)/*.toml))
+	@echo "== $(3)"
+	@start=$$$$(date +%s%N); $(BUILD)/bin/$(1) --scene $(2) --out $(RESULTS)/$(3) && \
+	  awk -v ns=$$$$(( $$$$(date +%s%N) - start )) 'BEGIN { printf "== $(3): %.1f s\n", ns / 1e9 }'
+FIGURES_$(3) := $(patsubst figures/%.gp,figures/out/%.pdf,$(wildcard figures/$(3)_*.gp))
+$$(FIGURES_$(3)): figures/out/%.pdf: figures/%.gp figures/common.gp $(RESULTS)/$(3)/run.json
+	@tests/figures/render_figures.sh $(RESULTS)/$(3) figures/out $$<
+ALL_FIGURES += $$(FIGURES_$(3)) $(RESULTS)/$(3)/run.json
+endef
+$(foreach sc,$(PAPER_SCENES),$(eval $(call SCENE_RULES,$(word 2,$(subst /, ,$(sc))),$(sc),$(call id_of,$(sc)))))
+$(BUILD)/bin/%: ;   # made by `build`, before figure-files is asked for
+
 figures: build $(DEPS_STAMP)/figures.stamp
-	@for name in $(EXPERIMENTS); do \
-	  for scene in experiments/$$name/*.toml; do \
-	    base=$$(basename $$scene .toml); \
-	    case $$base in quick*) continue ;; esac; \
-	    id=$$name; [ "$$base" = "$$name" ] || id=$$name-$$base; \
-	    echo "== $$id"; \
-	    $(BUILD)/bin/$$name --scene $$scene --out $(RESULTS)/$$id || exit 1; \
-	    tests/figures/render_figures.sh $(RESULTS)/$$id figures/out $$(ls figures/$${id}_*.gp 2>/dev/null) || exit 1; \
-	  done; \
-	done
+	@$(MAKE) --no-print-directory figure-files
+
+figure-files: $(ALL_FIGURES)
 
 paper: figures $(DEPS_STAMP)/paper.stamp
 	python3 scripts/paper_tables.py $(RESULTS) paper/generated
