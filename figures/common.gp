@@ -86,37 +86,26 @@ LS_ROWCH_FIT   = 33; set style line LS_ROWCH_FIT   lc rgb C_ROWCH   lw 0.9 dt (8
 LS_KERNEL_FIT  = 34; set style line LS_KERNEL_FIT  lc rgb C_KERNEL  lw 0.9 dt (8,4) pt 12 ps 0.80
 LS_PRINTED_FIT = 35; set style line LS_PRINTED_FIT lc rgb C_PRINTED lw 0.9 dt (3,3) pt 6  ps 0.60
 
-# ---- the resolved scene, from run.json ------------------------------------
-# scene_num('pendulum.g') is the value of scene key pendulum.g (dotted; array
-# elements by index from 0, e.g. 'initial.0.1') as a number formatted %g, or
-# "?" if run.json or the key is missing. (run.json is read with awk: it is
-# written one value per line, as the experiments write it.)
-_json_awk = '{ s = $0; sub(/^[ \t]+/, "", s); sub(/,[ \t]*$/, "", s) } \
-  s == "}" || s == "]" { n--; next } \
-  { k = ""; v = s } \
-  s ~ /^"[^"]*": / { k = s; sub(/^"/, "", k); sub(/": .*$/, "", k); v = s; sub(/^"[^"]*": /, "", v) } \
-  k == "" && n > 0 && arr[n] { k = idx[n]++ } \
-  { p = (n > 0 && path[n] != "" ? path[n] "." : "") k } \
-  v == "{" || v == "[" { n++; path[n] = p; arr[n] = (v == "["); idx[n] = 0; next } \
-  p == want { gsub(/"/, "", v); print v; exit }'
-scene_num(key) = (_s = system(sprintf("awk -v want='scene.%s' '%s' '%s' 2>/dev/null", \
-                                      key, _json_awk, results . '/run.json')), \
-                  _s eq "" ? "?" : sprintf("%g", real(_s)))
+# ---- the numbers of the run: DIR/figure_values.gp, written by the experiment (the "scene values"
+# and "summary values" of the scripts' Input lines): no script reads JSON ----
+# scene_num('pendulum.g') is the value of scene key pendulum.g (dotted; array elements by index
+# from 0, e.g. 'initial.0.1') formatted %g, or "?" if the run has no such number.
+load results . '/figure_values.gp'
+_fv(key) = sum [_k = 1:|FV_KEY|] (FV_KEY[_k] eq key ? _k : 0)   # the index of key, 0 if it is not there
+scene_num(key) = (_i = _fv('scene.' . key), _i > 0 ? sprintf("%g", FV_VAL[_i]) : "?")
 
 # ---- x tics for logarithmic axes spanning few decades ------------------------
 # eval LOGTICS("1 2 5") puts the x tics at 1, 2, 5 × 10^k (labelled with the x format, e.g. "%g")
 LOGTICS(ds) = sprintf("set xtics (); do for [k=-8:8] { do for [d in '%s'] { set xtics add (real(d) * 10.0**k) } }", ds)
 
-# ---- numbers from summary.json ------------------------------------------------
+# ---- numbers from summary values (timings aside), through figure_values.gp ----------------
 # summary_num('orders.polar_px_change_per_step') is the value of that key (dotted, as for
-# scene_num) in results/summary.json, formatted %.17g, or "?" if the file or the key is missing.
-summary_num(key) = (_s = system(sprintf("awk -v want='%s' '%s' '%s' 2>/dev/null", \
-                                        key, _json_awk, results . '/summary.json')), \
-                    _s eq "" ? "?" : sprintf("%.17g", real(_s)))
+# scene_num) formatted %.17g, or "?" if the run has no such number.
+summary_num(key) = (_i = _fv('summary.' . key), _i > 0 ? sprintf("%.17g", FV_VAL[_i]) : "?")
 # eval need_num('NAME', scene_num('pendulum.g')) sets NAME to the number, or stops the script
 # with an error naming the value that is missing (no silent default).
 need_num(var, s) = (s eq "?") \
-    ? sprintf("exit error \"%s: missing from %s/run.json or summary.json\"", var, results) \
+    ? sprintf("exit error \"%s: missing from %s/figure_values.gp\"", var, results) \
     : sprintf("%s = %s", var, s)
 
 # ---- 001 Dubois & Rojas-Quintero, Lobatto variational integrator (figures/lobatto_table_*.gp) ----
@@ -145,24 +134,13 @@ C_LOB_H1 = '#56B4E9';  C_LOB_H2 = '#0072B2';  C_LOB_H3 = '#002338'
 C_STABLE = '#CFE8F6'   # shading: h ω where the Lobatto map is stable (spectral radius 1)
 # scene_full('oscillator.omega'): as scene_num, at full precision (%.17g, as summary_num): scene_num's
 # %g keeps 6 digits, too few for a value that is computed with, e.g. T = 2π/ω
-scene_full(key) = (_s = system(sprintf("awk -v want='scene.%s' '%s' '%s' 2>/dev/null", \
-                                       key, _json_awk, results . '/run.json')), \
-                   _s eq "" ? "?" : sprintf("%.17g", real(_s)))
+scene_full(key) = (_i = _fv('scene.' . key), _i > 0 ? sprintf("%.17g", FV_VAL[_i]) : "?")
 
 # ---- 004 simplified Takahashi–Imada method, energy drift (figures/ti_drift_*.gp) ----
-# Numbers from run.json / summary.json for these scripts. scene_num, scene_full and summary_num above
-# convert with real(), which in gnuplot 5.4 rejects a number whose mantissa has no decimal point, such
-# as "2e-06" (how the JSON writer prints 2·10^{-6}): "Trailing characters after numeric expression".
-# json_real('summary.json', 'reproduced.hh5_mu_final') is the value of the (dotted) key of
-# results/FILE rewritten by awk as %.17e, which real() and eval read; "?" if the file or the key is
-# missing or the value is not a number. scene_real('t_end') and summary_real('orders.sv_energy') are
-# the shorthands; use them with need_num.
-_num_awk = '$0 ~ /^[-+]?([0-9]+[.]?[0-9]*|[.][0-9]+)([eE][-+]?[0-9]+)?$/ { printf "%.17e", $0 }'
-json_real(file, key) = (_s = system(sprintf("awk -v want='%s' '%s' '%s' 2>/dev/null | awk '%s'", \
-                                            key, _json_awk, results . '/' . file, _num_awk)), \
-                        _s eq "" ? "?" : _s)
-scene_real(key)   = json_real('run.json', 'scene.' . key)
-summary_real(key) = json_real('summary.json', key)
+# scene_real('t_end') and summary_real('orders.sv_energy'): as scene_num and summary_num, written
+# %.17e (a form real() and eval read whatever the value); use them with need_num.
+scene_real(key)   = (_i = _fv('scene.' . key), _i > 0 ? sprintf("%.17e", FV_VAL[_i]) : "?")
+summary_real(key) = (_i = _fv('summary.' . key), _i > 0 ? sprintf("%.17e", FV_VAL[_i]) : "?")
 # sci(x): x as "−6.52·10^{−6}" (3 significant digits; enhanced text)
 sci(x) = x == 0 ? "0" : gprintf("%.2t·10^{%T}", x)
 # the methods: Störmer–Verlet vermillion and dashed (as in 004 Fig. 1), Takahashi–Imada (1.4) blue,

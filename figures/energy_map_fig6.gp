@@ -9,13 +9,13 @@
 # which is the isoline H_0 = kl²/2 (the energy at r = 0).
 # The y axis points down (gravity along +y, eq. (73)); it is drawn downwards, so that the
 # pendulum hangs down in the picture.
-# Input: map.csv, summary.json (grid size), run.json (grid extent, pendulum, dt, t_max).
+# Input: map.csv, summary values (grid size), scene values (grid extent, pendulum, dt, t_max).
 if (!exists("results")) results = 'results/energy_map'
 load 'figures/common.gp'
 set encoding utf8
 MAP = csv('map.csv')
 
-# ---- parameters: from run.json (scene) and summary.json; none has a default here ----
+# ---- parameters: from scene values (scene) and summary values; none has a default here ----
 eval need_num('NX', summary_num('grid.nx'))
 eval need_num('NY', summary_num('grid.ny'))
 eval need_num('XMIN', scene_num('grid.x_min'));  eval need_num('XMAX', scene_num('grid.x_max'))

@@ -7,8 +7,8 @@
 # summation of the updates. Zeros (exact preservation) cannot be drawn on the log axis and are left out.
 # (As the experiment computes them: |Δp_x| is the largest over the scene's first_integrals.initial
 # states; the angular-momentum run starts from the first of them, at the smallest h.)
-# Input: first_integrals.csv, angular_momentum.csv, summary.json (fitted order, maximal drifts),
-# run.json (the initial state of the angular-momentum run).
+# Input: first_integrals.csv, angular_momentum.csv, summary values (fitted order, maximal drifts),
+# scene values (the initial state of the angular-momentum run).
 if (!exists("results")) results = 'results/energy_map'
 load 'figures/common.gp'
 set encoding utf8
@@ -16,7 +16,7 @@ FI  = csv('first_integrals.csv')
 ANG = csv('angular_momentum.csv')
 pos(c) = (column(c) > 0) ? column(c) : NaN            # log axes: zeros and "nan" are skipped
 
-# ---- left: fit log10|Δp_x| = a + s log10 h (stats' linear regression), and the order in summary.json
+# ---- left: fit log10|Δp_x| = a + s log10 h (stats' linear regression), and the order in summary values
 stats FI using (log10(column("h"))):(log10(column("px_change_per_step"))) nooutput
 SLOPE = STATS_slope
 ICPT  = STATS_intercept

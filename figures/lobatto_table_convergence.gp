@@ -3,14 +3,14 @@
 # the absolute errors of p, q and H (Lobatto), of the discrete energy H_d (15) (round-off), and
 # of q for the methods of the scene key table1.methods (the paper scene: the Simpson scheme and the
 # implicit midpoint rule). Black crosses: the values printed in
-# the paper's Table 1 (summary.json published.*_err_N<N>).
+# the paper's Table 1 (summary values published.*_err_N<N>).
 # Right, beyond the paper: nonlinear Lagrangians (Newton on the internal nodes), phase-space
 # error |z_N − z(t_end)|_2 against an odeint reference: the pendulum L = q̇²/2 + cos q (Lobatto and
 # the methods of nonlinear.methods; the paper scene: Simpson, midpoint) and a 2-DOF elastic pendulum (Lobatto).
-# Dashed: lines with the fitted order of summary.json (orders.*) as slope, drawn through the
+# Dashed: lines with the fitted order of summary values (orders.*) as slope, drawn through the
 # centroid (in log–log) of the points shown; the fit itself leaves out points within the
 # round-off / reference-accuracy floor (see experiments/lobatto_table).
-# Input: table1.csv, nonlinear.csv, summary.json (orders, published Table 1), run.json (scene).
+# Input: table1.csv, nonlinear.csv, summary values (orders, published Table 1), scene values (scene).
 if (!exists("results")) results = 'results/lobatto_table'
 load 'figures/common.gp'
 set encoding utf8    # (so that the key width counts characters, not bytes)
@@ -77,7 +77,7 @@ stats NL using "elastic_newton_iterations" nooutput
 ITE = sprintf("%.2g–%.2g", STATS_min, STATS_max)
 GUIDE(tag, s, key, h) = 10**(value(sprintf("CY_%s_%s", tag, s)) + ORDER(key) * (log10(h) - value(sprintf("CX_%s_%s", tag, s))))
 
-# the published Table 1 (summary.json published.<q>_err_N<N>, N from the scene key meshes)
+# the published Table 1 (summary values published.<q>_err_N<N>, N from the scene key meshes)
 set print $PUB
 do for [k = 0:9] {
     n = scene_num(sprintf('meshes.%d', k))

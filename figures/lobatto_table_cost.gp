@@ -5,7 +5,7 @@
 # Runge–Kutta–Fehlberg 7(8)), against the wall time of one run (left) and the number of force
 # evaluations in one run (right; U_q and U_qq calls, so Newton's Jacobians count). The methods are
 # those of the scene key timing.methods (the rows of timing.csv, by label).
-# Input: timing.csv (one row per method and step size h); run.json (t_end, q(0), repetitions).
+# Input: timing.csv (one row per method and step size h); scene values (t_end, q(0), repetitions).
 if (!exists("results")) results = 'results/lobatto_table'
 load 'figures/common.gp'
 set encoding utf8    # (so that the key width counts characters, not bytes)

@@ -6,7 +6,7 @@
 # Lines between the markers only guide the eye: a scheme gives values at t_j = j h alone.
 # The methods are those of the scene key figure1.methods (the columns q_<label>, p_<label>).
 # Input: fig1_N<N>.csv (N from the scene key figure1.meshes), fig1_exact.csv,
-# run.json (oscillator parameters, the two N).
+# scene values (oscillator parameters, the two N).
 if (!exists("results")) results = 'results/lobatto_table'
 load 'figures/common.gp'
 set encoding utf8    # (so that the key width counts characters, not bytes)

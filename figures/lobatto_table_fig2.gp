@@ -4,12 +4,12 @@
 # equal length; each point is the maximum over one window.
 #   (a) max |H − H_0|, H the energy: dominated by the O(h^6) oscillation of H along the orbit.
 #   (b) the same maxima relative to their mean over the run, with the least-squares lines
-#       whose slopes are the growth rates of summary.json (the paper's caption gives a rate per
+#       whose slopes are the growth rates of summary values (the paper's caption gives a rate per
 #       h); the line is drawn with the reproduced slope through the data's centroid.
 #   (c) the error of the discrete energy H_d, eq. (15), which the scheme conserves exactly in
 #       exact arithmetic: round-off, with the map (13) applied as x ← Φx (plain, solid) and as
 #       y ← y + (Φ − I)y with compensated summation (dashed).
-# Input: fig2_energy.csv; summary.json (growth rates, reproduced and published); run.json (the h,
+# Input: fig2_energy.csv; summary values (growth rates, reproduced and published); scene values (the h,
 # periods, windows, oscillator).
 if (!exists("results")) results = 'results/lobatto_table'
 load 'figures/common.gp'
@@ -29,7 +29,7 @@ COL(i) = i == 1 ? C_LOB_H1 : i == 2 ? C_LOB_H2 : C_LOB_H3
 PT(i) = i == 1 ? 6 : i == 2 ? 4 : 8
 sel(i, col) = abs(column("h") / HV(i) - 1) < 1e-9 ? column(col) : NaN    # the rows of step size i
 
-# growth rates (per period) from summary.json, keyed by the %.17g string of h: "?" if missing
+# growth rates (per period) from summary values, keyed by the %.17g string of h: "?" if missing
 KEY(i) = sprintf("%.17g", HV(i))
 RATE(what, i) = summary_num(sprintf('%s.%s', what, KEY(i)))
 fmt_rate(s) = s eq "?" ? "–" : sprintf("%+.2e", real(s))

@@ -4,12 +4,12 @@
 # round-off (the scan's ρ − 1 scatters up to a few 10^{−15} where the map is stable),
 # with the methods of the scene key stability.methods for comparison (the paper scene: the Simpson
 # scheme; a processed method by its kernel). Shaded: the intervals where the Lobatto scan finds
-# ρ ≤ 1 + 10^{−12} (summary.json reproduced.stable_set_h_omega, grid points of the scan).
-# Vertical lines: the computed first loss of stability (summary.json reproduced.stability_bound,
+# ρ ≤ 1 + 10^{−12} (summary values reproduced.stable_set_h_omega, grid points of the scan).
+# Vertical lines: the computed first loss of stability (summary values reproduced.stability_bound,
 # to compare with the paper's bound (10), √(42 − 6√29)); h ω = √10 and √30, where δ of eq. (7)
 # vanishes; and the other two roots of the discriminant Δ of Sec. 4, √60 and √(42 + 6√29)
 # (formulas of the paper, not data).
-# Input: stability.csv; summary.json (stable set and bound); run.json (scan range).
+# Input: stability.csv; summary values (stable set and bound); scene values (scan range).
 if (!exists("results")) results = 'results/lobatto_table'
 load 'figures/common.gp'
 set encoding utf8    # (so that the key width counts characters, not bytes)
@@ -40,7 +40,7 @@ do for [m in METHODS] {
     YMAX = STATS_max > YMAX ? STATS_max : YMAX
 }
 
-# the stable intervals of the scan, from summary.json: SL_k, SR_k for k = 1 .. NS
+# the stable intervals of the scan, from summary values: SL_k, SR_k for k = 1 .. NS
 NS = 0
 do for [k = 0:19] {
     a = summary_num(sprintf('reproduced.stable_set_h_omega.%d.0', k))

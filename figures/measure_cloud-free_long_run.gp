@@ -4,9 +4,9 @@
 # scale. The conformal factor N = (1 + y²)^(−1/2) tends to 0 along the motion (y grows), and the altered
 # Hamiltonian K_E* = N(H − E*) stays near its conserved modified value K_mod(z_0; E*): for Φ^(0) that value is
 # O(h²) ≠ 0, so H − E* ≈ K_mod/N grows without bound; for Φ^(4) it is O(h^6) and H stays near E*.
-# The key gives, per method, H − H(z_0) and the error ‖z − z_ref‖_2 at the final time (summary.json).
-# Input: long_run.csv (t, <m>_H_phi0, <m>_H_phi4), summary.json (reproduced.long_H_err_phi<ℓ>,
-# long_err_phi<ℓ>), run.json (h, long_run.t_end, cloud.center, potential).
+# The key gives, per method, H − H(z_0) and the error ‖z − z_ref‖_2 at the final time (summary values).
+# Input: long_run.csv (t, <m>_H_phi0, <m>_H_phi4), summary values (reproduced.long_H_err_phi<ℓ>,
+# long_err_phi<ℓ>), scene values (h, long_run.t_end, cloud.center, potential).
 if (!exists("results")) results = 'results/measure_cloud-free'
 load 'figures/common.gp'
 load 'figures/measure_cloud_style.gpi'

@@ -5,7 +5,7 @@
 # number of Newton iterations, N × (mean iterations per step): the force evaluations of the implicit step.
 # Log–log, one line per method.
 # Input: timing_cost.csv (method, h, steps, t_end, err, wall_s, ns_per_step, newton_iterations_per_step),
-# run.json (energies.t_end, timing.repeats, cloud.center).
+# scene values (energies.t_end, timing.repeats, cloud.center).
 if (!exists("results")) results = 'results/measure_cloud'
 load 'figures/common.gp'
 load 'figures/measure_cloud_style.gpi'

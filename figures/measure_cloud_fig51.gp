@@ -5,7 +5,7 @@
 # The key gives the areas of the convex hulls of the two projections and their sum: the sum is not
 # constant, so the flow is not symplectic for dx∧dp_x + dy∧dp_y (it preserves the measure μ = N⁻¹d⁴z).
 # Input: shape.csv (t, x, y, px, py), shape_areas.csv (t, area_x_px, area_y_py, area_sum),
-# run.json (shape.points, shape.radius, shape.snapshot_dt, shape.snapshots, cloud.center).
+# scene values (shape.points, shape.radius, shape.snapshot_dt, shape.snapshots, cloud.center).
 if (!exists("results")) results = 'results/measure_cloud'
 load 'figures/common.gp'
 load 'figures/measure_cloud_style.gpi'

@@ -6,7 +6,7 @@
 # h^6 (Corollary 4.3: Φ^(4) preserves μ^(4)_mod to O(h^6)) and the paper's "≈ 2·10⁻⁴".
 # The oscillations shrink from μ to μ^(2)_mod to μ^(4)_mod, down to the size of the convex-hull artefact
 # that the exact flow shows as well.
-# Input: volumes_phi4.csv, summary.json, run.json (see figures/measure_cloud_volumes.gpi).
+# Input: volumes_phi4.csv, summary values, scene values (see figures/measure_cloud_volumes.gpi).
 if (!exists("results")) results = 'results/measure_cloud'
 load 'figures/common.gp'
 load 'figures/measure_cloud_style.gpi'

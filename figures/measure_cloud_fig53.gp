@@ -2,7 +2,7 @@
 # harmonic potential U = (x² + y²)/2, h = 0.25, z_0 = (0, 0, 1, 1), the five discretizations (5.1):
 # (a) H, (b) K_E = N(H − 1), (c) K^(4)_mod(z; E*) (O(h^6)), (d) ℰ^(4)(z_j) − ℰ^(4)(z_0) (the paper plots
 # ℰ^(4) itself; its values E* are in the key).
-# Input: energies_phi4.csv, summary.json, run.json (see figures/measure_cloud_energies.gpi).
+# Input: energies_phi4.csv, summary values, scene values (see figures/measure_cloud_energies.gpi).
 if (!exists("results")) results = 'results/measure_cloud'
 load 'figures/common.gp'
 load 'figures/measure_cloud_style.gpi'

@@ -4,7 +4,7 @@
 # hull of a 600-cell cloud of radius 0.01 around z_0 = (0, 0, 1, 1) w.r.t. (a) μ, (b) μ^(2)_mod,
 # (c) μ^(4)_mod; (d) peak-to-peak over t ≤ ptp_window against the measure. The oscillations are large and do
 # not shrink with the order of the modified measure (Φ^(0) preserves none of them beyond O(h^2)).
-# Input: volumes_phi0.csv, summary.json, run.json (see figures/measure_cloud_volumes.gpi).
+# Input: volumes_phi0.csv, summary values, scene values (see figures/measure_cloud_volumes.gpi).
 if (!exists("results")) results = 'results/measure_cloud'
 load 'figures/common.gp'
 load 'figures/measure_cloud_style.gpi'

@@ -4,12 +4,12 @@
 # sizes h; the peak-to-peak over t ≤ ptp_window of V(t)/V(0) − 1, V the volume of the convex hull w.r.t.
 # Φ^(ℓ)'s own measure μ^(ℓ)_mod (μ^(0) = μ). The claim (Corollary 4.3): O(h^(ℓ+2)).
 # One panel per ℓ. Filled markers: the points of the least-squares fit (dashed, over its h range, slope = the
-# fitted order, summary.json fits.measure_ell<ℓ>.<m>); open markers: points left out of the fit because they
+# fitted order, summary values fits.measure_ell<ℓ>.<m>); open markers: points left out of the fit because they
 # lie within a factor 2 of the round-off noise. The noise is measured by the "probe" runs (crosses in the
 # ℓ = 6 panel): Φ^(6) at h = order_study_h_probe, where the truncation error is negligible;
 # 2 × order_study_noise is the gray line (shaded below it). Gray dotted: the slope ℓ + 2.
-# Input: order_study.csv (method, ell, h, ptp), summary.json (fits, orders, reproduced.order_study_noise,
-# reproduced.order_study_h_probe), run.json (order_study.*, cloud.center, ptp_window).
+# Input: order_study.csv (method, ell, h, ptp), summary values (fits, orders, reproduced.order_study_noise,
+# reproduced.order_study_h_probe), scene values (order_study.*, cloud.center, ptp_window).
 if (!exists("results")) results = 'results/measure_cloud'
 load 'figures/common.gp'
 load 'figures/measure_cloud_style.gpi'
@@ -40,7 +40,7 @@ stats OS using ((sel(word(MC_METHODS, 1), ELL(1)) && !(@isprobe)) ? column("h") 
 NH = STATS_records
 XLO = (HPROBE < HMIN ? HPROBE : HMIN) / 1.12; XHI = HMAX * 1.12
 
-# fits: FO_<ℓ>_<m> order, FC_ log10 c, FLO_/FHI_ h range (NaN if summary.json has no fit: fewer than 3 points above
+# fits: FO_<ℓ>_<m> order, FC_ log10 c, FLO_/FHI_ h range (NaN if summary values has no fit: fewer than 3 points above
 # the noise)
 fitnum(e, m, k) = (v = summary_real(sprintf('fits.measure_ell%d.%s.%s', e, m, k)), v eq "?" ? NaN : real(v))
 do for [i = 1:NELL] { do for [m in MC_METHODS] {

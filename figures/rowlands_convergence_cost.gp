@@ -6,7 +6,7 @@
 # of force evaluations in one run (right), on the planar elastic pendulum. The methods are those
 # of timing.csv (the scene's timing.methods, by registry label): ours, then odeint's, any others after.
 # Input: timing.csv (one row per method and step size h; one run = pre- and postprocessing once),
-# run.json (pendulum parameters, initial condition and repetitions, for the title).
+# scene values (pendulum parameters, initial condition and repetitions, for the title).
 if (!exists("results")) results = 'results/rowlands_convergence'
 load 'figures/common.gp'
 set encoding utf8    # (so that the key width counts characters, not bytes)

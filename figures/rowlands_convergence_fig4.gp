@@ -8,7 +8,7 @@
 # CSV (the scene's `methods`, by registry label): the paper's in a fixed order, any others after.
 # Dashed lines: least-squares fits from orders.csv, drawn over the h range they were fitted on.
 # Input: fig4_convergence.csv, orders.csv (the rows of initial condition `ic`, default 0, the one
-# the paper scene draws), run.json (pendulum parameters and initial condition, for the title).
+# the paper scene draws), scene values (pendulum parameters and initial condition, for the title).
 if (!exists("results")) results = 'results/rowlands_convergence'
 load 'figures/common.gp'
 set encoding utf8    # (so that the key width counts characters, not bytes)
@@ -47,7 +47,7 @@ do for [m in METHODS] { do for [q in QUANTITIES] { eval fit_at(FIT(m).'_'.q) } }
 fit_h(n, t)   = value(n.'_hmin') * (value(n.'_hmax') / value(n.'_hmin'))**t
 fit_err(n, t) = powerlaw(fit_h(n, t), value(n.'_c'), value(n.'_order'))
 
-# t_max from the data; pendulum parameters and the initial condition from the scene (run.json)
+# t_max from the data; pendulum parameters and the initial condition from the scene (scene values)
 stats CONV using (sel("h") * sel("steps")) nooutput
 T = STATS_max
 PARAMS = sprintf("l = %s, m = %s, k = %s, g = %s, t_{max} = %g", \

@@ -7,13 +7,13 @@
 #   left:  max over t ≤ t_ω/ω of the scaled global error (|ε_p|² + ω²|ε_q|²)^{1/2}
 #   right: max over the same span of |H_n − H_0| / H_0, with the closed forms of Sect. 1.4 as lines
 # TI and the simplified TI are processed (start χ_h^{-1}, output χ_h); on the oscillator the two
-# methods coincide. Vertical lines: the stability bounds in ω h_eff (summary.json: equal_work, and
+# methods coincide. Vertical lines: the stability bounds in ω h_eff (summary values: equal_work, and
 # TI's bisected 2√3). The methods are those of oscillator.csv (the scene's oscillator.methods).
-# Left, dashed/dotted: the least-squares lines whose slopes are summary.json's orders, drawn over the
+# Left, dashed/dotted: the least-squares lines whose slopes are summary values's orders, drawn over the
 # points they were fitted on (as in experiments/ti_drift/main.cpp: ω h_eff ≤ 0.5, error above 10^3 ε).
 # Right: the fitted orders in the key only (their lines would hide under the closed forms).
-# Input: oscillator.csv, oscillator_closed_forms.csv; summary.json (orders, stability bounds, force
-# evaluations per step); run.json (oscillator.t_omega).
+# Input: oscillator.csv, oscillator_closed_forms.csv; summary values (orders, stability bounds, force
+# evaluations per step); scene values (oscillator.t_omega).
 if (!exists("results")) results = 'results/ti_drift'
 load 'figures/common.gp'
 set encoding utf8    # (so that the key width counts characters, not bytes)

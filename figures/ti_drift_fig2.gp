@@ -3,13 +3,13 @@
 # integrated with the simplified method (1.6), α = 1/12, without processing.
 #   (a) the shifted energy H + h²H_3 minus its initial value, H_3 = (U''(p,p) − |∇U|²)/12 (Takahashi–
 #       Imada's, docs: shared note ti_drift.md §3.4), with the least-squares line whose slope is
-#       summary.json's reproduced.unsym_pendulum_drift_rate (drawn through the data's centroid, which
+#       summary values's reproduced.unsym_pendulum_drift_rate (drawn through the data's centroid, which
 #       the least-squares line passes through); the key also gives the rate predicted from (4.3).
 #   (b) the error of H itself: the O(h²) oscillation on top of the same drift (dashed: the slope of
 #       (a) through the centroid of the H error).
 # The series is sampled (fig2_pendulum.csv: every Δt, much longer than a period, so the oscillation is
 # aliased): drawn as points.
-# Input: fig2_pendulum.csv; summary.json (drift rates); run.json (h, pendulum start).
+# Input: fig2_pendulum.csv; summary values (drift rates); scene values (h, pendulum start).
 if (!exists("results")) results = 'results/ti_drift'
 load 'figures/common.gp'
 set encoding utf8    # (so that the key width counts characters, not bytes)

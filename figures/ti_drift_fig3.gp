@@ -3,11 +3,11 @@
 # with the simplified method (1.6), α = 1/12, without processing; start q_1 = 0, q_2, p_2 from the
 # scene, p_1 > 0 such that H = H_0.
 #   (a) the error of the modified energy E = Ĥ + h⁴α²K/2 of (4.3): O(h⁶), bounded, no drift; dashed:
-#       the least-squares line whose slope is summary.json's reproduced.hh3_drift_slope (through the
+#       the least-squares line whose slope is summary values's reproduced.hh3_drift_slope (through the
 #       data's centroid), the paper's slope (published.hh3_drift_slope) in the key.
 #   (b) for contrast, the error of H itself: O(h²).
 # The series is sampled (fig3_hh3.csv): drawn as points.
-# Input: fig3_hh3.csv; summary.json (slopes, max error); run.json (h, start, H_0).
+# Input: fig3_hh3.csv; summary values (slopes, max error); scene values (h, start, H_0).
 if (!exists("results")) results = 'results/ti_drift'
 load 'figures/common.gp'
 set encoding utf8    # (so that the key width counts characters, not bytes)

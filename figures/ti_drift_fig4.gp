@@ -8,13 +8,13 @@
 #       fig4_trajectories.csv, so a drawn curve may stay below the threshold.
 #   (b) the other trajectories (thin gray), with the mean μ(t) and μ ± σ(t) over all trajectories
 #       (σ: sample standard deviation) from fig4_stats.csv.
-#   (c) σ(t) in log-log, with the least-squares line whose slope is summary.json's
+#   (c) σ(t) in log-log, with the least-squares line whose slope is summary values's
 #       reproduced.hh5_sigma_exponent (fitted on t ≥ t_end/10 as in experiments/ti_drift/main.cpp,
 #       drawn through the centroid of that part) and a √t guide through the same point.
 # The curves of (a) and (b) are drawn as line segments between consecutive samples of one
 # trajectory (one pass over the file, 'with vectors'), so the file is read once per panel.
-# Input: fig4_trajectories.csv, fig4_stats.csv; summary.json (μ, σ, exponent: reproduced and
-# published; outlier ids); run.json (h, k, H_0, the ensemble).
+# Input: fig4_trajectories.csv, fig4_stats.csv; summary values (μ, σ, exponent: reproduced and
+# published; outlier ids); scene values (h, k, H_0, the ensemble).
 if (!exists("results")) results = 'results/ti_drift'
 load 'figures/common.gp'
 set encoding utf8    # (so that the key width counts characters, not bytes)
@@ -35,7 +35,7 @@ eval need_num('GAM', summary_real('reproduced.hh5_sigma_exponent'))
 eval need_num('MU_PUB', summary_real('published.hh5_mu_final'))
 eval need_num('SIG_PUB', summary_real('published.hh5_sigma_final'))
 eval need_num('GAM_PUB', summary_real('published.hh5_sigma_exponent'))
-# the outliers' ids, as listed in summary.json
+# the outliers' ids, as listed in summary values
 OUT_IDS = ""
 do for [i = 0:999] { s = summary_real(sprintf('reproduced.hh5_outliers.%d', i)); if (s eq "?") { break }; OUT_IDS = OUT_IDS . (i > 0 ? ", " : "") . sprintf("%d", int(real(s))) }
 

@@ -1,5 +1,5 @@
 # Fig. 5 of 004 (the simplified Takahashi–Imada method), Sect. 5.2.2: Poincaré cuts of one trajectory
-# of Fig. 4 (summary.json reproduced.poincare_trajectory: the one with the largest error), the points
+# of Fig. 4 (summary values reproduced.poincare_trajectory: the one with the largest error), the points
 # (q_2, p_2) where q_1 crosses 0 upwards with p_1 > 0 (linear interpolation between steps), over two time
 # windows (reproduced.poincare_windows): one where its E error changes fastest ("growth") and one where
 # it is flattest ("no growth"). The paper: during linear growth the cuts lie on one side (p_2 < 0),
@@ -8,7 +8,7 @@
 #       the windows the line has the colour of the time, as the points below. Right axis: the share of
 #       the cuts with p_2 < 0 in tenths of each window.
 #   (b), (c) the cuts of each window, coloured by time t (colour bar), with the share of p_2 < 0.
-# Input: fig5_poincare.csv, fig4_trajectories.csv; summary.json (trajectory, windows); run.json (h, k).
+# Input: fig5_poincare.csv, fig4_trajectories.csv; summary values (trajectory, windows); scene values (h, k).
 if (!exists("results")) results = 'results/ti_drift'
 load 'figures/common.gp'
 set encoding utf8    # (so that the key width counts characters, not bytes)

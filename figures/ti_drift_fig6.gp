@@ -18,8 +18,8 @@
 #   (d) the RMS over the ensemble of H(p_n, q_n) − H_0 and of H(p̂_n, q̂_n) − H_0, (p̂, q̂) = χ_h(p, q)
 #       (1.5), H_0 = H(p_0, q_0) at the unprocessed start in both: the second carries the offset
 #       H(χ_h(p_0, q_0)) − H(p_0, q_0) = O(h^2), its value at t = 0 (dashed).
-# Input: fig6_scan.csv, fig6_stats.csv, fig6_trajectories.csv; summary.json (μ, σ, standard errors,
-# exponent, max |H − H_0|, published values); run.json (lj.*).
+# Input: fig6_scan.csv, fig6_stats.csv, fig6_trajectories.csv; summary values (μ, σ, standard errors,
+# exponent, max |H − H_0|, published values); scene values (lj.*).
 if (!exists("results")) results = 'results/ti_drift'
 load 'figures/common.gp'
 set encoding utf8    # (so that the key width counts characters, not bytes)
@@ -44,7 +44,7 @@ eval need_num('MU_PUB', summary_real('published.lj_mu_final'))
 eval need_num('SIGMA_PUB', summary_real('published.lj_sigma_final'))
 eval need_num('GAMMA_PUB', summary_real('published.lj_sigma_exponent'))
 
-# ---- (a): the step sizes of the scan, HS_1 .. HS_NS (run.json lj.h_scan) ----
+# ---- (a): the step sizes of the scan, HS_1 .. HS_NS (scene values lj.h_scan) ----
 NS = 0
 do for [k = 0:19] { s = scene_real(sprintf('lj.h_scan.%d', k)); if (s ne "?") { NS = k + 1; eval sprintf("HS_%d = %s", NS, s) } }
 if (NS == 0) { exit error "lj.h_scan: missing from ".results."/run.json" }

@@ -5,7 +5,8 @@ Each study of a scene runs alone: for every study S that the full run of SCENE
 (its outputs in FULL_DIR) ran, `BIN --scene SCENE --study S` must
   - exit 0,
   - write exactly the CSV files S declares (`BIN --list-studies`; every
-    declared name or pattern matched, nothing else) besides summary.json and run.json,
+    declared name or pattern matched, nothing else) besides summary.json, run.json and
+    figure_values.gp,
   - report studies == [S] in summary.json and run.json, and a wall time for S only,
   - write the same bytes as the full run in every CSV but timing*.csv (wall times).
 """
@@ -39,7 +40,7 @@ def main() -> int:
             continue
         csvs = sorted(p.name for p in out.glob("*.csv"))
         others = sorted(p.name for p in out.iterdir() if p.suffix != ".csv")
-        if others != ["run.json", "summary.json"]:
+        if others != ["figure_values.gp", "run.json", "summary.json"]:
             failures.append(f"{study}: unexpected files {others}")
         patterns = declared[study]
         undeclared = [f for f in csvs if not any(fnmatch.fnmatchcase(f, p) for p in patterns)]

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # compare_threads.sh BIN WORKDIR [SCENE]: run BIN's quick scene (or SCENE)
 # with 1 and with 2 threads and require every CSV except timing*.csv (wall
-# times) to be byte-identical.
+# times), and figure_values.gp (the numbers of the run but its timings), to be
+# byte-identical.
 set -euo pipefail
 bin=$1 work=$2
 scene=(--quick)
@@ -17,4 +18,5 @@ for f in "$work"/t1/*.csv; do
   n=$((n + 1))
 done
 [ "$n" -gt 0 ] || { echo "no CSV written" >&2; exit 1; }
+cmp "$work/t1/figure_values.gp" "$work/t2/figure_values.gp" || { echo "differs between --threads 1 and 2: figure_values.gp" >&2; exit 1; }
 echo "$n CSV files identical for --threads 1 and 2"

@@ -4,6 +4,9 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <set>
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
@@ -31,6 +34,52 @@ bool file_matches(std::string_view pattern, std::string_view name) {
 namespace {
 
 constexpr const char* kStudiesKey = "studies";
+
+// DIR/figure_values.gp: the numbers of the resolved scene and of summary.json (timings aside), and
+// the scene's texts, for the figure scripts (figures/common.gp: scene_num, summary_num). Gnuplot
+// has no maps and truncates long names, so they are two arrays, FV_KEY (the dotted key, prefixed
+// "scene." or "summary."; array elements by index from 0) and FV_VAL; integers are written with
+// ".0" (gnuplot would divide them as integers).
+using Entry = std::pair<std::string, std::string>;  // (key, gnuplot literal)
+
+std::string gnuplot_quoted(const std::string& s) {  // '...' with '' for ' and no newlines
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("''") : c == '\n' ? std::string(" ") : std::string(1, c);
+  return q + "'";
+}
+
+void collect_values(const nlohmann::ordered_json& j, const std::string& key, bool texts, std::vector<Entry>& out) {
+  if (j.is_object() || j.is_array()) {
+    std::size_t i = 0;
+    for (const auto& [k, v] : j.items()) collect_values(v, key + "." + (j.is_array() ? std::to_string(i++) : k), texts, out);
+  } else if (j.is_number() && std::isfinite(j.get<double>())) {
+    std::string v = format_double(j.get<double>());
+    if (v.find_first_of(".e") == std::string::npos) v += ".0";
+    out.emplace_back(key, v);
+  } else if (j.is_string() && texts) {
+    out.emplace_back(key, gnuplot_quoted(j.get<std::string>()));
+  }
+}
+
+std::string figure_values(const nlohmann::ordered_json& scene, nlohmann::ordered_json summary) {
+  summary.erase("timing");  // (wall times differ from run to run; this file does not)
+  std::vector<Entry> values;
+  collect_values(scene, "scene", true, values);
+  collect_values(summary, "summary", false, values);
+  std::set<std::string> seen;
+  for (const auto& [k, v] : values)
+    if (!seen.insert(k).second) throw std::logic_error("figure_values.gp: the key " + k + " twice");
+  std::string out =
+      "# The numbers of this run for its figures (figures/common.gp: scene_num, summary_num): the resolved\n"
+      "# scene (numbers and texts) and the numbers of summary.json without its timings.\n";
+  const std::string n = std::to_string(values.size());
+  out += "array FV_KEY[" + n + "]\narray FV_VAL[" + n + "]\n";
+  for (std::size_t i = 0; i < values.size(); ++i) {
+    const std::string at = "[" + std::to_string(i + 1) + "] = ";
+    out += "FV_KEY" + at + gnuplot_quoted(values[i].first) + "; FV_VAL" + at + values[i].second + "\n";
+  }
+  return out;
+}
 
 std::string join(const std::vector<std::string>& v, const char* sep = ", ") {
   std::string s;
@@ -230,6 +279,7 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
     summary["timing"]["wall_s"] = wall;
     summary["timing"]["study_wall_s"] = study_wall;
     out->write("summary.json", summary.dump(2) + "\n");
+    out->write("figure_values.gp", figure_values(scene->to_json(), summary));
 
     std::string command;
     for (int i = 0; i < argc; ++i) command += (i ? " " : "") + std::string(argv[i]);
