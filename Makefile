@@ -74,6 +74,8 @@ figure-files: $(ALL_FIGURES)
 
 paper: figures $(DEPS_STAMP)/paper.stamp
 	python3 scripts/paper_tables.py $(RESULTS) paper/generated
+	$(BUILD)/bin/geomint-methods --json > paper/generated/methods.json
+	python3 scripts/report.py $(RESULTS) paper/generated --methods paper/generated/methods.json
 	cd paper && latexmk -pdf -interaction=nonstopmode -halt-on-error main.tex
 
 bench: $(DEPS_STAMP)/build.stamp $(DEPS_STAMP)/figures.stamp $(BUILD)/CMakeCache.txt

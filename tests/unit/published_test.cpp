@@ -143,6 +143,9 @@ TEST(Published, OnlyStudiesThatRanAndOnlyWhatTheyComputed) {
   EXPECT_EQ(summary["published"]["p_err"], 1.0e-6);
   EXPECT_EQ(summary["comparisons"]["p_err"]["verdict"], "reproduced");
   EXPECT_FALSE(summary["comparisons"].contains("order"));
+  apply_published(e, summary, {{"long_run", {{"periods", 1000}}}}, {"long_run"});  // not comparable:
+  EXPECT_EQ(summary["comparisons"]["growth"]["verdict"], "not comparable");      // compared, not published
+  EXPECT_FALSE(summary["published"].contains("growth"));
 }
 
 TEST(Published, ValueTablesKeyedByMethod) {

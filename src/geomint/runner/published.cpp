@@ -232,7 +232,9 @@ void apply_published(const std::vector<Published>& entries, json& summary, const
   for (const Published& e : entries) {
     auto c = compare_published(e, summary, scene, studies_ran);
     if (!c) continue;
-    summary["published"][e.key] = (*c)["published"];
+    // summary.published: the values this run was set against (not those its scene cannot compare).
+    const std::string verdict = (*c)["verdict"];
+    if (verdict != "not comparable" && verdict != "not computed") summary["published"][e.key] = (*c)["published"];
     summary["comparisons"][e.key] = std::move(*c);
   }
 }

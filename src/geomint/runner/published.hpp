@@ -14,14 +14,14 @@
 //   note = "..."                          # why the reproduction differs, if it does
 //
 // After the studies ran, every entry of a study that ran is set against the
-// summary: summary.published.<key> is the published value and
-// summary.comparisons.<key> holds where, published, reproduced, difference,
+// summary: summary.comparisons.<key> holds where, published, reproduced, difference,
 // compare, verdict and note. The verdict is "reproduced" or "differs" (by the
 // tolerance), "reported" (no compare), "not comparable" (the scene differs
 // from `requires`) or "not computed" (the study ran without computing it, e.g.
 // for other methods); a value table with a parameter the run did not compute
-// is an internal error. The regression tests require every comparison of the
-// quick scenes to be made.
+// is an internal error. summary.published.<key> is the published value of every
+// entry but those not comparable or not computed. The regression tests require
+// every comparison of the quick scenes to be made.
 #include <filesystem>
 #include <optional>
 #include <stdexcept>
