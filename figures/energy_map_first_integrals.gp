@@ -26,7 +26,7 @@ NH    = STATS_records
 stats FI using "h":"px_change_per_step" nooutput
 DPX_AT_HMIN = STATS_index_min_y == STATS_index_min_x ? STATS_min_y : NaN   # (the smallest change is at the smallest h)
 eval need_num('ORDER_SUMMARY', summary_num('orders.polar_px_change_per_step'))
-eval need_num('ORDER_PAPER', summary_num('published.polar_px_change_per_step'))
+eval need_num('ORDER_PAPER', summary_num('comparisons.polar_px_change_per_step.published'))
 # reference line of the paper's order through the point at the smallest h
 ref(h) = DPX_AT_HMIN * (h / HMIN)**ORDER_PAPER
 

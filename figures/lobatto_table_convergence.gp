@@ -3,7 +3,7 @@
 # the absolute errors of p, q and H (Lobatto), of the discrete energy H_d (15) (round-off), and
 # of q for the methods of the scene key table1.methods (the paper scene: the Simpson scheme and the
 # implicit midpoint rule). Black crosses: the values printed in
-# the paper's Table 1 (summary values published.*_err_N<N>).
+# the paper's Table 1 (summary values comparisons.*_err_N<N>.published).
 # Right, beyond the paper: nonlinear Lagrangians (Newton on the internal nodes), phase-space
 # error |z_N − z(t_end)|_2 against an odeint reference: the pendulum L = q̇²/2 + cos q (Lobatto and
 # the methods of nonlinear.methods; the paper scene: Simpson, midpoint) and a 2-DOF elastic pendulum (Lobatto).
@@ -77,13 +77,13 @@ stats NL using "elastic_newton_iterations" nooutput
 ITE = sprintf("%.2g–%.2g", STATS_min, STATS_max)
 GUIDE(tag, s, key, h) = 10**(value(sprintf("CY_%s_%s", tag, s)) + ORDER(key) * (log10(h) - value(sprintf("CX_%s_%s", tag, s))))
 
-# the published Table 1 (summary values published.<q>_err_N<N>, N from the scene key meshes)
+# the published Table 1 (summary values comparisons.<q>_err_N<N>.published, N from the scene key meshes)
 set print $PUB
 do for [k = 0:9] {
     n = scene_num(sprintf('meshes.%d', k))
     if (n ne "?") {
         do for [q in "p q H Hd"] {
-            v = summary_num(sprintf('published.%s_err_N%d', q, int(real(n))))
+            v = summary_num(sprintf('comparisons.%s_err_N%d.published', q, int(real(n))))
             if (v ne "?") { print sprintf("%.17g,%s", 2 * pi / OMEGA / real(n), v) }
         }
     }

@@ -91,7 +91,7 @@ do for [fmt in FORMATS] {
     plot for [i = 1:NH] F2 using (column("period") / XS):(100 * (sel(i, "H_err") / value(sprintf("EBAR_%d", i)) - 1)) \
                 with linespoints ls 60 + i title sprintf("h = %g: %s / period (paper %s)", HV(i), \
                                                    fmt_rate(RATE('reproduced.energy_growth_rate', i)), \
-                                                   fmt_pub(RATE('published.energy_growth_rate', i))), \
+                                                   fmt_pub(RATE('comparisons.energy_growth_rate.published', i))), \
          for [i = 1:NH] [p=PMIN:PMAX:(PMAX - PMIN)] '+' using (p / XS):(RELFIT(i, p)) with lines ls 80 + i notitle
 
     # ---- (c) the discrete energy H_d (15): round-off, plain and compensated ----

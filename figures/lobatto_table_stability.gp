@@ -16,7 +16,7 @@ set encoding utf8    # (so that the key width counts characters, not bytes)
 ST = csv('stability.csv')
 
 eval need_num('BOUND', summary_num('reproduced.stability_bound'))
-s = summary_num('published.stability_bound')
+s = summary_num('comparisons.stability_bound.published')
 BOUND_PAPER = s eq "?" ? sqrt(42 - 6 * sqrt(29)) : real(s)   # (eq. (10) itself, if summary.json does not repeat it)
 FLOOR = 1e-14
 clip(r) = r - 1 > FLOOR ? r - 1 : FLOOR

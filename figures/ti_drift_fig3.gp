@@ -18,7 +18,7 @@ eval need_num('Q2', scene_real('hh3.q2'))
 eval need_num('P2', scene_real('hh3.p2'))
 eval need_num('H0', scene_real('hh.H0'))
 eval need_num('SLOPE', summary_real('reproduced.hh3_drift_slope'))
-eval need_num('SLOPE_PUB', summary_real('published.hh3_drift_slope'))
+eval need_num('SLOPE_PUB', summary_real('comparisons.hh3_drift_slope.published'))
 eval need_num('EMAX', summary_real('reproduced.hh3_max_E_err'))
 
 stats F3 using "t":"E_err" nooutput

@@ -32,9 +32,9 @@ eval need_num('THR', scene_real('ensemble.outlier'))
 eval need_num('MU', summary_real('reproduced.hh5_mu_final'))
 eval need_num('SIG', summary_real('reproduced.hh5_sigma_final'))
 eval need_num('GAM', summary_real('reproduced.hh5_sigma_exponent'))
-eval need_num('MU_PUB', summary_real('published.hh5_mu_final'))
-eval need_num('SIG_PUB', summary_real('published.hh5_sigma_final'))
-eval need_num('GAM_PUB', summary_real('published.hh5_sigma_exponent'))
+eval need_num('MU_PUB', summary_real('comparisons.hh5_mu_final.published'))
+eval need_num('SIG_PUB', summary_real('comparisons.hh5_sigma_final.published'))
+eval need_num('GAM_PUB', summary_real('comparisons.hh5_sigma_exponent.published'))
 # the outliers' ids, as listed in summary values
 OUT_IDS = ""
 do for [i = 0:999] { s = summary_real(sprintf('reproduced.hh5_outliers.%d', i)); if (s eq "?") { break }; OUT_IDS = OUT_IDS . (i > 0 ? ", " : "") . sprintf("%d", int(real(s))) }

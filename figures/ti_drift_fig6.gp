@@ -40,9 +40,9 @@ eval need_num('MU_SE', summary_real('reproduced.lj_mu_final_stderr'))
 eval need_num('SIGMA_SE', summary_real('reproduced.lj_sigma_final_stderr'))
 eval need_num('GAMMA', summary_real('reproduced.lj_sigma_exponent'))
 eval need_num('H_ERR_MAX', summary_real('reproduced.lj_H_err_max'))
-eval need_num('MU_PUB', summary_real('published.lj_mu_final'))
-eval need_num('SIGMA_PUB', summary_real('published.lj_sigma_final'))
-eval need_num('GAMMA_PUB', summary_real('published.lj_sigma_exponent'))
+eval need_num('MU_PUB', summary_real('comparisons.lj_mu_final.published'))
+eval need_num('SIGMA_PUB', summary_real('comparisons.lj_sigma_final.published'))
+eval need_num('GAMMA_PUB', summary_real('comparisons.lj_sigma_exponent.published'))
 
 # ---- (a): the step sizes of the scan, HS_1 .. HS_NS (scene values lj.h_scan) ----
 NS = 0

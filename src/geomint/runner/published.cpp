@@ -152,41 +152,29 @@ std::vector<Published> read_published(const std::filesystem::path& file) {
 std::optional<json> compare_published(const Published& e, const json& summary, const json& scene,
                                       const std::vector<std::string>& studies_ran) {
   if (std::find(studies_ran.begin(), studies_ran.end(), e.study) == studies_ran.end()) return std::nullopt;
-  std::string why_not;  // why the scene does not allow the comparison
-  for (const auto& [key, wanted] : e.requires_.items()) {
-    const json* actual = json_at(scene, key);
-    if (!actual || *actual != wanted)
-      why_not += (why_not.empty() ? "" : "; ") + key + " = " + (actual ? actual->dump() : "(none)") + ", published at " +
-                 wanted.dump();
-  }
   const json* reproduced = json_at(summary, e.summary);
-  if (!why_not.empty()) {
-    json c = {{"where", e.where}, {"published", e.value}, {"reproduced", reproduced ? *reproduced : json(nullptr)},
-              {"verdict", "not comparable"}, {"reason", why_not}};
-    if (!e.note.empty()) c["note"] = e.note;
-    return c;
-  }
-  if (!reproduced) {  // the scene did not ask for it (e.g. it names other methods)
-    json c = {{"where", e.where}, {"published", e.value}, {"reproduced", nullptr}, {"verdict", "not computed"},
-              {"reason", "this scene computes no " + e.summary}};
-    if (!e.note.empty()) c["note"] = e.note;
-    return c;
-  }
-  json c = {{"where", e.where}, {"published", e.value}, {"reproduced", *reproduced}};
+  json c = {{"where", e.where}, {"published", e.value}, {"reproduced", reproduced ? *reproduced : json(nullptr)}};
   if (!e.compare.empty()) c["compare"] = {{e.compare, e.tolerance}};
-  // The pairs (published, reproduced) to compare: one, or one per parameter of a value table.
+  const auto done = [&](const std::string& verdict, const std::string& reason) {
+    c["verdict"] = verdict;
+    if (!reason.empty()) c["reason"] = reason;
+    if (e.expect != "reproduced") c["expect"] = e.expect;
+    if (!e.note.empty()) c["note"] = e.note;
+    return c;
+  };
+  // The pairs (published, reproduced) to compare: one, or one per parameter of a value table, keyed as
+  // the reproduced values are: a name (a method's label) exactly, a number (e.g. h, written as %.17g)
+  // by its value. A parameter the run did not compute (a method the scene does not name) is listed.
   std::vector<std::pair<std::string, std::pair<double, const json*>>> pairs;
-  if (e.value.is_number()) {
+  json missing = json::array();
+  if (e.value.is_number() && reproduced) {
     pairs.push_back({"", {e.value.get<double>(), reproduced}});
   } else if (e.value.is_object()) {
-    // Keyed as the reproduced values are: a name (a method's label) exactly, a number (e.g. h, written
-    // as %.17g) by its value. A parameter the run did not compute (a method the scene does not name)
-    // is listed, not compared.
-    json published = json::object(), missing = json::array();
+    json published = json::object();
     for (const auto& [param, v] : e.value.items()) {
       const json* r = nullptr;
       std::string at = param;
-      if (reproduced->is_object())
+      if (reproduced && reproduced->is_object())
         for (const auto& [rk, rv] : reproduced->items()) {
           const double a = parameter(rk), b = parameter(param);
           if (rk == param || (!std::isnan(b) && std::abs(a - b) <= 1e-12 * std::abs(b))) r = &rv, at = rk;
@@ -196,35 +184,34 @@ std::optional<json> compare_published(const Published& e, const json& summary, c
       else if (v.is_number()) pairs.push_back({at, {v.get<double>(), r}});
     }
     c["published"] = published;
-    if (!missing.empty()) c["not_computed"] = missing;
-    if (missing.size() == e.value.size()) {
-      c["verdict"] = "not computed";
-      c["reason"] = "this scene computes " + e.summary + " for none of the published parameters";
-      if (!e.note.empty()) c["note"] = e.note;
-      return c;
-    }
+    if (!missing.empty() && reproduced) c["not_computed"] = missing;
   }
-  std::string verdict = "reported";
-  if (!e.compare.empty()) {
-    bool within = true;
-    json diff = e.value.is_number() ? json() : json::object();
-    for (const auto& [param, pr] : pairs) {
-      const auto& [pub, rep] = pr;
-      // A reproduced value that is not a finite number is never within any tolerance.
-      const double r = rep->is_number() ? rep->get<double>() : std::nan("");
-      const double d = difference(e.compare, pub, r);
-      within = within && std::isfinite(d) && std::abs(d) <= e.tolerance;
-      const json dj = std::isfinite(d) ? json(d) : json(nullptr);
-      if (param.empty()) diff = dj;
-      else diff[param] = dj;
-    }
-    c["difference"] = diff;
-    verdict = within ? "reproduced" : "differs";
+  std::string why_not;  // why the scene does not allow the comparison
+  for (const auto& [key, wanted] : e.requires_.items()) {
+    const json* actual = json_at(scene, key);
+    if (!actual || *actual != wanted)
+      why_not += (why_not.empty() ? "" : "; ") + key + " = " + (actual ? actual->dump() : "(none)") + ", published at " +
+                 wanted.dump();
   }
-  c["verdict"] = verdict;
-  if (e.expect != "reproduced") c["expect"] = e.expect;
-  if (!e.note.empty()) c["note"] = e.note;
-  return c;
+  if (!why_not.empty()) return done("not comparable", why_not);
+  if (!reproduced) return done("not computed", "this scene computes no " + e.summary);  // e.g. other methods named
+  if (e.value.is_object() && missing.size() == e.value.size())
+    return done("not computed", "this scene computes " + e.summary + " for none of the published parameters");
+  if (e.compare.empty()) return done("reported", "");
+  bool within = true;
+  json diff = e.value.is_number() ? json() : json::object();
+  for (const auto& [param, pr] : pairs) {
+    const auto& [pub, rep] = pr;
+    // A reproduced value that is not a finite number is never within any tolerance.
+    const double r = rep->is_number() ? rep->get<double>() : std::nan("");
+    const double d = difference(e.compare, pub, r);
+    within = within && std::isfinite(d) && std::abs(d) <= e.tolerance;
+    const json dj = std::isfinite(d) ? json(d) : json(nullptr);
+    if (param.empty()) diff = dj;
+    else diff[param] = dj;
+  }
+  c["difference"] = diff;
+  return done(within ? "reproduced" : "differs", "");
 }
 
 void apply_published(const std::vector<Published>& entries, json& summary, const json& scene,
