@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "geomint/integrators/stormer_verlet.hpp"
-#include "geomint/core/integrate.hpp"
 
 namespace geomint {
 
@@ -18,13 +17,10 @@ KickState<D> forest_ruth(const Sys& sys, const KickState<D>& s, double h) {
                         forest_ruth_g1 * h);
 }
 
-// On (q, p): the trivial processors attach and drop the cached force.
+// As a method on (q, p).
 template <class Sys>
 auto forest_ruth_method(const Sys& sys) {
-  using S = KickState<Sys::State::dof>;
-  return Processed{[&sys](const S& s, double h) { return forest_ruth(sys, s, h); },
-                   [&sys](const typename Sys::State& z, double) { return S{z, sys.force(z.q)}; },
-                   [](const S& s, double) { return s.z; }};
+  return force_cached_method(sys, [](const auto& sy, const auto& s, double h) { return forest_ruth(sy, s, h); });
 }
 
 }  // namespace geomint

@@ -55,7 +55,7 @@ PhaseState<D> ti_unprocess(const Sys& sys, const PhaseState<D>& zhat, double h, 
   return make_state<D>(q, (Mat<D>::Identity() - ch2 * sys.U_qq(q)) * zhat.p);
 }
 
-// The methods as processed methods on (q, p) (processing.hpp): kick-drift-kick
+// The methods as processed methods on (q, p) (core/integrate.hpp): kick-drift-kick
 // with the given force, plain (no processing, as 004 Figs 2-6 use them) or with
 // chi_h, c = alpha (Fig. 1, effective order 4).
 template <class Sys, class Force>

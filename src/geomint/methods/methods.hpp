@@ -1,7 +1,7 @@
 #pragma once
 // The registered methods: one type per method with its registry entry `info`
 // (registry.hpp) and, where it steps a system generically, `applies<Sys>` and
-// `bind(sys)`, a processed method (transforms/processing.hpp) for
+// `bind(sys)`, a processed method (core/integrate.hpp) for
 // integrate; a processed method also has `bind_kernel(sys)`, its
 // kernel with trivial processors. The list `registered_methods` is the source
 // of both method_registry() and with_method(). Adding a method: its stepper

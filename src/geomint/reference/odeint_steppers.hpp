@@ -1,6 +1,6 @@
 #pragma once
 // Boost.Odeint's fixed-step steppers, the peers of our methods, as processed
-// methods on (q, p) (processing.hpp) whose kernel state is odeint's state. A
+// methods on (q, p) (core/integrate.hpp) whose kernel state is odeint's state. A
 // Runge-Kutta stepper keeps only scratch space between steps: one lives in the
 // kernel (so a bound method steps one trajectory at a time, as every driver
 // here does); velocity_verlet, which caches the acceleration at the current

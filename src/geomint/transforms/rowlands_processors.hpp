@@ -51,16 +51,7 @@ PhaseState<D> rowlands_post_cheap(const PhaseState<D>& prev, const PhaseState<D>
   return make_state<D>(cur.q + (next.q - 2.0 * cur.q + prev.q) / 12.0, cur.p - (next.p - 2.0 * cur.p + prev.p) / 12.0);
 }
 
-// ---- the methods of 000 Fig. 4 as processed methods (processing.hpp) ----
-
-// Stormer-Verlet (26)-(28) on (q, p): the trivial processors attach and drop the cached force.
-template <class Sys>
-auto stormer_verlet_method(const Sys& sys) {
-  using S = KickState<Sys::State::dof>;
-  return Processed{[&sys](const S& s, double h) { return stormer_verlet(sys, s, h); },
-                   [&sys](const typename Sys::State& z, double) { return S{z, sys.force(z.q)}; },
-                   [](const S& s, double) { return s.z; }};
-}
+// ---- the Rowlands methods of 000 Fig. 4 as processed methods (core/integrate.hpp) ----
 
 // The Rowlands kernel (31) without processing.
 template <class Sys>
