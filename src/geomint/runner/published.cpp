@@ -16,7 +16,7 @@ namespace {
 
 using json = nlohmann::ordered_json;
 
-const std::vector<std::string> kFields = {"study", "value", "where", "summary", "compare", "requires", "expect", "note"};
+const std::vector<std::string> kFields = {"study", "value", "where", "summary", "compare", "requires", "expect", "note", "test"};
 
 [[noreturn]] void fail(const std::filesystem::path& file, const std::string& key, const std::string& what) {
   throw PublishedError(file.string() + ": [" + key + "]: " + what);
@@ -108,10 +108,13 @@ std::vector<Published> read_published(const std::filesystem::path& file) {
     p.where = text(*t, "where", file, key, true);
     p.summary = text(*t, "summary", file, key, true);
     p.note = text(*t, "note", file, key, false);
+    p.test = text(*t, "test", file, key, false);
     if (const std::string e = text(*t, "expect", file, key, false); !e.empty()) {
       if (e != "reproduced" && e != "differs") fail(file, key, "expect must be \"reproduced\" or \"differs\"");
       p.expect = e;
     }
+    if (p.expect == "differs" && (p.note.empty() || p.test.empty()))
+      fail(file, key, "a known discrepancy (expect = \"differs\") needs its note and the ctest test that shows it");
     const auto value = (*t)["value"];
     if (!value) fail(file, key, "missing 'value'");
     if (const auto* vt = value.as_table()) {
@@ -160,6 +163,7 @@ std::optional<json> compare_published(const Published& e, const json& summary, c
     if (!reason.empty()) c["reason"] = reason;
     if (e.expect != "reproduced") c["expect"] = e.expect;
     if (!e.note.empty()) c["note"] = e.note;
+    if (!e.test.empty()) c["test"] = e.test;
     return c;
   };
   // The pairs (published, reproduced) to compare: one, or one per parameter of a value table, keyed as

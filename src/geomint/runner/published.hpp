@@ -12,6 +12,7 @@
 //   requires = { "long_run.periods" = 100000.0 }   # scene values under which it is comparable
 //   expect = "differs"                    # a known discrepancy (default: "reproduced")
 //   note = "..."                          # why the reproduction differs, if it does
+//   test = "regression.X.Y"               # the ctest test that demonstrates it (required with expect)
 //
 // After the studies ran, every entry of a study that ran is set against the
 // summary: summary.comparisons.<key> holds where, published, reproduced, difference,
@@ -37,7 +38,7 @@ struct PublishedError : std::runtime_error {
 };
 
 struct Published {
-  std::string key, study, where, summary, note;
+  std::string key, study, where, summary, note, test;
   std::string expect = "reproduced";
   nlohmann::ordered_json value;     // a number, or an object of numbers keyed by a parameter
   std::string compare;              // "rel", "abs", "order" or "" (reported only)
