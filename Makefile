@@ -72,11 +72,16 @@ figures: build $(DEPS_STAMP)/figures.stamp
 
 figure-files: $(ALL_FIGURES)
 
+# The report: the generated parts from the runs (scripts/report.py computes nothing), LaTeX, then a
+# check of the PDF's text (no undefined reference, missing value, NaN; the contents and ledger in front).
 paper: figures $(DEPS_STAMP)/paper.stamp
-	python3 scripts/paper_tables.py $(RESULTS) paper/generated
+	@mkdir -p paper/generated
 	$(BUILD)/bin/geomint-methods --json > paper/generated/methods.json
-	python3 scripts/report.py $(RESULTS) paper/generated --methods paper/generated/methods.json
+	ctest --test-dir $(BUILD) -N > paper/generated/tests.txt
+	python3 scripts/report.py $(RESULTS) paper/generated --methods paper/generated/methods.json \
+	  --papers paper/papers.toml --tests paper/generated/tests.txt
 	cd paper && latexmk -pdf -interaction=nonstopmode -halt-on-error main.tex
+	python3 scripts/check_pdf.py paper/main.pdf
 
 bench: $(DEPS_STAMP)/build.stamp $(DEPS_STAMP)/figures.stamp $(BUILD)/CMakeCache.txt
 	cmake --build $(BUILD) -j $(JOBS) --target geomint_bench geomint_energy_map_bench

@@ -93,6 +93,10 @@ LS_PRINTED_FIT = 35; set style line LS_PRINTED_FIT lc rgb C_PRINTED lw 0.9 dt (3
 load results . '/figure_values.gp'
 _fv(key) = sum [_k = 1:|FV_KEY|] (FV_KEY[_k] eq key ? _k : 0)   # the index of key, 0 if it is not there
 scene_num(key) = (_i = _fv('scene.' . key), _i > 0 ? sprintf("%g", FV_VAL[_i]) : "?")
+# scene_words('methods') is a list of texts of the scene (e.g. method names) as one space-separated
+# text, for `do for [m in scene_words('methods')]`; summary_words likewise; "" if there is none.
+scene_words(key) = (_i = _fv('scene.' . key), _i > 0 ? FV_VAL[_i] : "")
+summary_words(key) = (_i = _fv('summary.' . key), _i > 0 ? FV_VAL[_i] : "")
 
 # ---- x tics for logarithmic axes spanning few decades ------------------------
 # eval LOGTICS("1 2 5") puts the x tics at 1, 2, 5 × 10^k (labelled with the x format, e.g. "%g")

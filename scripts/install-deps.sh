@@ -4,14 +4,14 @@
 # build   : compiler, CMake, the header libraries, GoogleTest, gnuplot (the
 #           figure test renders every script, so `make test` needs it)
 # figures : build + matplotlib (only where gnuplot is weak)
-# paper   : figures + TeX Live and latexmk
+# paper   : figures + TeX Live, latexmk and pdftotext (poppler-utils: the check of the PDF)
 set -euo pipefail
 
 build=(g++ cmake make pkg-config git libeigen3-dev libboost-dev libtomlplusplus-dev
        libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev libsleef-dev libqhull-dev gnuplot-nox fonts-dejavu-core python3 python3-sympy)
 figures=("${build[@]}" python3-numpy python3-matplotlib)
 paper=("${figures[@]}" latexmk texlive-latex-base texlive-latex-recommended
-       texlive-latex-extra texlive-fonts-recommended)
+       texlive-latex-extra texlive-fonts-recommended poppler-utils)
 
 want=()
 for target in "${@:-build}"; do

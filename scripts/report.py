@@ -1,123 +1,208 @@
 #!/usr/bin/env python3
-"""The generic part of the reproduction report, from data only.
+"""The generated parts of the reproduction report, from data only.
 
-    report.py RESULTS_ROOT OUT_DIR [--methods METHODS_JSON]
+    report.py RESULTS_ROOT OUT_DIR [--methods METHODS_JSON] [--papers PAPERS_TOML] [--tests CTEST_LIST]
+              [--tex FILE ...] [--draft]
 
-For every RESULTS_ROOT/<id>/summary.json (an experiment's run; <id> is the directory name) it
-writes into OUT_DIR:
+RESULTS_ROOT/<run>/summary.json and run.json are the runs (<run> is the directory name). Writes
+into OUT_DIR:
 
-  results.tex       \\result[fmt]{<id>}{<dotted key>}: any number of any summary.json (timings
-                    included) as a lookup. fmt: g (default, 4 significant digits), sig2, sig3,
-                    sci2, sci3, pct1 (a fraction as percent) or full (%.17g). A key that does not
-                    exist stops the LaTeX run, naming it.
-  comparisons.tex   per run, the table of its published quantities (summary.json "comparisons",
-                    made by the executable from experiments/<name>/published.toml): quantity, where
-                    it was published, published, reproduced, difference, verdict, note.
-  errata.tex        every comparison that published.toml expects to differ, with its explanation.
-  methods.tex       the method registry (`geomint-methods --json`): order, bounds, properties, citation.
+  results.tex       the value of every lookup the report's LaTeX files make (--tex, by default
+                    paper/main.tex and paper/sections/**/*.tex):
+                      \\result[fmt]{run}{key}        a number or text of summary.json (dotted key,
+                                                    array elements by index from 0), or of the
+                                                    resolved scene as scene.<key> (run.json)
+                      \\resultrange[fmt]{run}{key}   an object {min, max} as "a--b" ("a" if equal)
+                    fmt: one of FORMATS below (default general). A key that does not exist or has
+                    no finite value stops this script (exit 1) and the LaTeX run, naming it; with
+                    --draft it is shown as a framed "missing" note instead.
+  comparisons.tex   per run, its published quantities (summary.json "comparisons", made by the
+                    executable from experiments/<name>/published.toml) against the reproduction.
+  errata.tex        every comparison published.toml expects to differ: what was published, what
+                    the project uses instead and why, and the ctest test that shows it.
+  methods.tex       the method registry (`geomint-methods --json`).
+  ledger.tex        with --papers: one row per figure and table of the papers (paper/papers.toml),
+                    the studies that make it (run.json "study_list"), the verdict of their
+                    comparisons, the command, the figure scripts that read its files and the tests.
+  bibliography.tex  with --papers: the papers and their code.
+  machine.tex       the CPU, compiler, flags and commit of the runs (run.json).
 
 It computes nothing: every number is copied from the JSON and formatted.
 """
 import argparse
 import json
 import math
+import os
 import pathlib
+import re
 import sys
+import tomllib
 
-FORMATS = {
-    "g": lambda v: tex_number(v, "%.4g"),
-    "sig2": lambda v: tex_number(v, "%.2g"),
-    "sig3": lambda v: tex_number(v, "%.3g"),
-    "sci2": lambda v: tex_number(v, "%.1e", force_exponent=True),
-    "sci3": lambda v: tex_number(v, "%.2e", force_exponent=True),
-    "pct1": lambda v: tex_number(100 * v, "%.1f") + r"\,\%",
-    "full": lambda v: tex_number(v, "%.17g"),
+ROOT = pathlib.Path(__file__).resolve().parent.parent
+NA = None  # a value that cannot be shown
+
+
+def sci(x, digits=2):
+    """m\\times10^{e} with `digits` significant digits."""
+    if x == 0:
+        return "0"
+    mant, exp = f"{x:.{digits - 1}e}".split("e")
+    return mant if int(exp) == 0 else rf"{mant}\times10^{{{int(exp)}}}"
+
+
+def sig(x, n):
+    """Fixed notation with n significant digits, trailing zeros kept; large integers unrounded."""
+    if x == 0:
+        return "0"
+    return f"{x:.{max(0, n - 1 - math.floor(math.log10(abs(x))))}f}"
+
+
+def sci_or_sig(x, n):
+    """Scientific below 1e-3 and from 1e4, else n significant digits."""
+    return "0" if x == 0 else sci(x, n) if abs(x) < 1e-3 or abs(x) >= 1e4 else sig(x, n)
+
+
+def grouped(x):
+    n = int(round(x))
+    return f"{n:,}".replace(",", r"\,") if abs(n) >= 10000 else f"{n}"
+
+
+def tolerance(x):
+    mant, exp = f"{x:.1e}".split("e")
+    return f"10^{{{int(exp)}}}" if mant == "1.0" else sci(x)
+
+
+FORMATS = {  # name -> math-mode text of a finite number
+    "general": lambda x: "0" if x == 0 else sci(x) if abs(x) < 1e-3 or abs(x) >= 1e4 else sig(x, 4),
+    "order": lambda x: f"{x:.3f}",
+    "porder": lambda x: f"{x:.0f}" if float(x).is_integer() else f"{x:.3f}",
+    "dorder": lambda x: f"{x:+.3f}",
+    "int": grouped,
+    "intplain": lambda x: f"{int(round(x))}",
+    "err": lambda x: "0" if x == 0 else sci(x) if abs(x) < 1e-3 or abs(x) >= 1e4 else sig(x, 2),
+    "sci": sci,
+    "sci01": lambda x: "0" if x == 0 else sci(x) if abs(x) < 1e-2 else sig(x, 2),
+    "fixed3": lambda x: f"{x:.3f}",
+    "fixed5": lambda x: f"{x:.5f}",
+    "sig3": lambda x: sig(x, 3),
+    "sig4": lambda x: sig(x, 4),
+    "sig7": lambda x: sig(x, 7),
+    "sci3": lambda x: sci_or_sig(x, 3),
+    "sci4": lambda x: sci_or_sig(x, 4),
+    "us": lambda x: sig(x * 1e6, 2) if x > 0 else NA,
+    "tol": tolerance,
+    "ns": lambda x: f"{x:.1f}",
+    "ns3": lambda x: sig(x, 3) if x > 0 else NA,
+    "percent": lambda x: "0\\,\\%" if x == 0 else sig(100 * x, 3) + "\\,\\%",
+    "ratio": lambda x: f"{x:.1f}",
+    "seconds": lambda x: f"{x:.2g}" if abs(x) < 100 else f"{x:.0f}",
+    "plain": lambda x: f"{x:g}",
 }
-VERDICTS = {"reproduced": "reproduced", "differs": "differs", "reported": "reported",
-            "not comparable": "not comparable", "not computed": "not computed"}
+TEXT_FORMATS = ("text", "vec")
+LOOKUP = re.compile(r"\\result(range)?(?:\[([^\]]*)\])?\{([^}]*)\}\{([^}]*)\}")
 
 
-def tex_escape(s: str) -> str:
-    """Plain text for LaTeX: the special characters as themselves."""
-    out = []
-    for c in str(s):
-        out.append({"\\": r"\textbackslash{}", "{": r"\{", "}": r"\}", "$": r"\$", "&": r"\&", "#": r"\#",
-                    "^": r"\^{}", "_": r"\_", "%": r"\%", "~": r"\~{}"}.get(c, c))
-    return "".join(out)
+def tex_escape(text):
+    repl = {"\\": r"\textbackslash{}", "&": r"\&", "%": r"\%", "$": r"\$", "#": r"\#", "_": r"\_", "{": r"\{",
+            "}": r"\}", "~": r"\textasciitilde{}", "^": r"\textasciicircum{}", "<": r"\textless{}",
+            ">": r"\textgreater{}", "|": r"\textbar{}"}
+    return "".join(repl.get(c, c) for c in str(text))
 
 
-def tex_number(v: float, fmt: str, force_exponent: bool = False) -> str:
-    """A number in math mode: 1.23e-05 as 1.23\\cdot 10^{-5}; NaN and infinities as words."""
-    if isinstance(v, bool) or not isinstance(v, (int, float)):
-        raise ValueError(f"not a number: {v!r}")
-    if math.isnan(v):
-        return "NaN"
-    if math.isinf(v):
-        return r"$\infty$" if v > 0 else r"$-\infty$"
-    s = fmt % v
-    if "e" in s:
-        mantissa, exponent = s.split("e")
-        exponent = int(exponent)
-        if exponent == 0 and not force_exponent:
-            return f"${mantissa}$"
-        return f"${mantissa}\\cdot 10^{{{exponent}}}$"
-    return f"${s}$"
+def is_number(v):
+    return isinstance(v, (int, float)) and not isinstance(v, bool)
 
 
-def scalars(node, prefix=""):
-    """The (dotted key, number) leaves of a JSON tree; array elements by index from 0."""
-    if isinstance(node, dict):
-        for k, v in node.items():
-            yield from scalars(v, f"{prefix}.{k}" if prefix else str(k))
-    elif isinstance(node, list):
-        for i, v in enumerate(node):
-            yield from scalars(v, f"{prefix}.{i}")
-    elif isinstance(node, (int, float)) and not isinstance(node, bool):
-        yield prefix, node
+def number(v, fmt):
+    """Math-mode text of a number in a format, or None if it has none (null, NaN, inf, out of domain)."""
+    if not is_number(v) or not math.isfinite(v):
+        return None
+    return FORMATS[fmt](v)
 
 
-def value_text(v) -> str:
+def at(tree, key):
+    """The value at a dotted key (array elements by index), or None."""
+    node = tree
+    for part in key.split("."):
+        if isinstance(node, dict) and part in node:
+            node = node[part]
+        elif isinstance(node, list) and part.isdigit() and int(part) < len(node):
+            node = node[int(part)]
+        else:
+            return None
+    return node
+
+
+def lookup_text(run, key, fmt, ranged):
+    """The LaTeX of one lookup, or None if the value does not exist or cannot be shown."""
+    tree, key = (run["run"].get("scene", {}), key[6:]) if key.startswith("scene.") else (run["summary"], key)
+    v = at(tree, key)
+    if ranged:
+        if not isinstance(v, dict):
+            return None
+        a, b = number(v.get("min"), fmt), number(v.get("max"), fmt)
+        return None if a is None or b is None else f"\\ensuremath{{{a}}}" if a == b else \
+            f"\\ensuremath{{{a}}}--\\ensuremath{{{b}}}"
+    if fmt == "text":
+        return tex_escape(v) if isinstance(v, str) else None
+    if fmt == "vec":
+        ok = isinstance(v, list) and v and all(is_number(x) and math.isfinite(x) for x in v)
+        return f"\\ensuremath{{({', '.join(f'{x:g}' for x in v)})}}" if ok else None
+    content = number(v, fmt)
+    return None if content is None else f"\\ensuremath{{{content}}}"
+
+
+def results_tex(runs, tex_files, draft):
+    lines = ["% The values the report looks up (scripts/report.py from results/<run>/summary.json, run.json).",
+             r"\makeatletter",
+             r"\newcommand{\geomint@value}[4]{\@ifundefined{geomint@#1@#2@#3@#4}{\PackageError{report}"
+             r"{no value '#3' (format #2) in the run #1}{Run make paper; check the key in results/#1/summary.json}}"
+             r"{\@nameuse{geomint@#1@#2@#3@#4}}}",
+             r"\newcommand{\result}[3][general]{\geomint@value{#2}{#1}{#3}{v}}",
+             r"\newcommand{\resultrange}[3][general]{\geomint@value{#2}{#1}{#3}{r}}"]
+    missing, seen = [], set()
+    for path in tex_files:
+        for m in LOOKUP.finditer(path.read_text(encoding="utf-8")):
+            ranged, fmt, run, key = bool(m.group(1)), m.group(2) or "general", m.group(3), m.group(4)
+            if (run, key, fmt, ranged) in seen or "#" in run + key + fmt:  # (a macro's own parameters)
+                continue
+            seen.add((run, key, fmt, ranged))
+            if fmt not in FORMATS and fmt not in TEXT_FORMATS:
+                raise SystemExit(f"report.py: {path}: unknown format '{fmt}' in {m.group(0)}")
+            text = lookup_text(runs[run], key, fmt, ranged) if run in runs else None
+            if text is None:
+                missing.append(f"{path.name}: {m.group(0)}")
+                if not draft:
+                    continue
+                text = r"\fbox{\scriptsize missing: " + tex_escape(f"{run} {key}") + "}"
+            lines.append(f"\\@namedef{{geomint@{run}@{fmt}@{key}@{'r' if ranged else 'v'}}}{{{text}}}")
+    lines.append(r"\makeatother")
+    return "\n".join(lines) + "\n", missing
+
+
+def value_text(v):
     """A published or reproduced value: a number, or a table of them keyed by a parameter."""
     if isinstance(v, dict):
         return "; ".join(f"{tex_escape(k)}: {value_text(x)}" for k, x in v.items())
-    if v is None:
-        return "---"
-    if isinstance(v, (int, float)) and not isinstance(v, bool):
-        return tex_number(v, "%.3g")
-    return tex_escape(v)
+    if is_number(v):
+        return "$" + (number(v, "sci3") or tex_escape(v)) + "$" if math.isfinite(v) else tex_escape(v)
+    return "not computed" if v is None else tex_escape(v)
 
 
-def results_tex(runs: dict) -> str:
-    lines = [
-        "% \\result[fmt]{run}{key}: a number of results/<run>/summary.json (scripts/report.py).",
-        r"\makeatletter",
-        r"\newcommand{\result}[3][g]{\@ifundefined{geomint@#2@#3@#1}"
-        r"{\PackageError{report}{no value '#3' (format #1) in the summary of #2}{Run make paper; "
-        r"check the key in results/#2/summary.json}}{\@nameuse{geomint@#2@#3@#1}}}",
-    ]
-    for run, summary in runs.items():
-        for key, v in scalars(summary):
-            for fmt, f in FORMATS.items():
-                lines.append(f"\\@namedef{{geomint@{run}@{key}@{fmt}}}{{{f(v)}}}")
-    lines.append(r"\makeatother")
-    return "\n".join(lines) + "\n"
-
-
-def comparisons_tex(runs: dict) -> str:
+def comparisons_tex(runs):
     out = ["% Published against reproduced, per run (scripts/report.py from summary.json \"comparisons\")."]
-    for run, summary in runs.items():
-        comparisons = summary.get("comparisons") or {}
+    for name, run in runs.items():
+        comparisons = run["summary"].get("comparisons") or {}
         if not comparisons:
             continue
-        out += [f"\\subsection*{{\\texttt{{{tex_escape(run)}}}}}",
+        out += [f"\\subsection*{{\\texttt{{{tex_escape(name)}}}}}",
                 r"{\footnotesize\begin{longtable}{@{}p{0.2\linewidth}p{0.24\linewidth}p{0.12\linewidth}"
                 r"p{0.12\linewidth}p{0.1\linewidth}p{0.12\linewidth}@{}}",
                 r"\toprule quantity & where published & published & reproduced & difference & verdict\\ \midrule",
                 r"\endhead"]
         for key, c in comparisons.items():
-            compare = c.get("compare") or {}
-            how = ", ".join(f"{k} {v:g}" for k, v in compare.items())
-            verdict = VERDICTS[c["verdict"]] + (f" ({tex_escape(how)})" if how else "")
+            how = ", ".join(f"{k} {v:g}" for k, v in (c.get("compare") or {}).items())
+            verdict = c["verdict"] + (f" ({tex_escape(how)})" if how else "")
             if c.get("expect", "reproduced") != "reproduced":
                 verdict += r", expected: " + tex_escape(c["expect"])
             out.append(f"\\texttt{{{tex_escape(key)}}} & {tex_escape(c['where'])} & {value_text(c.get('published'))} & "
@@ -129,27 +214,29 @@ def comparisons_tex(runs: dict) -> str:
     return "\n".join(out) + "\n"
 
 
-def errata_tex(runs: dict) -> str:
-    out = ["% The published statements the reproduction expects to differ from (published.toml: expect)."]
+def errata_tex(runs, tests):
+    out = ["% The published statements the reproduction differs from (published.toml: expect = differs)."]
     items = []
-    for run, summary in runs.items():
-        for key, c in (summary.get("comparisons") or {}).items():
-            if c.get("expect", "reproduced") != "reproduced":
-                items.append(f"\\item \\texttt{{{tex_escape(run)}: {tex_escape(key)}}} --- {tex_escape(c['where'])}. "
-                             f"Published {value_text(c.get('published'))}, reproduced {value_text(c.get('reproduced'))} "
-                             f"(verdict: {VERDICTS[c['verdict']]}). {tex_escape(c.get('note', ''))}")
-    if items:
-        out += [r"\begin{itemize}"] + items + [r"\end{itemize}"]
-    else:
-        out.append("No published statement is expected to differ.")
+    for name, run in runs.items():
+        for key, c in (run["summary"].get("comparisons") or {}).items():
+            if c.get("expect", "reproduced") == "reproduced":
+                continue
+            test = c.get("test", "")
+            if tests is not None and test not in tests:
+                raise SystemExit(f"report.py: {name}: {key} names the test '{test}', which ctest does not list")
+            items.append(f"\\item \\textbf{{{tex_escape(c['where'])}.}} Published {value_text(c.get('published'))}; "
+                         f"the printed statement gives {value_text(c.get('reproduced'))} "
+                         f"(\\texttt{{{tex_escape(name)}}}, verdict: {c['verdict']}). {tex_escape(c.get('note', ''))} "
+                         f"Shown by \\texttt{{ctest -R {tex_escape(test)}}}.")
+    out += [r"\begin{enumerate}"] + items + [r"\end{enumerate}"] if items else ["No published statement differs."]
     return "\n".join(out) + "\n"
 
 
-def methods_tex(methods: list) -> str:
+def methods_tex(methods):
     def bound(v):
         if v is None:
             return "---"
-        return r"$\infty$" if v == "inf" or (isinstance(v, float) and math.isinf(v)) else tex_number(v, "%.4g")
+        return r"$\infty$" if v == "inf" or (is_number(v) and math.isinf(v)) else "$" + FORMATS["sig4"](v) + "$"
     out = ["% The method registry (geomint-methods --json; scripts/report.py).",
            r"{\footnotesize\begin{longtable}{@{}p{0.2\linewidth}p{0.1\linewidth}p{0.07\linewidth}p{0.08\linewidth}"
            r"p{0.08\linewidth}p{0.14\linewidth}p{0.25\linewidth}@{}}",
@@ -164,27 +251,160 @@ def methods_tex(methods: list) -> str:
     return "\n".join(out) + "\n"
 
 
-def main() -> int:
+def made_items(makes):
+    """The (paper, item) pairs a study's "makes" names: "003 Figs 5.2, 5.4" -> ("003", "Fig. 5.2"), ..."""
+    m = re.match(r"(\d{3}) (Figs?|Tables?|Sec)\.? ([\d., ]+)", makes)
+    if not m:
+        return []
+    kind = {"Fig": "Fig.", "Figs": "Fig.", "Table": "Table", "Tables": "Table", "Sec": "Sec."}[m.group(2)]
+    return [(m.group(1), f"{kind} {n.strip().rstrip('.')}") for n in m.group(3).split(",") if n.strip()]
+
+
+def figure_scripts(files):
+    """The figure scripts that read one of a study's files (figures/*.gp naming the file)."""
+    found = []
+    for gp in sorted((ROOT / "figures").glob("*.gp")):
+        text = gp.read_text(encoding="utf-8")
+        if any(re.search(re.escape(f).replace(r"\*", r"[^'\" ]*"), text) for f in files):
+            found.append(gp.name)
+    return found
+
+
+def ledger_tex(runs, papers, tests):
+    makers = {}  # (paper, item) -> [(run name, study)]
+    for name, run in runs.items():
+        for st in run["run"].get("study_list", []):
+            if st.get("ran"):
+                for item in made_items(st["makes"]):
+                    makers.setdefault(item, []).append((name, st))
+    out = ["% The reproduction ledger (scripts/report.py from paper/papers.toml, run.json and summary.json).",
+           r"{\scriptsize\begin{longtable}{@{}p{0.08\linewidth}p{0.1\linewidth}p{0.27\linewidth}p{0.27\linewidth}"
+           r"p{0.2\linewidth}@{}}",
+           r"\toprule paper & in this report & verdict & published / reproduced & rerun, figure, test\\ \midrule",
+           r"\endhead"]
+    for paper in papers["paper"]:
+        for item in paper["item"]:
+            where = f"[{paper['id']}] {tex_escape(item['name'])}"
+            if "left_out" in item:
+                out.append(f"{where} & --- & left out: {tex_escape(item['left_out'])} & & \\\\")
+                continue
+            done = makers.get((paper["id"], item["name"]), [])
+            if not done:
+                raise SystemExit(f"report.py: no run made [{paper['id']}] {item['name']} (papers.toml lists it)")
+            verdicts, values, commands, tests_cited, files = [], [], [], [], []
+            for name, st in done:
+                experiment = runs[name]["summary"].get("experiment", name)
+                scene = runs[name]["run"].get("scene_file", "")
+                commands.append(f"\\path{{build/bin/{experiment} --scene {scene} --study {st['name']}}}")
+                files += st["files"]
+                tests_cited.append(f"{experiment}.studies")
+                for key, c in (runs[name]["summary"].get("comparisons") or {}).items():
+                    if c.get("study") != st["name"] or c["verdict"] in ("not comparable", "not computed"):
+                        continue
+                    verdicts.append((c["verdict"], c.get("expect", "reproduced"), key, c))
+                    if c.get("test"):
+                        tests_cited.append(c["test"])
+            if any(v[0] == "differs" for v in verdicts):
+                bad = [v for v in verdicts if v[0] == "differs"]
+                verdict = "discrepant: " + "; ".join(
+                    f"\\texttt{{{tex_escape(k)}}} ({'known, see the errata' if e == 'differs' else 'unexpected'})"
+                    for _, e, k, _ in bad)
+            elif "partial" in item:
+                verdict = "partial: " + tex_escape(item["partial"])
+            elif verdicts:
+                verdict = f"reproduced ({sum(v[0] == 'reproduced' for v in verdicts)} compared within tolerance" + \
+                          (f", {sum(v[0] == 'reported' for v in verdicts)} reported)" if any(v[0] == 'reported' for v in verdicts) else ")")
+            else:
+                verdict = "reproduced (shown; the paper prints no number to compare)"
+            for _, _, key, c in verdicts[:2]:
+                values.append(f"{value_text(c.get('published'))} / {value_text(c.get('reproduced'))}")
+            if tests is not None:
+                for t in tests_cited:
+                    if t not in tests:
+                        raise SystemExit(f"report.py: the ledger cites the test '{t}', which ctest does not list")
+            scripts = figure_scripts(files)
+            label = item.get("label", "")
+            shown = (f"{'Table' if label.startswith('tab:') else 'Figure'}~\\ref{{{label}}}, p.~\\pageref{{{label}}}"
+                     if label else "")
+            rerun = "; ".join(commands) + ("; " + ", ".join(f"\\path{{figures/{s}}}" for s in scripts) if scripts else "") + \
+                "; " + ", ".join(f"\\texttt{{{tex_escape(t)}}}" for t in dict.fromkeys(tests_cited))
+            out.append(f"{where} & {shown} & {verdict} & {'; '.join(values)} & {rerun}\\\\")
+    out += [r"\bottomrule", r"\end{longtable}}"]
+    return "\n".join(out) + "\n"
+
+
+def bibliography_tex(papers):
+    out = ["% The papers (paper/papers.toml; scripts/report.py).", r"\begin{thebibliography}{000}"]
+    for p in papers["paper"]:
+        ids = [f"doi:\\href{{https://doi.org/{p['doi']}}}{{{tex_escape(p['doi'])}}}" if "doi" in p else "",
+               f"arXiv:\\href{{https://arxiv.org/abs/{p['arxiv']}}}{{{p['arxiv']}}}" if "arxiv" in p else ""]
+        entry = f"\\bibitem[{p['id']}]{{paper{p['id']}}} {tex_escape(p['authors'])}, \\emph{{{tex_escape(p['title'])}}}, " \
+                f"{tex_escape(p['venue'])}, {p['year']}. " + ", ".join(i for i in ids if i) + "."
+        if "code" in p:
+            entry += f" The authors' code: \\url{{https://{p['code']}}}, commit \\texttt{{{p['code_commit']}}}."
+        out.append(entry)
+    out.append(r"\end{thebibliography}")
+    return "\n".join(out) + "\n"
+
+
+def machine_tex(runs):
+    seen = {}
+    for run in runs.values():
+        b, m = run["run"].get("build", {}), run["run"].get("machine", {})
+        line = (f"{tex_escape(m.get('cpu', 'an unrecorded CPU'))} ({m.get('logical_cores', '?')} logical cores); "
+                f"{tex_escape(b.get('compiler', '?'))}, \\texttt{{{tex_escape(b.get('cxx_flags', ''))}}}; commit "
+                f"\\texttt{{{tex_escape(b.get('git_commit', '?')[:12])}}}{' (with local changes)' if b.get('git_dirty') else ''}")
+        seen.setdefault(line, []).append(run["run"].get("threads"))
+    lines = [f"{line}, {', '.join(sorted({str(t) for t in threads}))} threads" for line, threads in seen.items()]
+    return "% The machine and build of the runs (run.json).\n" + r"\\ ".join(lines) + "\n"
+
+
+def write(path, text):
+    tmp = path.with_name(f".{path.name}.tmp-{os.getpid()}")
+    tmp.write_text(text, encoding="utf-8")
+    tmp.replace(path)
+
+
+def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("results")
     parser.add_argument("out")
     parser.add_argument("--methods", help="the output of geomint-methods --json")
+    parser.add_argument("--papers", help="paper/papers.toml: the papers' figures and tables, the bibliography")
+    parser.add_argument("--tests", help="the output of ctest -N: the tests the report may cite")
+    parser.add_argument("--tex", nargs="*", help="the LaTeX files whose lookups to resolve")
+    parser.add_argument("--draft", action="store_true", help="show a missing value as a note, do not stop")
     args = parser.parse_args()
     root, out = pathlib.Path(args.results), pathlib.Path(args.out)
     runs = {}
     for path in sorted(root.glob("*/summary.json")):
-        runs[path.parent.name] = json.loads(path.read_text(encoding="utf-8"))
+        run_json = path.parent / "run.json"
+        runs[path.parent.name] = {"summary": json.loads(path.read_text(encoding="utf-8")),
+                                  "run": json.loads(run_json.read_text(encoding="utf-8")) if run_json.is_file() else {}}
     if not runs:
         print(f"report.py: no */summary.json in {root}", file=sys.stderr)
         return 1
-    out.mkdir(parents=True, exist_ok=True)
-    files = {"results.tex": results_tex(runs), "comparisons.tex": comparisons_tex(runs), "errata.tex": errata_tex(runs)}
+    tex = [pathlib.Path(t) for t in args.tex] if args.tex is not None else \
+        [ROOT / "paper" / "main.tex"] + sorted((ROOT / "paper" / "sections").rglob("*.tex"))
+    tests = None
+    if args.tests:
+        tests = set(re.findall(r"Test +#\d+: (\S+)", pathlib.Path(args.tests).read_text(encoding="utf-8")))
+    results, missing = results_tex(runs, tex, args.draft)
+    files = {"results.tex": results, "comparisons.tex": comparisons_tex(runs), "errata.tex": errata_tex(runs, tests),
+             "machine.tex": machine_tex(runs)}
     if args.methods:
         files["methods.tex"] = methods_tex(json.loads(pathlib.Path(args.methods).read_text(encoding="utf-8")))
+    if args.papers:
+        papers = tomllib.loads(pathlib.Path(args.papers).read_text(encoding="utf-8"))
+        files["ledger.tex"] = ledger_tex(runs, papers, tests)
+        files["bibliography.tex"] = bibliography_tex(papers)
+    out.mkdir(parents=True, exist_ok=True)
     for name, text in files.items():
-        (out / name).write_text(text, encoding="utf-8")
-    print(f"report.py: {len(runs)} runs: " + ", ".join(files))
-    return 0
+        write(out / name, text)
+    for m in missing:
+        print(f"report.py: no value for {m}", file=sys.stderr)
+    print(f"report.py: {len(runs)} runs: " + ", ".join(files) + (f"; {len(missing)} values missing" if missing else ""))
+    return 1 if missing and not args.draft else 0
 
 
 if __name__ == "__main__":

@@ -1,14 +1,17 @@
 #!/usr/bin/env python3
 """check_report.py SOURCE_DIR RESULTS_ROOT WORK_DIR METHODS_BIN
 
-The generic report script (scripts/report.py) on the quick runs: it writes its four files, every
-comparison of every summary.json appears in comparisons.tex, every \\result lookup of a number is
-defined, and the script stays generic (no experiment name in it, at most 600 lines).
+The generic report script (scripts/report.py) on the quick runs: it writes its files, every
+comparison of every summary.json appears in comparisons.tex, the ledger names every figure and
+table of paper/papers.toml, a \\result lookup of an existing key is defined and one of a missing
+key stops the script naming the key, and the script stays generic (no experiment name in it, at
+most 600 lines).
 """
 import json
 import pathlib
 import subprocess
 import sys
+import tomllib
 
 
 def main() -> int:
@@ -24,20 +27,37 @@ def main() -> int:
     work.mkdir(parents=True, exist_ok=True)
     methods = work / "methods.json"
     methods.write_text(subprocess.run([str(methods_bin), "--json"], capture_output=True, text=True, check=True).stdout)
-    subprocess.run([sys.executable, str(script), str(results), str(work), "--methods", str(methods)], check=True)
-    for name in ("results.tex", "comparisons.tex", "errata.tex", "methods.tex"):
+    runs = sorted(p.parent.name for p in results.glob("*/summary.json"))
+    lookups_tex = work / "lookups.tex"  # every run's wall time, in two formats
+    lookups_tex.write_text("".join(f"\\result{{{r}}}{{timing.wall_s}} \\result[sci]{{{r}}}{{timing.wall_s}}\n"
+                                   for r in runs), encoding="utf-8")
+    command = [sys.executable, str(script), str(results), str(work), "--methods", str(methods),
+               "--papers", str(source / "paper" / "papers.toml")]
+    subprocess.run(command + ["--tex", str(lookups_tex)], check=True)
+    for name in ("results.tex", "comparisons.tex", "errata.tex", "methods.tex", "ledger.tex", "bibliography.tex",
+                 "machine.tex"):
         if not (work / name).is_file():
             problems.append(f"{name} not written")
     comparisons = (work / "comparisons.tex").read_text(encoding="utf-8")
     lookups = (work / "results.tex").read_text(encoding="utf-8")
-    for path in sorted(results.glob("*/summary.json")):
-        summary = json.loads(path.read_text(encoding="utf-8"))
-        run = path.parent.name
+    ledger = (work / "ledger.tex").read_text(encoding="utf-8")
+    for run in runs:
+        summary = json.loads((results / run / "summary.json").read_text(encoding="utf-8"))
         for key in summary.get("comparisons", {}):
             if key.replace("_", "\\_") not in comparisons:
                 problems.append(f"{run}: comparison {key} not in comparisons.tex")
-        if f"geomint@{run}@timing.wall_s@g" not in lookups:  # a number every run has: its wall time
-            problems.append(f"{run}: no \\result for timing.wall_s")
+        for fmt in ("general", "sci"):
+            if f"geomint@{run}@{fmt}@timing.wall_s@v" not in lookups:
+                problems.append(f"{run}: no \\result[{fmt}] for timing.wall_s")
+    papers = tomllib.loads((source / "paper" / "papers.toml").read_text(encoding="utf-8"))
+    for paper in papers["paper"]:
+        for item in paper["item"]:
+            if f"[{paper['id']}] {item['name']}" not in ledger:
+                problems.append(f"ledger: no row for [{paper['id']}] {item['name']}")
+    lookups_tex.write_text("\\result{" + runs[0] + "}{no.such.key}\n", encoding="utf-8")
+    missing = subprocess.run(command + ["--tex", str(lookups_tex)], capture_output=True, text=True)
+    if missing.returncode == 0 or "no.such.key" not in missing.stderr:
+        problems.append("a missing key does not stop report.py with its name")
     for p in problems:
         print(p)
     print("report: " + ("ok" if not problems else f"{len(problems)} problems"))

@@ -1,6 +1,9 @@
 #include "geomint/io/run_info.hpp"
 
 #include <ctime>
+#include <fstream>
+#include <string>
+#include <thread>
 
 #include "geomint_build_info.hpp"
 #include "geomint_git_info.hpp"
@@ -23,6 +26,18 @@ nlohmann::ordered_json build_info() {
           {"compiler", GEOMINT_COMPILER},
           {"build_type", GEOMINT_BUILD_TYPE},
           {"cxx_flags", GEOMINT_CXX_FLAGS}};
+}
+
+nlohmann::ordered_json machine_info() {
+  std::string model = "unknown";
+  std::ifstream cpuinfo("/proc/cpuinfo");
+  for (std::string line; std::getline(cpuinfo, line);)
+    if (line.rfind("model name", 0) == 0 && line.find(':') != std::string::npos) {
+      model = line.substr(line.find(':') + 1);
+      model.erase(0, model.find_first_not_of(' '));
+      break;
+    }
+  return {{"cpu", model}, {"logical_cores", std::thread::hardware_concurrency()}};
 }
 
 }  // namespace geomint

@@ -1,6 +1,6 @@
 #pragma once
 // Provenance of a run (run.json): commit, compiler and flags, resolved scene,
-// threads, command line, start and end time.
+// machine, threads, command line, start and end time.
 #include <chrono>
 #include <string>
 
@@ -12,5 +12,8 @@ std::string utc_iso8601(std::chrono::system_clock::time_point t);
 
 // The build half of run.json (git commit, compiler, flags), fixed at build time.
 nlohmann::ordered_json build_info();
+
+// The machine half: the CPU model (/proc/cpuinfo "model name"; "unknown" elsewhere) and its logical cores.
+nlohmann::ordered_json machine_info();
 
 }  // namespace geomint

@@ -38,7 +38,8 @@ constexpr const char* kStudiesKey = "studies";
 // the scene's texts, for the figure scripts (figures/common.gp: scene_num, summary_num). Gnuplot
 // has no maps and truncates long names, so they are two arrays, FV_KEY (the dotted key, prefixed
 // "scene." or "summary."; array elements by index from 0) and FV_VAL; integers are written with
-// ".0" (gnuplot would divide them as integers).
+// ".0" (gnuplot would divide them as integers). A list of texts is also one text under its own key,
+// its words separated by spaces (scene_words, summary_words).
 using Entry = std::pair<std::string, std::string>;  // (key, gnuplot literal)
 
 std::string gnuplot_quoted(const std::string& s) {  // '...' with '' for ' and no newlines
@@ -48,6 +49,11 @@ std::string gnuplot_quoted(const std::string& s) {  // '...' with '' for ' and n
 }
 
 void collect_values(const nlohmann::ordered_json& j, const std::string& key, bool texts, std::vector<Entry>& out) {
+  if (j.is_array() && !j.empty() && std::all_of(j.begin(), j.end(), [](const auto& e) { return e.is_string(); })) {
+    std::string words;  // a list of names (e.g. methods) also as one text, space-separated, for `for [m in ...]`
+    for (const auto& e : j) words += (words.empty() ? "" : " ") + e.get<std::string>();
+    out.emplace_back(key, gnuplot_quoted(words));
+  }
   if (j.is_object() || j.is_array()) {
     std::size_t i = 0;
     for (const auto& [k, v] : j.items()) collect_values(v, key + "." + (j.is_array() ? std::to_string(i++) : k), texts, out);
@@ -282,7 +288,7 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
 
     std::string command;
     for (int i = 0; i < argc; ++i) command += (i ? " " : "") + std::string(argv[i]);
-    nlohmann::ordered_json run = {{"experiment", name}, {"build", build_info()}};
+    nlohmann::ordered_json run = {{"experiment", name}, {"build", build_info()}, {"machine", machine_info()}};
     run["command"] = command;
     run["scene_file"] = scene->file().string();
     if (!published.empty()) run["published_file"] = published_file.string();
@@ -292,6 +298,10 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
     run["overrides"] = overrides;
     run["scene"] = scene->to_json();
     run["studies"] = ran;
+    run["study_list"] = nlohmann::ordered_json::array();  // every study of the experiment: what it makes, its files
+    for (const auto& st : spec.studies)
+      run["study_list"].push_back({{"name", st.name}, {"makes", st.makes}, {"files", st.files},
+                                   {"ran", std::find(ran.begin(), ran.end(), st.name) != ran.end()}});
     run["threads"] = threads;
     run["start_utc"] = utc_iso8601(start);
     run["end_utc"] = utc_iso8601(std::chrono::system_clock::now());

@@ -156,7 +156,7 @@ std::optional<json> compare_published(const Published& e, const json& summary, c
                                       const std::vector<std::string>& studies_ran) {
   if (std::find(studies_ran.begin(), studies_ran.end(), e.study) == studies_ran.end()) return std::nullopt;
   const json* reproduced = json_at(summary, e.summary);
-  json c = {{"where", e.where}, {"published", e.value}, {"reproduced", reproduced ? *reproduced : json(nullptr)}};
+  json c = {{"study", e.study}, {"where", e.where}, {"published", e.value}, {"reproduced", reproduced ? *reproduced : json(nullptr)}};
   if (!e.compare.empty()) c["compare"] = {{e.compare, e.tolerance}};
   const auto done = [&](const std::string& verdict, const std::string& reason) {
     c["verdict"] = verdict;
