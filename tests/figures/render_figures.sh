@@ -8,7 +8,9 @@
 #     gnuplot -e "results='RESULTS_DIR'; out='OUT_DIR'" SCRIPT
 # and fails (exit 1, naming the script) if gnuplot exits non-zero, if it prints
 # anything containing "warning" (any case) on stderr, or if OUT_DIR/NAME.pdf or
-# OUT_DIR/NAME.png (NAME = script basename without .gp) is missing or empty.
+# OUT_DIR/NAME.png (NAME = script basename without .gp) is missing or empty, or if
+# a word of the PDF leaves the canvas or overlaps another (check_figure_text.py;
+# needs pdftotext from poppler-utils, which scripts/install-deps.sh figures installs).
 # All scripts are tried; the exit status is 1 if any failed, 2 on a usage error.
 # --only-available skips (and names) each script whose input CSVs, as its
 # "# Input:" line lists them, are not all in RESULTS_DIR: a run of some of the
@@ -22,10 +24,12 @@ if [ $# -lt 3 ]; then
     echo "usage: $0 RESULTS_DIR OUT_DIR SCRIPT..." >&2
     exit 2
 fi
-if ! command -v gnuplot >/dev/null 2>&1; then
-    echo "render_figures: gnuplot not found in PATH" >&2
-    exit 1
-fi
+for tool in gnuplot pdftotext; do
+    if ! command -v $tool >/dev/null 2>&1; then
+        echo "render_figures: $tool not found in PATH (scripts/install-deps.sh figures)" >&2
+        exit 1
+    fi
+done
 
 # Paths are relative to the caller's directory; make them absolute before cd.
 abspath() { case "$1" in /*) printf '%s\n' "$1" ;; *) printf '%s\n' "$PWD/$1" ;; esac; }
@@ -81,6 +85,10 @@ for script in "${scripts[@]}"; do
             for ext in pdf png; do
                 [ -s "$out/$name.$ext" ] || why="${why:+$why; }$out/$name.$ext missing or empty"
             done
+            if [ -z "$why" ] && ! python3 tests/figures/check_figure_text.py "$out/$name.pdf" >"$log"; then
+                sed "s|^|  $name: |" "$log" >&2
+                why="text off the canvas or overlapping"
+            fi
         fi
     fi
     if [ -n "$why" ]; then
