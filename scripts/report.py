@@ -162,7 +162,8 @@ def results_tex(runs, tex_files, draft):
              r"\newcommand{\resultrange}[3][general]{\geomint@value{#2}{#1}{#3}{r}}"]
     missing, seen = [], set()
     for path in tex_files:
-        for m in LOOKUP.finditer(path.read_text(encoding="utf-8")):
+        text = re.sub(r"(?<!\\)%.*", "", path.read_text(encoding="utf-8"))  # (not in LaTeX comments)
+        for m in LOOKUP.finditer(text):
             ranged, fmt, run, key = bool(m.group(1)), m.group(2) or "general", m.group(3), m.group(4)
             if (run, key, fmt, ranged) in seen or "#" in run + key + fmt:  # (a macro's own parameters)
                 continue
