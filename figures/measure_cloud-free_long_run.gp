@@ -5,12 +5,13 @@
 # Hamiltonian K_E* = N(H − E*) stays near its conserved modified value K_mod(z_0; E*): for Φ^(0) that value is
 # O(h²) ≠ 0, so H − E* ≈ K_mod/N grows without bound; for Φ^(4) it is O(h^6) and H stays near E*.
 # The key gives, per method, H − H(z_0) and the error ‖z − z_ref‖_2 at the final time (summary values).
-# Input: long_run.csv (t, <m>_H_phi0, <m>_H_phi4), summary values (reproduced.long_H_err_phi<ℓ>,
+# Input: long_run.csv (t, <m>_H_phi0, <m>_H_phi4), summary values (methods, reproduced.long_H_err_phi<ℓ>,
 # long_err_phi<ℓ>), scene values (h, long_run.t_end, cloud.center, potential).
 if (!exists("results")) results = 'results/measure_cloud-free'
 load 'figures/common.gp'
 load 'figures/measure_cloud_style.gpi'
 eval mc_need_potential('free')
+eval MC_NEED_METHODS
 LR = csv('long_run.csv')
 
 eval need_num('H', scene_real('h'))

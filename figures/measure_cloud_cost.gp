@@ -5,11 +5,12 @@
 # number of Newton iterations, N × (mean iterations per step): the force evaluations of the implicit step.
 # Log–log, one line per method.
 # Input: timing_cost.csv (method, h, steps, t_end, err, wall_s, ns_per_step, newton_iterations_per_step),
-# scene values (energies.t_end, timing.repeats, cloud.center).
+# summary values (methods), scene values (energies.t_end, timing.repeats, cloud.center).
 if (!exists("results")) results = 'results/measure_cloud'
 load 'figures/common.gp'
 load 'figures/measure_cloud_style.gpi'
 eval mc_need_potential('harmonic')
+eval MC_NEED_METHODS
 TC = csv('timing_cost.csv')
 
 eval need_num('TEND', scene_real('energies.t_end'))
@@ -34,6 +35,8 @@ stats $FULLB using 1:2 nooutput
 WMIN = STATS_min_x; WMAX = STATS_max_x; EMAX = STATS_max_y
 stats $FULLB using 3 nooutput
 IMIN = STATS_min; IMAX = STATS_max
+# x tics at these multiples of the powers of ten, fewer the more decades the axis spans (from lo to hi)
+TICSET(lo, hi) = log10(hi / lo) > 3 ? "1" : log10(hi / lo) > 1.2 ? "1 2 5" : "1 1.5 2 3 5 7"
 # guide: error ∝ h² ∝ (cost)^(−2), above the data
 GUIDE(x, x0) = 2.5 * EMAX * (x / x0)**(-2)
 
@@ -49,7 +52,6 @@ do for [fmt in FORMATS] {
     set tmargin at screen 0.84; set bmargin at screen 0.30
     set autoscale fix
     set offsets graph 0.05, graph 0.05, graph 0.08, graph 0.08
-    eval LOGTICS("1 1.5 2 3 5 7")
     set ylabel "‖z_N − z_{ref}(t_N)‖_2" offset 1, 0
 
     # ---- (a) wall time ----
@@ -57,7 +59,8 @@ do for [fmt in FORMATS] {
     set title "(a) against wall time" offset 0, -0.4
     set xlabel "wall time of the run [μs]" offset 0, 0.4
     set format x "%g"
-    plot for [i = 0:4] $FULLB index i using ($1 * 1e6):2 with linespoints ls MC_LS(word(MC_METHODS, i + 1)) ps 0.6 notitle, \
+    eval LOGTICS(TICSET(WMIN, WMAX))
+    plot for [i = 0:words(MC_METHODS) - 1] $FULLB index i using ($1 * 1e6):2 with linespoints ls MC_LS(word(MC_METHODS, i + 1)) ps 0.6 notitle, \
          [t=0:1:1] '+' using (x = 1e6 * WMIN * (WMAX / WMIN)**t, x):(GUIDE(x, 1e6 * WMIN)) with lines ls MC_LS_GUIDE notitle
 
     # ---- (b) Newton iterations ----
@@ -65,7 +68,8 @@ do for [fmt in FORMATS] {
     set title "(b) against Newton iterations (force evaluations)"
     set xlabel "Newton iterations, N × (mean per step)"
     set format x "%g"
-    plot for [i = 0:4] $FULLB index i using 3:2 with linespoints ls MC_LS(word(MC_METHODS, i + 1)) ps 0.6 notitle, \
+    eval LOGTICS(TICSET(IMIN, IMAX))
+    plot for [i = 0:words(MC_METHODS) - 1] $FULLB index i using 3:2 with linespoints ls MC_LS(word(MC_METHODS, i + 1)) ps 0.6 notitle, \
          [t=0:1:1] '+' using (x = IMIN * (IMAX / IMIN)**t, x):(GUIDE(x, IMIN)) with lines ls MC_LS_GUIDE notitle
 
     # ---- shared key ----

@@ -7,23 +7,23 @@
 # fitted order, summary values fits.measure_ell<ℓ>.<m>); open markers: points left out of the fit because they
 # lie within a factor 2 of the round-off noise. The noise is measured by the "probe" runs (crosses in the
 # ℓ = 6 panel): Φ^(6) at h = order_study_h_probe, where the truncation error is negligible;
-# 2 × order_study_noise is the gray line (shaded below it). Gray dotted: the slope ℓ + 2.
-# Input: order_study.csv (method, ell, h, ptp), summary values (fits, orders, reproduced.order_study_noise,
+# reproduced.order_study_noise_floor (2 × the noise) is the gray line (shaded below it). Gray dotted: the slope ℓ + 2.
+# Input: order_study.csv (method, ell, h, ptp), summary values (methods, fits, orders, reproduced.order_study_noise_floor,
 # reproduced.order_study_h_probe), scene values (order_study.*, cloud.center, ptp_window).
 if (!exists("results")) results = 'results/measure_cloud'
 load 'figures/common.gp'
 load 'figures/measure_cloud_style.gpi'
 eval mc_need_potential('harmonic')
+eval MC_NEED_METHODS
 OS = csv('order_study.csv')
 
-eval need_num('NOISE', summary_real('reproduced.order_study_noise'))
 eval need_num('HPROBE', summary_real('reproduced.order_study_h_probe'))
 eval need_num('R', scene_real('order_study.radius'))
 eval need_num('PTPW', scene_real('ptp_window'))
 eval need_num('TEND', scene_real('order_study.t_end'))
 Z0 = sprintf("(%s, %s, %s, %s)", scene_num('cloud.center.0'), scene_num('cloud.center.1'), \
              scene_num('cloud.center.2'), scene_num('cloud.center.3'))
-FLOOR = 2 * NOISE
+eval need_num('FLOOR', summary_real('reproduced.order_study_noise_floor'))   # twice the round-off noise
 RTXT = abs(log10(R) - floor(log10(R) + 0.5)) < 1e-9 ? sprintf("10^{%d}", floor(log10(R) + 0.5)) : sci(R)
 # the orders ℓ of the study (one panel each, at most 4)
 ELLS = ""

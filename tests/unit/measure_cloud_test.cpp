@@ -1,5 +1,6 @@
 // The nonholonomic particle of 003: discrete Lagrangians (5.1), their momenta,
 // the Newton step, the generated modified quantities, clouds and hull volumes.
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <random>
@@ -10,6 +11,7 @@
 
 #include "geomint/geometry/clouds.hpp"
 #include "geomint/geometry/hull_volume.hpp"
+#include "geomint/geometry/volume_series.hpp"
 #include "geomint/integrators/conformal_variational.hpp"
 #include "geomint/observables/symplecticity.hpp"
 #include "geomint/systems/nonholonomic_golden.hpp"
@@ -171,9 +173,34 @@ TEST(MeasureCloud, HullVolumeOfTheSixHundredCell) {
   const auto cloud = scaled_cloud(unit, {0, 0, 1, 1}, r);
   const auto facets = hull_facets(cloud);
   EXPECT_EQ(facets.size(), 600u);
-  const double a = r / std::numbers::phi;  // edge length; 4-content (25/4)(2 + sqrt 5) a^4
-  const double exact = 25.0 / 4 * (2 + std::sqrt(5.0)) * std::pow(a, 4);
-  EXPECT_LT(rel(hull_integral(cloud, facets, cloud.front(), [](const Point4&) { return 1.0; }), exact), 1e-12);
+  // the closed form (25/4)(2 + sqrt 5) (r/phi)^4 against the hull's 600 cells coned from the centre
+  EXPECT_LT(rel(hull_integral(cloud, facets, cloud.front(), [](const Point4&) { return 1.0; }), six_hundred_cell_volume(r)),
+            1e-12);
+}
+
+// The loader of the code of 003 skips the first vertex of its file, (0, 0, 1, 0): 119 vertices, the
+// others in the same order, and a cloud that is no longer centrally symmetric.
+TEST(MeasureCloud, AuthorsCloudLacksOneVertex) {
+  const auto all = six_hundred_cell_vertices(), authors = authors_six_hundred_cell_vertices();
+  ASSERT_EQ(authors.size(), 119u);
+  std::vector<Point4> expected;
+  for (const auto& v : all)
+    if (v != Point4{0, 0, 1, 0}) expected.push_back(v);
+  EXPECT_EQ(authors, expected);
+  EXPECT_NE(std::find(authors.begin(), authors.end(), Point4{0, 0, -1, 0}), authors.end());  // its opposite stays
+}
+
+// V_j/V_0 - 1 over the first samples, its peak-to-peak, and that of its difference from a reference.
+TEST(MeasureCloud, VolumeSeriesPeakToPeak) {
+  const std::vector<double> v{2.0, 2.5, 1.5, 3.0, 10.0}, r{4.0, 4.4, 3.8, 4.0, 4.0};
+  EXPECT_EQ(relative_volumes(v, 4), (std::vector<double>{0.0, 0.25, -0.25, 0.5}));
+  EXPECT_EQ(relative_volumes(v, 9).size(), 5u);
+  EXPECT_DOUBLE_EQ(relative_peak_to_peak(v, 4), 0.75);   // 0.5 - (-0.25); the sample 10 is outside
+  EXPECT_DOUBLE_EQ(relative_peak_to_peak(v, 2), 0.25);
+  // differences 0, 0.25 - 0.1, -0.25 + 0.05, 0.5 - 0
+  EXPECT_DOUBLE_EQ(relative_peak_to_peak_minus(v, r, 4), 0.5 - (-0.2));
+  EXPECT_EQ(peak_to_peak(std::vector<double>{}), 0.0);
+  EXPECT_EQ(peak_to_peak(std::vector<double>{-1.0, 3.0, 2.0}), 4.0);
 }
 
 // The 5-point rule is exact for quadratic densities: the standard 4-simplex, int x^a = a!/(4 + |a|)!.

@@ -45,6 +45,21 @@ inline std::vector<Point4> six_hundred_cell_vertices() {
   return v;
 }
 
+// The 4-content of the 600-cell of circumradius r: (25/4)(2 + sqrt 5) a^4 with the edge a = r/phi
+// (Coxeter, Regular Polytopes, Table I(iv)).
+inline double six_hundred_cell_volume(double r) {
+  const double a = r / std::numbers::phi;
+  return 25.0 / 4 * (2 + std::sqrt(5.0)) * a * a * a * a;
+}
+
+// The 600-cell as the code of 003 (github.com/mvermeeren/conf-ham-sys-2020) loads it: its loader
+// skips the first line of the vertex file, the vertex (0, 0, 1, 0), and keeps the other 119.
+inline std::vector<Point4> authors_six_hundred_cell_vertices() {
+  std::vector<Point4> v = six_hundred_cell_vertices();
+  std::erase(v, Point4{0, 0, 1, 0});
+  return v;
+}
+
 // A uniform point on the unit 3-sphere per call: g / |g| for g ~ N(0, I_4), with a
 // Box-Muller transform written out so that the stream depends only on the seed.
 class SpherePoints {
