@@ -2,15 +2,17 @@
 # Left, Table 1: harmonic oscillator over one period, N steps, h = T/N; maxima over the steps of
 # the absolute errors of p, q and H (Lobatto), of the discrete energy H_d (15) (round-off), and
 # of q for the methods of the scene key table1.methods (the paper scene: the Simpson scheme and the
-# implicit midpoint rule). Black crosses: the values printed in
-# the paper's Table 1 (summary values comparisons.*_err_N<N>.published).
+# implicit midpoint rule). Large black rings around the markers: the values printed in
+# the paper's Table 1 (summary values comparisons.*_err_N<N>.published), drawn behind the
+# reproduced markers so that both show where they agree.
 # Right, beyond the paper: nonlinear Lagrangians (Newton on the internal nodes), phase-space
 # error |z_N − z(t_end)|_2 against an odeint reference: the pendulum L = q̇²/2 + cos q (Lobatto and
 # the methods of nonlinear.methods; the paper scene: Simpson, midpoint) and a 2-DOF elastic pendulum (Lobatto).
 # Dashed: lines with the fitted order of summary values (orders.*) as slope, drawn through the
 # centroid (in log–log) of the points shown; the fit itself leaves out points within the
 # round-off / reference-accuracy floor (see experiments/lobatto_table).
-# Input: table1.csv, nonlinear.csv, summary values (orders, published Table 1), scene values (scene).
+# Input: table1.csv, nonlinear.csv, summary values (the compared methods methods.table1 and
+# methods.nonlinear, orders, published Table 1, Newton iterations), scene values (scene).
 if (!exists("results")) results = 'results/lobatto_table'
 load 'figures/common.gp'
 set encoding utf8    # (so that the key width counts characters, not bytes)
@@ -25,9 +27,8 @@ Z0 = sprintf("(%s, %s, %s, %s)", scene_num('nonlinear.elastic_initial.0.0'), sce
 
 # the compared methods, by label: Table 1's (scene key table1.methods, columns <label>_q_err) and the
 # nonlinear study's (nonlinear.methods, columns <label>_pendulum_err)
-header_labels(file, suffix) = system(sprintf("head -n 1 '%s' | tr ',' '\\n' | sed -n 's/_%s$//p' | tr '\\n' ' '", file, suffix))
-T1M = header_labels(T1, 'q_err')
-NLM = header_labels(NL, 'pendulum_err')
+T1M = summary_words('methods.table1')
+NLM = summary_words('methods.nonlinear')
 ALLM = T1M . NLM
 do for [i = 1:words(ALLM)] {   # styles for methods other than Simpson's and the midpoint rule, and their guides (+ 10)
     c = word("#009E73 #CC79A7 #56B4E9 #882255 #999999 #000000 #E69F00 #0072B2 #D55E00", (i - 1) % 9 + 1)
@@ -71,10 +72,11 @@ do for [s in S2] {
 }
 stats NL using "h" nooutput
 H2MIN = STATS_min; H2MAX = STATS_max
-stats NL using "pendulum_newton_iterations" nooutput
-ITP = sprintf("%.2g–%.2g", STATS_min, STATS_max)
-stats NL using "elastic_newton_iterations" nooutput
-ITE = sprintf("%.2g–%.2g", STATS_min, STATS_max)
+# Newton iterations per step (mean over a run), their range over h: summary values nonlinear.newton_iterations
+ITS(sys) = sprintf("%.2g–%.2g", real(summary_num('nonlinear.newton_iterations.'.sys.'.min')), \
+                                real(summary_num('nonlinear.newton_iterations.'.sys.'.max')))
+ITP = ITS('pendulum')
+ITE = ITS('elastic')
 GUIDE(tag, s, key, h) = 10**(value(sprintf("CY_%s_%s", tag, s)) + ORDER(key) * (log10(h) - value(sprintf("CX_%s_%s", tag, s))))
 
 # the published Table 1 (summary values comparisons.<q>_err_N<N>.published, N from the scene key meshes)
@@ -94,7 +96,7 @@ NPUB = |$PUB|
 do for [fmt in FORMATS] {
     eval term(fmt, 'lobatto_table_convergence', 17, 11.5)
     set multiplot title "{/:Bold Convergence:} maximum-norm errors against the step size h; " \
-                      . "dashed: slope = fitted order (summary.json), through the points' centroid"
+                      . "dashed: slope = the fitted order, through the points' centroid"
     set tmargin at screen 0.87; set bmargin at screen 0.33
     set logscale xy
     set format x "%g"
@@ -109,13 +111,13 @@ do for [fmt in FORMATS] {
     set key at screen 0.08, screen 0.235 left top
     set title sprintf("Table 1: harmonic oscillator, q(0) = A, p(0) = 0\none period T = %g, N steps, h = T/N", 2 * pi / OMEGA) offset 0, -0.4
     set ylabel "max_{j = 1..N} |error at t_j|"
-    plot for [s in S1] T1 using "h":(column(COL1(s))):xtic(sprintf("%g", column("h"))) with points ls STY1(s) notitle, \
+    plot $PUB using 1:2 with points pt 6 ps 1.6 lc rgb C_EXACT lw 0.8 notitle, \
+         for [s in S1] T1 using "h":(column(COL1(s))):xtic(sprintf("%g", column("h"))) with points ls STY1(s) notitle, \
          for [s in S1] [t=0:1:1] '+' using (h = H1MIN * (H1MAX / H1MIN)**t, h):(ORD1(s) eq "" ? NaN : GUIDE("t1", s, ORD1(s), h)) \
                 with lines ls STY1(s) + 10 notitle, \
-         $PUB using 1:2 with points pt 1 ps 1.0 lc rgb C_EXACT lw 0.7 notitle, \
          for [s in S1F] keyentry with linespoints ls STY1(s) + 10 title sprintf("%s, %s", LAB1(s), ORDTXT(ORD1(s))), \
          keyentry with points ls STY1("Hd") title LAB1("Hd") . ": round-off", \
-         keyentry with points pt 1 ps 1.0 lc rgb C_EXACT lw 0.7 title "paper, Table 1 (p, q, H, H_d)"
+         keyentry with points pt 6 ps 1.6 lc rgb C_EXACT lw 0.8 title "paper, Table 1 (p, q, H, H_d): rings"
 
     # ---- right: nonlinear ----
     set lmargin at screen 0.60; set rmargin at screen 0.98

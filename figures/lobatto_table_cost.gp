@@ -4,17 +4,17 @@
 # implicit midpoint rule, and two fixed-step Boost.Odeint steppers (classical RK4 and
 # Runge–Kutta–Fehlberg 7(8)), against the wall time of one run (left) and the number of force
 # evaluations in one run (right; U_q and U_qq calls, so Newton's Jacobians count). The methods are
-# those of the scene key timing.methods (the rows of timing.csv, by label).
-# Input: timing.csv (one row per method and step size h); scene values (t_end, q(0), repetitions).
+# those of the scene key timing.methods (the rows of timing.csv, by label: summary value methods.timing).
+# Input: timing.csv (one row per method and step size h); scene values (t_end, q(0), repetitions);
+# summary values (the methods).
 if (!exists("results")) results = 'results/lobatto_table'
 load 'figures/common.gp'
 set encoding utf8    # (so that the key width counts characters, not bytes)
 TIMING = csv('timing.csv')
-stats TIMING using (column("h") * column("steps")) nooutput
-T = STATS_max
+eval need_num('T', scene_full('nonlinear.t_end'))
 # the methods of the scene key timing.methods, by label, in the order of timing.csv
-METHODS = system(sprintf("awk -F, 'NR > 1 && !seen[$1]++ { printf \"%%s \", $1 }' '%s'", TIMING))
-if (words(METHODS) == 0) { exit error sprintf("%s: no rows", TIMING) }
+METHODS = summary_words('methods.timing')
+if (words(METHODS) == 0) { exit error sprintf("%s/figure_values.gp: no methods.timing", results) }
 do for [i = 1:words(METHODS)] {   # styles for methods other than these five
     eval sprintf("set style line %d lc rgb '%s' lw 1.0 pt %d ps 0.7", 60 + i, word("#882255 #56B4E9 #999999 #000000 #E69F00 #0072B2 #D55E00 #009E73 #CC79A7", (i - 1) % 9 + 1), (2 * i) % 14 + 1)
 }

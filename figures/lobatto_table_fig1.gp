@@ -3,10 +3,11 @@
 # the exact solution q = A cos ωt, p = −m ω A sin ωt; with the Simpson scheme and the implicit
 # midpoint rule for comparison (as the paper's text says). q (left) and p (right) are drawn in
 # separate panels, p unscaled (the paper's Fig. 1 rescales p to share one axis with q).
-# Lines between the markers only guide the eye: a scheme gives values at t_j = j h alone.
-# The methods are those of the scene key figure1.methods (the columns q_<label>, p_<label>).
-# Input: fig1_N<N>.csv (N from the scene key figure1.meshes), fig1_exact.csv,
-# scene values (oscillator parameters, the two N).
+# The schemes are drawn as markers alone: a scheme gives values at t_j = j h only.
+# The methods are those of the scene key figure1.methods (summary value methods.figure1: their
+# labels, the columns q_<label>, p_<label>).
+# Input: fig1_N<N>.csv (N from the scene key figure1.meshes), fig1_exact.csv, scene values
+# (oscillator parameters, the two N), summary values (the methods, their largest errors figure1.max_error).
 if (!exists("results")) results = 'results/lobatto_table'
 load 'figures/common.gp'
 set encoding utf8    # (so that the key width counts characters, not bytes)
@@ -21,8 +22,8 @@ EXACT = csv('fig1_exact.csv')
 FIG(n) = csv(sprintf('fig1_N%d.csv', n))
 
 # the methods of the scene key figure1.methods, by label: the columns q_<label> of the CSV
-METHODS = system(sprintf("head -n 1 '%s' | tr ',' '\\n' | sed -n 's/^q_//p' | tr '\\n' ' '", FIG(N1)))
-if (words(METHODS) == 0) { exit error sprintf("%s: no column q_<method>", FIG(N1)) }
+METHODS = summary_words('methods.figure1')
+if (words(METHODS) == 0) { exit error sprintf("%s/figure_values.gp: no methods.figure1", results) }
 do for [i = 1:words(METHODS)] {   # styles for methods other than the paper's three
     eval sprintf("set style line %d lc rgb '%s' lw 1.0 pt %d ps 0.7", 60 + i, word("#009E73 #CC79A7 #56B4E9 #882255 #999999 #000000 #E69F00 #0072B2 #D55E00", (i - 1) % 9 + 1), (2 * i) % 14 + 1)
 }
@@ -30,29 +31,24 @@ LABEL(m) = m eq "lobatto" ? "Lobatto (13)–(14)" : m eq "simpson" ? "Simpson [2
 SHORT(m) = m eq "lobatto" ? "Lobatto" : m eq "simpson" ? "Simpson" : nosub(m)
 STYLE(m) = m eq "lobatto" ? LS_LOB : m eq "simpson" ? LS_SIMP : m eq "midpoint" ? LS_MID : 60 + word_index(METHODS, m)
 
-# the largest error over the steps, per N, method and variable: ERR_<N>_<var>_<method>
-do for [n in sprintf("%d %d", N1, N2)] {
-    do for [m in METHODS] {
-        stats FIG(int(n)) using (abs(column("q_".m) - A * cos(OMEGA * column("t")))) nooutput
-        eval sprintf("ERR_%s_q_%s = STATS_max", n, m)
-        stats FIG(int(n)) using (abs(column("p_".m) + M * OMEGA * A * sin(OMEGA * column("t")))) nooutput
-        eval sprintf("ERR_%s_p_%s = STATS_max", n, m)
-    }
-}
-# "max_j error: Lobatto 1.2e-03, Simpson ..." per N and variable: ERRS_<N>_<var>
-do for [n in sprintf("%d %d", N1, N2)] {
+# "max_j error: Lobatto 1.2e-03, Simpson ..." per mesh (k = 0, 1) and variable, ERRS_<k>_<var>: the
+# largest errors over the steps, summary values figure1.max_error.<k>.<label>.<var>
+do for [k = 0:1] {
     do for [v in "q p"] {
         e = ""
-        do for [m in METHODS] { e = e . sprintf("%s %s %.1e", e eq "" ? "" : ",", SHORT(m), value(sprintf("ERR_%s_%s_%s", n, v, m))) }
-        eval sprintf("ERRS_%s_%s = 'max_j error:%s'", n, v, e)
+        do for [m in METHODS] {
+            eval need_num('ERR', summary_num(sprintf('figure1.max_error.%d.%s.%s', k, m, v)))
+            e = e . sprintf("%s %s %.1e", e eq "" ? "" : ",", SHORT(m), ERR)
+        }
+        eval sprintf("ERRS_%d_%s = 'max_j error:%s'", k, v, e)
     }
 }
-ERRS(n, v) = value(sprintf("ERRS_%d_%s", n, v))
+ERRS(k, v) = value(sprintf("ERRS_%d_%s", k, v))
 
 do for [fmt in FORMATS] {
     eval term(fmt, 'lobatto_table_fig1', 17, 14)
     set multiplot title sprintf("{/:Bold Fig. 1:} harmonic oscillator over one period T = 2π/ω = %g: m = %g, ω = %.6g, q(0) = A = %.6g, p(0) = 0\n" \
-                                . "exact: q = A cos ωt, p = −mωA sin ωt (black); markers: the schemes at t_j = jh, h = T/N (lines only guide the eye)", \
+                                . "exact: q = A cos ωt, p = −mωA sin ωt (black line); markers: the schemes at t_j = jh, h = T/N", \
                                 T, M, OMEGA, A)
     set border 31; set xtics autofreq; set ytics autofreq; set mxtics; set mytics; set autoscale xy  # (after the key plot)
     set xrange [0:T]
@@ -72,16 +68,16 @@ do for [fmt in FORMATS] {
         set lmargin at screen 0.09; set rmargin at screen 0.48
         set title sprintf("N = %d steps per period, h = %.4g:  state q", n, T / n) offset 0, -0.5
         set ylabel "q"
-        set label 1 ERRS(n, "q")
+        set label 1 ERRS(row - 1, "q")
         plot EXACT using "t":"q" with lines ls LS_EXACT, \
-             for [m in METHODS] FIG(n) using "t":(column("q_".m)) with linespoints ls STYLE(m)
+             for [m in METHODS] FIG(n) using "t":(column("q_".m)) with points ls STYLE(m)
 
         set lmargin at screen 0.59; set rmargin at screen 0.98
         set title sprintf("N = %d, h = %.4g:  momentum p (not rescaled)", n, T / n)
         set ylabel "p"
-        set label 1 ERRS(n, "p")
+        set label 1 ERRS(row - 1, "p")
         plot EXACT using "t":"p" with lines ls LS_EXACT, \
-             for [m in METHODS] FIG(n) using "t":(column("p_".m)) with linespoints ls STYLE(m)
+             for [m in METHODS] FIG(n) using "t":(column("p_".m)) with points ls STYLE(m)
     }
     unset label 1
 
@@ -93,7 +89,7 @@ do for [fmt in FORMATS] {
     set key center center horizontal Left reverse maxrows 1 samplen 3 width 1
     plot 2 with lines notitle, \
          keyentry with lines ls LS_EXACT title "exact", \
-         for [m in METHODS] keyentry with linespoints ls STYLE(m) title LABEL(m)   # (2: off the yrange)
+         for [m in METHODS] keyentry with points ls STYLE(m) title LABEL(m)   # (2: off the yrange)
     unset multiplot
     unset output
 }

@@ -3,28 +3,30 @@
 # logarithmic axis; ρ − 1 ≤ 10^{−14} is drawn at 10^{−14}: there the eigenvalues have modulus 1 to
 # round-off (the scan's ρ − 1 scatters up to a few 10^{−15} where the map is stable),
 # with the methods of the scene key stability.methods for comparison (the paper scene: the Simpson
-# scheme; a processed method by its kernel). Shaded: the intervals where the Lobatto scan finds
-# ρ ≤ 1 + 10^{−12} (summary values reproduced.stable_set_h_omega, grid points of the scan).
-# Vertical lines: the computed first loss of stability (summary values reproduced.stability_bound,
-# to compare with the paper's bound (10), √(42 − 6√29)); h ω = √10 and √30, where δ of eq. (7)
-# vanishes; and the other two roots of the discriminant Δ of Sec. 4, √60 and √(42 + 6√29)
-# (formulas of the paper, not data).
-# Input: stability.csv; summary values (stable set and bound); scene values (scan range).
+# scheme; a processed method by its kernel; summary value methods.stability: their labels). Shaded:
+# the intervals where the Lobatto scan finds ρ ≤ 1 + stability.radius_tolerance (summary values
+# reproduced.stable_set_h_omega, grid points of the scan). Vertical lines: the computed first loss
+# of stability (summary value reproduced.stability_bound, to compare with the paper's bound (10),
+# √(42 − 6√29), comparisons.stability_bound.published); and the other ends of the exact stable set
+# (summary values stability.exact_set_h_omega): h ω = √10 and √30, where δ of eq. (7) vanishes, and
+# the other two roots of the discriminant Δ of Sec. 4, √60 and √(42 + 6√29).
+# Input: stability.csv; summary values (methods, stable sets, bound, tolerance); scene values (scan range).
 if (!exists("results")) results = 'results/lobatto_table'
 load 'figures/common.gp'
 set encoding utf8    # (so that the key width counts characters, not bytes)
 ST = csv('stability.csv')
 
 eval need_num('BOUND', summary_num('reproduced.stability_bound'))
-s = summary_num('comparisons.stability_bound.published')
-BOUND_PAPER = s eq "?" ? sqrt(42 - 6 * sqrt(29)) : real(s)   # (eq. (10) itself, if summary.json does not repeat it)
+eval need_num('BOUND_PAPER', summary_num('comparisons.stability_bound.published'))
+eval need_num('TOL', summary_num('stability.radius_tolerance'))
+TOLTXT = gprintf("%.0t", TOL) eq "1" ? gprintf("10^{%T}", TOL) : sci(TOL)
 FLOOR = 1e-14
 clip(r) = r - 1 > FLOOR ? r - 1 : FLOOR
 stats ST using "h_omega" nooutput
 XMIN = STATS_min; XMAX = STATS_max
 NPTS = STATS_records
 # the methods scanned with Lobatto (scene key stability.methods), by label: the columns spectral_radius_<label>
-METHODS = system(sprintf("head -n 1 '%s' | tr ',' '\\n' | sed -n 's/^spectral_radius_//p' | tr '\\n' ' '", ST))
+METHODS = summary_words('methods.stability')
 do for [i = 1:words(METHODS)] {   # styles for methods other than Simpson's
     eval sprintf("set style line %d lc rgb '%s' lw 1.0", 60 + i, word("#009E73 #CC79A7 #D55E00 #882255 #999999 #000000 #56B4E9 #E69F00 #0072B2", (i - 1) % 9 + 1))
 }
@@ -51,13 +53,17 @@ if (NS == 0) { exit error "reproduced.stable_set_h_omega: missing from ".results
 SET = ""
 do for [k = 1:NS] { SET = SET . sprintf("%s[%.2f, %.2f]", k > 1 ? ", " : "", value(sprintf("SL_%d", k)), value(sprintf("SR_%d", k))) }
 
-# the lines: position, label, style (1: bound, 2: δ = 0, 3: other roots of Δ)
+# the lines: position, label, style (1: bound, 2: δ = 0, 3: other roots of Δ); the ends of the second and
+# third intervals of the exact stable set are √10, √30 and √60, √(42+6√29)
+EX(k, e) = (_s = summary_num(sprintf('stability.exact_set_h_omega.%d.%d', k, e)), _s eq "?" ? NaN : real(_s))
+if (EX(2, 1) != EX(2, 1)) { exit error "stability.exact_set_h_omega: missing from ".results."/figure_values.gp" }
 NL = 5
-LX(i) = i == 1 ? BOUND : i == 2 ? sqrt(10) : i == 3 ? sqrt(30) : i == 4 ? sqrt(60) : sqrt(42 + 6 * sqrt(29))
-LT(i) = i == 1 ? "computed bound, eq. (10)" : i <= 3 ? "δ = 0, eq. (7)" : "Δ = 0, Sec. 4"
-LN(i) = i == 1 ? sprintf("√(42−6√29)") : i == 2 ? "√10" : i == 3 ? "√30" : i == 4 ? "√60" : "√(42+6√29)"
+LX(i) = i == 1 ? BOUND : i == 2 ? EX(1, 0) : i == 3 ? EX(1, 1) : i == 4 ? EX(2, 0) : EX(2, 1)
+LN(i) = i == 1 ? "√(42−6√29)" : i == 2 ? "√10" : i == 3 ? "√30" : i == 4 ? "√60" : "√(42+6√29)"
 LK(i) = i == 1 ? 1 : i <= 3 ? 2 : 3
-LO(i) = (i == 2 || i == 5) ? 1.1 : -0.3      # label right of the line (bound and √10 are 0.05 apart)
+# labels horizontal at the top, beside their line: left of it for the first bound and √60, right of it
+# for the others (the bound and √10 are 0.05 apart: their labels point away from each other)
+LLEFT(i) = i == 1 || i == 4
 set style line 91 lc rgb '#000000' lw 1.0 dt 1
 set style line 92 lc rgb '#000000' lw 1.0 dt (6,3)
 set style line 93 lc rgb '#777777' lw 0.9 dt (2,3)
@@ -89,7 +95,9 @@ do for [fmt in FORMATS] {
     }
     do for [i = 1:NL] {
         set arrow i from LX(i), graph 0 to LX(i), graph 1 nohead ls 90 + LK(i) front
-        set label i LN(i) at LX(i), graph 0.985 right rotate by 90 offset LO(i), 0 front font ",8" tc rgb (LK(i) == 3 ? '#555555' : '#000000')
+        set label i LN(i) at LX(i), graph 0.955 front font ",8" tc rgb (LK(i) == 3 ? '#555555' : '#000000') \
+            offset (LLEFT(i) ? -0.4 : 0.4), 0
+        if (LLEFT(i)) { set label i right } else { set label i left }
     }
     plot @COMPARED ST using "h_omega":(clip(column("spectral_radius"))) with lines ls LS_LOB lw 1.4
 
@@ -102,7 +110,7 @@ do for [fmt in FORMATS] {
     plot 2 with lines notitle, \
          keyentry with lines ls LS_LOB lw 1.4 title "Lobatto (13)–(14)", \
          @COMPARED_KEY \
-         keyentry with boxes fillcolor rgb C_STABLE fillstyle solid 1.0 noborder title "Lobatto stable (ρ ≤ 1 + 10^{-12})", \
+         keyentry with boxes fillcolor rgb C_STABLE fillstyle solid 1.0 noborder title sprintf("Lobatto stable (ρ ≤ 1 + %s)", TOLTXT), \
          for [k = 1:3] keyentry with lines ls 90 + k title (k == 1 ? "computed first bound ≈ √(42−6√29), eq. (10)" \
                                                              : k == 2 ? "h ω = √10, √30: δ = 0, eq. (7)" \
                                                              : "h ω = √60, √(42+6√29): other roots of Δ, Sec. 4")   # (2: off the yrange)

@@ -11,12 +11,18 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
+#include <filesystem>
 #include <limits>
+#include <map>
 #include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "geomint/analysis/linear_stability.hpp"
+#include "geomint/analysis/lobatto_oscillator.hpp"
+#include "geomint/analysis/work_precision.hpp"
 #include "geomint/core/compensated_sum.hpp"
 #include "geomint/integrators/galerkin_variational.hpp"
 #include "geomint/core/integrate.hpp"
@@ -30,6 +36,7 @@
 #include "geomint/observables/symplecticity.hpp"
 #include "geomint/reference/odeint_reference.hpp"
 #include "geomint/runner/experiment.hpp"
+#include "geomint/runner/published.hpp"
 #include "geomint/runner/timing.hpp"
 #include "geomint/sweep/parallel_map.hpp"
 #include "geomint/systems/counting.hpp"
@@ -42,9 +49,17 @@ using json = nlohmann::ordered_json;
 namespace {
 
 using Z1 = PhaseState<1>;
-// The largest linear frequency of the nonlinear pendulum (U'' = cos q <= 1) and of the
-// elastic pendulum (sqrt(k/m) = 1): the h omega at which the registry's bounds apply.
+// The largest linear frequency of the nonlinear pendulum (U'' = cos q <= 1) and of the elastic
+// pendulum of the paper scene (sqrt(k/m) = 1): the h omega at which the registry's bounds apply.
 constexpr double kNonlinearOmega = 1.0;
+// A scan point of the stability study is stable if the spectral radius is at most 1 + this.
+constexpr double kRadiusTolerance = 1e-12;
+// A run at the stability bound counts as diverged when |(p, q)| exceeds this many times q(0).
+constexpr double kDivergedFactor = 1e6;
+// The runs around the first loss of stability: these multiples of the bound.
+constexpr double kBoundFactors[] = {0.99, 1.01};
+// Errors of the nonlinear study below this many times the reference's absolute tolerance are not fitted.
+constexpr double kReferenceFloorFactor = 100;
 
 // 001 eq. (15) from the computed map: H_d = (Phi_qp p^2 - Phi_pq q^2) / 2, i.e. c/(2 delta) p^2 - b/(2 delta) q^2.
 double discrete_energy(const Mat<2>& Phi, const Z1& z) {
@@ -63,6 +78,21 @@ Mat<2> lobatto_matrix(const HarmonicOscillator& osc, double h) { return pq_matri
 void merge(Context& ctx, const char* section, const json& values) {
   for (const auto& [k, v] : values.items()) ctx.summary[section][k] = v;
 }
+
+// The labels of registered methods (CSV columns, summary keys), for summary.methods.<study>.
+json labels(const std::vector<std::string>& methods) {
+  json l = json::array();
+  for (const auto& m : methods) l.push_back(label_of(m));
+  return l;
+}
+
+// {min, max} of values.
+json range_of(const std::vector<double>& v) {
+  const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+  return {{"min", *lo}, {"max", *hi}};
+}
+
+json optional_json(const std::optional<double>& v) { return v ? json(*v) : json(nullptr); }
 
 // ---- the scene ----
 
@@ -88,14 +118,22 @@ Schema schema() {
       .reals("nonlinear.h", positive(), 3, "steps of the nonlinear convergence study")
       .real("nonlinear.t_end", positive(), "end time of the nonlinear runs")
       .real("nonlinear.pendulum_q0", any_finite(), "initial angle of L = qdot^2/2 + cos q (p(0) = 0)")
-      .real_rows("nonlinear.elastic_initial", 4, any_finite(), 1, "elastic pendulum [x, y, px, py] (l=m=k=1, g=0.2)")
+      .real("nonlinear.elastic.l", positive(), "elastic pendulum: relaxed length of the spring")
+      .real("nonlinear.elastic.m", positive(), "elastic pendulum: mass")
+      .real("nonlinear.elastic.k", positive(), "elastic pendulum: spring stiffness")
+      .real("nonlinear.elastic.g", non_negative(), "elastic pendulum: gravity (y pointing down)")
+      .real_rows("nonlinear.elastic_initial", 4, any_finite(), 1, "elastic pendulum [x, y, px, py]")
       .texts("nonlinear.methods", methods_for<NonlinearPendulum>(), 0,
              "methods compared with Lobatto on the nonlinear pendulum")
       .real("reference.rtol", positive(), "tolerances of the odeint Bulirsch-Stoer reference")
       .real("reference.atol", positive(), "")
       .integer("timing.repeats", at_least(1), "timed repetitions (median)")
       .texts("timing.methods", methods_for<NonlinearPendulum>(), 1,
-             "methods timed on the nonlinear pendulum at the steps nonlinear.h, against its reference");
+             "methods timed on the nonlinear pendulum at the steps nonlinear.h, against its reference")
+      .reals("timing.error_targets", positive(), 1,
+             "errors whose cost (wall time, force evaluations) each method's runs are asked for")
+      .text("timing.equal_wall", methods_for<NonlinearPendulum>(),
+            "the method of timing.methods whose most expensive run sets the wall time of the comparison at equal cost");
   return s;
 }
 
@@ -154,6 +192,9 @@ void check_nonlinear(const Scene& s) {
 void check_timing(const Scene& s) {
   check_distinct_methods(s, "timing.methods");
   for (const auto& m : s.texts("timing.methods")) check_pendulum_steps(s, "timing.methods", m);
+  const auto timed = s.texts("timing.methods");
+  if (std::find(timed.begin(), timed.end(), s.text("timing.equal_wall")) == timed.end())
+    s.reject("timing.equal_wall", "one of timing.methods");
 }
 
 // ---- the oscillator of Table 1 and Figs 1, 2 ----
@@ -182,15 +223,77 @@ std::vector<Z1> trajectory(const std::string& method, const Sys& sys, const Z1& 
 
 // ---- Table 1: one period from q = A, p = 0, max over the steps of |error| (absolute) ----
 
+// max_{j = 1..N} |q_j - q(t_j)| of the trajectory z_0..z_N.
+double max_q_error(const std::vector<Z1>& zs, const Oscillator& o, double h) {
+  double e = 0;
+  for (std::size_t j = 1; j < zs.size(); ++j)
+    e = std::max(e, std::abs(zs[j].q[0] - o.osc.exact(o.z0, static_cast<double>(j) * h).q[0]));
+  return e;
+}
+
+// z_0..z_N of a linear one-step matrix Phi on (p, q), 001's order of eq. (13).
+std::vector<Z1> iterate_pq(const Mat<2>& Phi, const Z1& z0, std::int64_t N) {
+  std::vector<Z1> zs = {z0};
+  Vec<2> x(z0.p[0], z0.q[0]);
+  for (std::int64_t j = 1; j <= N; ++j) x = Phi * x, zs.push_back(make_state(x[1], x[0]));
+  return zs;
+}
+
+// Does `reproduced` round to the printed value with its `digits` significant digits?
+bool rounds_to_printed(double printed, double reproduced, int digits) {
+  char a[32], b[32];
+  std::snprintf(a, sizeof a, "%.*e", digits - 1, printed);
+  std::snprintf(b, sizeof b, "%.*e", digits - 1, reproduced);
+  return std::string(a) == b;
+}
+
+// The comparison with what 001 printed (published.toml, as the runner makes it after the run) of the
+// entry whose reproduced value is at `summary_key`, for the text; nullopt if there is none or this
+// scene cannot make it.
+std::optional<json> comparison(const json& summary, const Scene& s, const std::string& summary_key) {
+  for (const Published& e : read_published(std::filesystem::path(GEOMINT_EXPERIMENT_DIR) / "published.toml")) {
+    if (e.summary != summary_key) continue;
+    auto c = compare_published(e, summary, s.to_json(), {e.study});
+    if (c && c->contains("difference")) return c;
+  }
+  return std::nullopt;
+}
+
+// Table 1 against the printed values: how many of the errors of p, q and H round to the three printed
+// digits, the largest relative deviation, and the range of the printed H_d errors (round-off, compared apart).
+json printed_table1(const json& summary, const Scene& s) {
+  int compared = 0, rounding = 0;
+  double deviation = 0;
+  std::vector<double> printed_Hd;
+  for (double Nd : s.reals("meshes")) {
+    const std::string n = std::to_string(static_cast<std::int64_t>(Nd));
+    for (const char* prefix : {"p", "q", "H", "Hd"}) {
+      const auto c = comparison(summary, s, std::string("reproduced.") + prefix + "_err_N" + n);
+      if (!c) continue;
+      const double printed = (*c)["published"], reproduced = (*c)["reproduced"];
+      if (std::string(prefix) == "Hd") {
+        printed_Hd.push_back(printed);
+      } else {
+        ++compared, rounding += rounds_to_printed(printed, reproduced, 3);
+        deviation = std::max(deviation, std::abs((*c)["difference"].get<double>()));  // (relative: compare = rel)
+      }
+    }
+  }
+  json out = {{"compared", compared}, {"round_to_printed_digits", rounding}, {"max_relative_deviation", deviation}};
+  if (!printed_Hd.empty()) out["Hd_err_range"] = range_of(printed_Hd);
+  return out;
+}
+
 void run_table1(Context& ctx) {
   const Scene& s = ctx.scene;
   ctx.progress("Table 1");
-  const auto [osc, A, T, z0] = oscillator(s);
+  const Oscillator o = oscillator(s);
+  const auto& [osc, A, T, z0] = o;
   const auto methods = s.texts("table1.methods");
   std::vector<std::string> columns = {"N", "h", "p_err", "q_err", "H_err", "Hd_err"};
   for (const auto& m : methods) columns.push_back(label_of(m) + "_q_err");
   Csv t1(columns);
-  std::vector<double> hs, ep, eq, eH;
+  std::vector<double> hs, ep, eq, eH, eHd, Hd0s, e12;
   std::vector<std::vector<double>> em(methods.size());
   json reproduced = json::object();
   for (double Nd : s.reals("meshes")) {
@@ -208,10 +311,7 @@ void run_table1(Context& ctx) {
     }
     t1 << N << h << p << q << H << Hd;
     for (std::size_t k = 0; k < methods.size(); ++k) {
-      const auto zs = trajectory(methods[k], osc, z0, h, N);
-      double e = 0;
-      for (std::int64_t j = 1; j <= N; ++j)
-        e = std::max(e, std::abs(zs[static_cast<std::size_t>(j)].q[0] - osc.exact(z0, static_cast<double>(j) * h).q[0]));
+      const double e = max_q_error(trajectory(methods[k], osc, z0, h, N), o, h);
       t1 << e;
       em[k].push_back(e);
     }
@@ -219,7 +319,9 @@ void run_table1(Context& ctx) {
     const std::string n = std::to_string(N);
     reproduced["p_err_N" + n] = p, reproduced["q_err_N" + n] = q;
     reproduced["H_err_N" + n] = H, reproduced["Hd_err_N" + n] = Hd;
-    hs.push_back(h), ep.push_back(p), eq.push_back(q), eH.push_back(H);
+    hs.push_back(h), ep.push_back(p), eq.push_back(q), eH.push_back(H), eHd.push_back(Hd), Hd0s.push_back(Hd0);
+    // 001 eq. (12) as printed, iterated as a scheme of its own (it is not (13)-(14): see the unit tests)
+    e12.push_back(max_q_error(iterate_pq(lobatto_map_12(h, osc.m, osc.w, Eq12::printed), z0, N), o, h));
   }
   ctx.write("table1.csv", t1);
   const double floor = roundoff_floor();
@@ -231,9 +333,22 @@ void run_table1(Context& ctx) {
     const std::string l = label_of(methods[k]);
     orders[l] = fit_order(hs, em[k], floor, l.c_str()).order;
   }
+  orders["lobatto_printed_eq12_q"] = fit_order(hs, e12, floor, "lobatto_printed_eq12_q").order;
   merge(ctx, "reproduced", reproduced);
   merge(ctx, "orders", orders);
   ctx.summary["norms"]["table1"] = "max over the steps j = 1..N of one period of the absolute error (p, q, H, H_d)";
+  // H_d(0) (15) per mesh, the H_d errors relative to it and their range; the compared methods' errors;
+  // the comparison with the printed digits.
+  json relative = json::array();
+  for (std::size_t i = 0; i < eHd.size(); ++i) relative.push_back(eHd[i] / Hd0s[i]);
+  ctx.summary["methods"]["table1"] = labels(methods);
+  json compared = json::object();  // the q errors of the compared methods per mesh, as table1.csv
+  for (std::size_t k = 0; k < methods.size(); ++k) compared[label_of(methods[k])] = em[k];
+  ctx.summary["table1"] = {{"Hd0", Hd0s},
+                           {"Hd_err_relative", relative},
+                           {"Hd_err_range", range_of(eHd)},
+                           {"q_err", compared},
+                           {"printed", printed_table1(ctx.summary, s)}};
 }
 
 // ---- Fig. 1: trajectories over one period ----
@@ -245,6 +360,7 @@ void run_figure1(Context& ctx) {
   const auto methods = s.texts("figure1.methods");
   std::vector<std::string> columns = {"j", "t"};
   for (const auto& m : methods) columns.push_back("q_" + label_of(m)), columns.push_back("p_" + label_of(m));
+  json max_error = json::array();  // per mesh and method: max_j |q_j - q(t_j)| and |p_j - p(t_j)|, j = 0..N
   for (double Nd : s.reals("figure1.meshes")) {
     const auto N = static_cast<std::int64_t>(Nd);
     const double h = T / Nd;
@@ -257,6 +373,17 @@ void run_figure1(Context& ctx) {
       f.end_row();
     }
     ctx.write("fig1_N" + std::to_string(N) + ".csv", f);
+    json errors = json::object();
+    for (std::size_t k = 0; k < methods.size(); ++k) {
+      double eq = 0, ep = 0;
+      for (std::int64_t j = 0; j <= N; ++j) {
+        const Z1& z = zs[k][static_cast<std::size_t>(j)];
+        const Z1 ex = osc.exact(z0, static_cast<double>(j) * h);
+        eq = std::max(eq, std::abs(z.q[0] - ex.q[0])), ep = std::max(ep, std::abs(z.p[0] - ex.p[0]));
+      }
+      errors[label_of(methods[k])] = {{"q", eq}, {"p", ep}};
+    }
+    max_error.push_back(errors);
   }
   Csv fe({"t", "q", "p"});
   for (int i = 0; i <= 400; ++i) {
@@ -264,6 +391,9 @@ void run_figure1(Context& ctx) {
     fe.row(T * i / 400.0, e.q[0], e.p[0]);
   }
   ctx.write("fig1_exact.csv", fe);
+  ctx.summary["methods"]["figure1"] = labels(methods);
+  // the amplitude of the exact p = -m w A sin(w t), and the largest errors of the drawn methods
+  ctx.summary["figure1"] = {{"p_amplitude", osc.m * osc.w * A}, {"max_error", max_error}};
 }
 
 // ---- Fig. 2: the discrete energy over long_run.periods periods, plain and compensated ----
@@ -316,9 +446,51 @@ void run_long_run(Context& ctx) {
   ctx.summary["reproduced"]["energy_growth_rate"] = growth_H;
   ctx.summary["reproduced"]["energy_growth_rate_Hd"] = growth;
   ctx.summary["reproduced"]["energy_growth_rate_Hd_compensated"] = growth_comp;
+  // Per step size (by index): the rates again, with the printed one; the largest H_d errors; and the
+  // growth rate of the same window maxima in exact arithmetic (the closed-form orbit of (13)-(14)),
+  // with what the drift of H_d explains of the difference.
+  const auto published = comparison(ctx.summary, s, "reproduced.energy_growth_rate");  // 001 Fig. 2, per h
+  json rates = json::array();
+  for (std::size_t i = 0; i < long_h.size(); ++i) {
+    const double h = long_h[i];
+    const Long& l = longs[i];
+    json r = {{"h", h}, {"steps_per_period", T / h}, {"H_rate", l.slope_H}, {"Hd_rate", l.slope_plain},
+              {"Hd_rate_compensated", l.slope_comp}, {"Hd_err_max", *std::max_element(l.plain.begin(), l.plain.end())},
+              {"Hd_err_max_compensated", *std::max_element(l.comp.begin(), l.comp.end())}};
+    if (published && published->at("published").contains(format_double(h)))
+      r["published_rate"] = published->at("published")[format_double(h)];
+    const auto exact = lobatto_exact_growth(h, osc.m, osc.w, A, s.real("long_run.periods"), windows);
+    const auto orbit = lobatto_exact_orbit(h, osc.m, osc.w, A);
+    if (exact && orbit) {
+      r["exact_rate"] = exact->slope_per_period;
+      r["H_rate_minus_exact"] = l.slope_H - exact->slope_per_period;
+      r["bound"] = exact->bound;  // |K|
+      r["periods_to_peak"] = optional_json(exact->periods_to_peak);
+      // a drift of H_d seen in H: (H_0 / H_d(0)) |Hd_rate|; and the relative drift of H_d per step
+      r["roundoff_in_H"] = orbit->H0 / orbit->Hd0 * std::abs(l.slope_plain);
+      r["Hd_drift_per_step"] = std::abs(l.slope_plain) * h / T / orbit->Hd0;
+    }
+    rates.push_back(r);
+  }
+  ctx.summary["long_run"] = {{"window_periods", s.real("long_run.periods") / static_cast<double>(windows)}, {"rates", rates}};
 }
 
 // ---- Stability: spectral radius of Phi over h omega; the exact stable set ----
+
+bool stable(double rho) { return rho <= 1.0 + kRadiusTolerance; }
+
+// The intervals [lo, hi] of consecutive scan points (h omega) at which the radius is stable.
+json stable_intervals(const std::vector<double>& hw, const std::vector<double>& rho) {
+  json set = json::array();
+  bool in_stable = false;
+  double start = 0;
+  for (std::size_t i = 0; i < hw.size(); ++i) {
+    if (stable(rho[i]) && !in_stable) in_stable = true, start = hw[i];
+    if (!stable(rho[i]) && in_stable) in_stable = false, set.push_back({start, hw[i - 1]});
+  }
+  if (in_stable) set.push_back({start, hw.back()});
+  return set;
+}
 
 void run_stability(Context& ctx) {
   const Scene& s = ctx.scene;
@@ -331,36 +503,33 @@ void run_stability(Context& ctx) {
   std::vector<std::string> columns = {"h_omega", "spectral_radius"};
   for (const auto& m : methods) columns.push_back("spectral_radius_" + label_of(m));
   Csv st(columns);
-  json stable_set = json::array();
-  bool in_stable = false;
-  double start = 0, prev = hw0;
-  const auto stable = [](double rho) { return rho <= 1.0 + 1e-12; };
+  std::vector<double> hws, rhos;
+  std::vector<std::vector<double>> rho_m(methods.size());
   for (std::int64_t i = 0; i < npts; ++i) {
     const double hw = hw0 + (hw1 - hw0) * static_cast<double>(i) / static_cast<double>(npts - 1);
     const double rho = radius_at(hw);
     st << hw << rho;
-    for (const auto& m : methods) st << spectral_radius(pq_matrix(m, osc, hw / osc.w));
+    for (std::size_t k = 0; k < methods.size(); ++k) {
+      rho_m[k].push_back(spectral_radius(pq_matrix(methods[k], osc, hw / osc.w)));
+      st << rho_m[k].back();
+    }
     st.end_row();
-    if (stable(rho) && !in_stable) in_stable = true, start = hw;
-    if (!stable(rho) && in_stable) in_stable = false, stable_set.push_back({start, prev});
-    prev = hw;
+    hws.push_back(hw), rhos.push_back(rho);
   }
-  if (in_stable) stable_set.push_back({start, prev});
   ctx.write("stability.csv", st);
   // The first loss of stability, refined by bisection.
   double lo = hw0, hi = hw1;
-  for (std::int64_t i = 0; i < npts; ++i) {
-    const double hw = hw0 + (hw1 - hw0) * static_cast<double>(i) / static_cast<double>(npts - 1);
-    if (!stable(radius_at(hw))) {
-      hi = hw;
+  for (std::size_t i = 0; i < hws.size(); ++i) {
+    if (!stable(rhos[i])) {
+      hi = hws[i];
       break;
     }
-    lo = hw;
+    lo = hws[i];
   }
   for (int it = 0; it < 60; ++it) (stable(radius_at(0.5 * (lo + hi))) ? lo : hi) = 0.5 * (lo + hi);
-  // Runs of long_run.periods periods at 0.99 and 1.01 times the bound: bounded, and reported as diverged.
-  json runs;
-  for (double factor : {0.99, 1.01}) {
+  // Runs of long_run.periods periods at kBoundFactors times the bound: bounded below it, diverged above.
+  json runs, run_list = json::array();
+  for (double factor : kBoundFactors) {
     const double h = factor * lo / osc.w;
     const Mat<2> Phi = lobatto_matrix(osc, h);
     Vec<2> x(0.0, A);
@@ -370,28 +539,58 @@ void run_stability(Context& ctx) {
     for (std::int64_t j = 1; j <= n && diverged_at < 0; ++j) {
       x = Phi * x;
       max_norm = std::max(max_norm, x.norm());
-      if (!(x.norm() <= 1e6 * A)) diverged_at = j;
+      if (!(x.norm() <= kDivergedFactor * A)) diverged_at = j;
     }
     runs[format_double(factor)] = {{"h_omega", factor * lo}, {"steps", n}, {"diverged_at_step", diverged_at},
                                    {"max_norm_over_initial", max_norm / A}};
+    json r = {{"factor", factor}};
+    r.update(runs[format_double(factor)]);
+    run_list.push_back(r);
   }
+  const json stable_set = stable_intervals(hws, rhos);
   ctx.summary["reproduced"]["stability_bound"] = lo;
   ctx.summary["reproduced"]["stable_set_h_omega"] = stable_set;
   ctx.summary["reproduced"]["bound_runs"] = runs;
+  // The scan of each compared method; the exact stable set of (13)-(14); the bound as h/T and steps
+  // per period; the scan point nearest h omega = pi (h = T/2, the paper's remark after (10)).
+  json compared = json::object();
+  for (std::size_t k = 0; k < methods.size(); ++k) {
+    const json set = stable_intervals(hws, rho_m[k]);
+    compared[label_of(methods[k])] = {{"stable_set_h_omega", set}, {"intervals", set.size()}};
+  }
+  std::size_t near_pi = 0;
+  for (std::size_t i = 1; i < hws.size(); ++i)
+    if (std::abs(hws[i] - std::numbers::pi) < std::abs(hws[near_pi] - std::numbers::pi)) near_pi = i;
+  const double steps_per_period = 2 * std::numbers::pi / lo;  // N = T/h = 2 pi / (h omega)
+  ctx.summary["methods"]["stability"] = labels(methods);
+  ctx.summary["stability"] = {
+      {"grid_step", (hw1 - hw0) / static_cast<double>(npts - 1)},
+      {"radius_tolerance", kRadiusTolerance},
+      {"diverged_factor", kDivergedFactor},
+      {"intervals", stable_set.size()},
+      {"exact_set_h_omega", lobatto_stable_set()},
+      {"compared", compared},
+      {"bound_h_over_T", lo / (2 * std::numbers::pi)},
+      {"bound_steps_per_period", steps_per_period},
+      {"least_whole_steps_per_period", std::floor(steps_per_period) + 1},
+      {"near_pi", {{"h_omega", hws[near_pi]}, {"spectral_radius", rhos[near_pi]}}},
+      {"bound_runs", run_list}};
 }
 
 // ---- Nonlinear Lagrangians: order 6 against odeint, symplecticity, Newton iterations ----
 
-struct Pendulums {
+struct Pendulum {
   NonlinearPendulum pend;
-  ElasticPendulumWithGravity elastic{1.0, {SpringTerm{1.0, 1.0}, GravityTerm{1.0, 0.2}}};
-  Z1 pz0;
+  Z1 z0;  // (q, p) = (nonlinear.pendulum_q0, 0)
 };
 
-Pendulums pendulums(const Scene& s) {
-  Pendulums p;
-  p.pz0 = make_state(s.real("nonlinear.pendulum_q0"), 0.0);
-  return p;
+Pendulum pendulum(const Scene& s) { return {NonlinearPendulum{}, make_state(s.real("nonlinear.pendulum_q0"), 0.0)}; }
+
+// The planar elastic pendulum of the scene (y pointing down, systems/elastic_pendulum.hpp).
+ElasticPendulumWithGravity elastic_pendulum(const Scene& s) {
+  const ElasticPendulumParams p{s.real("nonlinear.elastic.l"), s.real("nonlinear.elastic.m"), s.real("nonlinear.elastic.k"),
+                                s.real("nonlinear.elastic.g")};
+  return {p.m, {SpringTerm{p.k, p.l}, GravityTerm{p.m, p.g}}};
 }
 
 void run_nonlinear(Context& ctx) {
@@ -401,7 +600,8 @@ void run_nonlinear(Context& ctx) {
   const double t_end = s.real("nonlinear.t_end"), rtol = s.real("reference.rtol"), atol = s.real("reference.atol");
   const auto methods = s.texts("nonlinear.methods");
   const auto lob = lobatto_rule();
-  const auto [pend, elastic, pz0] = pendulums(s);
+  const auto [pend, pz0] = pendulum(s);
+  const auto elastic = elastic_pendulum(s);
   const auto er = s.real_rows("nonlinear.elastic_initial")[0];
   const PhaseState<2> ez0 = make_state<2>(Vec<2>(er[0], er[1]), Vec<2>(er[2], er[3]));
   const Z1 pref = reference_solution(pend, pz0, t_end, rtol, atol);
@@ -442,15 +642,24 @@ void run_nonlinear(Context& ctx) {
     e_p.push_back(r.pendulum_err), e_e.push_back(r.elastic_err);
   }
   ctx.write("nonlinear.csv", nl);
-  const double nfloor = 100 * atol;  // errors within 100x the reference tolerance are not fitted
-  json orders = json::object();
-  orders["lobatto_nonlinear_pendulum"] = fit_order(nh, e_p, nfloor, "lobatto_nonlinear_pendulum").order;
-  orders["lobatto_elastic_pendulum"] = fit_order(nh, e_e, nfloor, "lobatto_elastic_pendulum").order;
-  for (std::size_t k = 0; k < methods.size(); ++k) {
-    const std::string key = label_of(methods[k]) + "_nonlinear_pendulum";
-    orders[key] = fit_order(nh, e_m[k], nfloor, key.c_str()).order;
-  }
+  const double nfloor = kReferenceFloorFactor * atol;
+  json orders = json::object(), fits = json::object();
+  const auto fit = [&](const std::string& key, const std::vector<double>& err) {
+    const OrderFit f = fit_order(nh, err, nfloor, key.c_str());
+    orders[key] = f.order, fits[key] = to_json(f);
+  };
+  fit("lobatto_nonlinear_pendulum", e_p);
+  fit("lobatto_elastic_pendulum", e_e);
+  for (std::size_t k = 0; k < methods.size(); ++k) fit(label_of(methods[k]) + "_nonlinear_pendulum", e_m[k]);
   merge(ctx, "orders", orders);
+  std::vector<double> it_p, it_e;
+  for (const auto& r : rows) it_p.push_back(r.pendulum_iterations), it_e.push_back(r.elastic_iterations);
+  ctx.summary["methods"]["nonlinear"] = labels(methods);
+  ctx.summary["nonlinear"] = {{"h_range", range_of(nh)},
+                              {"error_floor", nfloor},
+                              {"error_floor_over_atol", kReferenceFloorFactor},
+                              {"newton_iterations", {{"pendulum", range_of(it_p)}, {"elastic", range_of(it_e)}}},
+                              {"fits", fits}};
   // Symplecticity of the nonlinear one-step maps: max |J^T Omega J - Omega|.
   ctx.summary["reproduced"]["symplecticity_defect_pendulum"] =
       symplecticity_defect(galerkin_step_jacobian(lob, pend, pz0, nh.front()));
@@ -461,16 +670,48 @@ void run_nonlinear(Context& ctx) {
 
 // ---- What the accuracy costs (nonlinear pendulum to t_end, against its own reference) ----
 
+// "%g" of an error target: the key of summary.timing.cost.<method>.wall_s_to and evals_to.
+std::string target_key(double target) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%g", target);
+  return b;
+}
+
+// What each method's runs cost: per step at the smallest h, relative to the first method; its
+// smallest error; its error at the wall time `equal_wall`; the wall time and the force evaluations
+// at which it first reaches each target (null where its measured runs do not reach it).
+json cost_summary(const std::vector<std::string>& timed, const std::map<std::string, std::vector<CostRun>>& runs,
+                  const json& ns_per_step, double equal_wall, const std::vector<double>& targets) {
+  json cost = json::object();
+  for (const auto& label : timed) {
+    const auto r = by_decreasing_h(runs.at(label));
+    if (r.empty()) continue;
+    double min_err = r.front().err;
+    for (const CostRun& x : r) min_err = std::min(min_err, x.err);
+    json c = {{"relative_cost", ns_per_step[label].get<double>() / ns_per_step[timed.front()].get<double>()},
+              {"evals_per_step", r.back().evals / r.back().steps},
+              {"min_err", min_err},
+              {"err_at_equal_wall", optional_json(error_at_wall(r, equal_wall))}};
+    for (double t : targets) {
+      c["wall_s_to"][target_key(t)] = optional_json(cost_to_reach(r, t, &CostRun::wall_s));
+      c["evals_to"][target_key(t)] = optional_json(cost_to_reach(r, t, &CostRun::evals));
+    }
+    cost[label] = c;
+  }
+  return cost;
+}
+
 void run_timing(Context& ctx) {
   const Scene& s = ctx.scene;
   ctx.progress("cost");
   const auto nh = s.reals("nonlinear.h");
   const double t_end = s.real("nonlinear.t_end");
-  const auto [pend, elastic, pz0] = pendulums(s);
+  const auto [pend, pz0] = pendulum(s);
   const Z1 pref = reference_solution(pend, pz0, t_end, s.real("reference.rtol"), s.real("reference.atol"));
   const int repeats = static_cast<int>(s.integer("timing.repeats"));
   Csv cost({"method", "h", "steps", "wall_s", "ns_per_step", "force_evals", "error"});
   json ns = json::object();
+  std::map<std::string, std::vector<CostRun>> runs;
   for (const auto& m : s.texts("timing.methods")) {
     const std::string label = label_of(m);
     for (double h : nh) {
@@ -486,13 +727,20 @@ void run_timing(Context& ctx) {
       cost << label << h << n << wall << 1e9 * wall / static_cast<double>(n) << evals << err;
       cost.end_row();
       if (h == nh.back()) ns[label] = 1e9 * wall / static_cast<double>(n);
+      runs[label].push_back({h, static_cast<double>(n), wall, static_cast<double>(evals), err});
     }
   }
   ctx.write("timing.csv", cost);
+  const json timed = labels(s.texts("timing.methods"));
+  const double equal_wall = largest_wall(by_decreasing_h(runs[label_of(s.text("timing.equal_wall"))]));
+  ctx.summary["methods"]["timing"] = timed;
   ctx.summary["timing"] = {
       {"ns_per_step", ns},
       {"method", "nonlinear pendulum to nonlinear.t_end; median of timing.repeats runs after one warm-up, single "
-                 "thread; ns_per_step at the smallest nonlinear.h; force evaluations count U_q and U_qq calls"}};
+                 "thread; ns_per_step at the smallest nonlinear.h; force evaluations count U_q and U_qq calls"},
+      {"equal_wall_s", equal_wall},
+      {"cost", cost_summary(timed.get<std::vector<std::string>>(), runs, ns, equal_wall,
+                            s.reals("timing.error_targets"))}};
 }
 
 }  // namespace

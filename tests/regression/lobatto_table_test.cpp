@@ -49,3 +49,37 @@ TEST(LobattoTable, NonlinearMapsAreSymplectic) {
   EXPECT_LT(r["symplecticity_defect_pendulum"].get<double>(), 1e-10);
   EXPECT_LT(r["symplecticity_defect_elastic"].get<double>(), 1e-10);
 }
+
+// 001 eq. (12) as printed (published.toml: eq12_printed_order, an erratum): iterated as a scheme,
+// its state error over Table 1's meshes does not decrease at all (order about 0, not 6).
+TEST(LobattoTable, Equation12AsPrintedDoesNotConverge) {
+  EXPECT_LT(std::abs(summary()["orders"]["lobatto_printed_eq12_q"].get<double>()), 0.5);
+}
+
+// The scan's stable intervals are the exact stable set of (13)-(14) to the grid spacing.
+TEST(LobattoTable, ScanFindsTheExactStableSet) {
+  const auto& st = summary()["stability"];
+  const auto& scan = summary()["reproduced"]["stable_set_h_omega"];
+  const auto& exact = st["exact_set_h_omega"];
+  const double step = st["grid_step"].get<double>();
+  ASSERT_EQ(scan.size(), exact.size());
+  for (std::size_t i = 0; i < exact.size(); ++i)
+    for (int end : {0, 1}) EXPECT_NEAR(scan[i][end].get<double>(), exact[i][end].get<double>(), step) << i << " " << end;
+}
+
+// Table 1: every compared error of p, q and H rounds to the printed digits.
+TEST(LobattoTable, Table1RoundsToThePrintedDigits) {
+  const auto& printed = summary()["table1"]["printed"];
+  EXPECT_GT(printed["compared"].get<int>(), 0);
+  EXPECT_EQ(printed["round_to_printed_digits"].get<int>(), printed["compared"].get<int>());
+}
+
+// Fig. 2 at the first step size (N = 10): the measured growth rate is the exact-arithmetic rate of
+// the closed-form orbit, up to the round-off drift of H_d seen in H.
+TEST(LobattoTable, MeasuredGrowthIsTheExactGrowth) {
+  const auto& r = summary()["long_run"]["rates"][0];
+  const double exact = r["exact_rate"].get<double>(), measured = r["H_rate"].get<double>();
+  EXPECT_GT(exact, 0);
+  EXPECT_NEAR(measured, exact, 0.01 * exact);
+  EXPECT_LT(std::abs(r["H_rate_minus_exact"].get<double>()), 10 * r["roundoff_in_H"].get<double>());
+}
