@@ -9,7 +9,10 @@
 # which is the isoline H_0 = kl²/2 (the energy at r = 0).
 # The y axis points down (gravity along +y, eq. (73)); it is drawn downwards, so that the
 # pendulum hangs down in the picture.
-# Input: map.csv, summary values (grid size), scene values (grid extent, pendulum, dt, t_max).
+# The counts of the map (which run is better, which diverged) are in the caption of the report's
+# figure, from summary.json (map_statistics).
+# Input: map.csv, map_grid.csv (x0, y0, H0 in grid scans, for the isolines), summary values (grid
+# size), scene values (grid extent, pendulum, dt, t_max).
 if (!exists("results")) results = 'results/energy_map'
 load 'figures/common.gp'
 set encoding utf8
@@ -34,26 +37,10 @@ diff(c, p) = column(c) - column(p)                     # NaN if either run diver
 DEPS = 'diff("eps_cartesian", "eps_polar")'
 diverged = '(column("diverged_cartesian") != 0 || column("diverged_polar") != 0)'
 stats MAP using (abs(@DEPS)) nooutput
-NPTS_OK = STATS_records
 ADMAX = STATS_max
 EPS_LIN = 10.0**floor(log10(STATS_lo_quartile))       # linear part of the colour scale
-stats MAP using (@DEPS) nooutput
-DMIN = STATS_min
-DMAX = STATS_max
-stats MAP using (@DEPS < 0 ? 1 : 0) nooutput
-N_CART_BETTER = STATS_sum
-stats MAP using (@DEPS > 0 ? 1 : 0) nooutput
-N_POL_BETTER = STATS_sum
-stats MAP using "diverged_polar" nooutput
-N_DIV_POL = STATS_sum
-stats MAP using "diverged_cartesian" nooutput
-N_DIV_CART = STATS_sum
-stats MAP using (@diverged ? 1 : 0) nooutput
-N_DIV = STATS_sum
+stats MAP using "x0" nooutput
 N_ALL = STATS_records
-inside(x, y) = (r = sqrt(x**2 + y**2), r < rb(r > 0 ? atan2(x, y) : 0))   # inside the analytic boundary
-stats MAP using ((column("diverged_polar") != 0 && inside(column("x0"), column("y0"))) ? 1 : 0) nooutput
-N_DIV_POL_INSIDE = STATS_sum
 stats MAP using "H0" nooutput
 HMIN = STATS_min
 HMAX = STATS_max
@@ -65,12 +52,12 @@ CBMAX = sl(ADMAX)
 DECADE_LO = floor(log10(EPS_LIN) + 0.5)
 DECADE_HI = floor(log10(ADMAX))
 
-# ---- H_0 isolines: contour the H0 column (map.csv rows are x fastest: a blank line after
-# every NX rows makes them the grid scans splot needs) ---------------------------------
+# ---- H_0 isolines: contour the H0 column of map_grid.csv (the rows of map.csv, x fastest, with
+# a blank line after every NX rows: the grid scans splot needs) ------------------------
 H_STEP = 0.1
 HLEVELS = sprintf("%g", (kl2 = 0.5 * K * L**2))       # the isoline H_0 = kl²/2 and a step H_STEP
 do for [i = -20:20] { h = kl2 + i * H_STEP; if (i != 0 && h > HMIN && h < HMAX) { HLEVELS = HLEVELS . sprintf(", %g", h) } }
-MAPGRID = sprintf("< awk 'NR > 2 && (NR - 2) %% %d == 0 { print \"\" } { print }' '%s'", NX, MAP)
+MAPGRID = csv('map_grid.csv')
 set contour base
 unset surface
 eval "set cntrparam linear levels discrete " . HLEVELS
@@ -104,19 +91,13 @@ do for [k = DECADE_LO:DECADE_HI] {
 set mcbtics
 set cblabel sprintf("ε_{(x,y)} − ε_{(r,φ)}   (signed log scale, linear for |·| < 10^{%d})", DECADE_LO) offset 0.5,0
 # the square plot: S cm a side on a W × H cm canvas
-W = 17.0; H = 16.3; S = 11.0
+W = 17.0; H = 15.4; S = 11.0
 PL = 0.115; PT = 1 - 1.45 / H; PR = PL + S / W; PB = PT - S / H
 set colorbox user origin screen PR + 0.045, screen PB size screen 0.025, screen S / H
 
 TITLE = sprintf("{/:Bold Fig. 6:} symplectic Euler, elastic pendulum: energy error (50) in Cartesian minus polar coordinates\n" \
               . "l = %g, m = %g, k = %g, g = %g, Δt = %g, t_{max} = %g, p(0) = 0, grid %d × %d in (x_0, y_0)", \
                 L, M, K, G, DT, TMAX, NX, NY)
-SUMMARY = sprintf("neither run diverged: %d points; of them Cartesian better (blue) %d = %.1f %%, polar better (red) %d = %.1f %%, equal %d\n" \
-                . "ε_{(x,y)} − ε_{(r,φ)} ranges from %.2g to %+.2g;  " \
-                . "diverged: %d points (%.1f %%): polar %d, of them %d inside the dashed boundary; Cartesian %d", \
-                  NPTS_OK, N_CART_BETTER, 100.0 * N_CART_BETTER / NPTS_OK, N_POL_BETTER, 100.0 * N_POL_BETTER / NPTS_OK, \
-                  NPTS_OK - N_CART_BETTER - N_POL_BETTER, DMIN, DMAX, N_DIV, 100.0 * N_DIV / N_ALL, N_DIV_POL, N_DIV_POL_INSIDE, N_DIV_CART)
-
 do for [fmt in FORMATS] {
     eval term(fmt, 'energy_map_fig6', W, H)
     set title TITLE
@@ -137,7 +118,6 @@ do for [fmt in FORMATS] {
     set samples 721
     set key at screen PL, screen PB - 1.35 / H left top vertical Left reverse samplen 2.5 spacing 1.15 width -4 \
             opaque fc rgb '#c4c4c4' box lc rgb '#bbbbbb' lw 0.5
-    set label 1 SUMMARY at screen PL, screen PB - 3.0 / H left font ",9"
 
     plot MAP using "x0":"y0":(sl(@DEPS)) with image notitle, \
          MAP using "x0":"y0":(58):(58):(58):(@diverged ? 255 : 0) with rgbalpha notitle, \
@@ -147,6 +127,5 @@ do for [fmt in FORMATS] {
          keyentry with lines lc rgb C_HISO lw 0.8 title sprintf("isolines of H_0 = H(x_0, y_0, 0, 0), step %g", H_STEP), \
          keyentry with lines lc rgb '#ffffff' lw 1.3 dt (5,3) \
                   title sprintf("r_0 = 2l + (2mg/k) cos θ_0: beyond it the exact polar motion reaches r = 0 (isoline H_0 = kl^2/2 = %g)", kl2)
-    unset label 1
     unset output
 }

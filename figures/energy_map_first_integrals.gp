@@ -7,8 +7,8 @@
 # summation of the updates. Zeros (exact preservation) cannot be drawn on the log axis and are left out.
 # (As the experiment computes them: |Δp_x| is the largest over the scene's first_integrals.initial
 # states; the angular-momentum run starts from the first of them, at the smallest h.)
-# Input: first_integrals.csv, angular_momentum.csv, summary values (fitted order, maximal drifts),
-# scene values (the initial state of the angular-momentum run).
+# Input: first_integrals.csv, angular_momentum.csv, summary values (the fitted order and line,
+# maximal drifts), scene values (the initial state of the angular-momentum run).
 if (!exists("results")) results = 'results/energy_map'
 load 'figures/common.gp'
 set encoding utf8
@@ -16,19 +16,17 @@ FI  = csv('first_integrals.csv')
 ANG = csv('angular_momentum.csv')
 pos(c) = (column(c) > 0) ? column(c) : NaN            # log axes: zeros and "nan" are skipped
 
-# ---- left: fit log10|Δp_x| = a + s log10 h (stats' linear regression), and the order in summary values
-stats FI using (log10(column("h"))):(log10(column("px_change_per_step"))) nooutput
-SLOPE = STATS_slope
-ICPT  = STATS_intercept
-HMIN  = 10**STATS_min_x
-HMAX  = 10**STATS_max_x
-NH    = STATS_records
+# ---- left: the least-squares fit of the run, |Δp_x| = 10^c h^order over [h_min, h_max] (summary values)
+eval need_num('ORDER', summary_num('fits.polar_px_change_per_step.order'))
+eval need_num('LOG10C', summary_num('fits.polar_px_change_per_step.log10_c'))
+eval need_num('HMIN', summary_num('fits.polar_px_change_per_step.h_min'))
+eval need_num('HMAX', summary_num('fits.polar_px_change_per_step.h_max'))
 stats FI using "h":"px_change_per_step" nooutput
+H_SMALLEST = STATS_min_x
 DPX_AT_HMIN = STATS_index_min_y == STATS_index_min_x ? STATS_min_y : NaN   # (the smallest change is at the smallest h)
-eval need_num('ORDER_SUMMARY', summary_num('orders.polar_px_change_per_step'))
 eval need_num('ORDER_PAPER', summary_num('comparisons.polar_px_change_per_step.published'))
 # reference line of the paper's order through the point at the smallest h
-ref(h) = DPX_AT_HMIN * (h / HMIN)**ORDER_PAPER
+ref(h) = DPX_AT_HMIN * (h / H_SMALLEST)**ORDER_PAPER
 
 # ---- right: the angular-momentum run ----------------------------------------------
 stats ANG using "j" nooutput
@@ -74,9 +72,9 @@ do for [fmt in FORMATS] {
     set offsets graph 0.05, graph 0.05, 0, 0
     set rmargin -1
     plot FI using "h":"px_change_per_step" with points ls LS_SE title sprintf("max |Δp_x| over the initial states, p_x from (66)"), \
-         [h=HMIN:HMAX] '+' using (h):(10**(ICPT + SLOPE * log10(h))) with lines ls LS_SE_FIT \
-                title sprintf("least-squares slope %.3f (summary.json: %.3f)", SLOPE, ORDER_SUMMARY), \
-         [h=HMIN:HMAX] '+' using (h):(ref(h)) with lines lc rgb '#606060' lw 0.9 dt (2,3) \
+         [h=HMIN:HMAX] '+' using (h):(powerlaw(h, LOG10C, ORDER)) with lines ls LS_SE_FIT \
+                title sprintf("least-squares fit, order %.3f", ORDER), \
+         [h=H_SMALLEST:HMAX] '+' using (h):(ref(h)) with lines lc rgb '#606060' lw 0.9 dt (2,3) \
                 title sprintf("slope %g (paper: O(h^%g)), through the smallest h", ORDER_PAPER, ORDER_PAPER)
 
     set title "Cartesian coordinates: angular momentum (Sec. 5.2.2)\n{/*0.85 ".Z0."}"

@@ -6,7 +6,8 @@
 # of force evaluations in one run (right), on the planar elastic pendulum. The methods are those
 # of timing.csv (the scene's timing.methods, by registry label): ours, then odeint's, any others after.
 # Input: timing.csv (one row per method and step size h; one run = pre- and postprocessing once),
-# scene values (pendulum parameters, initial condition and repetitions, for the title).
+# scene values (pendulum parameters, initial condition and repetitions, for the title), summary
+# values (methods.timing: the methods of timing.csv, by registry label).
 if (!exists("results")) results = 'results/rowlands_convergence'
 load 'figures/common.gp'
 set encoding utf8    # (so that the key width counts characters, not bytes)
@@ -14,7 +15,7 @@ TIMING = csv('timing.csv')
 stats TIMING using (column("h") * column("steps")) nooutput
 T = STATS_max
 # the methods of timing.csv (column "method", registry labels), in the key's order: ours | odeint | others
-CSV_METHODS = system(sprintf("awk -F, 'NR > 1 && !seen[$1]++ { printf \"%%s \", $1 }' '%s'", TIMING))
+CSV_METHODS = summary_words('methods.timing')
 PREFERRED = "sv rowlands rowlands_cheap forest_ruth odeint_velocity_verlet odeint_rkn_sb3a odeint_rk4"
 eval ORDER_METHODS
 LABEL(m) = m eq "sv"             ? "Störmer–Verlet (26)–(28)" \

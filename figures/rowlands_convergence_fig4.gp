@@ -8,7 +8,8 @@
 # CSV (the scene's `methods`, by registry label): the paper's in a fixed order, any others after.
 # Dashed lines: least-squares fits from orders.csv, drawn over the h range they were fitted on.
 # Input: fig4_convergence.csv, orders.csv (the rows of initial condition `ic`, default 0, the one
-# the paper scene draws), scene values (pendulum parameters and initial condition, for the title).
+# the paper scene draws), scene values (pendulum parameters and initial condition, for the title;
+# observables, the panels), summary values (methods.convergence: the methods of the CSV, by label).
 if (!exists("results")) results = 'results/rowlands_convergence'
 load 'figures/common.gp'
 set encoding utf8    # (so that the key width counts characters, not bytes)
@@ -16,12 +17,11 @@ if (!exists("ic")) ic = 0
 CONV = csv('fig4_convergence.csv')
 sel(col) = (column("initial") == ic) ? column(col) : NaN     # the rows of initial condition ic
 
-# the methods: the column prefixes of the *_evals columns (registry labels); the panels: the
-# observables the scene named (energy_error: *_energy_rms columns, phase_error: *_phase columns)
-HEADER = system(sprintf("head -n 1 '%s'", CONV))
-CSV_METHODS = system(sprintf("head -n 1 '%s' | tr ',' '\n' | sed -n 's/_evals$//p' | tr '\n' ' '", CONV))
-HAS_ENERGY = strstrt(HEADER, "_energy_rms") > 0
-HAS_PHASE = strstrt(HEADER.",", "_phase,") > 0
+# the methods of the CSV (registry labels); the panels: the observables the scene named
+# (energy_error: *_energy_rms columns, phase_error: *_phase columns)
+CSV_METHODS = summary_words('methods.convergence')
+HAS_ENERGY = in_list(scene_words('observables'), 'energy_error')
+HAS_PHASE = in_list(scene_words('observables'), 'phase_error')
 QUANTITIES = (HAS_ENERGY ? "energy " : "") . (HAS_PHASE ? "phase" : "")
 PREFERRED = "sv kernel rowlands_printed rowlands rowlands_cheap forest_ruth"   # (the key's order)
 eval ORDER_METHODS

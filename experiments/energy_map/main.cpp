@@ -28,6 +28,7 @@
 #include "geomint/runner/experiment.hpp"
 #include "geomint/runner/timing.hpp"
 #include "geomint/sweep/energy_map.hpp"
+#include "geomint/sweep/energy_map_statistics.hpp"
 #include "geomint/sweep/parallel_map.hpp"
 #include "geomint/systems/elastic_pendulum.hpp"
 #include "geomint/transforms/polar.hpp"
@@ -94,6 +95,32 @@ std::vector<std::vector<EnergyMapPoint>> run_batches(EnergyMapKernel kernel, Coo
   });
 }
 
+// The grid spacing of an inclusive linspace (0 for a single value).
+double spacing(const std::vector<double>& v) { return v.size() > 1 ? (v.back() - v.front()) / static_cast<double>(v.size() - 1) : 0.0; }
+
+// map_grid.csv: x0, y0, H0 of map.csv in grid scans, a blank line between the rows of the grid (the
+// form gnuplot contours: figures/energy_map_fig6.gp draws the H_0 isolines from it).
+std::string grid_scans(const MapSetup& g, const std::vector<EnergyMapRow>& rows) {
+  std::string out = "x0,y0,H0\n";
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    out += format_double(rows[i].x0) + "," + format_double(rows[i].y0) + "," + format_double(rows[i].H0) + "\n";
+    if ((i + 1) % g.xs.size() == 0 && i + 1 < rows.size()) out += "\n";
+  }
+  return out;
+}
+
+// The largest |H of (72) - H of (73)| at rest over the initial positions of the map (the origin
+// aside), with (r, theta) from (x, y) by `to_polar`: 000 eq. (63), either half.
+template <class ToPolar>
+double polar_mismatch(const ElasticPendulumParams& p, const std::vector<EnergyMapRow>& rows, ToPolar to_polar) {
+  const ElasticPendulumPolarWithGravity polar{p.m, {SpringPolarTerm{p.k, p.l}, GravityPolarTerm{p.m, p.g}}};
+  double worst = 0;
+  for (const EnergyMapRow& row : rows)
+    if (std::hypot(row.x0, row.y0) > 0)
+      worst = std::max(worst, std::abs(polar.H(to_polar(make_state<2>(Vec<2>(row.x0, row.y0), Vec<2>(0.0, 0.0)))) - row.H0));
+  return worst;
+}
+
 // What the map study measured, for the timing study of the same run.
 struct MapCost {
   bool ran = false;
@@ -119,6 +146,8 @@ Schema schema() {
             "step of symplectic Euler (000 Fig. 6: 0.2); dt sqrt(k/m) below its oscillatory bound (geomint-methods)")
       .real("t_max", positive(), "end time (000 Fig. 6: 50 000); a multiple of dt")
       .real("divergence.blowup", positive(), "|H_j - H_0| above this marks a run diverged")
+      .real("map_statistics.ring_half_width", positive(),
+            "initial radii |r(0) - l| < ring_half_width * l are counted apart for where polar is the more accurate")
       .reals("first_integrals.h", positive(), 3, "steps for the change of p_x per step in polar coordinates")
       .real_rows("first_integrals.initial", 4, any_finite(), 1, "free-particle states [x, y, px, py], x, y not both 0")
       .integer("first_integrals.steps", at_least(1), "steps of the Cartesian angular-momentum run")
@@ -128,7 +157,13 @@ Schema schema() {
       .integer("timing.scalar_steps", at_least(1), "steps of each scalar timing run")
       .integer("timing.kernel_batches", at_least(1),
                "batches of 64 trajectories (evenly spaced over the grid, t_max/dt steps each) on which the batched "
-               "kernel is timed when the map study does not run in the same process");
+               "kernel is timed when the map study does not run in the same process")
+      .real("timing.target.cartesian", positive(), "the time per trajectory-step and core set as the goal of the Cartesian kernel [ns]")
+      .real("timing.target.polar", positive(), "the same for the polar kernel [ns]")
+      .reals("timing.ceiling.cartesian", positive(), 2,
+             "[low, high] hardware ceiling of the Cartesian kernel [ns per trajectory-step and core]: an estimate from "
+             "performance measurements (bench/README.md), not measured by the run")
+      .reals("timing.ceiling.polar", positive(), 2, "the same for the polar kernel");
   return s;
 }
 
@@ -145,6 +180,12 @@ void check_map(const Scene& s) {
   const double n = std::round(s.real("t_max") / dt);
   if (n < 1 || std::abs(n * dt - s.real("t_max")) > 1e-9 * s.real("t_max"))
     s.reject("t_max", "must be a positive multiple of dt = " + format_double(dt));
+}
+
+void check_timing(const Scene& s) {
+  check_map(s);
+  for (const char* key : {"timing.ceiling.cartesian", "timing.ceiling.polar"})
+    if (s.reals(key).size() != 2 || !(s.reals(key)[0] <= s.reals(key)[1])) s.reject(key, "must be [low, high] with low <= high");
 }
 
 void check_first_integrals(const Scene& s) {
@@ -208,32 +249,58 @@ void run_map(Context& ctx, MapCost& cost) {
   cost = {true, wall_cart, wall_polar,
           static_cast<double>(g.npoints) * static_cast<double>(g.P.steps) * done_fraction};
 
-  // The map, the analytic boundary of the polar runs r0 >= 2l + (2mg/k) cos(theta0), cos(theta0) = y0/r0.
+  // The map, and the analytic boundary of the polar runs r0 >= 2l + (2mg/k) cos(theta0), cos(theta0) = y0/r0.
   Csv map({"x0", "y0", "H0", "eps_cartesian", "eps_polar", "diverged_cartesian", "diverged_polar",
            "diverge_step_polar"});
   std::int64_t agree = 0, counted = 0, both_alive = 0, polar_better = 0, cart_diverged = 0, polar_diverged = 0;
   const auto [l, m, k, gravity, dt, steps, blowup] = g.P;
+  const ElasticPendulumParams pendulum{l, m, k, gravity};
   const ElasticPendulumWithGravity cart{m, {SpringTerm{k, l}, GravityTerm{m, gravity}}};
+  std::vector<EnergyMapRow> rows;
   for (std::size_t i = 0; i < g.npoints; ++i) {
     const double x = g.x0[i], y = g.y0[i], r = std::hypot(x, y);
     const Point& p = points[i];
     const bool dc = p.cart.diverge_step >= 0, dp = p.polar.diverge_step >= 0;
-    map.row(x, y, cart.H(make_state<2>(Vec<2>(x, y), Vec<2>(0.0, 0.0))), p.cart.eps, p.polar.eps,
-            static_cast<std::int64_t>(dc), static_cast<std::int64_t>(dp), p.polar.diverge_step);
+    const auto at_rest = make_state<2>(Vec<2>(x, y), Vec<2>(0.0, 0.0));
+    const double H0 = cart.H(at_rest);
+    map.row(x, y, H0, p.cart.eps, p.polar.eps, static_cast<std::int64_t>(dc), static_cast<std::int64_t>(dp),
+            p.polar.diverge_step);
+    rows.push_back({x, y, H0, p.cart.eps, p.polar.eps, dc, dp, p.polar.diverge_step});
     cart_diverged += dc, polar_diverged += dp;
     if (r > 0.0) {  // the origin is no initial condition of the polar problem
       ++counted;
-      agree += dp == (r >= 2 * l + 2 * m * gravity / k * (y / r));
+      agree += dp == (r >= polar_boundary_radius(pendulum, y / r));
     }
     if (!dc && !dp) ++both_alive, polar_better += p.polar.eps < p.cart.eps;
   }
   ctx.write("map.csv", map);
+  ctx.out.write("map_grid.csv", grid_scans(g, rows));
   const auto fraction = [](std::int64_t a, std::int64_t b) { return static_cast<double>(a) / static_cast<double>(b); };
-  ctx.summary["reproduced"]["boundary_agreement"] = fraction(agree, counted);
-  ctx.summary["reproduced"]["fraction_polar_better"] = both_alive ? fraction(polar_better, both_alive) : 0.0;
-  ctx.summary["reproduced"]["fraction_diverged_polar"] = fraction(polar_diverged, static_cast<std::int64_t>(g.npoints));
-  ctx.summary["reproduced"]["fraction_diverged_cartesian"] = fraction(cart_diverged, static_cast<std::int64_t>(g.npoints));
-  ctx.summary["grid"] = {{"nx", g.xs.size()}, {"ny", g.ys.size()}, {"points", g.npoints}, {"steps", g.P.steps}};
+  auto& reproduced = ctx.summary["reproduced"];
+  reproduced["boundary_agreement"] = fraction(agree, counted);
+  reproduced["fraction_polar_better"] = both_alive ? fraction(polar_better, both_alive) : 0.0;
+  reproduced["fraction_diverged_polar"] = fraction(polar_diverged, static_cast<std::int64_t>(g.npoints));
+  reproduced["fraction_diverged_cartesian"] = fraction(cart_diverged, static_cast<std::int64_t>(g.npoints));
+  reproduced["polar_energy_mismatch"] = polar_mismatch(pendulum, rows, polar_from_cartesian);
+  reproduced["printed_63_energy_mismatch"] = polar_mismatch(pendulum, rows, [](const PhaseState<2>& z) {
+    return make_state<2>(polar_position_as_printed_63(z.q), Vec<2>(0.0, 0.0));  // (at rest: p = 0 in either)
+  });
+  ctx.summary["grid"] = {{"nx", g.xs.size()}, {"ny", g.ys.size()}, {"points", g.npoints}, {"steps", g.P.steps},
+                         {"dx", spacing(g.xs)}, {"dy", spacing(g.ys)}};
+  ctx.summary["pendulum"] = {{"dt_omega", dt * spring_frequency(pendulum)},
+                             {"dt_omega_bound", method_info("symplectic_euler_pq").oscillatory_bound},  // the registry's
+                             {"pivot_energy", pivot_energy(pendulum)}};
+  ctx.summary["map_statistics"] = to_json(energy_map_statistics(rows, pendulum, dt, s.real("map_statistics.ring_half_width")));
+}
+
+// The local order between the two smallest step sizes: the slope of log(err) against log(h) there.
+double local_order(const std::vector<double>& h, const std::vector<double>& err) {
+  std::vector<std::pair<double, double>> pts;
+  for (std::size_t i = 0; i < h.size(); ++i)
+    if (h[i] > 0 && err[i] > 0 && std::isfinite(h[i]) && std::isfinite(err[i])) pts.emplace_back(h[i], err[i]);
+  std::sort(pts.begin(), pts.end());
+  if (pts.size() < 2 || pts[0].first == pts[1].first) return std::nan("");
+  return std::log(pts[1].second / pts[0].second) / std::log(pts[1].first / pts[0].first);
 }
 
 // ---- Section 5.2, free particle (m = 1): polar symplectic Euler changes p_x by
@@ -284,6 +351,16 @@ void run_first_integrals(Context& ctx) {
   ctx.summary["reproduced"]["cartesian_L_max_rel_drift"] = L_drift;  // with compensated summation
   ctx.summary["reproduced"]["cartesian_L_max_rel_drift_plain"] = L_drift_plain;
   ctx.summary["orders"] = {{"polar_px_change_per_step", px_fit.order}};
+  ctx.summary["fits"] = {{"polar_px_change_per_step", to_json(px_fit)}};
+  // |q_J| at the end of the angular-momentum run, and the round-off of evaluating L = x p_y - y p_x
+  // there: eps |q_J| |p| / |L_0| (p is constant for the free particle).
+  const double q_end = zc.z.q.norm();
+  ctx.summary["first_integrals"] = {
+      {"h", {{"min", hL}, {"max", *std::max_element(hs.begin(), hs.end())}, {"count", hs.size()}}},
+      {"initial_conditions", starts.size()},
+      {"px_local_order", local_order(hs, change)},
+      {"q_end", q_end},
+      {"L_eval_roundoff", std::numeric_limits<double>::epsilon() * q_end * zL.p.norm() / std::abs(L0)}};
 }
 
 // ---- Cost: the batched kernel (from the map of this run, else on a sample of
@@ -350,6 +427,20 @@ void run_timing(Context& ctx, const MapCost& map) {
   timing["method"] = "kernel timed on the " + kernel_method +
                      "; scalar: the straightforward scalar loop (one trajectory at a time) on timing.scalar_points "
                      "initial conditions of timing.scalar_steps steps, single thread";
+  timing["kernel_isa_name"] = kernels.front().name;
+  timing["threads"] = ctx.threads;
+  if (map.ran) timing["map_wall_total_s"] = wall_cart + wall_polar;
+  // 2 n_x n_y J: one run per coordinate system and grid point
+  timing["trajectory_steps"] = 2.0 * static_cast<double>(g.npoints) * static_cast<double>(g.P.steps);
+  // each kernel against its target and the hardware ceiling (the scene's estimates)
+  for (const auto c : {Coordinates::cartesian, Coordinates::polar}) {
+    const std::string name = coordinates_name(c);
+    const double ns = c == Coordinates::cartesian ? ns_cart : ns_polar;
+    const auto ceiling = s.reals("timing.ceiling." + name);
+    timing["ceiling_ns"][name] = {{"min", ceiling[0]}, {"max", ceiling[1]}};
+    timing["ceiling_fraction"][name] = {{"min", ceiling[0] / ns}, {"max", ceiling[1] / ns}};
+    timing["target_verdict"][name] = ns <= s.real("timing.target." + name) ? "meets" : "misses";
+  }
   ctx.summary["timing"] = timing;
 }
 
@@ -363,13 +454,13 @@ int main(int argc, char** argv) {
                       {}};
   MapCost map_cost;  // the map study's kernel wall time, for the timing study of the same run
   std::vector<std::string> map_uses = kMapKeys, timing_uses = kMapKeys;
-  map_uses.push_back("checkpoint");
+  map_uses.insert(map_uses.end(), {"checkpoint", "map_statistics"});
   timing_uses.push_back("timing");
   spec.studies = {
-      {"map", "000 Fig 6", {"map.csv"}, map_uses, check_map, [&](Context& ctx) { run_map(ctx, map_cost); }},
+      {"map", "000 Fig 6", {"map.csv", "map_grid.csv"}, map_uses, check_map, [&](Context& ctx) { run_map(ctx, map_cost); }},
       {"first_integrals", "000 Sec 5.2", {"first_integrals.csv", "angular_momentum.csv"}, {"first_integrals"},
        check_first_integrals, run_first_integrals},
-      {"timing", "cost: batched kernel against the scalar loop, ns per step", {}, timing_uses, check_map,
+      {"timing", "cost: batched kernel against the scalar loop, ns per step", {}, timing_uses, check_timing,
        [&](Context& ctx) { run_timing(ctx, map_cost); }},
   };
   return run_experiment(argc, argv, std::move(spec), GEOMINT_EXPERIMENT_DIR);

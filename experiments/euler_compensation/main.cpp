@@ -5,13 +5,17 @@
 //          the compensating point transformation (82)
 //   Fig 9  error in H against h for both: fitted orders 1 and 2
 // plus what the accuracy costs: ns per step and error against wall time.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <numbers>
+#include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
+#include "geomint/analysis/work_precision.hpp"
 #include "geomint/core/integrate.hpp"
 #include "geomint/integrators/explicit_euler.hpp"
 #include "geomint/integrators/runge_kutta4.hpp"
@@ -48,10 +52,11 @@ struct ScalarFigure {
   double compensated_max_rel_err = 0;  // Euler in ybar, mapped back by Psi^{-1}
 };
 
-template <class Sys, class Psi>
-ScalarFigure scalar_figure(const Sys& sys, const Psi& psi, double y0, double h, std::int64_t steps) {
+// Explicit Euler in y on sys and in ybar = Psi(y) on `field` (the transformed equation (3), or a
+// field to be checked against it), both from y0.
+template <class Sys, class Psi, class Field>
+ScalarFigure scalar_figure(const Sys& sys, const Psi& psi, const Field& field, double y0, double h, std::int64_t steps) {
   ScalarFigure fig;
-  const TransformedODE transformed{sys, psi};  // 000 eq. (3)
   double y = y0, ybar = psi(y0);
   ErrorSeries euler_err, compensated_err;
   for (std::int64_t j = 0; j <= steps; ++j) {
@@ -62,7 +67,7 @@ ScalarFigure scalar_figure(const Sys& sys, const Psi& psi, double y0, double h, 
     compensated_err.add(relative_error(y_comp, exact));
     fig.trajectory.row(j, t, exact, y, y_comp, psi(exact), psi(y), ybar);
     y = explicit_euler(sys, y, h);
-    ybar = explicit_euler(transformed, ybar, h);
+    ybar = explicit_euler(field, ybar, h);
   }
   fig.euler_max_rel_err = euler_err.max_abs();
   fig.compensated_max_rel_err = compensated_err.max_abs();
@@ -134,18 +139,47 @@ std::vector<EnergyRun> oscillator_runs(const std::vector<std::string>& methods, 
   return runs;
 }
 
-// log-log interpolation of err(wall) at `wall`, on a curve sorted by wall time; NaN outside it.
-double error_at_wall_time(std::vector<std::pair<double, double>> curve, double wall) {
-  std::sort(curve.begin(), curve.end());
-  for (std::size_t i = 0; i + 1 < curve.size(); ++i) {
-    const auto [w0, e0] = curve[i];
-    const auto [w1, e1] = curve[i + 1];
-    if (w0 <= wall && wall <= w1 && w1 > w0) {
-      const double s = std::log(wall / w0) / std::log(w1 / w0);
-      return std::exp(std::log(e0) + s * (std::log(e1) - std::log(e0)));
+// The first wall time at which the work-precision curves of two methods cross (both interpolated
+// linearly in log-log between their measured runs), and the error there; nullopt if they do not
+// cross where both are measured. Between the merged break points the difference of the log errors
+// is linear in log(wall), so a crossing is found exactly.
+struct Crossing {
+  double wall_s, err;
+};
+std::optional<Crossing> crossover(const std::vector<CostRun>& a, const std::vector<CostRun>& b) {
+  const auto by_wall = [](const CostRun& x, const CostRun& y) { return x.wall_s < y.wall_s; };
+  const double lo = std::max(std::min_element(a.begin(), a.end(), by_wall)->wall_s,
+                             std::min_element(b.begin(), b.end(), by_wall)->wall_s);
+  const double hi = std::min(std::max_element(a.begin(), a.end(), by_wall)->wall_s,
+                             std::max_element(b.begin(), b.end(), by_wall)->wall_s);
+  if (!(lo < hi)) return std::nullopt;
+  std::vector<double> walls{lo, hi};
+  for (const auto* runs : {&a, &b})
+    for (const CostRun& r : *runs)
+      if (lo <= r.wall_s && r.wall_s <= hi) walls.push_back(r.wall_s);
+  std::sort(walls.begin(), walls.end());
+  walls.erase(std::unique(walls.begin(), walls.end()), walls.end());
+  std::optional<std::tuple<double, double, double>> prev;  // (wall, log err_a - log err_b, log err_a)
+  for (double w : walls) {
+    const auto ea = error_at_wall(a, w), eb = error_at_wall(b, w);
+    if (!ea || !eb) continue;
+    const double la = std::log(*ea), d = la - std::log(*eb);
+    if (prev) {
+      const auto [w0, d0, la0] = *prev;
+      if (d0 == 0) return Crossing{w0, std::exp(la0)};
+      if (d0 * d < 0 || d == 0) {
+        const double wc = std::exp(std::log(w0) + d0 / (d0 - d) * (std::log(w) - std::log(w0)));
+        return Crossing{wc, *error_at_wall(a, wc)};
+      }
     }
+    prev = std::make_tuple(w, d, la);
   }
-  return std::numeric_limits<double>::quiet_NaN();
+  return std::nullopt;
+}
+
+// The smallest and largest of a scene's list of steps, and their number.
+json h_range(const std::vector<double>& hs) {
+  return {{"min", *std::min_element(hs.begin(), hs.end())}, {"max", *std::max_element(hs.begin(), hs.end())}, {"count", hs.size()}};
 }
 
 // What Figs 8-9 and the cost study may name: the methods that step the oscillator, and (82).
@@ -161,6 +195,9 @@ Schema schema() {
       .real("decay.y0", positive(), "initial value y(0) > 0")
       .real("decay.h", positive(), "step of explicit Euler (Fig 2); h alpha <= 2 (stability)")
       .integer("decay.steps", at_least(1), "number of steps shown in Fig 2")
+      .real("decay.printed_alpha", positive(),
+            "alpha at which the transformed field (16) as printed, ybar' = -alpha, is checked against (15) "
+            "(they coincide at alpha = 1); h alpha <= 2")
       .real("gompertz.a", positive(), "growth parameter a of (17)")
       .real("gompertz.b", positive(), "growth parameter b of (17)")
       .real("gompertz.y0", positive(), "initial value, 0 < y0 < e^{a/b} (domain of (18))")
@@ -186,9 +223,10 @@ Schema schema() {
 // ---- checks across keys, per study ----
 
 void check_decay(const Scene& s) {
-  if (s.real("decay.h") * s.real("decay.alpha") > method_info("explicit_euler").real_bound)
-    s.reject("decay.h", "explicit Euler on y' = -alpha y is unstable for h > 2/alpha = " +
-                            format_double(2.0 / s.real("decay.alpha")));
+  for (const char* key : {"decay.alpha", "decay.printed_alpha"})
+    if (s.real("decay.h") * s.real(key) > method_info("explicit_euler").real_bound)
+      s.reject("decay.h", std::string("explicit Euler on y' = -alpha y is unstable for h > 2/alpha = ") +
+                              format_double(2.0 / s.real(key)) + " (alpha = " + key + ")");
 }
 
 void check_gompertz(const Scene& s) {
@@ -232,7 +270,7 @@ State initial_state(const Scene& s) { return make_state(s.real("oscillator.q0"),
 template <class Sys, class Psi>
 void write_scalar_figure(Context& ctx, const std::string& figure, const std::string& key, const Sys& sys,
                          const Psi& psi, double y0, double h, std::int64_t steps) {
-  const ScalarFigure fig = scalar_figure(sys, psi, y0, h, steps);
+  const ScalarFigure fig = scalar_figure(sys, psi, TransformedODE{sys, psi}, y0, h, steps);  // 000 eq. (3)
   ctx.write(figure + ".csv", fig.trajectory);
   ctx.write(figure + "_exact.csv", fig.exact);
   ctx.summary["reproduced"][key + "_compensated_max_rel_err"] = fig.compensated_max_rel_err;
@@ -245,6 +283,13 @@ void run_decay(Context& ctx) {
   const ExponentialDecay decay{s.real("decay.alpha")};
   write_scalar_figure(ctx, "fig2_decay", "decay", decay, DecayCompensation{decay.alpha}, s.real("decay.y0"),
                       s.real("decay.h"), s.integer("decay.steps"));
+  // (16) as printed, ybar' = -alpha, in place of the field of (15), at decay.printed_alpha (at the
+  // alpha = 1 of Fig 2 the two coincide): the error of Euler in ybar mapped back by (15).
+  const ExponentialDecay check{s.real("decay.printed_alpha")};
+  ctx.summary["reproduced"]["decay_printed_field_max_rel_err"] =
+      scalar_figure(check, DecayCompensation{check.alpha}, DecayFieldAsPrinted16{check.alpha}, s.real("decay.y0"),
+                    s.real("decay.h"), s.integer("decay.steps"))
+          .compensated_max_rel_err;
 }
 
 void run_gompertz(Context& ctx) {
@@ -360,6 +405,7 @@ void run_convergence(Context& ctx) {
       {"energy", "max over t_j = j h in [0, convergence.t_end] of |H(q_j, p_j) - H(q_0, p_0)|; *_rms: eq. (50)"},
       {"ee", "max over t_j in [0, convergence.t_end] of |y_j - y(t_j)|"},
       {"compensated_max_rel_err", "max over the steps of Figs 2/3 of |Psi^{-1}(ybar_j) - y(t_j)| / |y(t_j)|"}};
+  ctx.summary["h_range"]["convergence"] = h_range(hs);
 }
 
 // ---- What the accuracy costs: median wall time of each method to t_end over
@@ -385,7 +431,7 @@ void run_timing(Context& ctx) {
     return oscillator_runs(methods, z0, timing_hs[i], k, steps_to(t_end, timing_hs[i]));
   });
   Csv cost({"method", "h", "steps", "wall_s", "ns_per_step", "force_evals", "energy_err_max"});
-  std::vector<std::vector<std::pair<double, double>>> curves(methods.size());  // (wall, error) per method
+  std::vector<std::vector<CostRun>> curves(methods.size());  // per method: the runs of timing.h
   for (std::size_t i = 0; i < timing_hs.size(); ++i) {
     const double h = timing_hs[i];
     const std::int64_t n = steps_to(t_end, h);
@@ -393,7 +439,7 @@ void run_timing(Context& ctx) {
       const double wall = seconds(methods[m], h, n);
       const EnergyRun& r = timing_runs[i][m];
       cost.row(label_of(methods[m]), h, n, wall, 1e9 * wall / static_cast<double>(n), r.force_evals, r.max_err);
-      curves[m].emplace_back(wall, r.max_err);
+      curves[m].push_back({h, static_cast<double>(n), wall, static_cast<double>(r.force_evals), r.max_err});
     }
   }
   ctx.write("timing.csv", cost);
@@ -405,6 +451,10 @@ void run_timing(Context& ctx) {
   for (const auto& m : methods)
     ns_per_step[label_of(m)] = 1e9 * seconds(m, h8, n_timing) / static_cast<double>(n_timing);
   timing["ns_per_step"] = ns_per_step;
+  json relative;  // ns per step relative to the first method of timing.methods
+  for (const auto& m : methods)
+    relative[label_of(m)] = ns_per_step[label_of(m)].get<double>() / ns_per_step[label_of(methods[0])].get<double>();
+  timing["relative_cost"] = relative;
   if (ns_per_step.contains("se") && ns_per_step.contains("se_compensated"))
     timing["ns_per_step_ratio_compensated_over_se"] =
         ns_per_step["se_compensated"].get<double>() / ns_per_step["se"].get<double>();
@@ -414,19 +464,25 @@ void run_timing(Context& ctx) {
   // that all methods cover.
   double w_lo = 0, w_hi = std::numeric_limits<double>::infinity();
   for (const auto& curve : curves) {
-    const auto [lo, hi] = std::minmax_element(curve.begin(), curve.end());
-    w_lo = std::max(w_lo, lo->first), w_hi = std::min(w_hi, hi->first);
+    const auto [lo, hi] = std::minmax_element(curve.begin(), curve.end(),
+                                              [](const CostRun& a, const CostRun& b) { return a.wall_s < b.wall_s; });
+    w_lo = std::max(w_lo, lo->wall_s), w_hi = std::min(w_hi, hi->wall_s);
   }
-  const auto or_null = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
+  const auto or_null = [](std::optional<double> v) { return v ? json(*v) : json(nullptr); };
   if (w_lo < w_hi) {
     const double w_star = std::sqrt(w_lo * w_hi);
     json at_wall{{"wall_s", w_star}};
-    for (std::size_t m = 0; m < methods.size(); ++m)
-      at_wall[label_of(methods[m])] = or_null(error_at_wall_time(curves[m], w_star));
+    for (std::size_t m = 0; m < methods.size(); ++m) at_wall[label_of(methods[m])] = or_null(error_at_wall(curves[m], w_star));
     timing["error_at_equal_wall_time"] = at_wall;
   } else {
     timing["error_at_equal_wall_time"] = nullptr;  // timing.h gives no common wall-time range
   }
+  // Where the work-precision curves of the first two methods cross (null: not in the measured range).
+  const auto cross = methods.size() > 1 ? crossover(curves[0], curves[1]) : std::nullopt;
+  timing["crossover"] = cross ? json{{"methods", {label_of(methods[0]), label_of(methods[1])}},
+                                     {"wall_s", cross->wall_s}, {"err", cross->err}}
+                              : json(nullptr);
+  ctx.summary["h_range"]["timing"] = h_range(timing_hs);
 }
 
 }  // namespace

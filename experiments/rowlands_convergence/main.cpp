@@ -9,12 +9,15 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <tuple>
 #include <utility>
 #include <vector>
 
+#include "geomint/analysis/work_precision.hpp"
 #include "geomint/core/integrate.hpp"
 #include "geomint/methods/methods.hpp"
 #include "geomint/methods/registry.hpp"
@@ -82,6 +85,21 @@ ElasticPendulumParams pendulum_of(const Scene& s) {
   return {s.real("pendulum.l"), s.real("pendulum.m"), s.real("pendulum.k"), s.real("pendulum.g")};
 }
 
+// The registry labels of methods (their CSV columns, for the figures).
+json labels_of(const std::vector<std::string>& methods) {
+  json out = json::array();
+  for (const auto& m : methods) out.push_back(label_of(m));
+  return out;
+}
+
+// What both studies report about the scene: the step sizes and the initial conditions.
+void scene_summary(Context& ctx) {
+  const auto hs = ctx.scene.reals("h");
+  ctx.summary["h_range"] = {{"min", *std::min_element(hs.begin(), hs.end())},
+                            {"max", *std::max_element(hs.begin(), hs.end())}, {"count", hs.size()}};
+  ctx.summary["initial_conditions"] = ctx.scene.real_rows("initial").size();
+}
+
 Schema schema() {
   const auto choices = method_choices<Counting<ElasticPendulumWithGravity>>();
   Schema s;
@@ -101,7 +119,9 @@ Schema schema() {
       .real("reference.rtol", positive(), "relative tolerance of the odeint Bulirsch-Stoer reference")
       .real("reference.atol", positive(), "absolute tolerance of the odeint Bulirsch-Stoer reference")
       .texts("timing.methods", choices, 1, "methods of the cost study (registry names or labels)")
-      .integer("timing.repeats", at_least(1), "timed repetitions per run (the median is reported)");
+      .integer("timing.repeats", at_least(1), "timed repetitions per run (the median is reported)")
+      .reals("timing.error_targets", positive(), 1,
+             "phase errors for which the wall time and the force evaluations to reach them are reported");
   return s;
 }
 
@@ -127,6 +147,55 @@ void check_common(const Scene& s) {
 }
 
 // ---- Fig. 4: convergence of every named method, for every initial condition ----
+
+// The ranges of the fitted orders (orders_by_initial) over all initial conditions and norms, of the
+// methods whose kernel is of order 2 (Stormer-Verlet, the Rowlands kernel alone and processed), by
+// their declared order: {"order_2": {min, max}, "order_4": {min, max}}.
+json order_ranges(const std::vector<std::string>& methods, const json& by_initial) {
+  std::map<int, std::pair<double, double>> ranges;
+  for (const auto& m : methods) {
+    if (method_info(m).kernel_order != 2) continue;
+    auto& [lo, hi] = ranges.try_emplace(method_info(m).order, std::numeric_limits<double>::infinity(),
+                                        -std::numeric_limits<double>::infinity()).first->second;
+    for (const auto& o : by_initial)
+      for (const char* suffix : {"_energy", "_energy_max", "_phase"})
+        if (o.contains(order_name(m) + suffix)) {
+          const double v = o[order_name(m) + suffix].get<double>();
+          if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+        }
+  }
+  json out = json::object();
+  for (const auto& [order, range] : ranges)
+    if (range.first <= range.second) out["order_" + std::to_string(order)] = {{"min", range.first}, {"max", range.second}};
+  return out;
+}
+
+// 000 (32)-(33) as printed against the kernel alone: {min, max, h} of the ratio of their errors at the
+// smallest h, over all initial conditions and the recorded norms (to leading order the error is
+// proportional to 1/12 - c: the analysis predicts (1/12 - 1/24) / (1/12) = 1/2); nullopt unless the
+// convergence study runs both. runs[i * hs.size() + j][k]: initial condition i, step hs[j], method k.
+std::optional<json> printed_over_kernel(const std::vector<std::string>& methods,
+                                        const std::vector<std::vector<Errors>>& runs, const std::vector<double>& hs,
+                                        std::size_t n_initial, Observables obs) {
+  const auto index_of = [&](const char* name) {
+    const auto it = std::find_if(methods.begin(), methods.end(), [&](const auto& m) { return label_of(m) == label_of(name); });
+    return it == methods.end() ? std::nullopt : std::optional(static_cast<std::size_t>(it - methods.begin()));
+  };
+  const auto kp = index_of("rowlands_printed"), kk = index_of("rowlands_kernel");
+  if (!kp || !kk) return std::nullopt;
+  const std::size_t j_min = static_cast<std::size_t>(std::min_element(hs.begin(), hs.end()) - hs.begin());
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (std::size_t i = 0; i < n_initial; ++i) {
+    const Errors &printed = runs[i * hs.size() + j_min][*kp], &kernel = runs[i * hs.size() + j_min][*kk];
+    std::vector<std::pair<double, double>> pairs;
+    if (obs.phase) pairs.emplace_back(printed.phase, kernel.phase);
+    if (obs.energy) pairs.emplace_back(printed.energy_rms, kernel.energy_rms);
+    for (const auto& [a, b] : pairs)
+      if (b != 0 && std::isfinite(a / b)) lo = std::min(lo, a / b), hi = std::max(hi, a / b);
+  }
+  if (!(lo <= hi)) return std::nullopt;
+  return json{{"min", lo}, {"max", hi}, {"h", hs[j_min]}};
+}
 
 template <class Sys>
 void convergence_with(Context& ctx, const Sys& sys) {
@@ -244,6 +313,39 @@ void convergence_with(Context& ctx, const Sys& sys) {
   }
   if (obs.phase) norms["phase"] = "|z_N - z(t_end)|_2 over (x, y, px, py), against the odeint Bulirsch-Stoer reference";
   ctx.summary["norms"] = norms;
+
+  ctx.summary["methods"]["convergence"] = labels_of(methods);
+  for (const auto& m : methods) ctx.summary["declared_orders"][label_of(m)] = method_info(m).order;  // the registry's
+  scene_summary(ctx);
+  ctx.summary["pendulum"] = {{"y_equilibrium", hanging_equilibrium_y(pendulum_of(s))}};
+  ctx.summary["order_ranges"] = order_ranges(methods, by_initial);
+  if (const auto ratio = printed_over_kernel(methods, runs, hs, initial.size(), obs)) ctx.summary["printed_over_kernel"] = *ratio;
+}
+
+// What each method's accuracy costs (summary.json timing.cost.<label>): at the smallest h, the force
+// evaluations per step; its smallest error; its error at the wall time of the most expensive run of
+// the first method (`budget`, at which the methods are compared); and for every target error the wall time
+// and the force evaluations at which its error first reaches it, or null (reaches: false) where the
+// measured step sizes do not reach it (log-log interpolation, never extrapolated).
+json cost_summary(const std::vector<std::string>& methods, const std::vector<std::vector<CostRun>>& all,
+                  const std::vector<double>& targets, double budget) {
+  const auto or_null = [](std::optional<double> v) { return v ? json(*v) : json(nullptr); };
+  json out;
+  for (std::size_t k = 0; k < methods.size(); ++k) {
+    const std::vector<CostRun> runs = by_decreasing_h(all[k]);
+    if (runs.empty()) continue;
+    json c{{"evals_per_step", runs.back().evals / runs.back().steps},
+           {"min_err", std::min_element(runs.begin(), runs.end(), [](const auto& a, const auto& b) { return a.err < b.err; })->err},
+           {"err_at_equal_wall", or_null(error_at_wall(runs, budget))},
+           {"wall_to", json::array()}, {"evals_to", json::array()}, {"reaches", json::array()}};
+    for (double t : targets) {
+      c["wall_to"].push_back(or_null(cost_to_reach(runs, t, &CostRun::wall_s)));
+      c["evals_to"].push_back(or_null(cost_to_reach(runs, t, &CostRun::evals)));
+      c["reaches"].push_back(cost_to_reach(runs, t, &CostRun::evals).has_value());
+    }
+    out[label_of(methods[k])] = c;
+  }
+  return out;
 }
 
 // ---- What the accuracy costs: median wall time of each method from
@@ -278,6 +380,7 @@ void timing_with(Context& ctx, const Sys& sys) {
   });
   Csv cost({"method", "h", "steps", "wall_s", "ns_per_step", "force_evals", "phase_err"});
   json ns_per_step, timing;
+  std::vector<std::vector<CostRun>> runs(methods.size());  // per method, its runs of `h`
   const double h_ns = *std::min_element(hs.begin(), hs.end());
   for (std::size_t task = 0; task < counts.size(); ++task) {
     const std::string label = label_of(methods[task / nh]);
@@ -287,6 +390,7 @@ void timing_with(Context& ctx, const Sys& sys) {
       return median_seconds(repeats, [&] { do_not_optimize(integrate_inlined(m, z0, h, n)); });
     });
     cost.row(label, h, n, wall, 1e9 * wall / static_cast<double>(n), counts[task].evals, counts[task].phase);
+    runs[task / nh].push_back({h, static_cast<double>(n), wall, static_cast<double>(counts[task].evals), counts[task].phase});
     if (h == h_ns) ns_per_step[label] = 1e9 * wall / static_cast<double>(n);
   }
   ctx.write("timing.csv", cost);
@@ -295,7 +399,14 @@ void timing_with(Context& ctx, const Sys& sys) {
     timing["ns_per_step_ratio_rowlands_over_sv"] = ns_per_step["rowlands"].get<double>() / ns_per_step["sv"].get<double>();
   timing["method"] = "median of timing.repeats runs after one warm-up, steady_clock, single thread, from initial[0] "
                      "to t_end (pre- and postprocessing once, every call inlined); ns_per_step at the smallest h";
+  const double budget = largest_wall(by_decreasing_h(runs[0]));  // the most expensive run of the first method
+  timing["cost"] = cost_summary(methods, runs, s.reals("timing.error_targets"), budget);
+  timing["equal_wall_s"] = budget;
+  for (const auto& m : methods)
+    timing["relative_cost"][label_of(m)] = ns_per_step[label_of(m)].get<double>() / ns_per_step[label_of(methods[0])].get<double>();
   ctx.summary["timing"] = timing;
+  ctx.summary["methods"]["timing"] = labels_of(methods);
+  scene_summary(ctx);
 }
 
 void run_convergence(Context& ctx) {

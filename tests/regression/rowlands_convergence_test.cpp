@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -133,4 +134,50 @@ TEST(RowlandsConvergence, ReferenceIsAHundredTimesBelowEveryFittedError) {
   const auto& r = summary()["reproduced"];
   EXPECT_LT(r["reference_self_check"].get<double>(), 1e-12);
   EXPECT_GE(r["reference_margin"].get<double>(), 100.0);
+}
+
+TEST(RowlandsConvergence, OrderRangesHoldTheOrdersOfEveryInitialCondition) {
+  // order_ranges: over all initial conditions and norms, the methods with a second-order kernel by
+  // their declared order (order 2: Stormer-Verlet, the kernel alone, (32)-(33) as printed; order 4:
+  // the processed Rowlands methods).
+  const auto& ranges = summary()["order_ranges"];
+  const std::vector<std::pair<const char*, std::vector<std::string>>> groups = {
+      {"order_2", {"sv", "kernel_unprocessed", "rowlands_printed"}}, {"order_4", {"rowlands", "rowlands_cheap"}}};
+  for (const auto& [group, methods] : groups) {
+    const double lo = ranges[group]["min"].get<double>(), hi = ranges[group]["max"].get<double>();
+    double seen_lo = 1e300, seen_hi = -1e300;
+    for (const auto& o : summary()["orders_by_initial"])
+      for (const auto& m : methods)
+        for (const char* suffix : {"_energy", "_energy_max", "_phase"}) {
+          const double v = o[m + suffix].get<double>();
+          seen_lo = std::min(seen_lo, v), seen_hi = std::max(seen_hi, v);
+        }
+    EXPECT_EQ(lo, seen_lo) << group;
+    EXPECT_EQ(hi, seen_hi) << group;
+  }
+}
+
+TEST(RowlandsConvergence, PrintedCoefficientHalvesTheKernelsError) {
+  // To leading order the error of the processed method is proportional to 1/12 - c: with the printed
+  // c = 1/24 it is half that of the kernel alone (c = 0), at the smallest h, in both norms.
+  const auto& r = summary()["printed_over_kernel"];
+  EXPECT_NEAR(r["min"].get<double>(), 0.5, 0.01);
+  EXPECT_NEAR(r["max"].get<double>(), 0.5, 0.01);
+}
+
+TEST(RowlandsConvergence, CostSummaryOfTheTimingStudy) {
+  // Force evaluations per step: one gradient for Stormer-Verlet, a gradient and a Hessian-vector
+  // product for the Rowlands kernel (31) (Sec. 3.3 counts only the one-time processing as overhead).
+  const auto& cost = summary()["timing"]["cost"];
+  EXPECT_NEAR(cost["sv"]["evals_per_step"].get<double>(), 1.0, 0.05);
+  EXPECT_NEAR(cost["rowlands"]["evals_per_step"].get<double>(), 2.0, 0.05);
+  const auto targets = summary()["timing"]["cost"]["sv"]["reaches"].size();
+  for (const auto& [m, c] : cost.items()) {
+    ASSERT_EQ(c["reaches"].size(), targets) << m;
+    for (std::size_t i = 0; i < targets; ++i) {
+      EXPECT_EQ(c["reaches"][i].get<bool>(), !c["wall_to"][i].is_null()) << m;
+      EXPECT_EQ(c["reaches"][i].get<bool>(), !c["evals_to"][i].is_null()) << m;
+    }
+  }
+  EXPECT_EQ(summary()["methods"]["timing"].size(), cost.size());
 }

@@ -2,6 +2,7 @@
 // against finite differences, and the term assembly.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <type_traits>
 
 #include "geomint/systems/elastic_pendulum.hpp"
@@ -54,4 +55,25 @@ TEST(ElasticPendulum, TermsTheSceneCallsFor) {
     EXPECT_TRUE((std::is_same_v<std::decay_t<decltype(sys)>, ElasticPendulumWithGravity>));
     EXPECT_DOUBLE_EQ(sys.U_q(Vec<2>(0.0, -1.0))[1], -0.2);  // spring relaxed at |q| = l: gravity only
   });
+}
+
+TEST(ElasticPendulum, RadialOscillationOfSection41) {
+  // 000 Sec. 4.1: from rest, with the angle frozen, m r'' = -k (r - l) + m g cos(phi): at r* the
+  // radial force vanishes, and the turning point 2 r* - r(0) reaches 0 on the boundary.
+  const ElasticPendulumParams p{1.1, 1.3, 0.7, 0.2};
+  for (double c : {1.0, 0.3, -0.8}) {
+    const double r_star = radial_rest_radius(p, c);
+    EXPECT_NEAR(-p.k * (r_star - p.l) + p.m * p.g * c, 0.0, 1e-15);
+    EXPECT_NEAR(2 * r_star - polar_boundary_radius(p, c), 0.0, 1e-15);
+  }
+  // The boundary is the isoline H_0 = U(r = 0) = k l^2 / 2 for a release from rest at (x, y) = r (sin, cos).
+  const ElasticPendulumWithGravity cart{p.m, {SpringTerm{p.k, p.l}, GravityTerm{p.m, p.g}}};
+  for (double phi : {0.0, 0.9, 2.5}) {
+    const double b = polar_boundary_radius(p, std::cos(phi));
+    EXPECT_NEAR(cart.H(make_state<2>(Vec<2>(b * std::sin(phi), b * std::cos(phi)), Vec<2>(0.0, 0.0))), pivot_energy(p),
+                1e-14);
+  }
+  // Hanging at rest: no force at x = 0, y = l + m g / k.
+  EXPECT_LT(cart.U_q(Vec<2>(0.0, hanging_equilibrium_y(p))).norm(), 1e-15);
+  EXPECT_DOUBLE_EQ(spring_frequency(p), std::sqrt(0.7 / 1.3));
 }

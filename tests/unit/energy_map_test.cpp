@@ -12,6 +12,7 @@
 
 #include "geomint/integrators/symplectic_euler.hpp"
 #include "geomint/sweep/energy_map.hpp"
+#include "geomint/sweep/energy_map_statistics.hpp"
 #include "geomint/systems/elastic_pendulum.hpp"
 #include "geomint/transforms/polar.hpp"
 
@@ -181,4 +182,65 @@ TEST(EnergyMapTurn, CarriedThroughABlockStaysWithinAFewUlpOfSinAndCosOfTheta) {
   }
   EXPECT_GT(max_turn, 0.15);
   EXPECT_LT(worst, 2 * std::sqrt(128.0) * eps);
+}
+
+TEST(EnergyMapStatistics, CountsAgainstTheBoundaryOfSection41) {
+  // l = m = k = 1, g = 0.5: r* = 1 + cos(phi) / 2, boundary b = 2 + cos(phi) (cos(phi) = y/r).
+  const ElasticPendulumParams p{1.0, 1.0, 1.0, 0.5};
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  const std::vector<EnergyMapRow> rows = {
+      {0.0, 0.0, 0.0, nan, nan, true, true, 0},          // the origin
+      {0.0, 3.5, 0.2, 1e-3, nan, false, true, 10},       // outside (b = 3), diverged
+      {0.0, -1.5, 0.3, 1e-3, nan, false, true, 30},      // outside (b = 1), diverged
+      {0.0, 0.2, 0.4, 1e-3, nan, false, true, 1000},     // inside, r < r* = 1.5: inner, diverged
+      {0.3, 0.0, 0.5, 2e-3, 1e-3, false, false, -1},     // inside, r < r* = 1: polar better, off the ring
+      {0.0, 2.9, 0.6, 1e-3, nan, false, true, 5000},     // inside, r >= r*: outer, 0.1 inside b, diverged
+      {0.0, 2.7, 0.7, 1e-3, 3e-3, false, false, -1},     // outer candidate 0.3 inside b: Cartesian better
+      {1.05, 0.0, 0.8, 1e-3, 0.5e-3, false, false, -1},  // outer candidate, on the ring: polar better
+      {0.0, 1.0, 0.9, 2e-3, 1e-3, false, false, -1},     // inner candidate, on the ring: polar better
+  };
+  const EnergyMapStatistics s = energy_map_statistics(rows, p, 0.2, 0.2);
+  EXPECT_EQ(s.points, 9);
+  EXPECT_EQ(s.diverged_polar, 5);
+  EXPECT_EQ(s.diverged_cartesian, 1);
+  EXPECT_EQ(s.diverged_any, 5);
+  EXPECT_EQ(s.counted, 8);
+  EXPECT_EQ(s.criterion, 2);
+  EXPECT_EQ(s.disagree, 2);
+  EXPECT_EQ(s.diverged_inside, 2);
+  EXPECT_EQ(s.alive_outside, 0);
+  EXPECT_EQ(s.cartesian_diverged_off_origin, 0);
+  EXPECT_EQ(s.inner, 1);
+  EXPECT_DOUBLE_EQ(*s.inner_r_max, 0.2);
+  EXPECT_EQ(s.inner_candidates, 1);
+  EXPECT_EQ(s.outer, 1);
+  EXPECT_NEAR(*s.outer_dist_max, 0.1, 1e-15);
+  EXPECT_EQ(s.outer_candidates, 1);
+  EXPECT_NEAR(*s.outer_dist_all, 0.3, 1e-15);
+  EXPECT_DOUBLE_EQ(*s.H0_min_diverged, 0.2);
+  EXPECT_DOUBLE_EQ(*s.H0_max_alive, 0.9);
+  EXPECT_EQ(s.inside_steps->median, 1000);  // nearest rank, halves to even
+  EXPECT_EQ(s.inside_steps->max, 5000);
+  EXPECT_DOUBLE_EQ(s.inside_steps->time_max, 1000.0);
+  EXPECT_EQ(s.outside_steps->median, 10);
+  EXPECT_EQ(s.outside_steps->max, 30);
+  EXPECT_EQ(s.both_finite, 4);
+  EXPECT_EQ(s.cartesian_better, 1);
+  EXPECT_EQ(s.polar_better, 3);
+  EXPECT_DOUBLE_EQ(*s.eps_difference_min, -2e-3);
+  EXPECT_DOUBLE_EQ(*s.eps_difference_max, 1e-3);
+  EXPECT_DOUBLE_EQ(*s.ring_polar_better, 1.0);
+  EXPECT_DOUBLE_EQ(*s.off_ring_polar_better, 0.5);
+  EXPECT_DOUBLE_EQ(*s.ratio_p05, 0.5);
+  EXPECT_DOUBLE_EQ(*s.ratio_median, 0.5);
+  EXPECT_DOUBLE_EQ(*s.ratio_p95, 3.0);
+}
+
+TEST(EnergyMapStatistics, NearestRankQuantile) {
+  const std::vector<int> v = {1, 2, 3, 4, 5};
+  EXPECT_EQ(nearest_rank_quantile(v, 0.0), 1);
+  EXPECT_EQ(nearest_rank_quantile(v, 0.5), 3);
+  EXPECT_EQ(nearest_rank_quantile(v, 0.95), 5);  // round(3.8)
+  EXPECT_EQ(nearest_rank_quantile(std::vector<int>{1, 2, 3, 4}, 0.5), 3);  // round(1.5) = 2, to even
+  EXPECT_EQ(nearest_rank_quantile(std::vector<int>{1, 2, 3, 4, 5, 6}, 0.5), 3);  // round(2.5) = 2
 }

@@ -71,3 +71,16 @@ TEST(Polar, SymplecticEulerTrajectoriesAgreeAsHTendsToZero) {
     previous = gap;
   }
 }
+
+TEST(Polar, PrintedInverseOf63GivesAnotherPendulum) {
+  // (72) and (73) are one pendulum only with theta = atan2(x, y), the first half of (63); with the
+  // second half as printed (x = r cos(theta), y = r sin(theta)) gravity -m g y turns into
+  // -m g r sin(theta), and H differs by m g (y - x) at rest.
+  for (const Vec<2> q : {Vec<2>(0.7, 1.1), Vec<2>(-1.2, 0.4), Vec<2>(0.3, -0.9)}) {
+    const auto at_rest = [](const Vec<2>& position) { return make_state<2>(position, Vec<2>(0.0, 0.0)); };
+    EXPECT_NEAR(polar.H(at_rest(polar_from_cartesian(at_rest(q)).q)), cart.H(at_rest(q)), 1e-15);
+    const double printed = polar.H(at_rest(polar_position_as_printed_63(q)));
+    EXPECT_NEAR(printed - cart.H(at_rest(q)), m * g * (q[1] - q[0]), 1e-15);
+    EXPECT_GT(std::abs(printed - cart.H(at_rest(q))), 1e-3);
+  }
+}

@@ -78,7 +78,8 @@ using EnergyMapKernel = void (*)(Coordinates, const EnergyMapParams&, const doub
                                  EnergyMapPoint* out);
 
 struct EnergyMapKernelInfo {
-  std::string isa;  // "avx512", "avx2", "sse2"
+  std::string isa;   // "avx512", "avx2", "sse2"
+  std::string name;  // the instruction set as the reader knows it: "AVX-512", "AVX2", "SSE2"
   EnergyMapKernel run;
 };
 

@@ -133,6 +133,29 @@ struct ElasticPendulumParams {
   double l, m, k, g;
 };
 
+// The angular frequency of the spring mode, omega = sqrt(k/m) (000 Appendix A).
+inline double spring_frequency(const ElasticPendulumParams& p) { return std::sqrt(p.k / p.m); }
+
+// 000 Sec. 4.1: released from rest at r(0), phi(0) (phi from the downward vertical), with the
+// angular motion ignored, m r'' = -k (r - l) + m g cos(phi(0)): a radial oscillation about
+// r* = l + (m g / k) cos(phi(0)), between r(0) and 2 r* - r(0).
+inline double radial_rest_radius(const ElasticPendulumParams& p, double cos_phi) {
+  return p.l + p.m * p.g / p.k * cos_phi;
+}
+
+// 000 Sec. 4.1: the boundary of the polar runs, r(0) = 2l + (2mg/k) cos(phi(0)); on and beyond it
+// the radial oscillation reaches r = 0.
+inline double polar_boundary_radius(const ElasticPendulumParams& p, double cos_phi) {
+  return 2 * p.l + 2 * p.m * p.g / p.k * cos_phi;
+}
+
+// The energy at the pivot, U(r = 0) = k l^2 / 2 of (72)-(73): for a release from rest the boundary
+// above is the isoline H_0 = k l^2 / 2.
+inline double pivot_energy(const ElasticPendulumParams& p) { return 0.5 * p.k * (p.l * p.l); }
+
+// The hanging equilibrium x = 0, y = l + m g / k (y pointing down, 000 eq. (73)).
+inline double hanging_equilibrium_y(const ElasticPendulumParams& p) { return radial_rest_radius(p, 1.0); }
+
 using ElasticPendulumWithGravity = ElasticPendulumCartesian<SpringTerm, GravityTerm>;
 using ElasticPendulumWithoutGravity = ElasticPendulumCartesian<SpringTerm>;
 using ElasticPendulumPolarWithGravity = ElasticPendulumPolar<SpringPolarTerm, GravityPolarTerm>;

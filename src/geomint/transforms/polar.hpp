@@ -24,6 +24,13 @@ inline PhaseState<2> cartesian_from_polar(const PhaseState<2>& z) {
   return make_state<2>(Vec<2>(r * s, r * c), Vec<2>(z.p[0] * s + z.p[1] * c / r, z.p[0] * c - z.p[1] * s / r));
 }
 
+// (r, theta) of (x, y) as the second half of 000 eq. (63) prints it, x = r cos(theta), y = r sin(theta):
+// theta = atan2(y, x), measured from +x. It is not the inverse of the first half (atan2(x, y)), and
+// with it -m g y of (73) becomes -m g r sin(theta), not the -m g r cos(theta) of (72).
+inline Vec<2> polar_position_as_printed_63(const Vec<2>& q) {
+  return Vec<2>(std::hypot(q[0], q[1]), std::atan2(q[1], q[0]));
+}
+
 // The angular momentum about the origin in Cartesian coordinates, x p_y - y p_x (000 eq. (69));
 // with theta measured from +y it equals -p_theta.
 inline double angular_momentum(const PhaseState<2>& z) { return z.q[0] * z.p[1] - z.q[1] * z.p[0]; }

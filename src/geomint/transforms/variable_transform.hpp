@@ -16,6 +16,13 @@ struct DecayCompensation {
   double inverse(double ybar) const { return std::exp(alpha * ybar); }
 };
 
+// 000 eq. (16) as printed, ybar' = -alpha: the transformed field of Psi = ln y, not of (15). With (15)
+// it gives the exact solution only for alpha = 1 (kept to show the misprint, published.toml).
+struct DecayFieldAsPrinted16 {
+  double alpha;
+  double f(double) const { return -alpha; }
+};
+
 // 000 eq. (18): Psi(y) = (ln(1 - (b/a) ln y0) - ln(1 - (b/a) ln y)) / b for the
 // Gompertz equation (17) (C1 = 1, C2 = 0); defined for y < e^{a/b}.
 struct GompertzCompensation {
