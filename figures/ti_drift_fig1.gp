@@ -12,7 +12,7 @@
 # Left, dashed/dotted: the least-squares lines whose slopes are summary values's orders, drawn over the
 # points they were fitted on (as in experiments/ti_drift/main.cpp: ω h_eff ≤ 0.5, error above 10^3 ε).
 # Right: the fitted orders in the key only (their lines would hide under the closed forms).
-# Input: oscillator.csv, oscillator_closed_forms.csv; summary values (orders, stability bounds, force
+# Input: oscillator.csv, oscillator_closed_forms.csv; summary values (the methods, orders, stability bounds, force
 # evaluations per step); scene values (oscillator.t_omega).
 if (!exists("results")) results = 'results/ti_drift'
 load 'figures/common.gp'
@@ -25,9 +25,10 @@ eval need_num('TI_BOUND', summary_real('reproduced.ti_stability_bound'))
 FIT_XMAX = 0.5       # the fits of main.cpp: ω h_eff ≤ 0.5 ...
 FIT_FLOOR = 1e3 * 2.0**-52   # ... and error above the round-off floor 10^3 ε
 
-# the methods of oscillator.csv (registry labels), in the key's order; the fitted lines of all but
-# the simplified TI (it coincides with TI on the oscillator)
-CSV_METHODS = system(sprintf("awk -F, 'NR > 1 && !seen[$1]++ { printf \"%%s \", $1 }' '%s'", OSC))
+# the methods of oscillator.csv (registry labels, summary value equal_work.methods), in the key's order;
+# the fitted lines of all but the simplified TI (it coincides with TI on the oscillator)
+CSV_METHODS = summary_words('equal_work.methods')
+if (CSV_METHODS eq "") { exit error "equal_work.methods: missing from ".results."/figure_values.gp" }
 PREFERRED = "sv ti sti forest_ruth"
 eval ORDER_METHODS
 FITTED = ""
@@ -73,9 +74,10 @@ XMAX = (STATS_max > SV_BOUND ? STATS_max : SV_BOUND) * 1.25
 
 do for [fmt in FORMATS] {
     eval term(fmt, 'ti_drift_fig1', 17, 12.5)
-    set multiplot layout 1,2 title sprintf("{/:Bold Fig. 1:} harmonic oscillator, ω = 1, (q_0, p_0) = (0, 1); maxima over t ≤ %g/ω; " \
-        . "TI and the simplified TI processed\nequal work: h = e h_{eff}/2 with e force evaluations per step (%s)\n" \
-        . "left, dashed: least-squares fits over ωh_{eff} ≤ %g; vertical lines: stability bounds", T_OMEGA, EQUAL_WORK, FIT_XMAX)
+    set multiplot layout 1,2 title sprintf("{/:Bold Fig. 1:} harmonic oscillator, ω = 1, (q_0, p_0) = (0, 1), maxima over t ≤ %g/ω\n" \
+        . "TI and the simplified TI processed; equal work: h = e h_{eff}/2 for e force evaluations per step\n" \
+        . "(%s); left, dashed: fits over ωh_{eff} ≤ %g; vertical lines: stability bounds", \
+        T_OMEGA, EQUAL_WORK, FIT_XMAX) font ",9"
     set logscale xy
     set xrange [XMIN:XMAX]
     set format x "%g"

@@ -107,7 +107,7 @@ do for [fmt in FORMATS] {
     } else {
         set title sprintf("(a) no trajectory with max |error| > %s", sci(THR)) offset 0, -0.4
         set yrange [-1.5 * THR / ES:1.5 * THR / ES]
-        plot sample [t=0:TMAX:TMAX] '+' using (t / XS):(THR / ES) with lines ls 405 title sprintf("±%s (ensemble.outlier)", sci(THR)), \
+        plot sample [t=0:TMAX:TMAX] '+' using (t / XS):(THR / ES) with lines ls 405 title sprintf("±%s, the threshold of (a)", sci(THR)), \
              [t=0:TMAX:TMAX] '+' using (t / XS):(-THR / ES) with lines ls 405 notitle
     }
 

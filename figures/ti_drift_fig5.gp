@@ -5,9 +5,10 @@
 # it is flattest ("no growth"). The paper: during linear growth the cuts lie on one side (p_2 < 0),
 # otherwise they are spread symmetrically, so that the integral of (4.3) cancels.
 #   (a) the E error of that trajectory (fig4_trajectories.csv) around the two windows (shaded); inside
-#       the windows the line has the colour of the time, as the points below. Right axis: the share of
-#       the cuts with p_2 < 0 in tenths of each window.
-#   (b), (c) the cuts of each window, coloured by time t (colour bar), with the share of p_2 < 0.
+#       the windows the line has the colour of the time, as the points below.
+#   (b) on the same time axis, the share of the cuts with p_2 < 0 in tenths of each window (its own panel
+#       and axis, so that the two quantities do not share one).
+#   (c), (d) the cuts of each window, coloured by time t (colour bar), with the share of p_2 < 0.
 # Input: fig5_poincare.csv, fig4_trajectories.csv; summary values (trajectory, windows); scene values (h, k).
 if (!exists("results")) results = 'results/ti_drift'
 load 'figures/common.gp'
@@ -55,7 +56,7 @@ WA = W0("no_growth") < W0("growth") ? W0("no_growth") : W0("growth")
 WB = W1("no_growth") > W1("growth") ? W1("no_growth") : W1("growth")
 XA = WA - 0.5 * (WB - WA); XA = XA < 0 ? 0 : XA
 XB = WB + 0.5 * (WB - WA); XB = XB > TMAX ? TMAX : XB
-# (a), right axis: the share of cuts with p_2 < 0 per tenth of window w (smooth unique averages y at equal x)
+# (b): the share of cuts with p_2 < 0 per tenth of window w (smooth unique averages y at equal x)
 NBIN = 10
 bin(w) = W0(w) + (floor((column("t") - W0(w)) / ((W1(w) - W0(w)) / NBIN)) + 0.5) * (W1(w) - W0(w)) / NBIN
 
@@ -64,41 +65,51 @@ set style line 501 lc rgb '#8C8C8C' lw 0.9           # E error outside the windo
 set style line 502 lc rgb '#A8A8A8' lw 0.6 dt (3,3)  # p_2 = 0
 
 do for [fmt in FORMATS] {
-    eval term(fmt, 'ti_drift_fig5', 17, 16)
-    set multiplot title sprintf("{/:Bold Fig. 5:} Poincaré cuts q_1 = 0, p_1 > 0 of trajectory no. %d of Fig. 4 (Hénon–Heiles, k = %d, simplified Takahashi–Imada (1.6), h = %g):\n" \
-                                . "the window where its error of E changes fastest and the one where it is flattest (each point coloured by its time t)", TRAJ, K, H)
+    eval term(fmt, 'ti_drift_fig5', 17, 18)
+    set multiplot title sprintf("{/:Bold Fig. 5:} Poincaré cuts q_1 = 0, p_1 > 0 of trajectory no. %d of Fig. 4 (Hénon–Heiles, k = %d,\n" \
+                                . "simplified Takahashi–Imada (1.6), h = %g): the window where its error of E changes fastest\n" \
+                                . "and the one where it is flattest (each point coloured by its time t)", TRAJ, K, H) font ",9"
     set mxtics; set mytics
-
-    # ---- (a) the error of E along the trajectory, with the windows ----
     set lmargin at screen 0.09; set rmargin at screen 0.92
-    set tmargin at screen 0.89; set bmargin at screen 0.70
     set xrange [XA / XS:XB / XS]
-    set yrange [*:*]
-    set y2range [-0.05:1.05]
-    set y2tics 0, 0.5, 1 nomirror tc rgb '#882255'
-    set my2tics 5
-    set y2label "share of cuts with p_2 < 0" offset -1.5, 0 tc rgb '#882255'
-    set offsets 0, 0, graph 0.1, graph 0.1
     set format x "%g"; set format y "%g"
-    set xlabel "time t".TUNIT offset 0, 0.5
-    set ylabel sprintf("E_n − E_0  [10^{%d}]", EK) offset 1, 0
-    set title sprintf("(a) error of the modified energy E along trajectory no. %d, around the windows of (b) and (c) (shaded)", TRAJ) offset 0, -0.4
     set cbrange [0:1]
     unset colorbox
+    unset key
+
+    # ---- (a) the error of E along the trajectory, with the windows ----
+    set tmargin at screen 0.88; set bmargin at screen 0.74
+    set yrange [*:*]
+    set offsets 0, 0, graph 0.1, graph 0.1
+    set format x ""
+    unset xlabel
+    set ylabel sprintf("E_n − E_0  [10^{%d}]", EK) offset 1, 0
+    set title sprintf("(a) error of the modified energy E along trajectory no. %d, around the windows of (c) and (d) (shaded)", TRAJ) offset 0, -0.4
     set object 1 rect from W0("no_growth") / XS, graph 0 to W1("no_growth") / XS, graph 1 behind fc rgb '#EBEBEB' fs solid 1.0 noborder
     set object 2 rect from W0("growth") / XS, graph 0 to W1("growth") / XS, graph 1 behind fc rgb '#DCDCDC' fs solid 1.0 noborder
-    set label 1 "(b)" at (W0("no_growth") + W1("no_growth")) / 2 / XS, graph 0.9 center font ",8"
-    set label 2 "(c)" at (W0("growth") + W1("growth")) / 2 / XS, graph 0.9 center font ",8"
-    unset key
+    set label 1 "(c)" at (W0("no_growth") + W1("no_growth")) / 2 / XS, graph 0.88 center font ",8"
+    set label 2 "(d)" at (W0("growth") + W1("growth")) / 2 / XS, graph 0.88 center font ",8"
     plot TRJ using (mine("t") / XS):(mine("E_err") / ES) with lines ls 501, \
          for [w in WINDOWS] TRJ using (mine("t") / XS):(frac(w) == frac(w) ? mine("E_err") / ES : NaN):(frac(w)) \
-             with linespoints lc palette lw 2 pt 7 ps 0.35, \
-         for [w in WINDOWS] PC using (inw(w) ? bin(w) / XS : NaN):(column("p2") < 0 ? 1 : 0) smooth unique with histeps ls 503 axes x1y2
-    unset object 1; unset object 2; unset label 1; unset label 2
-    unset y2tics; unset y2label; unset my2tics
+             with linespoints lc palette lw 2 pt 7 ps 0.35
+    unset label 1; unset label 2
 
-    # ---- (b), (c) the cuts, one panel per window ----
-    set tmargin at screen 0.57; set bmargin at screen 0.07
+    # ---- (b) the share of the cuts with p_2 < 0, per tenth of each window, on the same time axis ----
+    set tmargin at screen 0.685; set bmargin at screen 0.585
+    set yrange [-0.05:1.05]
+    set ytics 0, 0.5, 1
+    set offsets 0, 0, 0, 0
+    set format x "%g"
+    set xlabel "time t".TUNIT offset 0, 0.5
+    set ylabel "share of p_2 < 0" offset 1, 0
+    set title "(b) share of the cuts with p_2 < 0 in each tenth of the windows" offset 0, -0.4
+    set arrow 2 from graph 0, first 0.5 to graph 1, first 0.5 nohead ls 502 back
+    plot for [w in WINDOWS] PC using (inw(w) ? bin(w) / XS : NaN):(column("p2") < 0 ? 1 : 0) smooth unique with histeps ls 503
+    unset object 1; unset object 2; unset arrow 2
+    set ytics autofreq
+
+    # ---- (c), (d) the cuts, one panel per window ----
+    set tmargin at screen 0.46; set bmargin at screen 0.06
     set xrange [QMIN:QMAX]
     set yrange [PMIN:PMAX]
     set offsets graph 0.03, graph 0.03, graph 0.03, graph 0.03
@@ -113,9 +124,9 @@ do for [fmt in FORMATS] {
         i = i + 1
         L = i == 1 ? 0.09 : 0.57
         set lmargin at screen L; set rmargin at screen L + 0.30
-        set colorbox user origin screen L + 0.31, screen 0.07 size screen 0.014, screen 0.50
+        set colorbox user origin screen L + 0.31, screen 0.06 size screen 0.014, screen 0.40
         set cbrange [W0(w) / XS:W1(w) / XS]
-        set title sprintf("(%s) %s: %s\n%d cuts, %.0f%% of them with p_2 < 0", i == 1 ? "b" : "c", WLABEL(w), fmtw(w), \
+        set title sprintf("(%s) %s: %s\n%d cuts, %.0f%% of them with p_2 < 0", i == 1 ? "c" : "d", WLABEL(w), fmtw(w), \
                           value("N_".w), 100.0 * value("NNEG_".w) / value("N_".w)) offset 0, -0.3
         plot PC using (inw(w) ? column("q2") : NaN):"p2":(column("t") / XS) with points pt 7 ps 0.12 lc palette
     }

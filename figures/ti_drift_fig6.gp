@@ -118,7 +118,7 @@ do for [fmt in FORMATS] {
         ALL_DIV eq "" ? "" : sprintf("(in (a) every run diverges at h = %s, the step size printed in the paper)", ALL_DIV))
 
     # ---- (a) the step-size scan ----
-    set lmargin at screen 0.095; set rmargin at screen 0.40
+    set lmargin at screen 0.115; set rmargin at screen 0.40
     set tmargin at screen 0.875; set bmargin at screen 0.555
     set logscale xy
     set xrange [HMIN / 1.6 : HMAX * 1.6]
@@ -132,7 +132,7 @@ do for [fmt in FORMATS] {
     set ytics add ("diverged" Y_DIV)
     unset mytics
     set xlabel "step size h" offset 0, 0.3
-    set ylabel sprintf("max_{t ≤ %g} |H(p_n, q_n) − H_0|", SCAN_T) offset 1, 0
+    set ylabel sprintf("max_{t ≤ %g} |H(p_n, q_n) − H_0|", SCAN_T) offset 2, 0
     set title sprintf("(a) step-size scan, %d runs per h", SCAN_N) offset 0, -0.4
     set key bottom right Left reverse samplen 1.5 width -3 font ",7"
     set arrow 1 from graph 0, first BLOWUP to graph 1, first BLOWUP nohead ls 203

@@ -13,7 +13,9 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <limits>
+#include <map>
 #include <numbers>
 #include <random>
 #include <stdexcept>
@@ -27,11 +29,14 @@
 #include "geomint/methods/methods.hpp"
 #include "geomint/methods/registry.hpp"
 #include "geomint/methods/scene_methods.hpp"
+#include "geomint/observables/ensemble_statistics.hpp"
 #include "geomint/observables/linear_fit.hpp"
 #include "geomint/observables/modified_energy.hpp"
 #include "geomint/observables/order_fit.hpp"
+#include "geomint/observables/stiffness.hpp"
 #include "geomint/observables/symplecticity.hpp"
 #include "geomint/runner/experiment.hpp"
+#include "geomint/runner/published.hpp"
 #include "geomint/runner/timing.hpp"
 #include "geomint/sweep/parallel_map.hpp"
 #include "geomint/systems/counting.hpp"
@@ -56,6 +61,49 @@ double slope(const std::vector<double>& x, const std::vector<double>& y) { retur
 // Adds the entries of `values` to summary[section] (indexing the summary afresh for each).
 void put(Context& ctx, const char* section, const json& values) {
   for (const auto& [k, v] : values.items()) ctx.summary[section][k] = v;
+}
+
+// {min, max} of a non-empty list.
+json range_of(const std::vector<double>& v) {
+  const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+  return {{"min", *lo}, {"max", *hi}};
+}
+
+// {min, max, mean} of a non-empty list.
+json spread_of(const std::vector<double>& v) {
+  json r = range_of(v);
+  double sum = 0;
+  for (double x : v) sum += x;
+  r["mean"] = sum / static_cast<double>(v.size());
+  return r;
+}
+
+// The entries of experiments/ti_drift/published.toml (read as the runner reads them): the report sets
+// some reproduced values against the printed ones in ways the runner's comparisons do not (the signed
+// difference of every comparison, standard scores, quantities derived from printed values).
+const std::vector<Published>& published_entries() {
+  static const std::vector<Published> entries =
+      read_published(std::filesystem::path(GEOMINT_EXPERIMENT_DIR) / "published.toml");
+  return entries;
+}
+
+const Published& published_entry(const std::string& key) {
+  for (const Published& e : published_entries())
+    if (e.key == key) return e;
+  throw std::logic_error("published.toml has no entry " + key);
+}
+
+double published_value(const std::string& key) { return published_entry(key).value.get<double>(); }
+
+// summary.difference_from_published.<key> = reproduced - published for every entry of the study with a
+// number on both sides (the runner's comparisons give the difference relative where the comparison is
+// relative, and none where the value is only reported).
+void put_differences(Context& ctx, const std::string& study) {
+  for (const Published& e : published_entries()) {
+    const json* r = json_at(ctx.summary, e.summary);
+    if (e.study == study && e.value.is_number() && r && r->is_number())
+      ctx.summary["difference_from_published"][e.key] = r->get<double>() - e.value.get<double>();
+  }
 }
 
 
@@ -143,10 +191,55 @@ void check_oscillator(const Scene& s) {
       s.reject("oscillator.omega_h", format_double(omega_h[i]) + " is beyond the stability bound of every named method");
 }
 
+// The closed form of Sect. 1.4 of a method at its own w h (start q_0 = 0), or NaN if it has none here.
+double closed_form(const std::string& method, double wh) {
+  const std::string name(method_info(method).name);
+  if (name == "stormer_verlet") return sv_oscillator_max_rel_energy_error(wh);
+  if (name == "takahashi_imada" || name == "simplified_takahashi_imada")
+    return wh < method_info(name).oscillatory_bound ? ti_oscillator_max_rel_energy_error(wh) : std::nan("");
+  return std::nan("");
+}
+
+// The largest sampled errors of a method's run at w h from z0 over t <= t_omega / w (processed where it has
+// processing): the scaled global error against the exact solution and the relative error of H.
+std::pair<double, double> oscillator_errors(const std::string& method, const Z1& z0, double h, double t_omega) {
+  const HarmonicOscillator& osc = kOscillator;
+  return with_method(method, osc, [&](const auto& m) {
+    double gm = 0, em = 0;
+    integrate(m, z0, h, std::llround(std::floor(t_omega / h)), [&](std::int64_t j, const Z1& z) {
+      const Z1 ex = osc.exact(z0, static_cast<double>(j) * h);
+      gm = std::max(gm, std::hypot(z.p[0] - ex.p[0], z.q[0] - ex.q[0]));  // (|e_p|^2 + w^2 |e_q|^2)^(1/2)
+      em = std::max(em, std::abs(osc.H(z) - osc.H(z0)) / osc.H(z0));
+    });
+    return std::pair{gm, em};
+  });
+}
+
+// The exponent of the growth of max_{m <= n} |z_m| with n along Stormer-Verlet on its stability bound
+// w h = 2 (from q = 0, p = 1, over n <= t_omega / w steps, fitted over n >= n_max / 10): 0 for a bounded
+// solution, 1 for the linear growth of the double root -1 of q_{n+1} + 2 q_n + q_{n-1} = 0 (004 Sect. 1.4).
+double sv_growth_exponent_at_bound(double t_omega) {
+  const double h = method_info("stormer_verlet").oscillatory_bound / kOscillator.w;
+  const std::int64_t n = std::llround(std::floor(t_omega / h));
+  std::vector<double> steps, size;
+  double largest = 0;
+  with_kernel("stormer_verlet", kOscillator, [&](const auto& m) {
+    integrate(m, make_state(0.0, 1.0), h, n, [&](std::int64_t j, const Z1& z) {
+      largest = std::max(largest, std::hypot(z.p[0], kOscillator.w * z.q[0]));
+      if (j > 0) steps.push_back(static_cast<double>(j)), size.push_back(largest);
+    });
+    return 0;
+  });
+  return power_law_exponent(steps, size, static_cast<double>(n) / 10);
+}
+
+constexpr double kClosedFormSplit = 1.0;  // the closed forms are compared apart below and above omega h_eff = 1
+constexpr double kExampleOmegaH = 0.1;    // the report's example: the values at the omega h_eff nearest this
+constexpr double kBisectionLo = 3.0, kBisectionHi = 3.9, kRadiusTolerance = 1e-12;  // TI's bound, bisected
+
 void run_oscillator(Context& ctx) {
   const Scene& s = ctx.scene;
   ctx.progress("Fig. 1: oscillator");
-  const HarmonicOscillator& osc = kOscillator;
   const Z1 z0 = make_state(0.0, 1.0);
   const double T1 = s.real("oscillator.t_omega");
   struct Pt {
@@ -166,16 +259,8 @@ void run_oscillator(Context& ctx) {
   for (double wh : s.reals("oscillator.omega_h")) {
     for (auto& m : methods) {
       const double h = step_at_equal_work(wh, m.evals);
-      if (beyond_bound(osc.w * h, m.bound)) continue;  // (TI at h = h_eff: omega h_eff < 2 sqrt(3))
-      const auto [g, e] = with_method(m.name, osc, [&](const auto& method) {  // processed where it has processing
-        double gm = 0, em = 0;
-        integrate(method, z0, h, std::llround(std::floor(T1 / h)), [&](std::int64_t j, const Z1& z) {
-          const Z1 ex = osc.exact(z0, static_cast<double>(j) * h);
-          gm = std::max(gm, std::hypot(z.p[0] - ex.p[0], z.q[0] - ex.q[0]));  // (|e_p|^2 + w^2 |e_q|^2)^(1/2)
-          em = std::max(em, std::abs(osc.H(z) - osc.H(z0)) / osc.H(z0));
-        });
-        return std::pair{gm, em};
-      });
+      if (beyond_bound(kOscillator.w * h, m.bound)) continue;  // (TI at h = h_eff: omega h_eff < 2 sqrt(3))
+      const auto [g, e] = oscillator_errors(m.name, z0, h, T1);
       oc.row(m.label, wh, wh, g, e);
       m.pts.push_back({wh, g, e});
     }
@@ -184,40 +269,116 @@ void run_oscillator(Context& ctx) {
 
   // The closed forms of Sect. 1.4 (start q0 = 0), over omega h_eff up to SV's bound (it runs at h = h_eff/2).
   const double sv_eff_bound = 2 * method_info("stormer_verlet").oscillatory_bound;
-  const double ti_bound = method_info("takahashi_imada").oscillatory_bound;
   Csv cf({"omega_h", "sv_rel_H", "ti_rel_H"});
   for (int i = 1; i <= 400; ++i) {
     const double y = sv_eff_bound * i / 401.0;
-    const double ti = y < ti_bound ? std::pow(y, 6) / (36 * (std::pow(y, 4) - 12 * y * y + 48)) : std::nan("");
-    cf.row(y, y * y / (16 - y * y), ti);
+    cf.row(y, closed_form("stormer_verlet", y / 2), closed_form("takahashi_imada", y));
   }
   ctx.write("oscillator_closed_forms.csv", cf);
 
-  json orders, evals, eff_bound;
+  json orders, evals, eff_bound, labels = json::array(), points, fit_points, roundoff, largest;
   for (const auto& m : methods) {
     for (const bool energy : {false, true}) {
       const std::string name = m.label + (energy ? "_energy" : "_solution");
       std::vector<double> h, e;
       for (const auto& p : m.pts)
         if (p.h <= kFitMaxOmegaH) h.push_back(p.h), e.push_back(energy ? p.e : p.g);
-      orders[name] = fit_order(h, e, roundoff_floor(), name.c_str()).order;
+      const OrderFit fit = fit_order(h, e, roundoff_floor(), name.c_str());
+      orders[name] = fit.order;
+      fit_points[name] = fit.points;
+      for (std::size_t i = 0; i < h.size(); ++i)  // the largest step whose error is at the round-off plateau
+        if (!fit.used[i] && (!roundoff.contains(name) || h[i] > roundoff[name].get<double>())) roundoff[name] = h[i];
     }
     evals[m.label] = m.evals;
     eff_bound[m.label] = m.bound * 2 / static_cast<double>(m.evals);  // in omega h_eff
+    labels.push_back(m.label);
+    points[m.label] = m.pts.size();
+    const Pt& last = *std::max_element(m.pts.begin(), m.pts.end(), [](const Pt& a, const Pt& b) { return a.h < b.h; });
+    largest[m.label] = {{"omega_h", last.h}, {"max_global_err", last.g}, {"max_rel_H_err", last.e}};
   }
   put(ctx, "orders", orders);
-  ctx.summary["equal_work"] = {{"evals_per_step", evals}, {"omega_h_eff_bound", eff_bound}};
+  ctx.summary["equal_work"] = {{"evals_per_step", evals}, {"omega_h_eff_bound", eff_bound}, {"methods", labels}};
+
+  const auto omega_h = s.reals("oscillator.omega_h");
+  json bounds;
+  for (const auto& m : methods) bounds[m.label] = m.bound;
+  json o = {{"omega", kOscillator.w},
+            {"start", {{"q", z0.q[0]}, {"p", z0.p[0]}}},
+            {"omega_h_bound", bounds},  // each method's own bound in omega h (the registry's)
+            {"omega_h_eff", range_of(omega_h)},
+            {"points", points},
+            {"fit", {{"max_omega_h", kFitMaxOmegaH}, {"floor", roundoff_floor()}, {"points", fit_points}}},
+            {"roundoff_omega_h", roundoff},
+            {"largest_step", largest}};
+  o["omega_h_eff"]["count"] = omega_h.size();
+
+  // The sampled maxima against the closed forms (each method at its own step w h = w h_eff e / 2).
+  json closed;
+  for (const auto& m : methods) {
+    double deviation = 0, ratio = std::numeric_limits<double>::infinity(), at = 0;
+    for (const auto& p : m.pts) {
+      const double c = closed_form(m.name, step_at_equal_work(p.h, m.evals));
+      if (!(c > 0)) continue;
+      if (p.h <= kClosedFormSplit && p.e > roundoff_floor()) deviation = std::max(deviation, std::abs(p.e / c - 1));
+      if (p.h > kClosedFormSplit && p.e / c < ratio) ratio = p.e / c, at = p.h;
+    }
+    if (std::isfinite(ratio))
+      closed[m.label] = {{"max_deviation_below", deviation}, {"min_ratio_above", ratio}, {"min_ratio_above_at", at}};
+  }
+  o["closed_form"] = closed;
+  o["closed_form"]["split_omega_h"] = kClosedFormSplit;
+
+  // TI against Stormer-Verlet at equal work, where both run; the report's example step.
+  const auto of = [&](const std::string& label) {
+    return std::find_if(methods.begin(), methods.end(), [&](const Method& m) { return m.label == label; });
+  };
+  if (const auto sv = of("sv"), ti = of("ti"); sv != methods.end() && ti != methods.end()) {
+    int common = 0, better_energy = 0, better_global = 0;
+    for (const auto& a : ti->pts)
+      for (const auto& b : sv->pts)
+        if (a.h == b.h) ++common, better_energy += a.e < b.e, better_global += a.g < b.g;
+    o["ti_against_sv"] = {{"common", common}, {"ti_better_energy", better_energy}, {"ti_better_global", better_global}};
+    const auto near = std::min_element(sv->pts.begin(), sv->pts.end(), [](const Pt& a, const Pt& b) {
+      return std::abs(a.h - kExampleOmegaH) < std::abs(b.h - kExampleOmegaH);
+    });
+    json example = {{"omega_h", near->h}};
+    for (const auto& m : methods)
+      for (const auto& p : m.pts)
+        if (p.h == near->h) example[m.label] = {{"max_global_err", p.g}, {"max_rel_H_err", p.e}};
+    o["example"] = example;
+  }
 
   // The stability bound of TI: where the spectral radius of its one-step matrix (the kernel's) leaves 1.
   const auto radius = [&](double wh) {
-    return with_kernel("takahashi_imada", osc, [&](const auto& m) { return spectral_radius(one_step_matrix(m, wh)); });
+    return with_kernel("takahashi_imada", kOscillator, [&](const auto& m) { return spectral_radius(one_step_matrix(m, wh)); });
   };
-  double lo = 3.0, hi = 3.9;
-  for (int it = 0; it < 60; ++it) (radius(0.5 * (lo + hi)) <= 1 + 1e-12 ? lo : hi) = 0.5 * (lo + hi);
+  double lo = kBisectionLo, hi = kBisectionHi;
+  for (int it = 0; it < 60; ++it) (radius(0.5 * (lo + hi)) <= 1 + kRadiusTolerance ? lo : hi) = 0.5 * (lo + hi);
   put(ctx, "reproduced", {{"ti_stability_bound", lo}});
+  const double ti_bound = method_info("takahashi_imada").oscillatory_bound;
+  o["stability_bound"] = {{"bisection", {{"lo", kBisectionLo}, {"hi", kBisectionHi}, {"radius_tolerance", kRadiusTolerance}}},
+                          {"minus_closed_form", lo - ti_bound},  // the registry's 2 sqrt(3)
+                          {"spacing_of_doubles", std::nextafter(ti_bound, 4.0) - ti_bound}};
+
+  // 004 Sect. 1.4 as printed: SV "stable only for w h <= 2"; TI's error "remains bounded (converges to one)"
+  // as w h -> 2 sqrt(3), which holds for the start q0 = 0 only: from p0 = 0, at the largest w h_eff TI runs.
+  o["sv_growth_exponent_at_bound"] = sv_growth_exponent_at_bound(T1);
+  if (const auto ti = of("ti"); ti != methods.end()) {
+    const double wh = o["largest_step"]["ti"]["omega_h"];
+    const Z1 rest = make_state(1.0, 0.0);
+    o["from_rest"] = {{"start", {{"q", rest.q[0]}, {"p", rest.p[0]}}},
+                      {"omega_h", wh},
+                      {"max_rel_H_err", oscillator_errors(ti->name, rest, wh, T1).second},
+                      {"closed_form", ti_oscillator_max_rel_energy_error_from_rest(wh)}};
+  }
+  ctx.summary["oscillator"] = o;
+  put_differences(ctx, "oscillator");
 }
 
 // ---- Fig. 2: unsymmetric pendulum, the shifted energy H + h^2 H_3 along the simplified method ----
+
+constexpr double kReferenceStep = 1e-3;       // Fig. 2: the exact orbit, RK4 at this step ...
+constexpr std::int64_t kReferenceSteps = 2000000;  // ... over 2000 time units
 
 void run_pendulum(Context& ctx) {
   const Scene& s = ctx.scene;
@@ -229,24 +390,41 @@ void run_pendulum(Context& ctx) {
   const std::int64_t n = steps_to(s.real("pendulum.t_end"), h), every = std::max<std::int64_t>(1, n / samples);
   const double E0 = shifted_energy(up, p0, h);
   Csv f2({"t", "shifted_energy_err", "H_err"});
-  std::vector<double> ts, es, ts_all, es_all;
+  std::vector<double> ts, es, ts_all, es_all, Hs_all;
   // (4.3)'s rate averaged along the exact orbit (RK4 at step 1e-3 over 2000 time units).
   double predicted = 0;
-  const std::int64_t n_ref = 2000000;
-  integrate(RungeKutta4::bind(up), p0, 1e-3, n_ref,
-            [&](std::int64_t j, const Z1& z) { predicted += j > 0 ? simplified_ti_drift_rate(up, z, h) : 0.0; });
+  const Z1 ref_end = integrate(RungeKutta4::bind(up), p0, kReferenceStep, kReferenceSteps, [&](std::int64_t j, const Z1& z) {
+    predicted += j > 0 ? simplified_ti_drift_rate(up, z, h) : 0.0;
+  });
   integrate(simplified_ti_method(up, false), p0, h, n, [&](std::int64_t j, const Z1& z) {
     if (j % every) return;
     const double t = static_cast<double>(j) * h, e = shifted_energy(up, z, h) - E0;
     f2.row(t, e, up.H(z) - up.H(p0));
-    ts_all.push_back(t), es_all.push_back(e);
+    ts_all.push_back(t), es_all.push_back(e), Hs_all.push_back(up.H(z) - up.H(p0));
     if (t <= s.real("pendulum.fit_t")) ts.push_back(t), es.push_back(e);
   });
   ctx.write("fig2_pendulum.csv", f2);
+  const double rate = slope(ts, es), rate_predicted = predicted / static_cast<double>(kReferenceSteps);
   put(ctx, "reproduced",
-      {{"unsym_pendulum_drift_rate", slope(ts, es)},                // at the start's energy
+      {{"unsym_pendulum_drift_rate", rate},                         // at the start's energy
        {"unsym_pendulum_drift_rate_whole", slope(ts_all, es_all)},  // over the whole span (the rate falls with H)
-       {"unsym_pendulum_drift_rate_predicted", predicted / static_cast<double>(n_ref)}});
+       {"unsym_pendulum_drift_rate_predicted", rate_predicted}});
+  const double t_ref = kReferenceStep * static_cast<double>(kReferenceSteps);
+  ctx.summary["pendulum"] = {
+      {"H0", up.H(p0)},
+      {"steps", n},
+      {"sample_dt", static_cast<double>(every) * h},
+      {"change", es_all.back()},               // of H + h^2 H_3 over the run
+      {"H_drift_rate", slope(ts_all, Hs_all)},  // the slope of the error of H over the run
+      {"peak_to_peak_about_trend", {{"shifted_energy", peak_to_peak_about_line(ts_all, es_all)},
+                                    {"H", peak_to_peak_about_line(ts_all, Hs_all)}}},
+      {"drift_rate_deviation", std::abs(rate - rate_predicted) / std::abs(rate_predicted)},
+      {"U_max", UnsymmetricPendulum::U_max()},
+      // the time the drift takes at the initial rate to bring H down to max U, where the pendulum stops turning over
+      {"turnover_time", (up.H(p0) - UnsymmetricPendulum::U_max()) / std::abs(rate)},
+      {"reference", {{"step", kReferenceStep},
+                     {"t_end", t_ref},
+                     {"periods", (ref_end.q[0] - p0.q[0]) / (2 * std::numbers::pi)}}}};  // turns of the rotating pendulum
 }
 
 // ---- Fig. 3: Henon-Heiles k = 3, E along the simplified method: bounded, no drift ----
@@ -262,28 +440,56 @@ void run_hh3(Context& ctx) {
   const double E0 = simplified_ti_modified_energy(hh, start, h);
   Csv f3({"t", "E_err", "H_err"});
   std::vector<double> ts, es;
-  double worst = 0;
+  double worst = 0, worst_H = 0;
   integrate(simplified_ti_method(hh, false), start, h, n, [&](std::int64_t j, const Z2& z) {
     if (j % every) return;
     const double t = static_cast<double>(j) * h, e = simplified_ti_modified_energy(hh, z, h) - E0;
     f3.row(t, e, hh.H(z) - hh.H(start));
     ts.push_back(t), es.push_back(e), worst = std::max(worst, std::abs(e));
+    worst_H = std::max(worst_H, std::abs(hh.H(z) - hh.H(start)));
   });
   ctx.write("fig3_hh3.csv", f3);
-  put(ctx, "reproduced", {{"hh3_drift_slope", slope(ts, es)}, {"hh3_max_E_err", worst}});
+  const double drift = slope(ts, es);
+  put(ctx, "reproduced", {{"hh3_drift_slope", drift}, {"hh3_max_E_err", worst}});
+  const auto [e_lo, e_hi] = std::minmax_element(es.begin(), es.end());
+  ctx.summary["hh3"] = {{"p1", start.p[0]},
+                        {"steps", n},
+                        {"sample_dt", static_cast<double>(every) * h},
+                        {"E_err_peak_to_peak", *e_hi - *e_lo},
+                        {"H_err_max", worst_H},
+                        {"drift_over_run", drift * ts.back()},  // the fitted slope times the span
+                        {"drift_over_run_share", std::abs(drift * ts.back()) / worst}};
+  put_differences(ctx, "hh3");
 }
 
 // ---- Fig. 4: Henon-Heiles k, an ensemble: mean and standard deviation of the E error;
 // Fig. 5: Poincare cuts of its trajectory with the largest error ----
 
+// The column k of an ensemble's series, over the trajectories `which`.
+std::vector<double> column(const std::vector<std::vector<double>>& series, const std::vector<std::size_t>& which,
+                           std::size_t k) {
+  std::vector<double> v;
+  for (std::size_t i : which) v.push_back(series[i][k]);
+  return v;
+}
+
+std::vector<std::size_t> all_of(std::size_t M) {
+  std::vector<std::size_t> v(M);
+  for (std::size_t i = 0; i < M; ++i) v[i] = i;
+  return v;
+}
+
+constexpr std::size_t kPoincareWindows = 20;  // Fig. 5: the run of the trajectory is cut into this many windows
+
 template <class HH>
 void ensemble_with(Context& ctx, const HH& hhk) {
   const Scene& s = ctx.scene;
   ctx.progress("Fig. 4: ensemble");
-  const double h = s.real("h");
+  const double h = s.real("h"), t_end = s.real("t_end");
   const std::int64_t samples = s.integer("samples");
   const auto M = static_cast<std::size_t>(s.integer("ensemble.size"));
-  const std::int64_t n4 = steps_to(s.real("t_end"), h), every4 = std::max<std::int64_t>(1, n4 / samples);
+  const std::int64_t n4 = steps_to(t_end, h), every4 = std::max<std::int64_t>(1, n4 / samples);
+  const auto time_of = [&](std::size_t k) { return static_cast<double>(k) * static_cast<double>(every4) * h; };
   std::vector<Z2> starts(M);
   for (std::size_t i = 0; i < M; ++i) starts[i] = ensemble_start(s, hhk, i);
   const auto t0 = std::chrono::steady_clock::now();
@@ -299,45 +505,80 @@ void ensemble_with(Context& ctx, const HH& hhk) {
   const std::size_t ns = series[0].size();
   json reproduced;
   Csv f4s({"t", "mu", "sigma"});
-  std::vector<double> tl, sl;
+  std::vector<double> ts, mus, sigmas;
   for (std::size_t k = 0; k < ns; ++k) {
-    double mu = 0, var = 0;
-    for (const auto& e : series) mu += e[k];
-    mu /= static_cast<double>(M);
-    for (const auto& e : series) var += (e[k] - mu) * (e[k] - mu);
-    const double sigma = std::sqrt(var / static_cast<double>(M - 1)), t = static_cast<double>(k) * static_cast<double>(every4) * h;
-    f4s.row(t, mu, sigma);
-    if (t >= s.real("t_end") / 10 && sigma > 0) tl.push_back(std::log(t)), sl.push_back(std::log(sigma));  // past the bounded part
-    if (k + 1 == ns) reproduced["hh5_mu_final"] = mu, reproduced["hh5_sigma_final"] = sigma;
+    const auto [mu, sigma] = mean_and_deviation(column(series, all_of(M), k));
+    f4s.row(time_of(k), mu, sigma);
+    ts.push_back(time_of(k)), mus.push_back(mu), sigmas.push_back(sigma);
   }
   ctx.write("fig4_stats.csv", f4s);
-  reproduced["hh5_sigma_exponent"] = slope(tl, sl);
+  reproduced["hh5_mu_final"] = mus.back(), reproduced["hh5_sigma_final"] = sigmas.back();
+  reproduced["hh5_sigma_exponent"] = power_law_exponent(ts, sigmas, t_end / 10);  // past the bounded part
   // Every trajectory's series (thinned to at most 200 times) and the outliers.
   Csv f4t({"trajectory", "outlier", "t", "E_err"});
   std::size_t worst_i = 0;
   double worst_e = 0;
   json outliers = json::array();
+  std::vector<std::size_t> kept;
+  const std::size_t stride = std::max<std::size_t>(1, ns / 200);
   for (std::size_t i = 0; i < M; ++i) {
     double mx = 0;
     for (double e : series[i]) mx = std::max(mx, std::abs(e));
     const bool out = mx > s.real("ensemble.outlier");
     if (out) outliers.push_back(i);
+    else kept.push_back(i);
     if (mx > worst_e) worst_e = mx, worst_i = i;
-    const std::size_t stride = std::max<std::size_t>(1, ns / 200);
     for (std::size_t k = 0; k < ns; k += stride)
-      f4t.row(static_cast<std::int64_t>(i), static_cast<std::int64_t>(out), static_cast<double>(k) * static_cast<double>(every4) * h, series[i][k]);
+      f4t.row(static_cast<std::int64_t>(i), static_cast<std::int64_t>(out), time_of(k), series[i][k]);
   }
   ctx.write("fig4_trajectories.csv", f4t);
   reproduced["hh5_outliers"] = outliers;
+
+  // The statistics without the outliers, at the times of fig4_trajectories.csv.
+  json ensemble = {{"p1", hh_start(hhk, s.real("hh3.q2"), s.real("hh3.p2"), s.real("hh.H0")).p[0]},  // unperturbed
+                   {"steps", n4},
+                   {"sample_dt", time_of(1)},
+                   {"thinned_dt", time_of(stride)},
+                   {"outliers", outliers.size()},
+                   {"kept", kept.size()}};
+  if (kept.size() >= 2) {
+    std::vector<double> tk, sk;
+    MeanDeviation last;
+    for (std::size_t k = 0; k < ns; k += stride) {
+      last = mean_and_deviation(column(series, kept, k));
+      tk.push_back(time_of(k)), sk.push_back(last.sd);
+    }
+    ensemble["without_outliers"] = {{"mu_final", last.mean}, {"sigma_final", last.sd},
+                                    {"sigma_exponent", power_law_exponent(tk, sk, t_end / 10)}};
+  }
+  // The mean: at the first output time after the start, and over [t_end/10, t_end].
+  std::vector<double> mu_late, sigma2(sigmas.size());
+  for (std::size_t k = 0; k < ns; ++k) {
+    if (ts[k] >= t_end / 10) mu_late.push_back(mus[k]);
+    sigma2[k] = sigmas[k] * sigmas[k];
+  }
+  ensemble["mu_first"] = {{"t", ts.at(1)}, {"mu", mus.at(1)}};
+  ensemble["mu_late"] = spread_of(mu_late);
+  ensemble["mu_final_stderr"] = standard_error_of_mean(sigmas.back(), static_cast<double>(M));
+  ensemble["sigma_rel_stderr"] = standard_error_of_deviation(1.0, static_cast<double>(M));
+  ensemble["sigma_exponent_from_hundredth"] = power_law_exponent(ts, sigmas, t_end / 100);
+  // sigma^2 = c + D t of a random walk: D at t_end, and the slope of sigma^2 over [t_end/10, t_end].
+  ensemble["sigma2_over_t"] = sigma2.back() / ts.back();
+  ensemble["sigma2_slope"] = slope_from(ts, sigma2, t_end / 10);
+  // The same from the printed sigma, at the printed time (published.toml: hh5_sigma_final).
+  const Published& printed = published_entry("hh5_sigma_final");
+  const double printed_sigma = printed.value.get<double>(), printed_t = printed.requires_.at("t_end").get<double>();
+  ensemble["printed_sigma2_over_t"] = printed_sigma * printed_sigma / printed_t;
+  ensemble["sigma2_over_t_minus_printed"] = ensemble["sigma2_over_t"].get<double>() - printed_sigma * printed_sigma / printed_t;
 
   // Fig. 5: Poincare cuts (q1 = 0 upwards, p1 > 0) of the trajectory with the largest error,
   // on the window where its error grows fastest and on the one where it is flattest.
   ctx.progress("Fig. 5: Poincare cuts");
   const auto& e = series[worst_i];
-  const std::size_t windows = 20, per = std::max<std::size_t>(2, ns / windows);
-  std::size_t steep = 0, flat = 0;
+  const std::size_t windows = kPoincareWindows, per = std::max<std::size_t>(2, ns / windows);
+  std::size_t steep = 0, flat = 0, compared = 0;
   double smax = -1, smin = std::numeric_limits<double>::infinity();
-  for (std::size_t w = 0; w < windows && (w + 1) * per <= ns; ++w) {
+  for (std::size_t w = 0; w < windows && (w + 1) * per <= ns; ++w, ++compared) {
     std::vector<double> x, y;
     for (std::size_t k = w * per; k < (w + 1) * per; ++k) x.push_back(static_cast<double>(k)), y.push_back(e[k]);
     const double sl_w = std::abs(slope(x, y));
@@ -346,6 +587,11 @@ void ensemble_with(Context& ctx, const HH& hhk) {
   }
   const double tw = static_cast<double>(per) * static_cast<double>(every4) * h;
   Csv f5({"window", "t", "q2", "p2"});
+  struct Cuts {
+    std::size_t count = 0, negative = 0;
+    double p2_sum = 0;
+  };
+  std::map<std::string, Cuts> cuts;
   Z2 prev = starts[worst_i];
   integrate(simplified_ti_method(hhk, false), starts[worst_i], h, n4, [&](std::int64_t j, const Z2& z) {
     const double t = static_cast<double>(j) * h;
@@ -353,7 +599,10 @@ void ensemble_with(Context& ctx, const HH& hhk) {
       if (j > 0 && t >= static_cast<double>(w) * tw && t < static_cast<double>(w + 1) * tw && prev.q[0] < 0 &&
           z.q[0] >= 0 && z.p[0] > 0) {
         const double a = -prev.q[0] / (z.q[0] - prev.q[0]);  // linear interpolation of the crossing
-        f5.row(label, t - (1 - a) * h, prev.q[1] + a * (z.q[1] - prev.q[1]), prev.p[1] + a * (z.p[1] - prev.p[1]));
+        const double p2 = prev.p[1] + a * (z.p[1] - prev.p[1]);
+        f5.row(label, t - (1 - a) * h, prev.q[1] + a * (z.q[1] - prev.q[1]), p2);
+        Cuts& c = cuts[label];
+        ++c.count, c.negative += p2 < 0, c.p2_sum += p2;
       }
     }
     prev = z;
@@ -363,7 +612,36 @@ void ensemble_with(Context& ctx, const HH& hhk) {
   reproduced["poincare_windows"] = {{"growth", {static_cast<double>(steep) * tw, static_cast<double>(steep + 1) * tw}},
                                     {"no_growth", {static_cast<double>(flat) * tw, static_cast<double>(flat + 1) * tw}}};
   put(ctx, "reproduced", reproduced);
-  put(ctx, "timing", {{"fig4_wall_s", wall4}});
+  // Each window: its cuts, and the error of E of the trajectory at its ends (output times).
+  json poincare = {{"windows", windows}, {"windows_compared", compared}};
+  for (const auto& [label, w] : {std::pair{"growth", steep}, std::pair{"no_growth", flat}}) {
+    const Cuts& c = cuts[label];
+    const double E_lo = e[w * per], E_hi = e[(w + 1) * per < ns ? (w + 1) * per : ns - 1];
+    poincare[label] = {{"t_start", static_cast<double>(w) * tw},
+                       {"t_end", static_cast<double>(w + 1) * tw},
+                       {"length", tw},
+                       {"cuts", c.count},
+                       {"cuts_per_time", static_cast<double>(c.count) / tw},
+                       {"share_p2_negative", c.count ? static_cast<double>(c.negative) / static_cast<double>(c.count) : 0.0},
+                       {"mean_p2", c.count ? c.p2_sum / static_cast<double>(c.count) : 0.0},
+                       {"E_err_start", E_lo},
+                       {"E_err_end", E_hi},
+                       {"E_err_change", E_hi - E_lo},
+                       {"E_err_slope", (E_hi - E_lo) / tw}};
+    // The printed window (published.toml: poincare_<label>): its length and cuts per unit time.
+    const json& printed_window = published_entry("poincare_" + std::string(label)).value;
+    const double length = printed_window["t_end"].get<double>() - printed_window["t_start"].get<double>();
+    poincare["printed"][label] = {{"length", length}, {"cuts_per_time", printed_window["cuts"].get<double>() / length}};
+  }
+  ctx.summary["ensemble"] = ensemble;
+  ctx.summary["poincare"] = poincare;
+  put(ctx, "timing",
+      {{"fig4_wall_s", wall4},
+       {"threads", ctx.threads},
+       {"fig4_steps", static_cast<double>(M) * static_cast<double>(n4)},  // over the ensemble
+       {"fig4_ns_per_step_thread",
+        1e9 * wall4 * ctx.threads / (static_cast<double>(M) * static_cast<double>(n4))}});
+  put_differences(ctx, "ensemble");
 }
 
 void run_ensemble(Context& ctx) {
@@ -371,6 +649,9 @@ void run_ensemble(Context& ctx) {
 }
 
 // ---- Fig. 6: the Lennard-Jones cluster ----
+
+constexpr std::size_t kLjShown = 50;          // Fig. 6: trajectories drawn (004: 50)
+constexpr std::int64_t kStiffnessEvery = 10;   // Fig. 6: the stiffness along the scan starts, every this many steps of lj.h
 
 void run_lj(Context& ctx) {
   const Scene& s = ctx.scene;
@@ -380,12 +661,13 @@ void run_lj(Context& ctx) {
   using Z18 = PhaseState<18>;
   const LJ lj;
   json reproduced;
-  const auto lj_start = [&](std::size_t i) {  // grid (i, j), i, j in {1, 2, 3}, perturbed; p = 0
+  const auto grid = [](int k) { return Vec<2>(1 + k % 3, 1 + k / 3); };  // (i, j), i, j in {1, 2, 3}
+  const auto lj_start = [&](std::size_t i) {  // the grid, perturbed; p = 0
     std::seed_seq seq{static_cast<std::uint64_t>(s.integer("lj.seed")), static_cast<std::uint64_t>(i)};
     std::mt19937_64 rng(seq);
     std::uniform_real_distribution<double> u(-s.real("lj.perturbation"), s.real("lj.perturbation"));
     Z18 z;
-    for (int k = 0; k < 9; ++k) z.q[2 * k] = 1 + k % 3 + u(rng), z.q[2 * k + 1] = 1 + k / 3 + u(rng);
+    for (int k = 0; k < 9; ++k) z.q[2 * k] = grid(k)[0] + u(rng), z.q[2 * k + 1] = grid(k)[1] + u(rng);
     return z;
   };
   // The step-size scan: max |H - H0| over t <= lj.scan_t, diverged beyond lj.blowup or when not finite.
@@ -406,21 +688,47 @@ void run_lj(Context& ctx) {
                         });
     return std::pair{worst, diverged};
   });
+  // The stiffness omega_max^2 (largest eigenvalue of the Hessian): at the grid, at the starts of the
+  // ensemble, and along the scan starts integrated at lj.h to lj.scan_t (its largest value on each).
+  const double hl = s.real("lj.h");
+  Vec<18> grid_q;
+  for (int k = 0; k < 9; ++k) grid_q.segment<2>(2 * k) = grid(k);
+  const double grid_stiffness = max_hessian_eigenvalue(lj, grid_q);
+  const auto along = parallel_map(scan_size, [&](std::size_t i) {
+    double largest = 0;
+    integrate(simplified_ti_method(lj, false), lj_start(i), hl, steps_to(s.real("lj.scan_t"), hl),
+              [&](std::int64_t j, const Z18& z) {
+                if (j % kStiffnessEvery == 0) largest = std::max(largest, max_hessian_eigenvalue(lj, z.q));
+              });
+    return largest;
+  });
+  const auto [along_lo, along_hi] = std::minmax_element(along.begin(), along.end());
   Csv sc({"h", "trajectory", "max_H_err", "diverged", "diverge_step"});
-  json stable_h = json::array();
+  json stable_h = json::array(), scan_summary = json::array();
+  std::vector<double> stable;
   for (std::size_t k = 0; k < hs.size(); ++k) {
     bool all_ok = true;
+    std::vector<double> t_div, ok;
     for (std::size_t i = 0; i < scan_size; ++i) {
       const auto& [w, dv] = scan[k * scan_size + i];
       sc.row(hs[k], static_cast<std::int64_t>(i), w, static_cast<std::int64_t>(dv >= 0), dv);
       all_ok = all_ok && dv < 0;
+      if (dv >= 0) t_div.push_back(static_cast<double>(dv) * hs[k]);
+      else ok.push_back(w);
     }
-    if (all_ok) stable_h.push_back(hs[k]);
+    if (all_ok) stable_h.push_back(hs[k]), stable.push_back(hs[k]);
+    json row = {{"h", hs[k]},
+                {"runs", scan_size},
+                {"diverged", t_div.size()},
+                {"omega_max_h_at_grid", std::sqrt(grid_stiffness) * hs[k]},
+                {"omega_max_h_along_starts", {{"min", std::sqrt(*along_lo) * hs[k]}, {"max", std::sqrt(*along_hi) * hs[k]}}}};
+    if (!t_div.empty()) row["t_diverged"] = range_of(t_div);
+    if (!ok.empty()) row["max_H_err"] = {{"median", median(ok)}, {"max", *std::max_element(ok.begin(), ok.end())}};
+    scan_summary.push_back(row);
   }
   ctx.write("fig6_scan.csv", sc);
   reproduced["lj_stable_steps"] = stable_h;
   // The ensemble at lj.h: E error (3.3)+(4.2), H error, and H at the processed variables (1.5).
-  const double hl = s.real("lj.h");
   const auto Ml = static_cast<std::size_t>(s.integer("lj.size"));
   const std::int64_t nl = steps_to(s.real("lj.t_end"), hl), every_l = std::max<std::int64_t>(1, nl / samples);
   const auto tl0 = std::chrono::steady_clock::now();
@@ -441,41 +749,102 @@ void run_lj(Context& ctx) {
   });
   const double wall6 = std::chrono::duration<double>(std::chrono::steady_clock::now() - tl0).count();
   Csv f6({"t", "mu", "sigma", "H_err_rms", "Hhat_err_rms"});
-  std::vector<double> lt, ls;
+  std::vector<double> ts, sigmas, H_rms, Hhat_rms;
   const std::size_t nsl = lj_series[0].E.size();
   double mu_f = 0, sigma_f = 0, H_max = 0;
   for (std::size_t k = 0; k < nsl; ++k) {
-    double mu = 0, var = 0, hr = 0, hhr = 0;
-    for (const auto& r : lj_series) mu += r.E[k], hr += r.H[k] * r.H[k], hhr += r.Hhat[k] * r.Hhat[k];
-    mu /= static_cast<double>(Ml);
-    for (const auto& r : lj_series) var += (r.E[k] - mu) * (r.E[k] - mu), H_max = std::max(H_max, std::abs(r.H[k]));
-    const double sigma = std::sqrt(var / static_cast<double>(Ml - 1));
+    std::vector<double> E;
+    double hr = 0, hhr = 0;
+    for (const auto& r : lj_series) E.push_back(r.E[k]), hr += r.H[k] * r.H[k], hhr += r.Hhat[k] * r.Hhat[k];
+    for (const auto& r : lj_series) H_max = std::max(H_max, std::abs(r.H[k]));
+    const auto [mu, sigma] = mean_and_deviation(E);
     const double t = static_cast<double>(k) * static_cast<double>(every_l) * hl;
-    f6.row(t, mu, sigma, std::sqrt(hr / static_cast<double>(Ml)), std::sqrt(hhr / static_cast<double>(Ml)));
-    if (t >= s.real("lj.t_end") / 10 && sigma > 0) lt.push_back(std::log(t)), ls.push_back(std::log(sigma));
+    const double H_rms_k = std::sqrt(hr / static_cast<double>(Ml)), Hhat_rms_k = std::sqrt(hhr / static_cast<double>(Ml));
+    f6.row(t, mu, sigma, H_rms_k, Hhat_rms_k);
+    ts.push_back(t), sigmas.push_back(sigma), H_rms.push_back(H_rms_k), Hhat_rms.push_back(Hhat_rms_k);
     mu_f = mu, sigma_f = sigma;
   }
   ctx.write("fig6_stats.csv", f6);
   Csv f6t({"trajectory", "t", "E_err"});
   const std::size_t stride = std::max<std::size_t>(1, nsl / 200);
-  for (std::size_t i = 0; i < std::min<std::size_t>(Ml, 50); ++i)
+  for (std::size_t i = 0; i < std::min(Ml, kLjShown); ++i)
     for (std::size_t k = 0; k < nsl; k += stride)
       f6t.row(static_cast<std::int64_t>(i), static_cast<double>(k) * static_cast<double>(every_l) * hl, lj_series[i].E[k]);
   ctx.write("fig6_trajectories.csv", f6t);
   reproduced["lj_h"] = hl;
   reproduced["lj_mu_final"] = mu_f, reproduced["lj_sigma_final"] = sigma_f;
-  reproduced["lj_mu_final_stderr"] = sigma_f / std::sqrt(static_cast<double>(Ml));
-  reproduced["lj_sigma_final_stderr"] = sigma_f / std::sqrt(2.0 * static_cast<double>(Ml - 1));
-  reproduced["lj_sigma_exponent"] = lt.size() >= 2 ? slope(lt, ls) : std::nan("");
+  const double mu_se = standard_error_of_mean(sigma_f, static_cast<double>(Ml));
+  const double sigma_se = standard_error_of_deviation(sigma_f, static_cast<double>(Ml));
+  reproduced["lj_mu_final_stderr"] = mu_se;
+  reproduced["lj_sigma_final_stderr"] = sigma_se;
+  reproduced["lj_sigma_exponent"] = power_law_exponent(ts, sigmas, s.real("lj.t_end") / 10);
   reproduced["lj_H_err_max"] = H_max;
   put(ctx, "reproduced", reproduced);
-  put(ctx, "timing", {{"fig6_wall_s", wall6}});
+
+  // The ensemble's H errors after the start (t > 0): H at (p_n, q_n) and at the processed variables.
+  std::vector<double> H_later(H_rms.begin() + 1, H_rms.end()), Hhat_later(Hhat_rms.begin() + 1, Hhat_rms.end());
+  const json H_spread = spread_of(H_later), Hhat_spread = spread_of(Hhat_later);
+  double Hhat_variation = 0;
+  for (double b : Hhat_later) Hhat_variation = std::max(Hhat_variation, std::abs(b / Hhat_rms[0] - 1));
+  std::vector<double> start_stiffness;
+  for (std::size_t i = 0; i < Ml; ++i) start_stiffness.push_back(max_hessian_eigenvalue(lj, lj_start(i).q));
+  ctx.summary["lj"] = {
+      {"particles", LJ::D / 2},
+      {"pairs", LJ::D / 2 * (LJ::D / 2 - 1) / 2},
+      {"steps", nl},
+      {"sample_dt", static_cast<double>(every_l) * hl},
+      {"trajectories_shown", std::min(Ml, kLjShown)},
+      {"scan", scan_summary},
+      {"stable_step_count", stable.size()},
+      {"stiffness", {{"grid", grid_stiffness},
+                     {"starts", range_of(start_stiffness)},
+                     {"along_scan_starts", {{"min", *along_lo}, {"max", *along_hi}}},
+                     {"sample_dt", static_cast<double>(kStiffnessEvery) * hl}}},
+      {"H_err_rms", H_spread},                       // over the output times t > 0
+      {"Hhat_err_rms", Hhat_spread},
+      {"Hhat_err_rms_start", Hhat_rms[0]},           // the offset H(chi_h(p_0, q_0)) - H_0
+      {"Hhat_err_rms_variation", Hhat_variation},   // max |rms / its start - 1| over t > 0
+      {"H_over_Hhat_err_rms", H_spread["mean"].get<double>() / Hhat_spread["mean"].get<double>()},
+      // the published mean and standard deviation (published.toml) in standard errors of ours, and ours from zero
+      {"standard_scores", {{"mu_from_printed", std::abs(mu_f - published_value("lj_mu_final")) / mu_se},
+                           {"mu_from_zero", std::abs(mu_f) / mu_se},
+                           {"sigma_from_printed", std::abs(sigma_f - published_value("lj_sigma_final")) / sigma_se}}}};
+  if (!stable.empty()) ctx.summary["lj"]["stable_steps"] = range_of(stable);
+  // the smallest step of the scan: the median of its largest errors of H
+  const auto smallest = std::min_element(hs.begin(), hs.end()) - hs.begin();
+  if (scan_summary[smallest].contains("max_H_err"))
+    ctx.summary["lj"]["smallest_step"] = {{"h", hs[smallest]}, {"max_H_err_median", scan_summary[smallest]["max_H_err"]["median"]}};
+  put(ctx, "timing",
+      {{"fig6_wall_s", wall6},
+       {"threads", ctx.threads},
+       {"fig6_steps", static_cast<double>(Ml) * static_cast<double>(nl)},
+       {"fig6_ns_per_step_thread", 1e9 * wall6 * ctx.threads / (static_cast<double>(Ml) * static_cast<double>(nl))}});
+  put_differences(ctx, "lj");
 }
 
 // ---- Symplecticity against volume preservation: the one-step Jacobian (central
 // differences) of each named method's kernel on Henon-Heiles ----
 
 HenonHeiles symplecticity_system(const Scene& s) { return {{}, static_cast<int>(s.integer("symplecticity.k"))}; }
+
+// 004 Sect. 3.3 as printed: q_{n+1} of (1.6) = q_{n+1} of (1.4) + 1/4 h^6 alpha^2 f''(f, f)(q_{n+1/2}) + O(h^8),
+// both from the same (p_n, q_n). The remainder after the printed term, one step at h / 2^j (j < 4) from z,
+// with the term at q_{n+1/2} = (q_n + q_{n+1}) / 2 as printed, and at q_n.
+json sect33_remainders(const HenonHeiles& hh, const Z2& z, double h) {
+  std::vector<double> hs, at_mid, at_start;
+  for (int j = 0; j < 4; ++j) {
+    const double hj = h / std::pow(2.0, j);
+    const Z2 ti = integrate(takahashi_imada_method(hh, false), z, hj, 1);
+    const Z2 sti = integrate(simplified_ti_method(hh, false), z, hj, 1);
+    const Vec<2> mid = (z.q + sti.q) / 2;
+    hs.push_back(hj);
+    at_mid.push_back((sti.q - ti.q - simplified_ti_q_correction(hh, mid, hj, takahashi_imada_alpha)).norm());
+    at_start.push_back((sti.q - ti.q - simplified_ti_q_correction(hh, z.q, hj, takahashi_imada_alpha)).norm());
+  }
+  return {{"steps", range_of(hs)},
+          {"order_at_midpoint", fit_order(hs, at_mid, 0.0, "Sect. 3.3 remainder").order},
+          {"largest_at_q_n", *std::max_element(at_start.begin(), at_start.end())}};
+}
 
 void run_symplecticity(Context& ctx) {
   const Scene& s = ctx.scene;
@@ -490,6 +859,9 @@ void run_symplecticity(Context& ctx) {
     reproduced[label_of(m) + "_det_minus_one"] = J.determinant() - 1.0;
   }
   put(ctx, "reproduced", reproduced);
+  const json sect33 = sect33_remainders(hh, z, h);
+  ctx.summary["sect33"] = sect33;
+  ctx.summary["symplecticity"] = {{"p1", z.p[0]}};
 }
 
 // ---- Cost: ns per step of each named method's kernel (no processing, as Figs 2-6
@@ -513,6 +885,11 @@ void timing_with(Context& ctx, const HH& hhk) {
       {{"ns_per_step", ns_per_step},
        {"method", "median of " + std::to_string(repeats) + " runs of " + std::to_string(n) +
                       " steps, single thread, every call inlined; fig4_wall_s, fig6_wall_s: the ensembles on --threads threads"}});
+  if (ns_per_step.contains("sv")) {  // per step, relative to Stormer-Verlet
+    json relative;
+    for (const auto& [label, ns] : ns_per_step.items()) relative[label] = double(ns) / double(ns_per_step["sv"]);
+    put(ctx, "timing", {{"relative_to_sv", relative}});
+  }
 }
 
 void run_timing(Context& ctx) {

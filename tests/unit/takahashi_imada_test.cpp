@@ -3,12 +3,15 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <numbers>
 #include <type_traits>
 #include <vector>
 
 #include "geomint/integrators/takahashi_imada.hpp"
+#include "geomint/observables/ensemble_statistics.hpp"
 #include "geomint/observables/error_norms.hpp"
 #include "geomint/observables/modified_energy.hpp"
+#include "geomint/observables/stiffness.hpp"
 #include "geomint/observables/symplecticity.hpp"
 #include "geomint/observables/order_fit.hpp"
 #include "geomint/systems/harmonic_oscillator.hpp"
@@ -47,17 +50,67 @@ TEST(TakahashiImada, SimplifiedEqualsTakahashiImadaOnTheOscillator) {
   for (std::size_t n = 0; n < a.size(); ++n) EXPECT_NEAR(a[n], b[n], 1e-13) << n;
 }
 
+// The largest sampled relative error of H along a method from z0 over n steps of w h (w = 1).
+double max_rel_energy_error(const auto& method, PhaseState<1> z0, double wh, int n) {
+  const HarmonicOscillator osc{1.0, 1.0};
+  double worst = 0;
+  integrate(method, z0, wh, n, [&](auto, const PhaseState<1>& z) {
+    worst = std::max(worst, std::abs(osc.H(z) - osc.H(z0)) / osc.H(z0));
+  });
+  return worst;
+}
+
 TEST(TakahashiImada, MaxRelativeEnergyErrorMatchesTheClosedForm) {
   // From q0 = 0, p0 = 1 in processed variables: max |H - H0| / H0 = x^3 / (36 (x^2 - 12 x + 48)).
   const HarmonicOscillator osc{1.0, 1.0};
   for (double wh : {0.5, 1.0, 2.0}) {
-    const double x = wh * wh, closed = x * x * x / (36 * (x * x - 12 * x + 48));
-    double worst = 0;
-    const auto m = takahashi_imada_method(osc, true);
-    integrate(m, make_state(0.0, 1.0), wh, 20000,
-                        [&](auto, const PhaseState<1>& z) { worst = std::max(worst, std::abs(osc.H(z) - 0.5) / 0.5); });
-    EXPECT_NEAR(worst, closed, 2e-3 * closed) << wh;
+    const double x = wh * wh, closed = ti_oscillator_max_rel_energy_error(wh);
+    EXPECT_NEAR(closed, x * x * x / (36 * (x * x - 12 * x + 48)), 1e-15 * closed) << wh;
+    EXPECT_NEAR(max_rel_energy_error(takahashi_imada_method(osc, true), make_state(0.0, 1.0), wh, 20000), closed,
+                2e-3 * closed) << wh;
   }
+}
+
+TEST(TakahashiImada, StormerVerletMaxRelativeEnergyErrorMatchesTheClosedForm) {
+  // 004 Sect. 1.4: from q0 = 0, p0 = 1, max |H - H0| / H0 = x / (4 - x) along Stormer-Verlet.
+  const HarmonicOscillator osc{1.0, 1.0};
+  for (double wh : {0.3, 1.1, 1.9}) {
+    const double closed = sv_oscillator_max_rel_energy_error(wh);
+    EXPECT_NEAR(closed, wh * wh / (4 - wh * wh), 1e-15 * closed);
+    EXPECT_NEAR(max_rel_energy_error(stormer_verlet_method(osc), make_state(0.0, 1.0), wh, 20000), closed,
+                2e-3 * closed) << wh;
+  }
+}
+
+TEST(TakahashiImada, FromRestTheEnergyErrorIsUnbounded) {
+  // From q0 = 1, p0 = 0 (processed) the largest relative error of H is a - 1 = x^3 / (12 - x)^3, not the
+  // closed form of the start q0 = 0, and it exceeds one near the bound 2 sqrt(3).
+  const HarmonicOscillator osc{1.0, 1.0};
+  for (double wh : {1.0, 2.0, 3.0, 3.4}) {
+    const double x = wh * wh, closed = ti_oscillator_max_rel_energy_error_from_rest(wh);
+    EXPECT_NEAR(closed, x * x * x / std::pow(12 - x, 3), 1e-14 * closed);
+    EXPECT_NEAR(max_rel_energy_error(takahashi_imada_method(osc, true), make_state(1.0, 0.0), wh, 20000), closed,
+                2e-3 * closed) << wh;
+  }
+  EXPECT_GT(ti_oscillator_max_rel_energy_error_from_rest(3.4), 1.0);
+  EXPECT_LT(ti_oscillator_max_rel_energy_error(3.4), 1.0);
+}
+
+TEST(TakahashiImada, Sect33RemainderOfThePrintedTermIsOrderSeven) {
+  // 004 Sect. 3.3: q_{n+1} of (1.6) - q_{n+1} of (1.4) = 1/4 h^6 alpha^2 f''(f, f) + remainder. With the term
+  // at q_{n+1/2} as printed the remainder is O(h^7) (not O(h^8)); at q_n it vanishes for k = 3 (U''' constant).
+  const HenonHeiles hh;
+  const auto z = make_state<2>(Vec<2>(0.1, 0.2), Vec<2>(0.35, 0.3));
+  std::vector<double> hs, at_mid;
+  for (double h : {0.2, 0.1, 0.05, 0.025}) {
+    const auto ti = integrate(takahashi_imada_method(hh, false), z, h, 1);
+    const auto sti = integrate(simplified_ti_method(hh, false), z, h, 1);
+    const Vec<2> mid = (z.q + sti.q) / 2;
+    hs.push_back(h);
+    at_mid.push_back((sti.q - ti.q - simplified_ti_q_correction(hh, mid, h, alpha)).norm());
+    EXPECT_LT((sti.q - ti.q - simplified_ti_q_correction(hh, z.q, h, alpha)).norm(), 1e-15) << h;
+  }
+  EXPECT_NEAR(fit_order(hs, at_mid, 0.0).order, 7.0, 0.15);
 }
 
 TEST(TakahashiImada, OrdersOnTheOscillator) {
@@ -143,6 +196,30 @@ TEST(ModifiedEnergy, ConservedToSixthOrderAlongTheSimplifiedMethodOnHenonHeiles3
   EXPECT_NEAR(fit_order(hs, es, 1e-14).order, 6.0, 0.3);
 }
 
+TEST(HenonHeiles, ThirdDerivativeAgainstFiniteDifferences) {
+  // U'''(a, b, .) against the central difference of U''(q) b along a, for k = 3 and 5, with and without coupling.
+  const Vec<2> q(0.15, -0.25), a(0.4, -0.7), b(-0.3, 0.5);
+  const double d = 1e-5;
+  const auto check = [&](const auto& hh) {
+    const Vec<2> fd = (hh.U_qq_times((q + d * a).eval(), b) - hh.U_qq_times((q - d * a).eval(), b)) / (2 * d);
+    EXPECT_LT((hh.U3_times(q, a, b) - fd).norm(), 1e-9) << hh.k;
+    EXPECT_LT((hh.U3_times(q, a, b) - hh.U3_times(q, b, a)).norm(), 1e-15);  // symmetric in a, b
+  };
+  check(HenonHeiles{{}, 3});
+  check(HenonHeiles{{}, 5});
+  check(HenonHeilesT<true>{{}, 5, 0.7});
+  check(HenonHeilesT<false>{{}, 5, 0.0});
+}
+
+TEST(UnsymmetricPendulum, LargestPotential) {
+  // max U of U = -cos q + 0.2 sin 2q (004 (5.1)): the closed form against a fine grid over one period.
+  const UnsymmetricPendulum up;
+  double grid = -1e9;
+  for (int i = 0; i < 200000; ++i) grid = std::max(grid, up.U(Vec<1>(2 * std::numbers::pi * i / 200000.0)));
+  EXPECT_NEAR(UnsymmetricPendulum::U_max(), grid, 1e-9);
+  EXPECT_GE(UnsymmetricPendulum::U_max(), grid);
+}
+
 TEST(LennardJones, DerivativesAgainstFiniteDifferences) {
   // 3 x 3 grid, slightly perturbed (004 Fig. 6), and a direction a.
   const LennardJones<9> lj;
@@ -182,4 +259,37 @@ TEST(HenonHeiles, ZeroCouplingIsCompiledOutAndOneIsThePaperPotential) {
     EXPECT_EQ(phase_distance(integrate(a, make_state<2>(q, p), 0.1, 100), integrate(b, make_state<2>(q, p), 0.1, 100)),
               0.0);
   });
+}
+
+TEST(EnsembleStatistics, MeanDeviationAndStandardErrors) {
+  const std::vector<double> v{2.0, 4.0, 4.0, 4.0, 5.0, 5.0, 7.0, 9.0};  // mean 5, sum of squares 32
+  const auto [mean, sd] = mean_and_deviation(v);
+  EXPECT_DOUBLE_EQ(mean, 5.0);
+  EXPECT_DOUBLE_EQ(sd, std::sqrt(32.0 / 7.0));  // denominator M - 1
+  EXPECT_DOUBLE_EQ(standard_error_of_mean(3.0, 9.0), 1.0);
+  EXPECT_DOUBLE_EQ(standard_error_of_deviation(4.0, 9.0), 1.0);
+  EXPECT_DOUBLE_EQ(median({3.0, 1.0, 2.0}), 2.0);
+  EXPECT_DOUBLE_EQ(median({4.0, 1.0, 3.0, 2.0}), 2.5);
+}
+
+TEST(EnsembleStatistics, PowerLawExponentSlopeAndOscillationAboutALine) {
+  std::vector<double> t, s, y;
+  for (int i = 1; i <= 100; ++i) {
+    t.push_back(i);
+    s.push_back(i < 10 ? 1e-9 : 3 * std::sqrt(i));      // sigma ~ t^(1/2) from t = 10 on
+    // a line plus +-0.25 in the pattern + - - + (i = 1, 2, 3, 4, ...), orthogonal to 1 and t: peak-to-peak 0.5
+    y.push_back(2 * i + (i % 4 == 1 || i % 4 == 0 ? 0.25 : -0.25));
+  }
+  EXPECT_NEAR(power_law_exponent(t, s, 10), 0.5, 1e-12);
+  EXPECT_GT(power_law_exponent(t, s, 1), 1.0);  // the points before t = 10 would steepen it
+  EXPECT_NEAR(slope_from(t, y, 50), 2.0, 1e-3);
+  EXPECT_NEAR(peak_to_peak_about_line(t, y), 0.5, 1e-12);
+}
+
+TEST(Stiffness, LargestEigenvalueOfTheHessian) {
+  // omega_max^2: w^2 for the oscillator; at the origin of Henon-Heiles the Hessian is the identity,
+  // at q = (0, q2) (k = 3) its eigenvalues are 1 + 2 q2 and 1 - 2 q2.
+  EXPECT_DOUBLE_EQ(max_hessian_eigenvalue(HarmonicOscillator{1.0, 1.7}, Vec<1>(0.3)), 1.7 * 1.7);
+  EXPECT_NEAR(max_hessian_eigenvalue(HenonHeiles{}, Vec<2>(0.0, 0.0)), 1.0, 1e-15);
+  EXPECT_NEAR(max_hessian_eigenvalue(HenonHeiles{}, Vec<2>(0.0, -0.2)), 1.4, 1e-14);
 }

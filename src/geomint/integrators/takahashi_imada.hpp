@@ -3,6 +3,7 @@
 // kick-drift-kick kernels with the force cached between steps, and the
 // processing map chi_h of (1.5) that gives the method effective order 4.
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 #include <Eigen/LU>
@@ -55,6 +56,15 @@ PhaseState<D> ti_unprocess(const Sys& sys, const PhaseState<D>& zhat, double h, 
   return make_state<D>(q, (Mat<D>::Identity() - ch2 * sys.U_qq(q)) * zhat.p);
 }
 
+// 004 Sect. 3.3: the printed leading term 1/4 h^6 alpha^2 f''(f, f) of q_{n+1} of (1.6) minus q_{n+1}
+// of (1.4) from the same (p_n, q_n), at the point q given (printed: q_{n+1/2} = (q_n + q_{n+1})/2);
+// f''(f, f) = -U'''(grad U, grad U, .) since f = -grad U.
+template <class Sys, class V>
+V simplified_ti_q_correction(const Sys& sys, const V& q, double h, double alpha) {
+  const V g = sys.U_q(q);
+  return (-0.25 * std::pow(h, 6) * alpha * alpha * sys.U3_times(q, g, g)).eval();
+}
+
 // The methods as processed methods on (q, p) (core/integrate.hpp): kick-drift-kick
 // with the given force, plain (no processing, as 004 Figs 2-6 use them) or with
 // chi_h, c = alpha (Fig. 1, effective order 4).
@@ -82,6 +92,26 @@ template <class Sys>
 auto simplified_ti_method(const Sys& sys, bool processed, double alpha = takahashi_imada_alpha) {
   return kick_method_with_force(
       sys, [&sys, alpha](const auto& q, double h) { return simplified_ti_force(sys, q, h, alpha); }, processed, alpha);
+}
+
+// ---- 004 Sect. 1.4: the harmonic oscillator, as functions of w h (x = (w h)^2) ----
+
+// The largest relative error of H along Stormer-Verlet from a start with q_0 = 0 (attained where
+// p_n = 0): x / (4 - x).
+inline double sv_oscillator_max_rel_energy_error(double wh) { return wh * wh / (4 - wh * wh); }
+
+// The same along Takahashi-Imada (1.4) (and (1.6), the same map here) in the variables of (1.5),
+// from a start with q_0 = 0: (4 - beta x - 4 beta^3) / (4 - beta x) = x^3 / (36 (x^2 - 12 x + 48)),
+// beta = 1 - x/12.
+inline double ti_oscillator_max_rel_energy_error(double wh) {
+  return std::pow(wh, 6) / (36 * (std::pow(wh, 4) - 12 * wh * wh + 48));
+}
+
+// The same from a start with p_0 = 0 instead: a - 1 = x^3 / (12 - x)^3, where a = (1 - beta x/4) beta^-3
+// is the coefficient of the invariant phat^2 + a w^2 qhat^2 (unbounded as w h -> 2 sqrt(3)).
+inline double ti_oscillator_max_rel_energy_error_from_rest(double wh) {
+  const double x = wh * wh;
+  return x * x * x / std::pow(12 - x, 3);
 }
 
 }  // namespace geomint

@@ -43,6 +43,12 @@ struct HenonHeilesT : UnitMassSeparable<2> {
   Vec<2> force(const Vec<2>& q) const { return -U_q(q); }
   Vec<2> H_q(const Vec<2>& q, const Vec<2>&) const { return U_q(q); }
   double H(const State& z) const { return 0.5 * z.p.squaredNorm() + U(z.q); }
+  // The vector U'''(a, b, .): U_112 = 2c (and its permutations), U_222 = -(k-1)(k-2) q2^(k-3).
+  Vec<2> U3_times(const Vec<2>& q, const Vec<2>& a, const Vec<2>& b) const {
+    const double U222 = -(k - 1.0) * (k - 2) * int_pow(q[1], k - 3);
+    if constexpr (Coupling) return Vec<2>(2 * c * (a[0] * b[1] + a[1] * b[0]), 2 * c * a[0] * b[0] + U222 * a[1] * b[1]);
+    return Vec<2>(0.0, U222 * a[1] * b[1]);
+  }
   // U''''(a^4) = U_2222 a_2^4 and U^(5)(a^5) = U_22222 a_2^5 (the only nonzero components).
   double U4(const Vec<2>& q, const Vec<2>& a) const {
     return k < 4 ? 0.0 : -(k - 1.0) * (k - 2) * (k - 3) * int_pow(q[1], k - 4) * int_pow(a[1], 4);

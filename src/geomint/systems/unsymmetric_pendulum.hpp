@@ -19,6 +19,12 @@ struct UnsymmetricPendulum : UnitMassSeparable<1> {
   // Higher directional derivatives (one degree of freedom: U^(k)(a^k) = U^(k)(q) a^k).
   double U4(const Vec<1>& q, const Vec<1>& a) const { return (-std::cos(q[0]) + 3.2 * std::sin(2 * q[0])) * std::pow(a[0], 4); }
   double U5(const Vec<1>& q, const Vec<1>& a) const { return (std::sin(q[0]) + 6.4 * std::cos(2 * q[0])) * std::pow(a[0], 5); }
+  // The largest value of U: U' = sin q + 0.4 (1 - 2 sin^2 q) = 0 at sin q = s = (1 - sqrt(2.28)) / 1.6 (the root
+  // in [-1, 1]), where U = cos q (0.4 s - 1) is largest with cos q = -sqrt(1 - s^2).
+  static double U_max() {
+    const double s = (1 - std::sqrt(2.28)) / 1.6;
+    return std::sqrt(1 - s * s) * (1 - 0.4 * s);
+  }
 };
 
 }  // namespace geomint

@@ -1,0 +1,73 @@
+#pragma once
+// Statistics of an ensemble of trajectories and of a recorded time series (004 Figs 2-6): the mean
+// and sample standard deviation across the trajectories, their standard errors, the exponent of a
+// power law fitted in log-log coordinates, the peak-to-peak amplitude about a least-squares line,
+// and the median.
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <span>
+#include <vector>
+
+#include "geomint/observables/linear_fit.hpp"
+
+namespace geomint {
+
+struct MeanDeviation {
+  double mean = 0, sd = 0;
+};
+
+// The mean and the sample standard deviation (denominator M - 1) of M >= 2 values.
+inline MeanDeviation mean_and_deviation(std::span<const double> v) {
+  const double M = static_cast<double>(v.size());
+  double mean = 0, var = 0;
+  for (double x : v) mean += x;
+  mean /= M;
+  for (double x : v) var += (x - mean) * (x - mean);
+  return {mean, std::sqrt(var / (M - 1))};
+}
+
+// Standard errors of the mean and of the standard deviation sd of M samples (normal
+// approximation): sd / sqrt(M) and sd / sqrt(2 (M - 1)).
+inline double standard_error_of_mean(double sd, double M) { return sd / std::sqrt(M); }
+inline double standard_error_of_deviation(double sd, double M) { return sd / std::sqrt(2 * (M - 1)); }
+
+// The exponent gamma of s ~ t^gamma: the least-squares slope of log s against log t over the
+// points with t >= t0 and s > 0 (NaN if fewer than two).
+inline double power_law_exponent(std::span<const double> t, std::span<const double> s, double t0) {
+  std::vector<double> lt, ls;
+  for (std::size_t i = 0; i < t.size(); ++i)
+    if (t[i] >= t0 && s[i] > 0) lt.push_back(std::log(t[i])), ls.push_back(std::log(s[i]));
+  return lt.size() >= 2 ? linear_fit(lt, ls).slope : std::numeric_limits<double>::quiet_NaN();
+}
+
+// The least-squares slope of y against x over the points with x >= x0.
+inline double slope_from(std::span<const double> x, std::span<const double> y, double x0) {
+  std::vector<double> a, b;
+  for (std::size_t i = 0; i < x.size(); ++i)
+    if (x[i] >= x0) a.push_back(x[i]), b.push_back(y[i]);
+  return linear_fit(a, b).slope;
+}
+
+// max - min of the residuals of y about its least-squares line in x: the size of the oscillation
+// about a linear trend.
+inline double peak_to_peak_about_line(std::span<const double> x, std::span<const double> y) {
+  const LinearFit line = linear_fit(x, y);
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const double r = y[i] - line.intercept - line.slope * x[i];
+    lo = std::min(lo, r), hi = std::max(hi, r);
+  }
+  return hi - lo;
+}
+
+// The median of v (the mean of the two middle values for an even count; NaN if v is empty).
+inline double median(std::vector<double> v) {
+  if (v.empty()) return std::numeric_limits<double>::quiet_NaN();
+  std::sort(v.begin(), v.end());
+  const std::size_t n = v.size();
+  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+}  // namespace geomint
