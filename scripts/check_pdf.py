@@ -3,7 +3,8 @@
 
 Reads the text of the PDF (pdftotext, poppler-utils) and fails, naming the page and line, on
 "??" (an undefined reference), "n/a", "nan", "missing:" (a value report.py --draft could not
-find) or an "inf" standing alone; and if its first pages lack the contents or the ledger.
+find), an "inf" standing alone or a figure "not yet rendered"; and if its first pages lack the
+contents or the ledger.
 """
 import re
 import subprocess
@@ -11,7 +12,7 @@ import sys
 
 BAD = [(re.compile(r"\?\?"), "an undefined reference"), (re.compile(r"\bn/a\b", re.I), "n/a"),
        (re.compile(r"\bnan\b", re.I), "a NaN"), (re.compile(r"\bmissing:"), "a missing value"),
-       (re.compile(r"(?<![\w.])-?inf\b"), "an infinity")]
+       (re.compile(r"(?<![\w.])-?inf\b"), "an infinity"), (re.compile(r"not yet rendered"), "a missing figure")]
 
 
 def main(argv):

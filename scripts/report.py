@@ -185,11 +185,23 @@ def results_tex(runs, tex_files, draft):
 
 def value_text(v):
     """A published or reproduced value: a number, or a table of them keyed by a parameter."""
-    if isinstance(v, dict):
-        return "; ".join(f"{tex_escape(k)}: {value_text(x)}" for k, x in v.items())
+    if isinstance(v, dict):  # keyed by a name, or by a number written as %.17g (shown as %g)
+        return "; ".join(f"{tex_escape(key_text(k))}: {value_text(x)}" for k, x in v.items())
     if is_number(v):
         return "$" + (number(v, "sci3") or tex_escape(v)) + "$" if math.isfinite(v) else tex_escape(v)
     return "not computed" if v is None else tex_escape(v)
+
+
+def key_text(k):
+    try:
+        return f"{float(k):g}"
+    except ValueError:
+        return k
+
+
+def code(text):
+    """Typewriter text that may break after its dots, slashes and underscores."""
+    return r"\texttt{" + re.sub(r"(\.|/|\\_)", r"\1\\allowbreak{}", tex_escape(text)) + "}"
 
 
 def comparisons_tex(runs):
@@ -263,10 +275,10 @@ def made_items(makes):
     return [(m.group(1), f"{kind} {n.strip().rstrip('.')}") for n in m.group(3).split(",") if n.strip()]
 
 
-def figure_scripts(files):
-    """The figure scripts that read one of a study's files (figures/*.gp naming the file)."""
+def figure_scripts(run, files):
+    """The figure scripts of a run (figures/<run>_*.gp) that read one of a study's files."""
     found = []
-    for gp in sorted((ROOT / "figures").glob("*.gp")):
+    for gp in sorted((ROOT / "figures").glob(f"{run}_*.gp")):
         text = gp.read_text(encoding="utf-8")
         if any(re.search(re.escape(f).replace(r"\*", r"[^'\" ]*"), text) for f in files):
             found.append(gp.name)
@@ -281,25 +293,26 @@ def ledger_tex(runs, papers, tests):
                 for item in made_items(st["makes"]):
                     makers.setdefault(item, []).append((name, st))
     out = ["% The reproduction ledger (scripts/report.py from paper/papers.toml, run.json and summary.json).",
-           r"{\scriptsize\begin{longtable}{@{}p{0.08\linewidth}p{0.1\linewidth}p{0.27\linewidth}p{0.27\linewidth}"
-           r"p{0.2\linewidth}@{}}",
+           r"{\scriptsize\begin{longtable}{@{}>{\raggedright}p{0.07\linewidth}>{\raggedright}p{0.08\linewidth}"
+           r">{\raggedright}p{0.25\linewidth}>{\raggedright}p{0.22\linewidth}>{\raggedright\arraybackslash}p{0.3\linewidth}@{}}",
            r"\toprule paper & in this report & verdict & published / reproduced & rerun, figure, test\\ \midrule",
            r"\endhead"]
     for paper in papers["paper"]:
         for item in paper["item"]:
-            where = f"[{paper['id']}] {tex_escape(item['name'])}"
+            where = f"{{[{paper['id']}]}} {tex_escape(item['name'])}"  # (braced: not \\[dimen])
             if "left_out" in item:
                 out.append(f"{where} & --- & left out: {tex_escape(item['left_out'])} & & \\\\")
                 continue
             done = makers.get((paper["id"], item["name"]), [])
             if not done:
                 raise SystemExit(f"report.py: no run made [{paper['id']}] {item['name']} (papers.toml lists it)")
-            verdicts, values, commands, tests_cited, files = [], [], [], [], []
+            verdicts, values, commands, tests_cited, scripts = [], [], [], [], []
             for name, st in done:
                 experiment = runs[name]["summary"].get("experiment", name)
                 scene = runs[name]["run"].get("scene_file", "")
-                commands.append(f"\\path{{build/bin/{experiment} --scene {scene} --study {st['name']}}}")
-                files += st["files"]
+                commands.append(code(f"build/bin/{experiment} --study {st['name']}" +
+                                     ("" if name == experiment else f" --scene {scene}")))
+                scripts += figure_scripts(name, st["files"])
                 tests_cited.append(f"{experiment}.studies")
                 for key, c in (runs[name]["summary"].get("comparisons") or {}).items():
                     if c.get("study") != st["name"] or c["verdict"] in ("not comparable", "not computed"):
@@ -307,30 +320,32 @@ def ledger_tex(runs, papers, tests):
                     verdicts.append((c["verdict"], c.get("expect", "reproduced"), key, c))
                     if c.get("test"):
                         tests_cited.append(c["test"])
-            if any(v[0] == "differs" for v in verdicts):
-                bad = [v for v in verdicts if v[0] == "differs"]
-                verdict = "discrepant: " + "; ".join(
-                    f"\\texttt{{{tex_escape(k)}}} ({'known, see the errata' if e == 'differs' else 'unexpected'})"
-                    for _, e, k, _ in bad)
+            unexpected = [k for v, e, k, _ in verdicts if v == "differs" and e != "differs"]
+            errata = [k for v, e, k, _ in verdicts if v == "differs" and e == "differs"]
+            compared = sum(v == "reproduced" for v, _, _, _ in verdicts)
+            reported = sum(v == "reported" for v, _, _, _ in verdicts)
+            if unexpected:
+                verdict = "discrepant: " + ", ".join(f"\\texttt{{{tex_escape(k)}}}" for k in unexpected) + " differ"
             elif "partial" in item:
                 verdict = "partial: " + tex_escape(item["partial"])
-            elif verdicts:
-                verdict = f"reproduced ({sum(v[0] == 'reproduced' for v in verdicts)} compared within tolerance" + \
-                          (f", {sum(v[0] == 'reported' for v in verdicts)} reported)" if any(v[0] == 'reported' for v in verdicts) else ")")
             else:
-                verdict = "reproduced (shown; the paper prints no number to compare)"
+                verdict = "reproduced"
+            details = ([f"{compared} within tolerance"] if compared else []) + \
+                      ([f"{reported} reported"] if reported else []) + \
+                      ([r"errata (Section~\ref{sec:errata}): " + ", ".join(f"\\texttt{{{tex_escape(k)}}}" for k in errata)]
+                       if errata else []) + ([] if verdicts else ["the paper prints no number to compare"])
+            verdict += " (" + "; ".join(details) + ")"
             for _, _, key, c in verdicts[:2]:
                 values.append(f"{value_text(c.get('published'))} / {value_text(c.get('reproduced'))}")
             if tests is not None:
                 for t in tests_cited:
                     if t not in tests:
                         raise SystemExit(f"report.py: the ledger cites the test '{t}', which ctest does not list")
-            scripts = figure_scripts(files)
             label = item.get("label", "")
             shown = (f"{'Table' if label.startswith('tab:') else 'Figure'}~\\ref{{{label}}}, p.~\\pageref{{{label}}}"
                      if label else "")
-            rerun = "; ".join(commands) + ("; " + ", ".join(f"\\path{{figures/{s}}}" for s in scripts) if scripts else "") + \
-                "; " + ", ".join(f"\\texttt{{{tex_escape(t)}}}" for t in dict.fromkeys(tests_cited))
+            rerun = "; ".join(commands) + ("; " + ", ".join(code(f"figures/{g}") for g in scripts) if scripts else "") + \
+                "; " + ", ".join(code(t) for t in dict.fromkeys(tests_cited))
             out.append(f"{where} & {shown} & {verdict} & {'; '.join(values)} & {rerun}\\\\")
     out += [r"\bottomrule", r"\end{longtable}}"]
     return "\n".join(out) + "\n"

@@ -52,7 +52,7 @@ def main() -> int:
     papers = tomllib.loads((source / "paper" / "papers.toml").read_text(encoding="utf-8"))
     for paper in papers["paper"]:
         for item in paper["item"]:
-            if f"[{paper['id']}] {item['name']}" not in ledger:
+            if f"{{[{paper['id']}]}} {item['name']}" not in ledger:
                 problems.append(f"ledger: no row for [{paper['id']}] {item['name']}")
     lookups_tex.write_text("\\result{" + runs[0] + "}{no.such.key}\n", encoding="utf-8")
     missing = subprocess.run(command + ["--tex", str(lookups_tex)], capture_output=True, text=True)

@@ -1,11 +1,12 @@
 #pragma once
 // Wall-clock timing for the cost figures and summary.json (never for pass/fail).
-#include <algorithm>
 #include <chrono>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "geomint/core/integrate.hpp"
+#include "geomint/observables/ensemble_statistics.hpp"
 
 namespace geomint {
 
@@ -25,9 +26,7 @@ double median_seconds(int repeats, const F& f) {
     f();
     t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
   }
-  std::sort(t.begin(), t.end());
-  const std::size_t n = t.size();
-  return n % 2 ? t[n / 2] : 0.5 * (t[n / 2 - 1] + t[n / 2]);
+  return median(std::move(t));
 }
 
 // n steps of eq. (23) (pre once, post once) with every call in the loop inlined: each method is
