@@ -242,7 +242,7 @@ def errata_tex(runs, tests):
             items.append(f"\\item \\textbf{{{tex_escape(c['where'])}.}} Published {value_text(c.get('published'))}; "
                          f"the printed statement gives {value_text(c.get('reproduced'))} "
                          f"(\\texttt{{{tex_escape(name)}}}, verdict: {c['verdict']}). {tex_escape(c.get('note', ''))} "
-                         f"Shown by \\texttt{{ctest -R {tex_escape(test)}}}.")
+                         f"Shown by {code('ctest -R ' + test)}.")
     out += [r"\begin{enumerate}"] + items + [r"\end{enumerate}"] if items else ["No published statement differs."]
     return "\n".join(out) + "\n"
 
