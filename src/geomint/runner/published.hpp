@@ -4,7 +4,7 @@
 //
 //   [p_err_N10]
 //   study = "table1"                      # the study that reproduces it
-//   value = 8.95e-6                       # or a table keyed by a parameter: { "0.1" = 2.5e-11, ... }
+//   value = 1.0e-6                        # or a table keyed by a parameter: { "0.1" = 3.0e-11, ... }
 //   where = "001 Table 1, N = 10"         # seed, figure / table / equation
 //   summary = "reproduced.p_err_N10"      # the reproduced value in summary.json (dotted path)
 //   compare = { rel = 0.03 }              # or { abs = 1e-13 }, { order = 0.1 } (|difference| <= 0.1);
