@@ -27,11 +27,50 @@ term(fmt, name, w, h) = (fmt eq "pdf" \
 set datafile separator comma
 csv(file) = results . '/' . file
 
-# ---- one colour per method, used in every figure (Okabe-Ito, colour-blind safe)
-C_EXACT = '#000000'      # exact solution
-C_SE    = '#D55E00'      # (symplectic) Euler without compensation
-C_COMP  = '#0072B2'      # with the compensating transformation
-C_RK4   = '#009E73'      # classical RK4, reference
+# ---- one colour per method, keyed by the registry's names (build/bin/geomint-methods --names) ----
+# method_colour('stormer_verlet') is the colour of a method in every figure (Okabe-Ito and, for the
+# five discretizations of 003, Paul Tol's "bright": colour-blind safe). A base method is vermillion
+# and its processed or compensated form blue throughout. Methods that a scene lists together
+# (its *.methods) have different colours: ctest palette.distinct_per_scene checks this palette
+# against every paper scene and the registry.
+PALETTE = " explicit_euler:#D55E00" \
+        . " rk4:#009E73" \
+        . " symplectic_euler_pq:#D55E00" \
+        . " symplectic_euler_qp:#D55E00" \
+        . " compensated_symplectic_euler:#0072B2" \
+        . " stormer_verlet:#D55E00" \
+        . " rowlands_kernel:#E69F00" \
+        . " rowlands:#0072B2" \
+        . " rowlands_cheap:#56B4E9" \
+        . " rowlands_printed:#CC79A7" \
+        . " takahashi_imada:#0072B2" \
+        . " simplified_takahashi_imada:#009E73" \
+        . " forest_ruth:#000000" \
+        . " implicit_midpoint:#D55E00" \
+        . " lobatto:#0072B2" \
+        . " simpson:#E69F00" \
+        . " conformal_M:#4477AA" \
+        . " conformal_MT:#228833" \
+        . " conformal_TM:#EE6677" \
+        . " conformal_TT:#AA3377" \
+        . " conformal_T:#CCBB44" \
+        . " phi0:#D55E00" \
+        . " phi2:#E69F00" \
+        . " phi4:#0072B2" \
+        . " phi6:#009E73" \
+        . " odeint_rk4:#009E73" \
+        . " odeint_rkn_sb3a:#882255" \
+        . " odeint_velocity_verlet:#8C3B00" \
+        . " odeint_rkf78:#CC79A7" \
+        . " odeint_bulirsch_stoer:#000000"
+C_OTHER = '#777777'      # a method the palette does not know
+method_colour(name) = (_p = strstrt(PALETTE . " ", " " . name . ":"), \
+                       _p > 0 ? PALETTE[_p + strlen(name) + 2 : _p + strlen(name) + 8] : C_OTHER)
+
+C_EXACT = '#000000'                                  # exact solution
+C_SE    = method_colour('symplectic_euler_pq')       # (symplectic) Euler without compensation
+C_COMP  = method_colour('compensated_symplectic_euler')  # with the compensating transformation
+C_RK4   = method_colour('rk4')                       # classical RK4, reference
 
 LS_EXACT = 1;  set style line LS_EXACT lc rgb C_EXACT lw 1.0 dt 1
 LS_SE    = 2;  set style line LS_SE    lc rgb C_SE    lw 1.0 pt 7 ps 0.55   # filled circles
@@ -63,12 +102,12 @@ powerlaw(h, c, order) = 10**c * h**order
 
 # ---- 000 Sec. 3.3, Rowlands time stepping (figures/rowlands_convergence_*.gp) ----
 # As above, the unprocessed base method is vermillion and the processed one blue.
-C_SV      = C_SE         # Störmer–Verlet (26)–(28); also odeint's velocity Verlet (same method)
-C_ROW     = C_COMP       # Rowlands kernel (31) with the processors (32)–(33)
-C_ROWCH   = '#56B4E9'    # Rowlands kernel with the cheap processors (34)–(37)
-C_KERNEL  = '#E69F00'    # Rowlands kernel (31) without processing
-C_PRINTED = '#CC79A7'    # processors (32)–(33) with the coefficient h²/24 as printed
-C_RKN     = '#882255'    # odeint symplectic RKN (McLachlan SB3a), order 4
+C_SV      = method_colour('stormer_verlet')    # Störmer–Verlet (26)–(28); odeint's velocity Verlet, the same method, a darker vermillion
+C_ROW     = method_colour('rowlands')          # Rowlands kernel (31) with the processors (32)–(33)
+C_ROWCH   = method_colour('rowlands_cheap')    # Rowlands kernel with the cheap processors (34)–(37)
+C_KERNEL  = method_colour('rowlands_kernel')   # Rowlands kernel (31) without processing
+C_PRINTED = method_colour('rowlands_printed')  # processors (32)–(33) with the coefficient h²/24 as printed
+C_RKN     = method_colour('odeint_rkn_sb3a')   # odeint symplectic RKN (McLachlan SB3a), order 4
 # (odeint's RK4 uses C_RK4 and LS_RK4)
 
 LS_SV      = 21; set style line LS_SV      lc rgb C_SV      lw 1.0 pt 7  ps 0.55  # filled circles
@@ -77,7 +116,7 @@ LS_ROWCH   = 23; set style line LS_ROWCH   lc rgb C_ROWCH   lw 1.0 pt 9  ps 0.65
 LS_KERNEL  = 24; set style line LS_KERNEL  lc rgb C_KERNEL  lw 1.0 pt 12 ps 0.80  # open diamonds
 LS_PRINTED = 25; set style line LS_PRINTED lc rgb C_PRINTED lw 1.0 pt 6  ps 0.60  # open circles
 LS_RKN     = 26; set style line LS_RKN     lc rgb C_RKN     lw 1.0 pt 10 ps 0.70  # open inverted triangles
-LS_VV      = 27; set style line LS_VV      lc rgb C_SV      lw 1.0 pt 6  ps 1.00 dt (4,3)  # large open circles
+LS_VV      = 27; set style line LS_VV      lc rgb method_colour('odeint_velocity_verlet')     lw 1.0 pt 6  ps 1.00 dt (4,3)  # large open circles
 # least-squares fits: dashed (dotted for the processors as printed), with the
 # method's marker for the key sample; LS_<X>_FIT = LS_<X> + 10
 LS_SV_FIT      = 31; set style line LS_SV_FIT      lc rgb C_SV      lw 0.9 dt (8,4) pt 7  ps 0.55
@@ -115,10 +154,10 @@ need_num(var, s) = (s eq "?") \
 # ---- 001 Dubois & Rojas-Quintero, Lobatto variational integrator (figures/lobatto_table_*.gp) ----
 # The paper's method is blue (as the processed / compensated methods above), the comparison
 # schemes of its Fig. 1 and Table 1 orange (Simpson) and vermillion (implicit midpoint).
-C_LOB   = C_COMP       # Lobatto P3 variational scheme (13)–(14); nonlinear: Newton on the internal nodes
-C_SIMP  = '#E69F00'    # Simpson P2 variational scheme (001 ref. [2])
-C_MID   = C_SE         # implicit midpoint
-C_RKF78 = '#CC79A7'    # odeint Runge–Kutta–Fehlberg 7(8), fixed step
+C_LOB   = method_colour('lobatto')            # Lobatto P3 variational scheme (13)–(14); nonlinear: Newton on the internal nodes
+C_SIMP  = method_colour('simpson')            # Simpson P2 variational scheme (001 ref. [2])
+C_MID   = method_colour('implicit_midpoint')  # implicit midpoint
+C_RKF78 = method_colour('odeint_rkf78')       # odeint Runge–Kutta–Fehlberg 7(8), fixed step
 # (odeint's RK4 uses C_RK4 and LS_RK4)
 LS_LOB   = 41; set style line LS_LOB   lc rgb C_LOB   lw 1.0 pt 4  ps 0.70   # open squares
 LS_SIMP  = 42; set style line LS_SIMP  lc rgb C_SIMP  lw 1.0 pt 12 ps 0.85   # open diamonds
@@ -149,8 +188,8 @@ summary_real(key) = (_i = _fv('summary.' . key), _i > 0 ? sprintf("%.17e", FV_VA
 sci(x) = x == 0 ? "0" : gprintf("%.2t·10^{%T}", x)
 # the methods: Störmer–Verlet vermillion and dashed (as in 004 Fig. 1), Takahashi–Imada (1.4) blue,
 # the simplified method (1.6) bluish green (it is the only method of Figs 2–5); statistics black
-C_TI   = C_COMP
-C_STI  = '#009E73'
+C_TI   = method_colour('takahashi_imada')
+C_STI  = method_colour('simplified_takahashi_imada')
 C_STAT = '#000000'
 LS_TD_SV  = 101; set style line LS_TD_SV  lc rgb C_SV  lw 1.0 dt (6,3) pt 7 ps 0.55   # filled circles, dashed
 LS_TD_TI  = 102; set style line LS_TD_TI  lc rgb C_TI  lw 1.0 dt 1     pt 4 ps 0.80   # open squares, solid
@@ -172,8 +211,7 @@ ORDER_METHODS = 'METHODS = ""; ' \
               . 'do for [m in CSV_METHODS] { if (!in_list(PREFERRED, m)) { METHODS = METHODS.m." " } }'
 # Forest-Ruth (in no paper here: the standard order-4 composition) and any further method: black
 # crosses and grey stars; their fits dotted (style + 10)
-C_FR = '#000000'
-C_OTHER = '#777777'
+C_FR = method_colour('forest_ruth')
 LS_FR    = 28; set style line LS_FR    lc rgb C_FR    lw 1.0 pt 2 ps 0.75
 LS_OTHER = 29; set style line LS_OTHER lc rgb C_OTHER lw 1.0 pt 3 ps 0.75
 set style line LS_FR + 10    lc rgb C_FR    lw 0.9 dt (2,3) pt 2 ps 0.75
