@@ -306,7 +306,7 @@ def ledger_tex(runs, papers, tests):
             done = makers.get((paper["id"], item["name"]), [])
             if not done:
                 raise SystemExit(f"report.py: no run made [{paper['id']}] {item['name']} (papers.toml lists it)")
-            verdicts, values, commands, tests_cited, scripts = [], [], [], [], []
+            verdicts, values, commands, tests_cited, scripts, backing = [], [], [], [], [], []
             for name, st in done:
                 experiment = runs[name]["summary"].get("experiment", name)
                 scene = runs[name]["run"].get("scene_file", "")
@@ -318,6 +318,8 @@ def ledger_tex(runs, papers, tests):
                     if c.get("study") != st["name"] or c["verdict"] in ("not comparable", "not computed"):
                         continue
                     verdicts.append((c["verdict"], c.get("expect", "reproduced"), key, c))
+                    if c["verdict"] == "differs":  # the file that states the discrepancy and its reason
+                        backing.append(f"experiments/{experiment}/published.toml")
                     if c.get("test"):
                         tests_cited.append(c["test"])
             unexpected = [k for v, e, k, _ in verdicts if v == "differs" and e != "differs"]
@@ -334,7 +336,7 @@ def ledger_tex(runs, papers, tests):
                       ([f"{reported} reported"] if reported else []) + \
                       ([r"errata (Section~\ref{sec:errata}): " + ", ".join(f"\\texttt{{{tex_escape(k)}}}" for k in errata)]
                        if errata else []) + ([] if verdicts else ["the paper prints no number to compare"])
-            verdict += " (" + "; ".join(details) + ")"
+            verdict += " (" + "; ".join(details + [code(f) for f in dict.fromkeys(backing)]) + ")"
             for _, _, key, c in verdicts[:2]:
                 values.append(f"{value_text(c.get('published'))} / {value_text(c.get('reproduced'))}")
             if tests is not None:
