@@ -2,7 +2,7 @@
 """The generated parts of the reproduction report, from data only.
 
     report.py RESULTS_ROOT OUT_DIR [--methods METHODS_JSON] [--papers PAPERS_TOML] [--tests CTEST_LIST]
-              [--tex FILE ...] [--draft]
+              [--junit JUNIT_XML] [--tex FILE ...] [--draft]
 
 RESULTS_ROOT/<run>/summary.json and run.json are the runs (<run> is the directory name). Writes
 into OUT_DIR:
@@ -26,6 +26,8 @@ into OUT_DIR:
                     comparisons, the command, the figure scripts that read its files and the tests.
   bibliography.tex  with --papers: the papers and their code.
   machine.tex       the CPU, compiler, flags and commit of the runs (run.json).
+  hardcases.tex     with --junit: every stability test of the last ctest run, what its name says it
+                    asserts, its result and time.
 
 It computes nothing: every number is copied from the JSON and formatted.
 """
@@ -379,6 +381,31 @@ def machine_tex(runs):
     return "% The machine and build of the runs (run.json).\n" + r"\\ ".join(lines) + "\n"
 
 
+def sentence(test_name):
+    """A gtest name as words: Suite.ExplicitEulerAtItsBound -> 'explicit Euler at its bound'."""
+    words = re.findall(r"[A-Z][a-z]+|[A-Z]+(?![a-z])|\d+(?:e\d+)?|[a-z]+", test_name.split(".")[-1])
+    small = {"a", "an", "and", "are", "as", "at", "by", "for", "from", "in", "is", "its", "near", "not", "of", "on",
+             "or", "than", "the", "to", "with", "without", "beyond", "below", "above", "stays", "stay", "gives"}
+    return " ".join(w.lower() if i and w.lower() in small else w for i, w in enumerate(words))
+
+
+def hard_cases_tex(junit):
+    """The stability tests of the last ctest run (ctest -L stability --output-junit FILE)."""
+    cases = re.findall(r'<testcase name="([^"]+)"[^>]*time="([^"]+)" status="([^"]+)"', junit)
+    if not cases:
+        raise SystemExit("report.py: the JUnit file lists no test")
+    out = ["% The hard cases: the stability tests and their results (ctest --output-junit; scripts/report.py).",
+           r"{\footnotesize\begin{longtable}{@{}>{\raggedright}p{0.4\linewidth}>{\raggedright}p{0.38\linewidth}"
+           r"p{0.08\linewidth}r@{}}",
+           r"\toprule test & what it asserts & result & time (s)\\ \midrule", r"\endhead"]
+    for name, time, status in cases:
+        result = {"run": "passed", "fail": "FAILED"}.get(status, tex_escape(status))
+        shown = re.sub(r"(?<=[a-z0-9.])(?=[A-Z])", r"\\allowbreak{}", tex_escape(name))  # breaks between words
+        out.append(f"\\texttt{{{shown}}} & {tex_escape(sentence(name))} & {result} & {float(time):.2f}\\\\")
+    out += [r"\bottomrule", r"\end{longtable}}"]
+    return "\n".join(out) + "\n"
+
+
 def write(path, text):
     tmp = path.with_name(f".{path.name}.tmp-{os.getpid()}")
     tmp.write_text(text, encoding="utf-8")
@@ -393,6 +420,7 @@ def main():
     parser.add_argument("--papers", help="paper/papers.toml: the papers' figures and tables, the bibliography")
     parser.add_argument("--tests", help="the output of ctest -N: the tests the report may cite")
     parser.add_argument("--tex", nargs="*", help="the LaTeX files whose lookups to resolve")
+    parser.add_argument("--junit", help="ctest -L stability --output-junit FILE: the hard cases and their results")
     parser.add_argument("--draft", action="store_true", help="show a missing value as a note, do not stop")
     args = parser.parse_args()
     root, out = pathlib.Path(args.results), pathlib.Path(args.out)
@@ -414,6 +442,8 @@ def main():
              "machine.tex": machine_tex(runs)}
     if args.methods:
         files["methods.tex"] = methods_tex(json.loads(pathlib.Path(args.methods).read_text(encoding="utf-8")))
+    if args.junit:
+        files["hardcases.tex"] = hard_cases_tex(pathlib.Path(args.junit).read_text(encoding="utf-8"))
     if args.papers:
         papers = tomllib.loads(pathlib.Path(args.papers).read_text(encoding="utf-8"))
         files["ledger.tex"] = ledger_tex(runs, papers, tests)

@@ -33,7 +33,14 @@ def main() -> int:
                                    for r in runs), encoding="utf-8")
     command = [sys.executable, str(script), str(results), str(work), "--methods", str(methods),
                "--papers", str(source / "paper" / "papers.toml")]
-    subprocess.run(command + ["--tex", str(lookups_tex)], check=True)
+    junit = work / "junit.xml"  # a ctest JUnit report: one passed, one failed test
+    junit.write_text('<testsuite><testcase name="Suite.StaysBounded" classname="x" time="0.5" status="run"/>'
+                     '<testcase name="Suite.DivergesBeyondTheBound" classname="x" time="1.5" status="fail"/></testsuite>',
+                     encoding="utf-8")
+    subprocess.run(command + ["--tex", str(lookups_tex), "--junit", str(junit)], check=True)
+    hard = (work / "hardcases.tex").read_text(encoding="utf-8") if (work / "hardcases.tex").is_file() else ""
+    if "Stays Bounded & passed" not in hard or "Diverges beyond the Bound & FAILED" not in hard:
+        problems.append("hardcases.tex does not list the JUnit report's tests with their results")
     for name in ("results.tex", "comparisons.tex", "errata.tex", "methods.tex", "ledger.tex", "bibliography.tex",
                  "machine.tex"):
         if not (work / name).is_file():
