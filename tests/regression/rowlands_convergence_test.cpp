@@ -86,48 +86,44 @@ TEST(RowlandsConvergence, ForestRuthIsFourthOrder) {
 TEST(RowlandsConvergence, ForestRuthCostsThreeForcesPerStep) {
   // At equal h Forest-Ruth evaluates the force 3 times per step (plus once at the start), and its
   // phase error is larger than that of the processed Rowlands method, which costs less (000 Sec. 3.3).
-  const fs::path csv = dir / "fig4_convergence.csv";
-  std::ifstream in(csv);
-  ASSERT_TRUE(in) << csv;
-  std::string header, row;
-  std::getline(in, header);
-  std::vector<std::string> names;
-  for (std::size_t a = 0, b; a <= header.size(); a = b + 1) {
-    b = header.find(',', a);
-    if (b == std::string::npos) b = header.size();
-    names.push_back(header.substr(a, b - a));
+  const CsvFile csv = read_csv(dir / "fig4_convergence.csv");
+  const std::size_t steps = csv.column("steps"), evals = csv.column("forest_ruth_evals"),
+                    fr = csv.column("forest_ruth_phase"), row_phase = csv.column("rowlands_phase");
+  for (const auto& v : csv.rows) {
+    EXPECT_EQ(std::stoll(v[evals]), 3 * std::stoll(v[steps]) + 1) << v[steps];
+    EXPECT_GT(std::stod(v[fr]), std::stod(v[row_phase])) << v[steps];
   }
-  const auto col = [&](const std::string& n) {
-    const auto it = std::find(names.begin(), names.end(), n);
-    EXPECT_NE(it, names.end()) << n;
-    return static_cast<std::size_t>(it - names.begin());
-  };
-  const std::size_t steps = col("steps"), evals = col("forest_ruth_evals"), fr = col("forest_ruth_phase"),
-                    row_phase = col("rowlands_phase");
-  int rows = 0;
-  while (std::getline(in, row)) {
-    std::vector<std::string> v;
-    for (std::size_t a = 0, b; a <= row.size(); a = b + 1) {
-      b = row.find(',', a);
-      if (b == std::string::npos) b = row.size();
-      v.push_back(row.substr(a, b - a));
-    }
-    EXPECT_EQ(std::stoll(v[evals]), 3 * std::stoll(v[steps]) + 1) << row;
-    EXPECT_GT(std::stod(v[fr]), std::stod(v[row_phase])) << row;
-    ++rows;
-  }
-  EXPECT_GT(rows, 0);
+  EXPECT_GT(csv.rows.size(), 0u);
 }
 
-TEST(RowlandsConvergence, SummaryHasTheRequiredKeys) {
-  const auto& o = summary()["orders"];
-  for (const char* key : {"sv_energy", "sv_phase", "rowlands_energy", "rowlands_phase", "rowlands_cheap_phase",
-                          "kernel_unprocessed_phase", "forest_ruth_energy", "forest_ruth_phase"})
-    EXPECT_TRUE(o.contains(key)) << key;
-  const auto& ns = summary()["timing"]["ns_per_step"];
-  for (const char* m :
-       {"sv", "rowlands", "rowlands_cheap", "odeint_rk4", "odeint_rkn_sb3a", "odeint_velocity_verlet", "forest_ruth"})
-    EXPECT_GT(ns[m].get<double>(), 0.0) << m;
+TEST(RowlandsConvergence, EveryOrderIsTheSlopeOfThePlottedErrors) {
+  // Each order of summary.json (and orders.csv) is the least-squares slope of log err against log h
+  // of the Fig. 4 errors (fig4_convergence.csv) of its initial condition over the fitted h range.
+  const CsvFile orders = read_csv(dir / "orders.csv"), conv = read_csv(dir / "fig4_convergence.csv");
+  const std::size_t initial = orders.column("initial"), name = orders.column("name"), order = orders.column("order"),
+                    h_min = orders.column("h_min"), h_max = orders.column("h_max");
+  const std::size_t conv_initial = conv.column("initial"), conv_h = conv.column("h");
+  for (const auto& o : orders.rows) {
+    // order name -> CSV column: the kernel alone is "kernel", the energy norm's RMS is "_energy_rms".
+    std::string col = o[name];
+    if (col.rfind("kernel_unprocessed", 0) == 0) col.replace(0, std::string("kernel_unprocessed").size(), "kernel");
+    if (col.size() > 7 && col.compare(col.size() - 7, 7, "_energy") == 0) col += "_rms";
+    const std::size_t c = conv.column(col);
+    const double lo = std::stod(o[h_min]), hi = std::stod(o[h_max]);
+    double n = 0, sx = 0, sy = 0, sxx = 0, sxy = 0;
+    for (const auto& r : conv.rows) {
+      const double h = std::stod(r[conv_h]);
+      if (r[conv_initial] != o[initial] || h < lo || h > hi) continue;
+      const double x = std::log(h), y = std::log(std::stod(r[c]));
+      n += 1, sx += x, sy += y, sxx += x * x, sxy += x * y;
+    }
+    ASSERT_GE(n, 3) << o[name] << ", initial condition " << o[initial];
+    const double slope = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+    EXPECT_NEAR(std::stod(o[order]), slope, 1e-9) << o[name] << ", initial condition " << o[initial];
+    EXPECT_EQ(summary()["orders_by_initial"][std::stoul(o[initial])][o[name]].get<double>(), std::stod(o[order]))
+        << o[name] << ", initial condition " << o[initial];
+  }
+  EXPECT_EQ(summary()["orders"], summary()["orders_by_initial"][0]);
 }
 
 TEST(RowlandsConvergence, ReferenceIsAHundredTimesBelowEveryFittedError) {

@@ -1,10 +1,11 @@
 #pragma once
-// The summary.json of an experiment's quick run (the ctest fixture <name>.quick_run).
+// The summary.json and CSV files of an experiment's quick run (the ctest fixture <name>.quick_run).
 #include <filesystem>
 #include <fstream>
 #include <map>
 #include <stdexcept>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -21,4 +22,37 @@ inline const nlohmann::json& summary_of(const std::string& experiment) {
     it = cache.emplace(experiment, nlohmann::json::parse(in)).first;
   }
   return it->second;
+}
+
+// A CSV file of a run: its header and its rows, as text (no quoted fields: the runs write none).
+struct CsvFile {
+  std::vector<std::string> names;
+  std::vector<std::vector<std::string>> rows;
+
+  std::size_t column(const std::string& name) const {
+    for (std::size_t i = 0; i < names.size(); ++i)
+      if (names[i] == name) return i;
+    throw std::runtime_error("no column " + name);
+  }
+};
+
+inline std::vector<std::string> split_csv_line(const std::string& line) {
+  std::vector<std::string> v;
+  for (std::size_t a = 0, b; a <= line.size(); a = b + 1) {
+    b = line.find(',', a);
+    if (b == std::string::npos) b = line.size();
+    v.push_back(line.substr(a, b - a));
+  }
+  return v;
+}
+
+inline CsvFile read_csv(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) throw std::runtime_error("cannot read " + file.string());
+  CsvFile csv;
+  std::string line;
+  std::getline(in, line);
+  csv.names = split_csv_line(line);
+  while (std::getline(in, line)) csv.rows.push_back(split_csv_line(line));
+  return csv;
 }

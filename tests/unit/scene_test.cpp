@@ -3,7 +3,11 @@
 
 #include <filesystem>
 #include <fstream>
+#include <stdexcept>
 #include <string>
+#include <system_error>
+
+#include <stdlib.h>  // mkdtemp
 
 #include "geomint/scene/scene.hpp"
 
@@ -19,10 +23,30 @@ Schema schema() {
   return s;
 }
 
+// A fresh directory under the system's temporary directory, removed with everything in it at exit.
+struct TemporaryDirectory {
+  fs::path path;
+  TemporaryDirectory() {
+    std::string name = (fs::temp_directory_path() / "geomint_scene_test_XXXXXX").string();
+    if (!::mkdtemp(name.data())) throw std::runtime_error("mkdtemp failed for " + name);
+    path = name;
+  }
+  ~TemporaryDirectory() {
+    std::error_code ignored;
+    fs::remove_all(path, ignored);
+  }
+  TemporaryDirectory(const TemporaryDirectory&) = delete;
+  TemporaryDirectory& operator=(const TemporaryDirectory&) = delete;
+};
+
+const fs::path& scene_dir() {
+  static const TemporaryDirectory dir;
+  return dir.path;
+}
+
 fs::path scene_file(const std::string& text) {
   static int counter = 0;
-  const fs::path p = fs::temp_directory_path() / ("geomint_scene_test_" + std::to_string(::getpid()) + "_" +
-                                                  std::to_string(counter++) + ".toml");
+  const fs::path p = scene_dir() / ("scene_" + std::to_string(counter++) + ".toml");
   std::ofstream(p) << text;
   return p;
 }
@@ -159,7 +183,7 @@ TEST(Scene, BasesChainAndCyclesAreRefused) {
   EXPECT_EQ(s.integer("decay.steps"), 7);
   EXPECT_DOUBLE_EQ(s.real("decay.h"), 0.2);
   EXPECT_EQ(s.bases().size(), 2u);
-  const fs::path self = fs::temp_directory_path() / ("geomint_scene_self_" + std::to_string(::getpid()) + ".toml");
+  const fs::path self = scene_dir() / "self.toml";
   std::ofstream(self) << "base = \"" << self.filename().string() << "\"\n";
   EXPECT_NE(error_of_file(self).find("already in the chain"), std::string::npos);
   EXPECT_NE(error_of("base = \"no-such-file.toml\"\n").find("no such file"), std::string::npos);
