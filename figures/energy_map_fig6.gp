@@ -1,9 +1,9 @@
 # Fig. 6 of Takács & Fülöp (2025), Sec. 4.1: difference of the energy errors, eq. (50), of
 # symplectic Euler on the planar elastic pendulum (App. A) in Cartesian and in polar coordinates,
 # ε_(x,y) − ε_(r,φ), over the initial positions (x0, y0) with p(0) = 0. Blue: Cartesian better,
-# red: polar better. The colour scale is a signed logarithm, asinh(Δε / ε_lin), symmetric about 0
-# (|Δε| spans several decades; ε_lin, a power of ten near the lower quartile of |Δε|, is where it
-# turns from linear to logarithmic). Dark gray: a run diverged (polar, Cartesian or both).
+# red: polar better. The colour scale is a signed logarithm, asinh(Δε / ε_lin) (|Δε| spans several
+# decades; ε_lin, a power of ten near the lower quartile of |Δε|, is where it turns from linear to
+# logarithmic), over the range of the data, white at 0, each side's darkest colour at its extreme. Dark gray: a run diverged (polar, Cartesian or both).
 # Gray: isolines of H_0 = H(x0, y0, 0, 0); white dashed: the analytic boundary of the initial
 # conditions for which the polar run passes through r = 0, r = 2l + (2mg/k) cos θ (θ from +y),
 # which is the isoline H_0 = kl²/2 (the energy at r = 0).
@@ -26,6 +26,8 @@ eval need_num('YMIN', scene_num('grid.y_min'));  eval need_num('YMAX', scene_num
 eval need_num('L', scene_num('pendulum.l'));     eval need_num('M', scene_num('pendulum.m'))
 eval need_num('K', scene_num('pendulum.k'));     eval need_num('G', scene_num('pendulum.g'))
 eval need_num('DT', scene_num('dt'));            eval need_num('TMAX', scene_num('t_max'))
+eval need_num('DMIN', summary_num('map_statistics.eps_difference.min'))   # range of Δε over the map
+eval need_num('DMAX', summary_num('map_statistics.eps_difference.max'))
 DX = (XMAX - XMIN) / (NX - 1.0)
 DY = (YMAX - YMIN) / (NY - 1.0)
 
@@ -46,9 +48,10 @@ HMIN = STATS_min
 HMAX = STATS_max
 if (N_ALL != NX * NY) { exit error sprintf("map.csv has %d rows, the grid %d x %d", N_ALL, NX, NY) }
 
-# colour = asinh(Δε / ε_lin), symmetric range covering all finite differences
+# colour = asinh(Δε / ε_lin), over the range of the finite differences (0 inside it)
 sl(d) = asinh(d / EPS_LIN)
-CBMAX = sl(ADMAX)
+CBMIN = sl(DMIN < 0 ? DMIN : -EPS_LIN)
+CBMAX = sl(DMAX > 0 ? DMAX : EPS_LIN)
 DECADE_LO = floor(log10(EPS_LIN) + 0.5)
 DECADE_HI = floor(log10(ADMAX))
 
@@ -77,12 +80,13 @@ set surface
 # ---- colours -----------------------------------------------------------------
 C_DIV  = '#3a3a3a'     # diverged
 C_HISO = '#8c8c8c'     # H_0 isolines
-# diverging blue – white – red (ColorBrewer RdBu), symmetric about 0
-set palette defined (-1 '#053061', -0.75 '#2166ac', -0.5 '#4393c3', -0.25 '#92c5de', -0.08 '#d1e5f0', \
-                      0 '#f7f7f7', 0.08 '#fddbc7', 0.25 '#f4a582', 0.5 '#d6604d', 0.75 '#b2182b', 1 '#67001f')
+# diverging blue – white – red (ColorBrewer RdBu), white at 0, each side scaled to its extreme
+B = -CBMIN; R = CBMAX
+set palette defined (-B '#053061', -0.75*B '#2166ac', -0.5*B '#4393c3', -0.25*B '#92c5de', -0.08*B '#d1e5f0', \
+                      0 '#f7f7f7', 0.08*R '#fddbc7', 0.25*R '#f4a582', 0.5*R '#d6604d', 0.75*R '#b2182b', R '#67001f')
 set palette maxcolors 0
 
-set cbrange [-CBMAX:CBMAX]
+set cbrange [CBMIN:CBMAX]
 set cbtics () scale 0.5
 set cbtics add ("0" 0)
 do for [k = DECADE_LO:DECADE_HI] {

@@ -121,6 +121,34 @@ double polar_mismatch(const ElasticPendulumParams& p, const std::vector<EnergyMa
   return worst;
 }
 
+// The column x0 = 0 above the pivot (theta0 = pi): in Cartesian coordinates the force on x is
+// proportional to x (73), so x stays exactly 0 and the run is a radial oscillation on the unstable
+// upright line; in polar coordinates theta0 = fl(pi) has sin(theta0) ~ 1.2e-16, and the run falls
+// over like its neighbours. Checked at the column point nearest (0, -l): the Cartesian run started
+// at x0 = r0 sin(fl(pi)), the polar run's own start, against both runs of the map there.
+json upright_column(const MapSetup& g, const std::vector<Point>& points) {
+  const auto zero = std::find(g.xs.begin(), g.xs.end(), 0.0);
+  if (zero == g.xs.end() || g.ys.front() >= 0) return nullptr;
+  const auto nearest = std::min_element(g.ys.begin(), g.ys.end(), [&](double a, double b) {
+    return (a < 0 ? std::abs(a + g.P.l) : std::numeric_limits<double>::infinity()) <
+           (b < 0 ? std::abs(b + g.P.l) : std::numeric_limits<double>::infinity());
+  });
+  const double y0 = *nearest;
+  const std::size_t i = static_cast<std::size_t>(nearest - g.ys.begin()) * g.xs.size() +
+                        static_cast<std::size_t>(zero - g.xs.begin());
+  const double x_polar = std::abs(y0) * std::sin(std::atan2(0.0, y0));  // 000 eq. (63): x = r sin(theta)
+  const EnergyMapPoint tilted = energy_map_scalar(Coordinates::cartesian, g.P, x_polar, y0);
+  const auto value = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
+  const auto difference = [&](std::size_t at) { return value(points[at].cart.eps - points[at].polar.eps); };
+  return {{"y0", y0},
+          {"eps_difference", difference(i)},
+          {"eps_difference_neighbour", i + 1 < g.npoints && zero + 1 != g.xs.end() ? difference(i + 1) : json(nullptr)},
+          {"eps_cartesian", value(points[i].cart.eps)},
+          {"eps_polar", value(points[i].polar.eps)},
+          {"x0_of_polar_start", x_polar},
+          {"eps_cartesian_from_polar_start", value(tilted.eps)}};
+}
+
 // What the map study measured, for the timing study of the same run.
 struct MapCost {
   bool ran = false;
@@ -290,7 +318,8 @@ void run_map(Context& ctx, MapCost& cost) {
   ctx.summary["pendulum"] = {{"dt_omega", dt * spring_frequency(pendulum)},
                              {"dt_omega_bound", method_info("symplectic_euler_pq").oscillatory_bound},  // the registry's
                              {"pivot_energy", pivot_energy(pendulum)}};
-  ctx.summary["map_statistics"] = to_json(energy_map_statistics(rows, pendulum, dt, s.real("map_statistics.ring_half_width")));
+  ctx.summary["map_statistics"] = to_json(energy_map_statistics(rows, pendulum, dt, steps, s.real("map_statistics.ring_half_width")));
+  ctx.summary["map_statistics"]["upright_column"] = upright_column(g, points);
 }
 
 // The local order between the two smallest step sizes: the slope of log(err) against log(h) there.

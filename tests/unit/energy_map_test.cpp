@@ -199,7 +199,7 @@ TEST(EnergyMapStatistics, CountsAgainstTheBoundaryOfSection41) {
       {1.05, 0.0, 0.8, 1e-3, 0.5e-3, false, false, -1},  // outer candidate, on the ring: polar better
       {0.0, 1.0, 0.9, 2e-3, 1e-3, false, false, -1},     // inner candidate, on the ring: polar better
   };
-  const EnergyMapStatistics s = energy_map_statistics(rows, p, 0.2, 0.2);
+  const EnergyMapStatistics s = energy_map_statistics(rows, p, 0.2, 1000, 0.2);
   EXPECT_EQ(s.points, 9);
   EXPECT_EQ(s.diverged_polar, 5);
   EXPECT_EQ(s.diverged_cartesian, 1);
@@ -234,6 +234,26 @@ TEST(EnergyMapStatistics, CountsAgainstTheBoundaryOfSection41) {
   EXPECT_DOUBLE_EQ(*s.ratio_p05, 0.5);
   EXPECT_DOUBLE_EQ(*s.ratio_median, 0.5);
   EXPECT_DOUBLE_EQ(*s.ratio_p95, 3.0);
+}
+
+TEST(EnergyMapStatistics, TiesAtRoundOffAndWithinOnePercentApartFromWins) {
+  // J = 1000 steps: a round-off tie is |delta eps| <= 1000 eps_mach max(eps); a 1 % tie, within 0.01 max(eps).
+  const ElasticPendulumParams p{1.0, 1.0, 1.0, 0.02};
+  const std::vector<EnergyMapRow> rows = {
+      {0.0, 1.0, 0.5, 1e-3, 1e-3 * (1 + 1e-14), false, false, -1},  // round-off tie (and 1 % tie)
+      {0.0, 1.1, 0.5, 1e-3 * (1 + 1e-10), 1e-3, false, false, -1},  // 1 % tie, polar wins beyond round-off
+      {0.0, 1.2, 0.5, 1e-3, 1.008e-3, false, false, -1},            // 1 % tie, Cartesian wins beyond round-off
+      {0.0, 1.3, 0.5, 1e-3, 1.02e-3, false, false, -1},             // Cartesian wins beyond 1 %
+      {0.0, 1.4, 0.5, 1.03e-3, 1e-3, false, false, -1},             // polar wins beyond 1 %
+  };
+  const EnergyMapStatistics s = energy_map_statistics(rows, p, 0.2, 1000, 0.2);
+  EXPECT_DOUBLE_EQ(s.roundoff_tie_tolerance, 1000 * std::numeric_limits<double>::epsilon());
+  EXPECT_EQ(s.tied_roundoff, 1);
+  EXPECT_EQ(s.cartesian_better_beyond_roundoff, 2);
+  EXPECT_EQ(s.polar_better_beyond_roundoff, 2);
+  EXPECT_EQ(s.tied_percent, 3);
+  EXPECT_EQ(s.cartesian_better_beyond_percent, 1);
+  EXPECT_EQ(s.polar_better_beyond_percent, 1);
 }
 
 TEST(EnergyMapStatistics, NearestRankQuantile) {

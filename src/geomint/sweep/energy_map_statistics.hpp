@@ -2,7 +2,7 @@
 // What the map of 000 Fig. 6 shows, in numbers: where the polar runs diverge, compared with the
 // analytic boundary of Sec. 4.1 (r(0) >= 2l + (2mg/k) cos(phi(0)), cos(phi(0)) = y(0)/r(0), y
 // pointing down); how early they diverge; where the polar run has the smaller energy error (50);
-// and how the two errors compare.
+// and how the two errors compare, ties apart from wins.
 //
 // A release from rest oscillates radially about r* = l + (mg/k) cos(phi(0)) between r(0) and
 // 2r* - r(0) (systems/elastic_pendulum.hpp). A polar run that diverges inside the boundary is
@@ -59,6 +59,11 @@ struct EnergyMapStatistics {
   // runs finite in both coordinate systems: which energy error is smaller
   std::int64_t both_finite = 0, cartesian_better = 0, polar_better = 0;
   std::optional<double> eps_difference_min, eps_difference_max;  // eps_cartesian - eps_polar
+  // ties: |eps_cartesian - eps_polar| <= tolerance * max(eps_cartesian, eps_polar), at round-off (the
+  // tolerance J eps_mach of a sum of J squared errors (50)) and within 1 %; the wins beyond each
+  double roundoff_tie_tolerance = 0;
+  std::int64_t tied_roundoff = 0, cartesian_better_beyond_roundoff = 0, polar_better_beyond_roundoff = 0;
+  std::int64_t tied_percent = 0, cartesian_better_beyond_percent = 0, polar_better_beyond_percent = 0;
   double ring_half_width = 0;                      // |r(0) - l| < ring_half_width * l: near the rest length
   std::optional<double> ring_polar_better, off_ring_polar_better;  // fraction of the points there
   std::optional<double> ratio_p05, ratio_median, ratio_p95;        // of eps_polar / eps_cartesian
@@ -80,9 +85,13 @@ inline std::optional<double> fraction(std::int64_t a, std::int64_t b) {
 }
 }  // namespace detail
 
+inline constexpr double kEnergyMapTiePercent = 0.01;  // |delta eps| within 1 % of the larger eps: a tie
+
+// steps: J of (50), for the round-off tolerance of the ties.
 inline EnergyMapStatistics energy_map_statistics(const std::vector<EnergyMapRow>& rows, const ElasticPendulumParams& p,
-                                                 double dt, double ring_half_width) {
+                                                 double dt, std::int64_t steps, double ring_half_width) {
   EnergyMapStatistics s;
+  s.roundoff_tie_tolerance = static_cast<double>(steps) * std::numeric_limits<double>::epsilon();
   s.points = static_cast<std::int64_t>(rows.size());
   s.ring_half_width = ring_half_width;
   std::vector<double> inner_r, inner_candidate_r, outer_d, outer_candidate_d, alive_outer_d, div_H0, alive_H0, ratios;
@@ -96,6 +105,13 @@ inline EnergyMapStatistics energy_map_statistics(const std::vector<EnergyMapRow>
       ++s.both_finite, s.cartesian_better += d < 0, s.polar_better += d > 0;
       s.eps_difference_min = std::min(s.eps_difference_min.value_or(d), d);
       s.eps_difference_max = std::max(s.eps_difference_max.value_or(d), d);
+      const double scale = std::max(row.eps_cartesian, row.eps_polar);
+      const auto tally = [&](double tolerance, std::int64_t& tied, std::int64_t& cartesian, std::int64_t& polar) {
+        if (std::abs(d) <= tolerance * scale) ++tied;
+        else (d < 0 ? cartesian : polar) += 1;
+      };
+      tally(s.roundoff_tie_tolerance, s.tied_roundoff, s.cartesian_better_beyond_roundoff, s.polar_better_beyond_roundoff);
+      tally(kEnergyMapTiePercent, s.tied_percent, s.cartesian_better_beyond_percent, s.polar_better_beyond_percent);
     }
     const double r = std::hypot(row.x0, row.y0);
     if (r == 0) continue;  // the origin
@@ -167,6 +183,7 @@ inline nlohmann::ordered_json to_json(const EnergyMapStatistics& s) {
           {"diverged_inside", s.diverged_inside},
           {"alive_outside", s.alive_outside},
           {"cartesian_diverged_off_origin", s.cartesian_diverged_off_origin},
+          {"cartesian_diverged_at_origin", s.diverged_cartesian - s.cartesian_diverged_off_origin},
           {"inner", s.inner},
           {"inner_r_max", opt(s.inner_r_max)},
           {"inner_candidates", s.inner_candidates},
@@ -183,6 +200,15 @@ inline nlohmann::ordered_json to_json(const EnergyMapStatistics& s) {
           {"polar_better", s.polar_better},
           {"equal", s.both_finite - s.cartesian_better - s.polar_better},
           {"fraction_cartesian_better", frac(s.cartesian_better, s.both_finite)},
+          {"ties",
+           {{"roundoff_tolerance", s.roundoff_tie_tolerance},
+            {"roundoff", s.tied_roundoff},
+            {"cartesian_better_beyond_roundoff", s.cartesian_better_beyond_roundoff},
+            {"polar_better_beyond_roundoff", s.polar_better_beyond_roundoff},
+            {"percent_tolerance", kEnergyMapTiePercent},
+            {"percent", s.tied_percent},
+            {"cartesian_better_beyond_percent", s.cartesian_better_beyond_percent},
+            {"polar_better_beyond_percent", s.polar_better_beyond_percent}}},
           {"eps_difference", s.eps_difference_min
                                  ? nlohmann::ordered_json{{"min", *s.eps_difference_min}, {"max", *s.eps_difference_max}}
                                  : nlohmann::ordered_json(nullptr)},
