@@ -418,6 +418,9 @@ void run_pendulum(Context& ctx) {
       {"H_drift_rate", slope(ts_all, Hs_all)},  // the slope of the error of H over the run
       {"peak_to_peak_about_trend", {{"shifted_energy", peak_to_peak_about_line(ts_all, es_all)},
                                     {"H", peak_to_peak_about_line(ts_all, Hs_all)}}},
+      // the same about a least-squares quadratic, without the curvature of the drift (004 Fig. 2)
+      {"peak_to_peak_about_quadratic", {{"shifted_energy", peak_to_peak_about_quadratic(ts_all, es_all)},
+                                        {"H", peak_to_peak_about_quadratic(ts_all, Hs_all)}}},
       {"drift_rate_deviation", std::abs(rate - rate_predicted) / std::abs(rate_predicted)},
       {"U_max", UnsymmetricPendulum::U_max()},
       // the time the drift takes at the initial rate to bring H down to max U, where the pendulum stops turning over

@@ -7,6 +7,7 @@
 #include <type_traits>
 #include <vector>
 
+#include "geomint/methods/methods.hpp"
 #include "geomint/integrators/takahashi_imada.hpp"
 #include "geomint/observables/ensemble_statistics.hpp"
 #include "geomint/observables/error_norms.hpp"
@@ -136,11 +137,21 @@ TEST(TakahashiImada, OrdersOnTheOscillator) {
   EXPECT_NEAR(fit_order(hs, e_sv, 1e-13).order, 2.0, 0.15);
 }
 
-TEST(TakahashiImada, ProcessingMapRoundTrip) {
+TEST(TakahashiImada, ProcessingMakesItFourthOrderOnHenonHeiles) {
+  // 004 (1.5): with chi_h the global error of TI is O(h^4), without it O(h^2) (RK4 at h = 1e-3 as the reference).
   const HenonHeiles hh;
-  const auto z = make_state<2>(Vec<2>(0.1, 0.2), Vec<2>(0.45, 0.3));
-  const auto back = ti_process(hh, ti_unprocess(hh, z, 0.2, alpha), 0.2, alpha);
-  EXPECT_LT((back.q - z.q).norm() + (back.p - z.p).norm(), 1e-15);
+  const auto z0 = make_state<2>(Vec<2>(0.1, 0.2), Vec<2>(0.45, 0.3));
+  const double t = 2.0;
+  const auto exact = integrate(RungeKutta4::bind(hh), z0, 1e-3, 2000);
+  std::vector<double> hs, processed, kernel;
+  for (double h : {0.2, 0.1, 0.05}) {
+    const auto n = std::lround(t / h);
+    hs.push_back(h);
+    processed.push_back(phase_distance(integrate(takahashi_imada_method(hh, true), z0, h, n), exact));
+    kernel.push_back(phase_distance(integrate(takahashi_imada_method(hh, false), z0, h, n), exact));
+  }
+  EXPECT_NEAR(fit_order(hs, processed, 1e-12).order, 4.0, 0.3);
+  EXPECT_NEAR(fit_order(hs, kernel, 1e-12).order, 2.0, 0.3);
 }
 
 TEST(TakahashiImada, SymplecticButSimplifiedOnlyVolumePreserving) {
@@ -194,6 +205,62 @@ TEST(ModifiedEnergy, ConservedToSixthOrderAlongTheSimplifiedMethodOnHenonHeiles3
     hs.push_back(h), es.push_back(worst);
   }
   EXPECT_NEAR(fit_order(hs, es, 1e-14).order, 6.0, 0.3);
+}
+
+// max over t <= t_end of |E_n - E_0 - (the integral of (4.3) along the run, by the trapezoidal rule)| along the
+// simplified method: O(h^6) when every coefficient of (4.2) is right.
+template <class Sys, int D>
+double modified_energy_residual(const Sys& sys, const PhaseState<D>& z0, double h, double t_end) {
+  const double E0 = simplified_ti_modified_energy(sys, z0, h);
+  double worst = 0, integral = 0, last_rate = simplified_ti_drift_rate(sys, z0, h);
+  integrate(simplified_ti_method(sys, false), z0, h, std::lround(t_end / h), [&](auto j, const PhaseState<D>& z) {
+    if (j == 0) return;
+    const double rate = simplified_ti_drift_rate(sys, z, h);
+    integral += h * (rate + last_rate) / 2, last_rate = rate;
+    worst = std::max(worst, std::abs(simplified_ti_modified_energy(sys, z, h) - E0 - integral));
+  });
+  return worst;
+}
+
+TEST(ModifiedEnergy, SixthOrderAfterTheDriftOnHenonHeiles5) {
+  // k = 5, where U and U^(5) do not vanish: (4.2) with its h^4 U(p^4) term and the drift (4.3) leave O(h^6).
+  const HenonHeiles hh5{{}, 5};
+  const auto z0 = make_state<2>(Vec<2>(0.0, 0.1), Vec<2>(0.3, 0.2));
+  std::vector<double> hs, rs;
+  for (double h : {0.2, 0.1, 0.05}) hs.push_back(h), rs.push_back(modified_energy_residual(hh5, z0, h, 20.0));
+  EXPECT_NEAR(fit_order(hs, rs, 1e-14).order, 6.0, 0.4) << rs[0] << " " << rs[1] << " " << rs[2];
+}
+
+TEST(ModifiedEnergy, SixthOrderAfterTheDriftOnTheLennardJonesCluster) {
+  // 004 Fig. 6: the 3 x 3 cluster, slightly perturbed from the grid, with small velocities.
+  const LennardJones<9> lj;
+  PhaseState<18> z0;
+  for (int i = 0; i < 9; ++i) {
+    z0.q[2 * i] = 1.12 * (i % 3) + 0.02 * std::sin(1.0 + i), z0.q[2 * i + 1] = 1.12 * (i / 3) + 0.02 * std::cos(2.0 + i);
+    z0.p[2 * i] = 0.2 * std::sin(0.3 * i), z0.p[2 * i + 1] = 0.2 * std::cos(0.7 * i);
+  }
+  std::vector<double> hs, rs;
+  for (double h : {0.02, 0.01, 0.005}) hs.push_back(h), rs.push_back(modified_energy_residual(lj, z0, h, 2.0));
+  EXPECT_NEAR(fit_order(hs, rs, 1e-14).order, 6.0, 0.4);
+}
+
+TEST(ModifiedEnergy, ShiftedEnergyIsConservedToFourthOrderAlongTakahashiImada) {
+  // 004 (3.3): H + h^2 H_3 is the modified Hamiltonian of TI (unprocessed) up to O(h^4), on the pendulum of Fig. 2
+  // and on Henon-Heiles.
+  const auto order = [](const auto& sys, const auto& z0) {
+    std::vector<double> hs, es;
+    for (double h : {0.2, 0.1, 0.05}) {
+      double worst = 0;
+      const double E0 = shifted_energy(sys, z0, h);
+      integrate(takahashi_imada_method(sys, false), z0, h, std::lround(20 / h), [&](auto, const auto& z) {
+        worst = std::max(worst, std::abs(shifted_energy(sys, z, h) - E0));
+      });
+      hs.push_back(h), es.push_back(worst);
+    }
+    return fit_order(hs, es, 1e-14).order;
+  };
+  EXPECT_NEAR(order(UnsymmetricPendulum{}, make_state(0.0, 2.0)), 4.0, 0.3);
+  EXPECT_NEAR(order(HenonHeiles{}, make_state<2>(Vec<2>(0.1, 0.2), Vec<2>(0.35, 0.3))), 4.0, 0.3);
 }
 
 TEST(HenonHeiles, ThirdDerivativeAgainstFiniteDifferences) {
@@ -284,6 +351,20 @@ TEST(EnsembleStatistics, PowerLawExponentSlopeAndOscillationAboutALine) {
   EXPECT_GT(power_law_exponent(t, s, 1), 1.0);  // the points before t = 10 would steepen it
   EXPECT_NEAR(slope_from(t, y, 50), 2.0, 1e-3);
   EXPECT_NEAR(peak_to_peak_about_line(t, y), 0.5, 1e-12);
+}
+
+TEST(EnsembleStatistics, OscillationAboutAQuadratic) {
+  // A drift with curvature, 7 - 0.3 t + 2e-3 t^2 over t in [1e5, 2e5]: the least-squares quadratic recovers
+  // it (no oscillation left), while about a line the curvature alone reads as 2e-3 (5e4)^2 = 5e6.
+  std::vector<double> t, y;
+  for (int i = 0; i <= 200; ++i) t.push_back(1e5 + 500.0 * i), y.push_back(7 - 0.3 * t.back() + 2e-3 * t.back() * t.back());
+  const QuadraticFit f = quadratic_fit(t, y);
+  EXPECT_NEAR(f(1.3e5), y[60], 1e-9 * std::abs(y[60]));
+  EXPECT_LT(peak_to_peak_about_quadratic(t, y), 1e-9 * std::abs(y.back()));
+  EXPECT_NEAR(peak_to_peak_about_line(t, y), 5e6, 5e6 * 1e-6);
+  // plus a +-0.25 square wave: 0.5 about the quadratic (to the square wave's small projection on it)
+  for (std::size_t i = 0; i < y.size(); ++i) y[i] += i % 2 ? 0.25 : -0.25;
+  EXPECT_NEAR(peak_to_peak_about_quadratic(t, y), 0.5, 0.01);
 }
 
 TEST(Stiffness, LargestEigenvalueOfTheHessian) {

@@ -1,7 +1,8 @@
 #pragma once
 // Statistics of an ensemble of trajectories and of a recorded time series (004 Figs 2-6): the mean
 // and sample standard deviation across the trajectories, their standard errors, the exponent of a
-// power law fitted in log-log coordinates, the peak-to-peak amplitude about a least-squares line,
+// power law fitted in log-log coordinates, the peak-to-peak amplitude about a least-squares line or
+// quadratic,
 // and the median.
 #include <algorithm>
 #include <cmath>
@@ -50,16 +51,25 @@ inline double slope_from(std::span<const double> x, std::span<const double> y, d
   return linear_fit(a, b).slope;
 }
 
-// max - min of the residuals of y about its least-squares line in x: the size of the oscillation
-// about a linear trend.
-inline double peak_to_peak_about_line(std::span<const double> x, std::span<const double> y) {
-  const LinearFit line = linear_fit(x, y);
+// max - min of y - trend(x): the size of an oscillation about a fitted trend.
+inline double peak_to_peak_about(std::span<const double> x, std::span<const double> y, const auto& trend) {
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
   for (std::size_t i = 0; i < x.size(); ++i) {
-    const double r = y[i] - line.intercept - line.slope * x[i];
+    const double r = y[i] - trend(x[i]);
     lo = std::min(lo, r), hi = std::max(hi, r);
   }
   return hi - lo;
+}
+
+// The size of the oscillation about a linear trend (least-squares line in x).
+inline double peak_to_peak_about_line(std::span<const double> x, std::span<const double> y) {
+  const LinearFit line = linear_fit(x, y);
+  return peak_to_peak_about(x, y, [&](double t) { return line.intercept + line.slope * t; });
+}
+
+// The same about a least-squares quadratic: without the curvature of a drift whose rate changes (004 Fig. 2).
+inline double peak_to_peak_about_quadratic(std::span<const double> x, std::span<const double> y) {
+  return peak_to_peak_about(x, y, quadratic_fit(x, y));
 }
 
 // The median of v (the mean of the two middle values for an even count; NaN if v is empty).
