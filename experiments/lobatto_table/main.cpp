@@ -250,8 +250,14 @@ bool rounds_to_printed(double printed, double reproduced, int digits) {
 // The comparison with what 001 printed (published.toml, as the runner makes it after the run) of the
 // entry whose reproduced value is at `summary_key`, for the text; nullopt if there is none or this
 // scene cannot make it.
+const std::vector<Published>& published_entries() {  // read once (the runner has read and checked it already)
+  static const std::vector<Published> entries =
+      read_published(std::filesystem::path(GEOMINT_EXPERIMENT_DIR) / "published.toml");
+  return entries;
+}
+
 std::optional<json> comparison(const json& summary, const Scene& s, const std::string& summary_key) {
-  for (const Published& e : read_published(std::filesystem::path(GEOMINT_EXPERIMENT_DIR) / "published.toml")) {
+  for (const Published& e : published_entries()) {
     if (e.summary != summary_key) continue;
     auto c = compare_published(e, summary, s.to_json(), {e.study});
     if (c && c->contains("difference")) return c;
