@@ -417,9 +417,9 @@ void run_timing(Context& ctx, const MapCost& map) {
       trajectories += std::min<std::size_t>(kEnergyMapBatch, g.npoints - batches[i] * kEnergyMapBatch);
     }
     for (const auto c : {Coordinates::cartesian, Coordinates::polar}) {
-      (c == Coordinates::cartesian ? wall_cart : wall_polar) = median_seconds(1, [&] {
+      (c == Coordinates::cartesian ? wall_cart : wall_polar) = time_runs(1, [&] {
         do_not_optimize(run_batches(kernels.front().run, c, g, count, [&](std::size_t b) { return batches[b]; }));
-      });
+      }, 0).seconds();
     }
     steps = static_cast<double>(trajectories) * static_cast<double>(g.P.steps);
     timing["kernel_sample"] = {{"batches", count}, {"trajectories", trajectories},

@@ -448,7 +448,7 @@ void run_timing(Context& ctx) {
   const auto methods = s.texts("timing.methods");
   const auto seconds = [&](const std::string& method, double h, std::int64_t n) {
     return with_oscillator_method(method, osc, k, [&](const auto& m) {
-      return median_seconds(repeats, [&] { do_not_optimize(integrate_inlined(m, z0, h, n)); });
+      return time_runs(repeats, [&] { do_not_optimize(integrate_inlined(m, z0, h, n)); }).seconds();
     });
   };
   const auto timing_hs = s.reals("timing.h");

@@ -728,7 +728,7 @@ void run_timing(Context& ctx) {
                                         }),
                                         pref);
       const double wall = with_method(m, pend, [&](const auto& method) {
-        return median_seconds(repeats, [&] { do_not_optimize(integrate(method, pz0, h, n)); });
+        return time_runs(repeats, [&] { do_not_optimize(integrate(method, pz0, h, n)); }).seconds();
       });
       cost << label << h << n << wall << 1e9 * wall / static_cast<double>(n) << evals << err;
       cost.end_row();

@@ -709,10 +709,10 @@ void run_cost(Context& ctx) {
       const std::int64_t n = steps_in(T, hh);  // the error is taken at n h <= T, against the reference there
       const auto ref = reference_samples(sys, z0, static_cast<double>(n) * hh, 1, rtol, atol).back();
       Trajectory tr;
-      const double sec = median_seconds(static_cast<int>(s.integer("timing.repeats")), [&] {
+      const double sec = time_runs(static_cast<int>(s.integer("timing.repeats")), [&] {
         tr = run_phi(d, sys, hh, 4, z0, n);
         do_not_optimize(tr.z.back());
-      });
+      }).seconds();
       const double ns = 1e9 * sec / static_cast<double>(n), err = phase_distance(as_state(tr.z.back()), as_state(ref));
       const double newton = static_cast<double>(tr.iterations) / static_cast<double>(n);
       csv.row(name, hh, n, static_cast<double>(n) * hh, err, sec, ns, newton);

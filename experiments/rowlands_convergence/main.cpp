@@ -387,7 +387,7 @@ void timing_with(Context& ctx, const Sys& sys) {
     const double h = hs[task % nh];
     const std::int64_t n = steps_to(t_end, h);
     const double wall = with_method(methods[task / nh], sys, [&](const auto& m) {  // (the dispatch outside the clock)
-      return median_seconds(repeats, [&] { do_not_optimize(integrate_inlined(m, z0, h, n)); });
+      return time_runs(repeats, [&] { do_not_optimize(integrate_inlined(m, z0, h, n)); }).seconds();
     });
     cost.row(label, h, n, wall, 1e9 * wall / static_cast<double>(n), counts[task].evals, counts[task].phase);
     runs[task / nh].push_back({h, static_cast<double>(n), wall, static_cast<double>(counts[task].evals), counts[task].phase});

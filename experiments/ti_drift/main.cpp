@@ -881,7 +881,7 @@ void timing_with(Context& ctx, const HH& hhk) {
   json ns_per_step;
   for (const auto& m : s.texts("timing.methods"))
     ns_per_step[label_of(m)] = with_kernel(m, hhk, [&](const auto& kernel) {
-      return 1e9 * median_seconds(repeats, [&] { do_not_optimize(integrate_inlined(kernel, z, h, n)); }) /
+      return 1e9 * time_runs(repeats, [&] { do_not_optimize(integrate_inlined(kernel, z, h, n)); }).seconds() /
              static_cast<double>(n);
     });
   put(ctx, "timing",
