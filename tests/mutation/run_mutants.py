@@ -1,0 +1,176 @@
+#!/usr/bin/env python3
+"""Mutation testing: does the test suite notice a plausible bug?
+
+Applies each mutant of mutants.toml alone to the source tree this script lives in, rebuilds,
+runs ctest and records whether a test failed (killed) or none did (survived); the original file
+is restored after each mutant, also on Ctrl-C. Run it in a clean checkout or a worktree, not in a
+tree with work in progress:
+
+    git worktree add ../geomint-mutation && cd ../geomint-mutation
+    tests/mutation/run_mutants.py --build build-mutation
+
+It takes about an hour on two cores (a rebuild and a ctest run per mutant), so it is run on
+demand, not by `make test`. Before the mutants, the unmodified tree must build and pass. The
+report (stdout and --report FILE, JSON) gives each mutant's result and the failing tests, the
+kill rate, and the mutants that change a published value (`affects`) but survived; the exit
+status is 1 if there is any such mutant, 0 otherwise.
+"""
+import argparse
+import json
+import os
+import shutil
+import signal
+import subprocess
+import sys
+import time
+import tomllib
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parents[2]
+# The `*.figures` tests render plots and assert no number; leave them out.
+DEFAULT_EXCLUDE = r"\.figures$"
+
+
+def load_mutants(path):
+    mutants = tomllib.loads(path.read_text())["mutant"]
+    ids = [m["id"] for m in mutants]
+    if len(ids) != len(set(ids)):
+        sys.exit(f"{path}: duplicate mutant ids")
+    for m in mutants:
+        for key in ("id", "file", "old", "new", "affects"):
+            if key not in m:
+                sys.exit(f"{path}: mutant {m.get('id', '?')} has no '{key}'")
+        text = (ROOT / m["file"]).read_text()
+        if text.count(m["old"]) != 1:
+            sys.exit(f"mutant {m['id']}: `old` occurs {text.count(m['old'])} times in {m['file']} (must be once)")
+        if m["old"] == m["new"]:
+            sys.exit(f"mutant {m['id']}: `new` equals `old`")
+    return mutants
+
+
+def run(cmd, log, timeout=None):
+    with open(log, "w") as out:
+        return subprocess.run(cmd, cwd=ROOT, stdout=out, stderr=subprocess.STDOUT, timeout=timeout).returncode
+
+
+def build(args, log):
+    return run(["cmake", "--build", str(args.build), "-j", str(args.jobs)], log) == 0
+
+
+def failed_tests(args, log):
+    """Runs ctest; returns the names of the failing tests ([] if all pass)."""
+    cmd = ["ctest", "--test-dir", str(args.build), "-j", str(args.jobs), "--timeout", str(args.timeout),
+           "-E", args.exclude]
+    if args.tests:
+        cmd += ["-R", args.tests]
+    code = run(cmd, log)
+    failed = []
+    for line in Path(log).read_text().splitlines():
+        s = line.strip()
+        # "  12 - regression.X.y (Failed)" in ctest's closing list
+        if " - " in s and s.endswith(")") and s.split(" - ", 1)[0].strip().isdigit():
+            failed.append(s.split(" - ", 1)[1].rsplit(" (", 1)[0])
+    if code != 0 and not failed:
+        failed = ["(ctest failed)"]
+    return failed
+
+
+def configure(args):
+    if (args.build / "CMakeCache.txt").exists():
+        return
+    cmd = ["cmake", "-S", str(ROOT), "-B", str(args.build), "-DCMAKE_BUILD_TYPE=Release"]
+    if shutil.which("ccache"):
+        cmd.append("-DCMAKE_CXX_COMPILER_LAUNCHER=ccache")
+    subprocess.run(cmd, cwd=ROOT, check=True, stdout=subprocess.DEVNULL)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("--mutants", type=Path, default=Path(__file__).with_name("mutants.toml"))
+    ap.add_argument("--build", type=Path, default=ROOT / "build-mutation")
+    ap.add_argument("--jobs", type=int, default=os.cpu_count() or 2)
+    ap.add_argument("--only", help="comma-separated mutant ids")
+    ap.add_argument("--tests", help="ctest -R regex (default: every test)")
+    ap.add_argument("--exclude", default=DEFAULT_EXCLUDE, help="ctest -E regex")
+    ap.add_argument("--timeout", type=int, default=600, help="seconds per test (a hang counts as a kill)")
+    ap.add_argument("--report", type=Path, help="write the results as JSON")
+    ap.add_argument("--list", action="store_true", help="check and list the mutants, run nothing")
+    args = ap.parse_args()
+    args.build = args.build if args.build.is_absolute() else ROOT / args.build
+
+    mutants = load_mutants(args.mutants)
+    if args.only:
+        wanted = set(args.only.split(","))
+        unknown = wanted - {m["id"] for m in mutants}
+        if unknown:
+            sys.exit(f"unknown mutant ids: {', '.join(sorted(unknown))}")
+        mutants = [m for m in mutants if m["id"] in wanted]
+    if args.list:
+        for m in mutants:
+            print(f"{m['id']:32} {m['file']}  [{m['affects'] or 'no published value'}]")
+        print(f"{len(mutants)} mutants")
+        return 0
+
+    logs = args.build / "mutation-logs"
+    configure(args)
+    logs.mkdir(parents=True, exist_ok=True)
+    print("baseline: building and testing the unmodified tree", flush=True)
+    if not build(args, logs / "baseline-build.log"):
+        sys.exit(f"the unmodified tree does not build: {logs / 'baseline-build.log'}")
+    base_failed = failed_tests(args, logs / "baseline-ctest.log")
+    if base_failed:
+        sys.exit(f"the unmodified tree fails tests ({', '.join(base_failed)}): nothing can be measured")
+
+    results = []
+    for i, m in enumerate(mutants, 1):
+        path = ROOT / m["file"]
+        original = path.read_bytes()
+        start = time.monotonic()
+        interrupted = None
+
+        def restore_and_stop(signum, _frame):
+            path.write_bytes(original)
+            raise KeyboardInterrupt
+
+        old_handler = signal.signal(signal.SIGTERM, restore_and_stop)
+        try:
+            path.write_text(original.decode().replace(m["old"], m["new"], 1))
+            if not build(args, logs / f"{m['id']}-build.log"):
+                result, failed = "does not compile", []
+            else:
+                failed = failed_tests(args, logs / f"{m['id']}-ctest.log")
+                result = "killed" if failed else "survived"
+        except KeyboardInterrupt:
+            interrupted = True
+        finally:
+            path.write_bytes(original)
+            signal.signal(signal.SIGTERM, old_handler)
+        if interrupted:
+            print("interrupted; the mutated file is restored", file=sys.stderr)
+            return 130
+        results.append({"id": m["id"], "file": m["file"], "affects": m["affects"], "result": result,
+                        "failed_tests": failed, "seconds": round(time.monotonic() - start, 1)})
+        shown = ", ".join(failed[:3]) + (f" (+{len(failed) - 3})" if len(failed) > 3 else "")
+        print(f"[{i}/{len(mutants)}] {m['id']:32} {result:16} {shown}", flush=True)
+    # Leave the build matching the unmodified tree.
+    build(args, logs / "final-build.log")
+
+    valid = [r for r in results if r["result"] != "does not compile"]
+    killed = [r for r in valid if r["result"] == "killed"]
+    published_survivors = [r for r in valid if r["result"] == "survived" and r["affects"]]
+    summary = {"mutants": len(results), "compiled": len(valid), "killed": len(killed),
+               "kill_rate": len(killed) / len(valid) if valid else None,
+               "published_survivors": [r["id"] for r in published_survivors], "results": results}
+    rate = f"{summary['kill_rate']:.0%}" if valid else "n/a"
+    print(f"\nkilled {len(killed)} of {len(valid)} mutants that compile ({rate}); "
+          f"{len(results) - len(valid)} do not compile")
+    for r in valid:
+        if r["result"] == "survived":
+            print(f"  survived: {r['id']} ({r['affects'] or 'changes no published value'})")
+    if args.report:
+        args.report.write_text(json.dumps(summary, indent=2) + "\n")
+    return 1 if published_survivors else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
