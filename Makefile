@@ -72,15 +72,16 @@ figures: build $(DEPS_STAMP)/figures.stamp
 
 figure-files: $(ALL_FIGURES)
 
-# The report: the generated parts from the runs and from a run of the stability tests (scripts/report.py
+# The report: the generated parts from the runs and from a run of the hard-case tests, with the quick runs they wait on (scripts/report.py
 # computes nothing), LaTeX, then a check of the PDF's text (no undefined reference, missing value, NaN; the contents and ledger in front).
 paper: figures $(DEPS_STAMP)/paper.stamp
 	@mkdir -p paper/generated
 	$(BUILD)/bin/geomint-methods --json > paper/generated/methods.json
-	ctest --test-dir $(BUILD) -N > paper/generated/tests.txt
-	ctest --test-dir $(BUILD) -L stability --output-junit $(CURDIR)/paper/generated/stability.xml > /dev/null
+	ctest --test-dir $(BUILD) --show-only=json-v1 > paper/generated/tests.json
+	ctest --test-dir $(BUILD) -j $(JOBS) -L hardcase --output-junit $(CURDIR)/paper/generated/hardcases.xml > /dev/null
 	python3 scripts/report.py $(RESULTS) paper/generated --methods paper/generated/methods.json \
-	  --papers paper/papers.toml --tests paper/generated/tests.txt --junit paper/generated/stability.xml
+	  --papers paper/papers.toml --tests paper/generated/tests.json --quick $(BUILD)/test-results \
+	  --junit paper/generated/hardcases.xml
 	cd paper && latexmk -pdf -interaction=nonstopmode -halt-on-error main.tex
 	python3 scripts/check_pdf.py paper/main.pdf
 

@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
 """The generated parts of the reproduction report, from data only.
 
-    report.py RESULTS_ROOT OUT_DIR [--methods METHODS_JSON] [--papers PAPERS_TOML] [--tests CTEST_LIST]
-              [--junit JUNIT_XML] [--tex FILE ...] [--draft]
+    report.py RESULTS_ROOT OUT_DIR [--methods METHODS_JSON] [--papers PAPERS_TOML] [--tests CTEST_JSON]
+              [--quick QUICK_ROOT] [--junit JUNIT_XML] [--tex FILE ...] [--draft]
 
 RESULTS_ROOT/<run>/summary.json and run.json are the runs (<run> is the directory name). Writes
 into OUT_DIR:
@@ -26,8 +26,10 @@ into OUT_DIR:
                     comparisons, the command, the figure scripts that read its files and the tests.
   bibliography.tex  with --papers: the papers and their code.
   machine.tex       the CPU, compiler, flags and commit of the runs (run.json).
-  hardcases.tex     with --junit: every stability test of the last ctest run, what its name says it
-                    asserts, its result and time.
+  hardcases.tex     with --junit: every hard case (ctest label hardcase) of the last ctest run, by
+                    kind: what its name says it asserts, its result and time.
+  quick.tex         with --tests and --quick: each quick scene the tests run, how many tests wait
+                    on it, and each published comparison applied to it with its tolerance band.
 
 It computes nothing: every number is copied from the JSON and formatted.
 """
@@ -389,19 +391,65 @@ def sentence(test_name):
     return " ".join(w.lower() if i and w.lower() in small else w for i, w in enumerate(words))
 
 
+# The hard cases by kind, from the words of a test's name (the first kind that matches).
+HARD_KINDS = [(r"^regression\.Cli\.", "Refusals by the command line (exit 2 before any work)"),
+              (r"^verification\.", "Each registered method on both sides of its declared bounds"),
+              ("Newton", "Newton's method"), ("Singular", "Singularities"),
+              ("1e5|T100|Periods", "Long runs"), ("Refuse|Reject|FailsLoudly", "Refusals of what cannot be computed"),
+              ("", "Stability bounds, instability and divergence")]
+
+
 def hard_cases_tex(junit):
-    """The stability tests of the last ctest run (ctest -L stability --output-junit FILE)."""
+    """The hard cases of the last ctest run (ctest -L hardcase --output-junit FILE), by kind."""
     cases = re.findall(r'<testcase name="([^"]+)"[^>]*time="([^"]+)" status="([^"]+)"', junit)
     if not cases:
         raise SystemExit("report.py: the JUnit file lists no test")
-    out = ["% The hard cases: the stability tests and their results (ctest --output-junit; scripts/report.py).",
+    kinds = {}
+    for case in cases:
+        kind = next(k for pattern, k in HARD_KINDS if re.search(pattern, case[0]))
+        kinds.setdefault(kind, []).append(case)
+    passed = sum(status == "run" for _, _, status in cases)
+    out = ["% The hard cases and their results (ctest -L hardcase --output-junit; scripts/report.py).",
+           f"In this run {passed} of {len(cases)} hard cases passed.",
            r"{\footnotesize\begin{longtable}{@{}>{\raggedright}p{0.4\linewidth}>{\raggedright}p{0.38\linewidth}"
            r"p{0.08\linewidth}r@{}}",
            r"\toprule test & what it asserts & result & time (s)\\ \midrule", r"\endhead"]
-    for name, time, status in cases:
-        result = {"run": "passed", "fail": "FAILED"}.get(status, tex_escape(status))
-        shown = re.sub(r"(?<=[a-z0-9.])(?=[A-Z])", r"\\allowbreak{}", tex_escape(name))  # breaks between words
-        out.append(f"\\texttt{{{shown}}} & {tex_escape(sentence(name))} & {result} & {float(time):.2f}\\\\")
+    for _, kind in HARD_KINDS:
+        if kind not in kinds:
+            continue
+        out.append(rf"\multicolumn{{4}}{{@{{}}l}}{{\emph{{{tex_escape(kind)} ({len(kinds[kind])})}}}}\\")
+        for name, time, status in kinds[kind]:
+            result = {"run": "passed", "fail": "FAILED"}.get(status, tex_escape(status))
+            shown = re.sub(r"(?<=[a-z0-9.])(?=[A-Z])", r"\\allowbreak{}", tex_escape(name))  # breaks between words
+            out.append(f"\\texttt{{{shown}}} & {tex_escape(sentence(name))} & {result} & {float(time):.2f}\\\\")
+    out += [r"\bottomrule", r"\end{longtable}}"]
+    return "\n".join(out) + "\n"
+
+
+def quick_tex(tests, quick_root):
+    """The quick scenes the tests run (ctest --show-only=json-v1), the tests that wait on each, and the
+    tolerance bands with which each published comparison is applied to its run (QUICK/<id>/summary.json)."""
+    props = {t["name"]: {p["name"]: p["value"] for p in t.get("properties", [])} for t in tests}
+    out = ["% The quick scenes of the tests and their tolerance bands (scripts/report.py).",
+           r"{\footnotesize\begin{longtable}{@{}p{0.22\linewidth}p{0.14\linewidth}p{0.14\linewidth}"
+           r"p{0.18\linewidth}p{0.2\linewidth}@{}}",
+           r"\toprule quantity & published & quick run & band & verdict\\ \midrule", r"\endhead"]
+    for t in tests:
+        if not t["name"].endswith(".quick_run"):
+            continue
+        run_id = t["name"][: -len(".quick_run")]
+        fixtures = props[t["name"]].get("FIXTURES_SETUP", [])
+        waiting = sorted(n for n, p in props.items() if set(p.get("FIXTURES_REQUIRED", [])) & set(fixtures))
+        scene = next((a for a in t.get("command", []) if a.endswith(".toml")), "?")
+        scene = os.path.relpath(scene, ROOT) if os.path.isabs(scene) else scene
+        out.append(rf"\multicolumn{{5}}{{@{{}}p{{0.95\linewidth}}@{{}}}}{{\textbf{{{tex_escape(run_id)}}}: "
+                   rf"{code(scene)}, waited on by {len(waiting)} tests}}\\")
+        summary = pathlib.Path(quick_root) / run_id / "summary.json"
+        comparisons = json.loads(summary.read_text(encoding="utf-8")).get("comparisons", {}) if summary.is_file() else {}
+        for key, c in comparisons.items():
+            band = ", ".join(f"{k} {v:g}" for k, v in (c.get("compare") or {}).items()) or "--"
+            out.append(f"\\texttt{{{tex_escape(key)}}} & {value_text(c.get('published'))} & "
+                       f"{value_text(c.get('reproduced'))} & {tex_escape(band)} & {tex_escape(c['verdict'])}\\\\")
     out += [r"\bottomrule", r"\end{longtable}}"]
     return "\n".join(out) + "\n"
 
@@ -418,9 +466,10 @@ def main():
     parser.add_argument("out")
     parser.add_argument("--methods", help="the output of geomint-methods --json")
     parser.add_argument("--papers", help="paper/papers.toml: the papers' figures and tables, the bibliography")
-    parser.add_argument("--tests", help="the output of ctest -N: the tests the report may cite")
+    parser.add_argument("--tests", help="ctest --show-only=json-v1: the tests the report may cite")
+    parser.add_argument("--quick", help="with --tests: the directory of the tests' quick runs (quick.tex)")
     parser.add_argument("--tex", nargs="*", help="the LaTeX files whose lookups to resolve")
-    parser.add_argument("--junit", help="ctest -L stability --output-junit FILE: the hard cases and their results")
+    parser.add_argument("--junit", help="ctest -L hardcase --output-junit FILE: the hard cases and their results")
     parser.add_argument("--draft", action="store_true", help="show a missing value as a note, do not stop")
     args = parser.parse_args()
     root, out = pathlib.Path(args.results), pathlib.Path(args.out)
@@ -434,14 +483,17 @@ def main():
         return 1
     tex = [pathlib.Path(t) for t in args.tex] if args.tex is not None else \
         [ROOT / "paper" / "main.tex"] + sorted((ROOT / "paper" / "sections").rglob("*.tex"))
-    tests = None
+    tests, ctest = None, []
     if args.tests:
-        tests = set(re.findall(r"Test +#\d+: (\S+)", pathlib.Path(args.tests).read_text(encoding="utf-8")))
+        ctest = json.loads(pathlib.Path(args.tests).read_text(encoding="utf-8"))["tests"]
+        tests = {t["name"] for t in ctest}
     results, missing = results_tex(runs, tex, args.draft)
     files = {"results.tex": results, "comparisons.tex": comparisons_tex(runs), "errata.tex": errata_tex(runs, tests),
              "machine.tex": machine_tex(runs)}
     if args.methods:
         files["methods.tex"] = methods_tex(json.loads(pathlib.Path(args.methods).read_text(encoding="utf-8")))
+    if args.quick:
+        files["quick.tex"] = quick_tex(ctest, args.quick)
     if args.junit:
         files["hardcases.tex"] = hard_cases_tex(pathlib.Path(args.junit).read_text(encoding="utf-8"))
     if args.papers:

@@ -3,7 +3,8 @@
 
 The generic report script (scripts/report.py) on the quick runs: it writes its files, every
 comparison of every summary.json appears in comparisons.tex, the ledger names every figure and
-table of paper/papers.toml, a \\result lookup of an existing key is defined and one of a missing
+table of paper/papers.toml, quick.tex lists a quick run's comparisons and the tests that wait on it,
+a \\result lookup of an existing key is defined and one of a missing
 key stops the script naming the key, and the script stays generic (no experiment name in it, at
 most 600 lines).
 """
@@ -12,6 +13,15 @@ import pathlib
 import subprocess
 import sys
 import tomllib
+
+
+def cited_tests(results, runs):
+    """The tests the report cites: each comparison's test and each run's `<run>.studies`."""
+    names = {f"{run}.studies" for run in runs}
+    for run in runs:
+        comparisons = json.loads((results / run / "summary.json").read_text(encoding="utf-8")).get("comparisons", {})
+        names |= {c["test"] for c in comparisons.values() if c.get("test")}
+    return sorted(names)
 
 
 def main() -> int:
@@ -37,7 +47,21 @@ def main() -> int:
     junit.write_text('<testsuite><testcase name="Suite.StaysBounded" classname="x" time="0.5" status="run"/>'
                      '<testcase name="Suite.DivergesBeyondTheBound" classname="x" time="1.5" status="fail"/></testsuite>',
                      encoding="utf-8")
-    subprocess.run(command + ["--tex", str(lookups_tex), "--junit", str(junit)], check=True)
+    run0 = runs[0]  # a ctest test list: the quick run of run0 and one test that waits on it
+    ctest_json = work / "tests.json"
+    ctest_json.write_text(json.dumps({"tests": [
+        {"name": f"{run0}.quick_run", "command": ["exe", "--scene", f"experiments/{run0}/quick.toml"],
+         "properties": [{"name": "FIXTURES_SETUP", "value": [f"{run0}_quick"]}]},
+        {"name": "Suite.WaitsOnIt", "properties": [{"name": "FIXTURES_REQUIRED", "value": [f"{run0}_quick"]}]}] +
+        [{"name": name} for name in cited_tests(results, runs)]}))
+    subprocess.run(command + ["--tex", str(lookups_tex), "--junit", str(junit), "--tests", str(ctest_json),
+                              "--quick", str(results)], check=True)
+    quick = (work / "quick.tex").read_text(encoding="utf-8") if (work / "quick.tex").is_file() else ""
+    if "waited on by 1 tests" not in quick:
+        problems.append("quick.tex does not count the tests that wait on a quick run")
+    for key, c in json.loads((results / run0 / "summary.json").read_text(encoding="utf-8")).get("comparisons", {}).items():
+        if key.replace("_", "\\_") not in quick or c["verdict"] not in quick:
+            problems.append(f"quick.tex: no row for {run0}'s comparison {key} with its verdict")
     hard = (work / "hardcases.tex").read_text(encoding="utf-8") if (work / "hardcases.tex").is_file() else ""
     if "Stays Bounded & passed" not in hard or "Diverges beyond the Bound & FAILED" not in hard:
         problems.append("hardcases.tex does not list the JUnit report's tests with their results")

@@ -10,6 +10,6 @@ set(content "")
 foreach(name IN LISTS names)
   string(APPEND content
     "add_test(verification.${name} \"${TEST_EXE}\" --gtest_filter=Registry/Verification.*/${name})\n"
-    "set_tests_properties(verification.${name} PROPERTIES LABELS verification TIMEOUT 300)\n")
+    "set_tests_properties(verification.${name} PROPERTIES LABELS \"verification;hardcase\" TIMEOUT 300)\n")
 endforeach()
 file(WRITE ${OUTPUT} "${content}")
