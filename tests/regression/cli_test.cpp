@@ -10,6 +10,7 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <system_error>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -21,6 +22,13 @@ namespace {
 std::string bin_of(const std::string& name) { return std::string(GEOMINT_BIN_DIR) + "/" + name; }
 const std::string bin = bin_of("euler_compensation");
 const fs::path work = fs::path(GEOMINT_TEST_RESULTS) / ("cli-" + std::to_string(::getpid()));
+// The test process removes its working directory when it ends (destroyed before `work`).
+const struct RemoveWork {
+  ~RemoveWork() {
+    std::error_code ec;
+    fs::remove_all(work, ec);
+  }
+} remove_work;
 
 struct Outcome {
   int code;
