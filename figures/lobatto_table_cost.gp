@@ -36,7 +36,7 @@ do for [fmt in FORMATS] {
     eval term(fmt, 'lobatto_table_cost', 17, 11)
     # two panels side by side and, below them, one key for both (a third, empty plot)
     set multiplot title sprintf("{/:Bold Cost:} phase-space error against computing effort, nonlinear pendulum L = q̇²/2 + cos q, q(0) = %s, p(0) = 0\n" \
-                                . "one run to t_{end} = %g per step size h; wall time: median of %s runs, single thread", \
+                                . "one run to t_{end} = %g per step size h; wall time: minimum of %s runs of ≥ 10 ms, single thread", \
                                 scene_num('nonlinear.pendulum_q0'), T, scene_num('timing.repeats'))
     set tmargin at screen 0.88; set bmargin at screen 0.27
     set border 31; set xtics autofreq; set ytics autofreq; set mxtics; set mytics; set autoscale xy  # (after the key plot)

@@ -42,7 +42,7 @@ Z0 = sprintf("(x, y, p_x, p_y) = (%s, %s, %s, %s)", scene_num('initial.0.0'), sc
 do for [fmt in FORMATS] {
     eval term(fmt, 'rowlands_convergence_cost', 17, 11)
     # two panels side by side and, below them, one key for both (a third, empty plot)
-    set multiplot title sprintf("{/:Bold Cost:} phase-space error against computing effort, planar elastic pendulum, %s\none run from %s with h = t_{max}/N; wall time: median of %s runs", \
+    set multiplot title sprintf("{/:Bold Cost:} phase-space error against computing effort, planar elastic pendulum, %s\none run from %s with h = t_{max}/N; wall time: minimum of %s runs of ≥ 10 ms", \
                                 PARAMS, Z0, scene_num('timing.repeats'))
     set tmargin at screen 0.88; set bmargin at screen 0.27
     set border 31; set xtics autofreq; set ytics autofreq; set mxtics; set mytics; set autoscale xy  # (after the key plot)

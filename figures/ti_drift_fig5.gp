@@ -1,115 +1,121 @@
 # Fig. 5 of 004 (the simplified Takahashi–Imada method), Sect. 5.2.2: Poincaré cuts of one trajectory
 # of Fig. 4 (summary values reproduced.poincare_trajectory: the one with the largest error), the points
-# (q_2, p_2) where q_1 crosses 0 upwards with p_1 > 0 (linear interpolation between steps), over two time
-# windows (reproduced.poincare_windows): one where its E error changes fastest ("growth") and one where
-# it is flattest ("no growth"). The paper: during linear growth the cuts lie on one side (p_2 < 0),
-# otherwise they are spread symmetrically, so that the integral of (4.3) cancels.
-#   (a) the E error of that trajectory (fig4_trajectories.csv) around the two windows (shaded); inside
-#       the windows the line has the colour of the time, as the points below.
-#   (b) on the same time axis, the share of the cuts with p_2 < 0 in tenths of each window (its own panel
-#       and axis, so that the two quantities do not share one).
-#   (c), (d) the cuts of each window, coloured by time t (colour bar), with the share of p_2 < 0.
-# Input: fig5_poincare.csv, fig4_trajectories.csv; summary values (trajectory, windows); scene values (h, k).
+# (q_2, p_2) where q_1 crosses 0 upwards with p_1 > 0 (linear interpolation between steps). The paper:
+# during linear growth of E the cuts lie on one side (p_2 < 0), otherwise they are spread symmetrically.
+#   (a) the error of E of that trajectory over the whole run (fig5_episodes.csv, every recorded time), with
+#       its growth (and decline) episodes shaded: where the running least-squares slope of the error over
+#       ± ensemble.episode_half_width leaves its median by more than ensemble.episode_threshold robust
+#       standard deviations (1.4826 MAD of the running slopes), for at least ensemble.episode_min_length;
+#       the flattest of 20 equal windows (the left picture of 004) is marked (c).
+#   (b) that running slope in robust standard deviations from its median, with the thresholds ±threshold.
+#   (c) the cuts of the flattest window (fig5_poincare.csv, window "no_growth"), coloured by time t.
+#   (d) the cuts of the longest growth episode (fig5_episode_cuts.csv), coloured by time t; the title gives
+#       the share with p_2 < 0, and the change of E over the episode recorded and predicted by (4.3),
+#       h Σ dE/dt along the steps (summary values poincare.episodes.longest_growth).
+# Input: fig5_episodes.csv, fig5_episode_cuts.csv, fig5_poincare.csv; summary values (trajectory, windows,
+# episodes); scene values (h, k, ensemble.episode_*).
 if (!exists("results")) results = 'results/ti_drift'
 load 'figures/common.gp'
 set encoding utf8    # (so that the key width counts characters, not bytes)
 eval PALETTE_TIME
 PC  = csv('fig5_poincare.csv')
-TRJ = csv('fig4_trajectories.csv')
+EP  = csv('fig5_episodes.csv')
+EC  = csv('fig5_episode_cuts.csv')
 
 eval need_num('H', scene_real('h'))
 eval need_num('K', scene_real('hh.k'))
+eval need_num('THR', scene_real('ensemble.episode_threshold'))
 eval need_num('TRAJ', summary_real('reproduced.poincare_trajectory'))
-WINDOWS = "no_growth growth"                       # left, right (as the paper's Fig. 5)
-WLABEL(w) = w eq "growth" ? "fastest change of E (\"growth\")" : "flattest E (\"no growth\")"
-do for [w in WINDOWS] {
-    eval need_num('W0_'.w, summary_real('reproduced.poincare_windows.'.w.'.0'))
-    eval need_num('W1_'.w, summary_real('reproduced.poincare_windows.'.w.'.1'))
+eval need_num('NEP', summary_real('poincare.episodes.count'))
+eval need_num('S_MED', summary_real('poincare.episodes.rule.slope_median'))
+eval need_num('S_NOISE', summary_real('poincare.episodes.rule.slope_noise'))
+eval need_num('F0', summary_real('reproduced.poincare_windows.no_growth.0'))
+eval need_num('F1', summary_real('reproduced.poincare_windows.no_growth.1'))
+HAS_GROWTH = summary_num('poincare.episodes.longest_growth.t_start') ne "?"
+if (HAS_GROWTH) {
+    eval need_num('G0', summary_real('poincare.episodes.longest_growth.t_start'))
+    eval need_num('G1', summary_real('poincare.episodes.longest_growth.t_end'))
+    eval need_num('G_SHARE', summary_real('poincare.episodes.longest_growth.share_p2_negative'))
+    eval need_num('G_CHANGE', summary_real('poincare.episodes.longest_growth.E_err_change'))
+    eval need_num('G_PRED', summary_real('poincare.episodes.longest_growth.E_change_predicted'))
 }
-W0(w) = value('W0_'.w)
-W1(w) = value('W1_'.w)
+do for [i = 0:NEP - 1] {
+    eval need_num(sprintf('EP0_%d', i), summary_real(sprintf('poincare.episodes.list.%d.t_start', i)))
+    eval need_num(sprintf('EP1_%d', i), summary_real(sprintf('poincare.episodes.list.%d.t_end', i)))
+    eval need_num(sprintf('EPS_%d', i), summary_real(sprintf('poincare.episodes.list.%d.sign', i)))
+}
 
-# counts and ranges from the data
-inw(w) = strcol("window") eq w
-do for [w in WINDOWS] {
-    stats PC using (inw(w) ? column("p2") : NaN) nooutput
-    eval sprintf("N_%s = STATS_records", w)
-    stats PC using (inw(w) && column("p2") < 0 ? 1 : NaN) nooutput
-    eval sprintf("NNEG_%s = STATS_records", w)
-}
-stats PC using "q2":"p2" nooutput
-QMIN = STATS_min_x; QMAX = STATS_max_x; PMIN = STATS_min_y; PMAX = STATS_max_y
-mine(col) = column("trajectory") == TRAJ ? column(col) : NaN
-stats TRJ using (mine("t")):(mine("E_err")) nooutput
+stats EP using "t":"E_err" nooutput
 TMAX = STATS_max_x
 EABS = abs(STATS_max_y) > abs(STATS_min_y) ? abs(STATS_max_y) : abs(STATS_min_y)
 EK = floor(log10(EABS)); ES = 10.0**EK
 XK = TMAX >= 1e5 ? 3 * floor(log10(TMAX) / 3 + 1e-9) : 0; XS = 10.0**XK
 TUNIT = XK == 0 ? "" : sprintf("  [10^{%d}]", XK)
-fmtw(w) = sprintf("t ∈ [%g, %g]%s", W0(w) / XS, W1(w) / XS, XK == 0 ? "" : sprintf("·10^{%d}", XK))
-# (a): the fraction of the window elapsed, the colour (palette fraction) of the line inside window w
-# (NaN outside; the y value must be NaN there too, or the line is drawn there in an undefined colour)
-frac(w) = (column("t") >= W0(w) && column("t") <= W1(w)) ? (column("t") - W0(w)) / (W1(w) - W0(w)) : NaN
+fmtw(a, b) = sprintf("t ∈ [%g, %g]%s", a / XS, b / XS, XK == 0 ? "" : sprintf("·10^{%d}", XK))
+inflat = 'strcol("window") eq "no_growth"'
+ingrowth(t) = HAS_GROWTH && t >= G0 && t <= G1
+stats PC using (strcol("window") eq "no_growth" ? column("p2") : NaN) nooutput
+N_F = STATS_records
+stats PC using (strcol("window") eq "no_growth" && column("p2") < 0 ? 1 : NaN) nooutput
+NNEG_F = STATS_records
+stats PC using "q2":"p2" nooutput
+QMIN = STATS_min_x; QMAX = STATS_max_x; PMIN = STATS_min_y; PMAX = STATS_max_y
+if (HAS_GROWTH) {
+    stats EC using (ingrowth(column("t")) ? column("p2") : NaN) nooutput
+    N_G = STATS_records
+    stats EC using "q2":"p2" nooutput
+    QMIN = STATS_min_x < QMIN ? STATS_min_x : QMIN; QMAX = STATS_max_x > QMAX ? STATS_max_x : QMAX
+    PMIN = STATS_min_y < PMIN ? STATS_min_y : PMIN; PMAX = STATS_max_y > PMAX ? STATS_max_y : PMAX
+}
 
-# the x range of (a): the windows and half their span on either side, within the run
-WA = W0("no_growth") < W0("growth") ? W0("no_growth") : W0("growth")
-WB = W1("no_growth") > W1("growth") ? W1("no_growth") : W1("growth")
-XA = WA - 0.5 * (WB - WA); XA = XA < 0 ? 0 : XA
-XB = WB + 0.5 * (WB - WA); XB = XB > TMAX ? TMAX : XB
-# (b): the share of cuts with p_2 < 0 per tenth of window w (smooth unique averages y at equal x)
-NBIN = 10
-bin(w) = W0(w) + (floor((column("t") - W0(w)) / ((W1(w) - W0(w)) / NBIN)) + 0.5) * (W1(w) - W0(w)) / NBIN
-
-set style line 503 lc rgb '#882255' lw 1.3           # share of p_2 < 0
-set style line 501 lc rgb '#8C8C8C' lw 0.9           # E error outside the windows
-set style line 502 lc rgb '#A8A8A8' lw 0.6 dt (3,3)  # p_2 = 0
+set style line 501 lc rgb '#4D4D4D' lw 0.8           # E error
+set style line 502 lc rgb '#A8A8A8' lw 0.6 dt (3,3)  # p_2 = 0, thresholds
+set style line 503 lc rgb '#882255' lw 0.9           # running slope
 
 do for [fmt in FORMATS] {
     eval term(fmt, 'ti_drift_fig5', 17, 18)
     set multiplot title sprintf("{/:Bold Fig. 5:} Poincaré cuts q_1 = 0, p_1 > 0 of trajectory no. %d of Fig. 4 (Hénon–Heiles, k = %d,\n" \
-                                . "simplified Takahashi–Imada (1.6), h = %g): the window where its error of E changes fastest\n" \
-                                . "and the one where it is flattest (each point coloured by its time t)", TRAJ, K, H) font ",9"
+                                . "simplified Takahashi–Imada (1.6), h = %g): growth episodes of its error of E found from the data (shaded),\n" \
+                                . "the flattest window and the longest growth episode (each cut coloured by its time t)", TRAJ, K, H) font ",9"
     set mxtics; set mytics
     set lmargin at screen 0.09; set rmargin at screen 0.92
-    set xrange [XA / XS:XB / XS]
+    set xrange [0:TMAX / XS]
     set format x "%g"; set format y "%g"
     set cbrange [0:1]
     unset colorbox
     unset key
 
-    # ---- (a) the error of E along the trajectory, with the windows ----
+    # ---- (a) the error of E along the whole run, with the episodes ----
     set tmargin at screen 0.88; set bmargin at screen 0.74
     set yrange [*:*]
     set offsets 0, 0, graph 0.1, graph 0.1
     set format x ""
     unset xlabel
     set ylabel sprintf("E_n − E_0  [10^{%d}]", EK) offset 1, 0
-    set title sprintf("(a) error of the modified energy E along trajectory no. %d, around the windows of (c) and (d) (shaded)", TRAJ) offset 0, -0.4
-    set object 1 rect from W0("no_growth") / XS, graph 0 to W1("no_growth") / XS, graph 1 behind fc rgb '#EBEBEB' fs solid 1.0 noborder
-    set object 2 rect from W0("growth") / XS, graph 0 to W1("growth") / XS, graph 1 behind fc rgb '#DCDCDC' fs solid 1.0 noborder
-    set label 1 "(c)" at (W0("no_growth") + W1("no_growth")) / 2 / XS, graph 0.88 center font ",8"
-    set label 2 "(d)" at (W0("growth") + W1("growth")) / 2 / XS, graph 0.88 center font ",8"
-    plot TRJ using (mine("t") / XS):(mine("E_err") / ES) with lines ls 501, \
-         for [w in WINDOWS] TRJ using (mine("t") / XS):(frac(w) == frac(w) ? mine("E_err") / ES : NaN):(frac(w)) \
-             with linespoints lc palette lw 2 pt 7 ps 0.35
-    unset label 1; unset label 2
+    set title sprintf("(a) error of E along trajectory no. %d: %d episode(s) (shaded: growth red, decline blue), flattest window (c) grey", TRAJ, NEP) offset 0, -0.4
+    set object 1 rect from F0 / XS, graph 0 to F1 / XS, graph 1 behind fc rgb '#E0E0E0' fs solid 1.0 noborder
+    set label 1 "(c)" at (F0 + F1) / 2 / XS, graph 0.88 center font ",8"
+    do for [i = 0:NEP - 1] {
+        set object 10 + i rect from value(sprintf('EP0_%d', i)) / XS, graph 0 to value(sprintf('EP1_%d', i)) / XS, graph 1 behind \
+            fc rgb (value(sprintf('EPS_%d', i)) > 0 ? '#F4C2C2' : '#C2D4F4') fs solid 1.0 noborder
+    }
+    plot EP using (column("t") / XS):(column("E_err") / ES) with lines ls 501
 
-    # ---- (b) the share of the cuts with p_2 < 0, per tenth of each window, on the same time axis ----
-    set tmargin at screen 0.685; set bmargin at screen 0.585
-    set yrange [-0.05:1.05]
-    set ytics 0, 0.5, 1
-    set offsets 0, 0, 0, 0
+    # ---- (b) the running slope in robust standard deviations ----
+    set tmargin at screen 0.685; set bmargin at screen 0.565
+    set offsets 0, 0, graph 0.05, graph 0.05
     set format x "%g"
     set xlabel "time t".TUNIT offset 0, 0.5
-    set ylabel "share of p_2 < 0" offset 1, 0
-    set title "(b) share of the cuts with p_2 < 0 in each tenth of the windows" offset 0, -0.4
-    set arrow 2 from graph 0, first 0.5 to graph 1, first 0.5 nohead ls 502 back
-    plot for [w in WINDOWS] PC using (inw(w) ? bin(w) / XS : NaN):(column("p2") < 0 ? 1 : 0) smooth unique with histeps ls 503
-    unset object 1; unset object 2; unset arrow 2
-    set ytics autofreq
+    set ylabel "slope (noise)" offset 1, 0
+    set title sprintf("(b) running slope of (a), (s − median)/(1.4826 MAD); episodes beyond ±%g", THR) offset 0, -0.4
+    set arrow 2 from graph 0, first THR to graph 1, first THR nohead ls 502 back
+    set arrow 3 from graph 0, first -THR to graph 1, first -THR nohead ls 502 back
+    plot EP using (column("t") / XS):((column("running_slope") - S_MED) / S_NOISE) with lines ls 503
+    unset object 1; unset label 1; unset arrow 2; unset arrow 3
+    do for [i = 0:NEP - 1] { unset object 10 + i }
 
-    # ---- (c), (d) the cuts, one panel per window ----
-    set tmargin at screen 0.46; set bmargin at screen 0.06
+    # ---- (c), (d) the cuts ----
+    set tmargin at screen 0.45; set bmargin at screen 0.06
     set xrange [QMIN:QMAX]
     set yrange [PMIN:PMAX]
     set offsets graph 0.03, graph 0.03, graph 0.03, graph 0.03
@@ -119,16 +125,21 @@ do for [fmt in FORMATS] {
     set cbtics scale 0.5 out nomirror
     set cblabel "time t".TUNIT offset 0.5, 0
     set arrow 1 from graph 0, first 0 to graph 1, first 0 nohead ls 502 back
-    i = 0
-    do for [w in WINDOWS] {
-        i = i + 1
-        L = i == 1 ? 0.09 : 0.57
-        set lmargin at screen L; set rmargin at screen L + 0.30
-        set colorbox user origin screen L + 0.31, screen 0.06 size screen 0.014, screen 0.40
-        set cbrange [W0(w) / XS:W1(w) / XS]
-        set title sprintf("(%s) %s: %s\n%d cuts, %.0f%% of them with p_2 < 0", i == 1 ? "c" : "d", WLABEL(w), fmtw(w), \
-                          value("N_".w), 100.0 * value("NNEG_".w) / value("N_".w)) offset 0, -0.3
-        plot PC using (inw(w) ? column("q2") : NaN):"p2":(column("t") / XS) with points pt 7 ps 0.12 lc palette
+    set lmargin at screen 0.09; set rmargin at screen 0.39
+    set colorbox user origin screen 0.40, screen 0.06 size screen 0.014, screen 0.39
+    set cbrange [F0 / XS:F1 / XS]
+    set title sprintf("(c) flattest of 20 windows: %s\n%d cuts, %.0f%% of them with p_2 < 0", fmtw(F0, F1), N_F, 100.0 * NNEG_F / N_F) offset 0, -0.3
+    plot PC using (@inflat ? column("q2") : NaN):"p2":(column("t") / XS) with points pt 7 ps 0.12 lc palette
+    set lmargin at screen 0.57; set rmargin at screen 0.87
+    set colorbox user origin screen 0.88, screen 0.06 size screen 0.014, screen 0.39
+    if (HAS_GROWTH) {
+        set cbrange [G0 / XS:G1 / XS]
+        set title sprintf("(d) longest growth episode: %s, %d cuts,\n%.1f%% with p_2 < 0; ΔE = %s, by (4.3) %s", fmtw(G0, G1), N_G, \
+                          100.0 * G_SHARE, sci(G_CHANGE), sci(G_PRED)) offset 0, -0.3
+        plot EC using (ingrowth(column("t")) ? column("q2") : NaN):"p2":(column("t") / XS) with points pt 7 ps 0.12 lc palette
+    } else {
+        set title "(d) no growth episode by the rule of (b)" offset 0, -0.3
+        plot PC using (NaN):"p2" with points
     }
     unset arrow 1
     unset multiplot

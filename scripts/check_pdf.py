@@ -2,7 +2,8 @@
 """check_pdf.py PDF: the built report shows no unresolved reference, missing value or non-number.
 
 Reads the text of the PDF (pdftotext, poppler-utils) and fails, naming the page and line, on
-"??" (an undefined reference), "n/a", "nan", "missing:" (a value report.py --draft could not
+"??" (an undefined reference), "n/a", "nan" as C++ and Python print a NaN (not the word "NaN" or
+the "Nan" of a test's name), "missing:" (a value report.py --draft could not
 find), an "inf" standing alone or a figure "not yet rendered"; and if its first pages lack the
 contents or the ledger.
 """
@@ -11,7 +12,7 @@ import subprocess
 import sys
 
 BAD = [(re.compile(r"\?\?"), "an undefined reference"), (re.compile(r"\bn/a\b", re.I), "n/a"),
-       (re.compile(r"\bnan\b", re.I), "a NaN"), (re.compile(r"\bmissing:"), "a missing value"),
+       (re.compile(r"(?<![\w.])-?(nan|NAN)\b"), "a NaN"), (re.compile(r"\bmissing:"), "a missing value"),
        (re.compile(r"(?<![\w.])-?inf\b"), "an infinity"), (re.compile(r"not yet rendered"), "a missing figure")]
 
 

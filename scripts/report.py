@@ -399,9 +399,11 @@ HARD_KINDS = [(r"^regression\.Cli\.", "Refusals by the command line (exit 2 befo
               ("", "Stability bounds, instability and divergence")]
 
 
-def hard_cases_tex(junit):
-    """The hard cases of the last ctest run (ctest -L hardcase --output-junit FILE), by kind."""
-    cases = re.findall(r'<testcase name="([^"]+)"[^>]*time="([^"]+)" status="([^"]+)"', junit)
+def hard_cases_tex(junit, hard=None):
+    """The hard cases of the last ctest run (ctest -L hardcase --output-junit FILE), by kind; with `hard`
+    (the names of the tests labelled hardcase), not the fixtures the run needed (the quick runs)."""
+    cases = [c for c in re.findall(r'<testcase name="([^"]+)"[^>]*time="([^"]+)" status="([^"]+)"', junit)
+             if hard is None or c[0] in hard]
     if not cases:
         raise SystemExit("report.py: the JUnit file lists no test")
     kinds = {}
@@ -431,8 +433,8 @@ def quick_tex(tests, quick_root):
     tolerance bands with which each published comparison is applied to its run (QUICK/<id>/summary.json)."""
     props = {t["name"]: {p["name"]: p["value"] for p in t.get("properties", [])} for t in tests}
     out = ["% The quick scenes of the tests and their tolerance bands (scripts/report.py).",
-           r"{\footnotesize\begin{longtable}{@{}p{0.22\linewidth}p{0.14\linewidth}p{0.14\linewidth}"
-           r"p{0.18\linewidth}p{0.2\linewidth}@{}}",
+           r"{\footnotesize\begin{longtable}{@{}>{\raggedright}p{0.3\linewidth}p{0.15\linewidth}p{0.15\linewidth}"
+           r"p{0.14\linewidth}p{0.14\linewidth}@{}}",
            r"\toprule quantity & published & quick run & band & verdict\\ \midrule", r"\endhead"]
     for t in tests:
         if not t["name"].endswith(".quick_run"):
@@ -448,7 +450,7 @@ def quick_tex(tests, quick_root):
         comparisons = json.loads(summary.read_text(encoding="utf-8")).get("comparisons", {}) if summary.is_file() else {}
         for key, c in comparisons.items():
             band = ", ".join(f"{k} {v:g}" for k, v in (c.get("compare") or {}).items()) or "--"
-            out.append(f"\\texttt{{{tex_escape(key)}}} & {value_text(c.get('published'))} & "
+            out.append(f"{code(key)} & {value_text(c.get('published'))} & "
                        f"{value_text(c.get('reproduced'))} & {tex_escape(band)} & {tex_escape(c['verdict'])}\\\\")
     out += [r"\bottomrule", r"\end{longtable}}"]
     return "\n".join(out) + "\n"
@@ -495,7 +497,9 @@ def main():
     if args.quick:
         files["quick.tex"] = quick_tex(ctest, args.quick)
     if args.junit:
-        files["hardcases.tex"] = hard_cases_tex(pathlib.Path(args.junit).read_text(encoding="utf-8"))
+        hard = {t["name"] for t in ctest for p in t.get("properties", []) if p["name"] == "LABELS"
+                and "hardcase" in p["value"]} if ctest else None
+        files["hardcases.tex"] = hard_cases_tex(pathlib.Path(args.junit).read_text(encoding="utf-8"), hard)
     if args.papers:
         papers = tomllib.loads(pathlib.Path(args.papers).read_text(encoding="utf-8"))
         files["ledger.tex"] = ledger_tex(runs, papers, tests)

@@ -6,7 +6,7 @@
 //
 // Studies: map (Fig. 6, with a checkpoint for --resume), first_integrals
 // (Sec. 5.2), timing (the batched kernel against the straightforward scalar
-// loop).
+// loop), cost (work-precision of the two coordinate systems on a few starts).
 #include <omp.h>
 
 #include <algorithm>
@@ -26,7 +26,9 @@
 #include "geomint/methods/registry.hpp"
 #include "geomint/observables/order_fit.hpp"
 #include "geomint/runner/experiment.hpp"
+#include "geomint/analysis/work_precision.hpp"
 #include "geomint/runner/timing.hpp"
+#include "geomint/runner/timing_report.hpp"
 #include "geomint/sweep/energy_map.hpp"
 #include "geomint/sweep/energy_map_statistics.hpp"
 #include "geomint/sweep/parallel_map.hpp"
@@ -181,6 +183,8 @@ Schema schema() {
       .integer("first_integrals.steps", at_least(1), "steps of the Cartesian angular-momentum run")
       .integer("checkpoint.stop_after", non_negative(),
                "stop after this many rounds of 32 batches, leaving a checkpoint for --resume (0: run to the end)")
+      .integer("timing.repeats", at_least(1),
+               "timed runs (>= 10 ms each) per measurement; the minimum is the estimate, the spread is reported")
       .integer("timing.scalar_points", at_least(1), "initial conditions timed with the scalar reference loop")
       .integer("timing.scalar_steps", at_least(1), "steps of each scalar timing run")
       .integer("timing.kernel_batches", at_least(1),
@@ -191,7 +195,13 @@ Schema schema() {
       .reals("timing.ceiling.cartesian", positive(), 2,
              "[low, high] hardware ceiling of the Cartesian kernel [ns per trajectory-step and core]: an estimate from "
              "performance measurements (bench/README.md), not measured by the run")
-      .reals("timing.ceiling.polar", positive(), 2, "the same for the polar kernel");
+      .reals("timing.ceiling.polar", positive(), 2, "the same for the polar kernel")
+      .real_rows("cost.starts", 2, any_finite(), 1,
+                 "initial positions [x0, y0] (at rest) of the work-precision study, inside the polar runs' "
+                 "divergence boundary")
+      .reals("cost.dt", positive(), 3, "steps of symplectic Euler in the work-precision study; each divides cost.t_end")
+      .real("cost.t_end", positive(), "end time of the work-precision runs (eq. (50) over [0, t_end])")
+;
   return s;
 }
 
@@ -404,9 +414,12 @@ void run_timing(Context& ctx, const MapCost& map) {
   timing["kernel_max_turn"] = kEnergyMapMaxTurn;  // polar: sin/cos by angle addition up to this turn
 
   // The kernel: wall time times threads over the trajectory-steps computed.
+  const int repeats = static_cast<int>(s.integer("timing.repeats"));
   double wall_cart = map.wall_cart, wall_polar = map.wall_polar, steps = map.trajectory_steps;
+  json kernel_spread = nullptr;  // the sample's spread; the map's wall time is one run, not repeated
   std::string kernel_method = "map: wall time of the batched kernel in the map study of this run, times threads, over "
-                              "the trajectory-steps it computed";
+                              "the trajectory-steps it computed (the map is one long run, not a repeated measurement: "
+                              "no minimum over repeats and no spread)";
   if (!map.ran) {
     ctx.progress("cost: batched kernel on a sample of batches");
     const auto count = std::min<std::size_t>(static_cast<std::size_t>(s.integer("timing.kernel_batches")), g.nbatches);
@@ -416,17 +429,20 @@ void run_timing(Context& ctx, const MapCost& map) {
       batches[i] = i * g.nbatches / count;
       trajectories += std::min<std::size_t>(kEnergyMapBatch, g.npoints - batches[i] * kEnergyMapBatch);
     }
+    kernel_spread = json::object();
     for (const auto c : {Coordinates::cartesian, Coordinates::polar}) {
-      (c == Coordinates::cartesian ? wall_cart : wall_polar) = time_runs(1, [&] {
+      const RunTime t = time_runs(repeats, [&] {
         do_not_optimize(run_batches(kernels.front().run, c, g, count, [&](std::size_t b) { return batches[b]; }));
-      }, 0).seconds();
+      });
+      (c == Coordinates::cartesian ? wall_cart : wall_polar) = t.seconds();
+      kernel_spread[coordinates_name(c)] = t.spread();
     }
     steps = static_cast<double>(trajectories) * static_cast<double>(g.P.steps);
     timing["kernel_sample"] = {{"batches", count}, {"trajectories", trajectories},
                                {"wall_s", {{"cartesian", wall_cart}, {"polar", wall_polar}}}};
     kernel_method = "sample: the map study did not run in this process; wall time of the batched kernel on "
-                    "timing.kernel_batches batches of the grid (evenly spaced, t_max/dt steps each; one run after "
-                    "an untimed warm-up), times threads, over their trajectory-steps";
+                    "timing.kernel_batches batches of the grid (evenly spaced, t_max/dt steps each; runs after "
+                    "an untimed warm-up; the minimum over timing.repeats runs), times threads, over their trajectory-steps";
   }
   const double ns_cart = 1e9 * wall_cart * ctx.threads / steps;
   const double ns_polar = 1e9 * wall_polar * ctx.threads / steps;
@@ -437,25 +453,28 @@ void run_timing(Context& ctx, const MapCost& map) {
       std::min<std::int64_t>(s.integer("timing.scalar_points"), static_cast<std::int64_t>(g.npoints)));
   EnergyMapParams Ps = g.P;
   Ps.steps = s.integer("timing.scalar_steps");
-  json scalar_ns;
+  json scalar_ns, scalar_spread;
   for (const auto c : {Coordinates::cartesian, Coordinates::polar}) {
-    const auto t0 = std::chrono::steady_clock::now();
-    for (std::size_t i = 0; i < nsc; ++i) {
-      const std::size_t at = i * (g.npoints / nsc);
-      const auto r = energy_map_scalar(c, Ps, g.x0[at], g.y0[at]);
-      do_not_optimize(r.eps);
-    }
-    const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-    scalar_ns[coordinates_name(c)] = 1e9 * wall / (static_cast<double>(nsc) * static_cast<double>(Ps.steps));
+    const RunTime t = time_runs(repeats, [&] {
+      for (std::size_t i = 0; i < nsc; ++i) {
+        const std::size_t at = i * (g.npoints / nsc);
+        const auto r = energy_map_scalar(c, Ps, g.x0[at], g.y0[at]);
+        do_not_optimize(r.eps);
+      }
+    });
+    scalar_ns[coordinates_name(c)] = 1e9 * t.seconds() / (static_cast<double>(nsc) * static_cast<double>(Ps.steps));
+    scalar_spread[coordinates_name(c)] = t.spread();
   }
   timing["ns_per_step_per_core"] = {{"cartesian", ns_cart}, {"polar", ns_polar}};
   timing["scalar_ns_per_step"] = scalar_ns;
+  timing["scalar_ns_per_step_spread"] = scalar_spread;
+  timing["kernel_sample_spread"] = kernel_spread;
   timing["speedup_vs_scalar"] = {{"cartesian", scalar_ns["cartesian"].get<double>() / ns_cart},
                                  {"polar", scalar_ns["polar"].get<double>() / ns_polar}};
   timing["map_wall_s"] = map.ran ? json{{"cartesian", wall_cart}, {"polar", wall_polar}} : json(nullptr);
   timing["method"] = "kernel timed on the " + kernel_method +
                      "; scalar: the straightforward scalar loop (one trajectory at a time) on timing.scalar_points "
-                     "initial conditions of timing.scalar_steps steps, single thread";
+                     "initial conditions of timing.scalar_steps steps, " + timing_method_text(repeats);
   timing["kernel_isa_name"] = kernels.front().name;
   timing["threads"] = ctx.threads;
   if (map.ran) timing["map_wall_total_s"] = wall_cart + wall_polar;
@@ -471,6 +490,148 @@ void run_timing(Context& ctx, const MapCost& map) {
     timing["target_verdict"][name] = ns <= s.real("timing.target." + name) ? "meets" : "misses";
   }
   ctx.summary["timing"] = timing;
+}
+
+// ---- What an energy error costs in either coordinate system (work-precision): symplectic Euler from a
+// few starts of the map at several steps, the scalar loop (energy_map_scalar) in both systems ----
+
+void check_cost(const Scene& s) {
+  const ElasticPendulumParams p{s.real("pendulum.l"), s.real("pendulum.m"), s.real("pendulum.k"), s.real("pendulum.g")};
+  const double bound = method_info("symplectic_euler_pq").oscillatory_bound, omega = std::sqrt(p.k / p.m);
+  const double t_end = s.real("cost.t_end");
+  for (double dt : s.reals("cost.dt")) {
+    if (!(dt * omega < bound))
+      s.reject("cost.dt", "symplectic Euler is unstable for dt sqrt(k/m) >= " + format_double(bound) +
+                              " (methods/registry.hpp): dt < " + format_double(bound / omega));
+    const double n = std::round(t_end / dt);
+    if (n < 1 || std::abs(n * dt - t_end) > 1e-9 * t_end)
+      s.reject("cost.t_end", "must be a positive multiple of every cost.dt, here " + format_double(dt));
+  }
+  for (const auto& x : s.real_rows("cost.starts")) {
+    const double r = std::hypot(x[0], x[1]);
+    if (!(r > 0) || !(r < polar_boundary_radius(p, x[1] / r)))
+      s.reject("cost.starts", "every start must lie inside the polar runs' divergence boundary r0 < 2l + (2mg/k) "
+                              "cos(theta0), and not at the origin");
+  }
+}
+
+void run_cost(Context& ctx) {
+  const Scene& s = ctx.scene;
+  ctx.progress("cost: work-precision of the two coordinate systems");
+  const auto starts = s.real_rows("cost.starts");
+  const auto dts = s.reals("cost.dt");
+  const double t_end = s.real("cost.t_end");
+  const int repeats = static_cast<int>(s.integer("timing.repeats"));
+  const ElasticPendulumParams pendulum{s.real("pendulum.l"), s.real("pendulum.m"), s.real("pendulum.k"), s.real("pendulum.g")};
+  const auto params = [&](double dt) {
+    return EnergyMapParams{pendulum.l, pendulum.m, pendulum.k, pendulum.g, dt, steps_to(t_end, dt), s.real("divergence.blowup")};
+  };
+  const Coordinates systems[] = {Coordinates::cartesian, Coordinates::polar};
+  const std::size_t ns = starts.size(), nd = dts.size();
+  // The energy errors (50): one untimed run per system, step and start (in parallel; deterministic).
+  const auto eps = parallel_map(2 * nd * ns, [&](std::size_t task) {
+    const std::size_t c = task / (nd * ns), d = task / ns % nd, i = task % ns;
+    return energy_map_scalar(systems[c], params(dts[d]), starts[i][0], starts[i][1]);
+  });
+  // The wall time: per system and step one timed function integrates every start in turn (serial, one
+  // thread); a start's share is the minimum over the repeats divided by the number of starts (the loop's
+  // time per step does not depend on the start: its only branch is the divergence test).
+  Csv csv({"coordinates", "start", "x0", "y0", "h", "steps", "wall_s", "force_evals", "eps", "wall_spread"});
+  std::vector<std::vector<std::vector<CostRun>>> curves(2, std::vector<std::vector<CostRun>>(ns));
+  SpreadTally spreads;
+  json ns_per_step, ns_spread;
+  for (std::size_t d = 0; d < nd; ++d) {  // (both systems at one step back to back: a busy spell hits both alike)
+    for (std::size_t c = 0; c < 2; ++c) {
+      const EnergyMapParams P = params(dts[d]);
+      const RunTime t = time_runs(repeats, [&] {
+        for (const auto& x : starts) do_not_optimize(energy_map_scalar(systems[c], P, x[0], x[1]).eps);
+      });
+      spreads.add(t);
+      const double wall = t.seconds() / static_cast<double>(ns);
+      const double evals = static_cast<double>(P.steps);  // symplectic Euler (42): one gradient of U per step
+      for (std::size_t i = 0; i < ns; ++i) {
+        const EnergyMapPoint& e = eps[(c * nd + d) * ns + i];
+        csv.row(coordinates_name(systems[c]), static_cast<std::int64_t>(i), starts[i][0], starts[i][1], dts[d], P.steps,
+                wall, P.steps, e.eps, t.spread());
+        curves[c][i].push_back({dts[d], static_cast<double>(P.steps), wall, evals, e.eps});
+      }
+      if (dts[d] == *std::min_element(dts.begin(), dts.end())) {  // time per step at the smallest step
+        ns_per_step[coordinates_name(systems[c])] = 1e9 * wall / static_cast<double>(P.steps);
+        ns_spread[coordinates_name(systems[c])] = t.spread();
+      }
+    }
+  }
+  ctx.write("timing_cost.csv", csv);
+
+  // Per start: where it lies, the reference's own error, the fitted orders; what each target costs.
+  const auto or_null = [](std::optional<double> v) { return v ? json(*v) : json(nullptr); };
+  const double u = std::numeric_limits<double>::epsilon();
+  json start_list = json::array(), cost_list = json::array();
+  int polar_faster = 0, cartesian_faster = 0, compared = 0;
+  double evals_ratio_min = std::numeric_limits<double>::infinity(), evals_ratio_max = 0;
+  for (std::size_t i = 0; i < ns; ++i) {
+    const double x = starts[i][0], y = starts[i][1], r = std::hypot(x, y);
+    const double spring = 0.5 * pendulum.k * (r - pendulum.l) * (r - pendulum.l), gravity = pendulum.m * pendulum.g * y;
+    json st = {{"x0", x}, {"y0", y}, {"r0", r}, {"H0", spring - gravity},
+               {"r0_over_boundary", r / polar_boundary_radius(pendulum, y / r)},
+               // H_0 is conserved by the flow: the reference is exact, its own error the round-off of
+               // evaluating H, u (|k (r - l)^2 / 2| + |m g y|) at the start
+               {"reference_error", u * (std::abs(spring) + std::abs(gravity))}};
+    for (std::size_t c = 0; c < 2; ++c) {
+      std::vector<double> h, e;
+      for (const CostRun& run : curves[c][i]) h.push_back(run.h), e.push_back(run.err);
+      st["order"][coordinates_name(systems[c])] = fit_order(h, e, roundoff_floor(), "cost").order;
+      st["eps_range"][coordinates_name(systems[c])] = {{"min", *std::min_element(e.begin(), e.end())},
+                                                       {"max", *std::max_element(e.begin(), e.end())}};
+    }
+    // The target: the geometric middle of the error range both systems cover at this start.
+    const auto range = [&](std::size_t c) {
+      double lo = std::numeric_limits<double>::infinity(), hi = 0;
+      for (const CostRun& run : curves[c][i]) lo = std::min(lo, run.err), hi = std::max(hi, run.err);
+      return std::pair{lo, hi};
+    };
+    const double lo = std::max(range(0).first, range(1).first), hi = std::min(range(0).second, range(1).second);
+    json cost_i = {{"start", i}};
+    if (lo < hi) {
+      const double target = std::sqrt(lo * hi);
+      st["error_target"] = target;
+      const auto cart = by_decreasing_h(curves[0][i]), polar = by_decreasing_h(curves[1][i]);
+      const auto wc = cost_to_reach(cart, target, &CostRun::wall_s), wp = cost_to_reach(polar, target, &CostRun::wall_s);
+      const auto ec = cost_to_reach(cart, target, &CostRun::evals), ep = cost_to_reach(polar, target, &CostRun::evals);
+      json t = {{"target", target},
+                {"wall_s", {{"cartesian", or_null(wc)}, {"polar", or_null(wp)}}},
+                {"evals", {{"cartesian", or_null(ec)}, {"polar", or_null(ep)}}},
+                {"wall_ratio_polar_over_cartesian", wc && wp ? json(*wp / *wc) : json(nullptr)},
+                {"evals_ratio_polar_over_cartesian", ec && ep ? json(*ep / *ec) : json(nullptr)},
+                {"faster", wc && wp ? json(*wp < *wc ? "polar" : "cartesian") : json(nullptr)}};
+      if (wc && wp) ++compared, (*wp < *wc ? polar_faster : cartesian_faster) += 1;
+      if (ec && ep) evals_ratio_min = std::min(evals_ratio_min, *ep / *ec), evals_ratio_max = std::max(evals_ratio_max, *ep / *ec);
+      cost_i.update(t);
+    }
+    start_list.push_back(st);
+    cost_list.push_back(cost_i);
+  }
+  double reference_error = 0;
+  for (const auto& st : start_list) reference_error = std::max(reference_error, st["reference_error"].get<double>());
+  ctx.summary["work_precision"] = {{"starts", start_list}, {"start_count", ns}, {"t_end", t_end},
+                                   {"reference_error_max", reference_error},
+                                   {"dt_range", {{"min", *std::min_element(dts.begin(), dts.end())},
+                                                 {"max", *std::max_element(dts.begin(), dts.end())}}},
+                                   {"error", "eq. (50) over [0, cost.t_end] against H_0 = H(z_0), per start"}};
+  json& timing = ctx.summary["timing"]["work_precision"];
+  timing = {{"ns_per_step", ns_per_step},
+            {"ns_per_step_spread", ns_spread},
+            {"ns_per_step_ratio_polar_over_cartesian",
+             ns_per_step["polar"].get<double>() / ns_per_step["cartesian"].get<double>()},
+            {"spread", spreads.to_json()},
+            {"per_start", cost_list},
+            {"compared", compared},
+            {"evals_ratio_range", evals_ratio_max > 0 ? json{{"min", evals_ratio_min}, {"max", evals_ratio_max}} : json(nullptr)},
+            {"polar_faster", polar_faster},
+            {"cartesian_faster", cartesian_faster},
+            {"method", "the scalar loop energy_map_scalar in both systems (not the batched kernels); per system and "
+                       "step one timed function runs every start of cost.starts in turn, a start's wall time is its "
+                       "share; " + timing_method_text(repeats) + "; force evaluations: one gradient of U per step"}};
 }
 
 }  // namespace
@@ -491,6 +652,8 @@ int main(int argc, char** argv) {
        check_first_integrals, run_first_integrals},
       {"timing", "cost: batched kernel against the scalar loop, ns per step", {}, timing_uses, check_timing,
        [&](Context& ctx) { run_timing(ctx, map_cost); }},
+      {"cost", "cost: energy error against wall time and force evaluations, Cartesian and polar",
+       {"timing_cost.csv"}, {"cost", "pendulum", "divergence", "timing.repeats"}, check_cost, run_cost},
   };
   return run_experiment(argc, argv, std::move(spec), GEOMINT_EXPERIMENT_DIR);
 }

@@ -29,6 +29,7 @@
 #include "geomint/reference/odeint_reference.hpp"
 #include "geomint/runner/experiment.hpp"
 #include "geomint/runner/timing.hpp"
+#include "geomint/runner/timing_report.hpp"
 #include "geomint/sweep/parallel_map.hpp"
 #include "geomint/systems/counting.hpp"
 #include "geomint/systems/exponential_decay.hpp"
@@ -236,7 +237,7 @@ Schema schema() {
       .real("convergence.t_end", positive(), "errors are maxima over t in [0, t_end]")
       .texts("timing.methods", oscillator_method_choices(), 1, "methods of the cost study (registry names or labels)")
       .reals("timing.h", positive(), 3, "steps of the work-precision runs (to convergence.t_end)")
-      .integer("timing.repeats", at_least(1), "timed repetitions per measurement (the median is reported)")
+      .integer("timing.repeats", at_least(1), "timed runs (>= 10 ms each) per measurement; the minimum is the estimate, the spread is reported")
       .integer("timing.steps", at_least(1), "steps of the run that measures ns per step");
   return s;
 }
@@ -433,7 +434,7 @@ void run_convergence(Context& ctx) {
   ctx.summary["h_range"]["convergence"] = h_range(hs);
 }
 
-// ---- What the accuracy costs: median wall time of each method to t_end over
+// ---- What the accuracy costs: wall time (runner/timing.hpp) of each method to t_end over
 // the steps timing.h (steps only: the transformation (41) applied once before
 // and once after), serial; errors and force evaluations from separate
 // (parallel) counting runs. ----
@@ -446,24 +447,29 @@ void run_timing(Context& ctx) {
   const double t_end = s.real("convergence.t_end"), k = s.real("oscillator.k");
   const int repeats = static_cast<int>(s.integer("timing.repeats"));
   const auto methods = s.texts("timing.methods");
-  const auto seconds = [&](const std::string& method, double h, std::int64_t n) {
-    return with_oscillator_method(method, osc, k, [&](const auto& m) {
-      return time_runs(repeats, [&] { do_not_optimize(integrate_inlined(m, z0, h, n)); }).seconds();
+  SpreadTally spreads;
+  const auto timed = [&](const std::string& method, double h, std::int64_t n) {
+    const RunTime t = with_oscillator_method(method, osc, k, [&](const auto& m) {
+      return time_runs(repeats, [&] { do_not_optimize(integrate_inlined(m, z0, h, n)); });
     });
+    spreads.add(t);
+    return t;
   };
   const auto timing_hs = s.reals("timing.h");
   const auto timing_runs = parallel_map(timing_hs.size(), [&](std::size_t i) {
     return oscillator_runs(methods, z0, timing_hs[i], k, steps_to(t_end, timing_hs[i]));
   });
-  Csv cost({"method", "h", "steps", "wall_s", "ns_per_step", "force_evals", "energy_err_max"});
+  Csv cost({"method", "h", "steps", "wall_s", "ns_per_step", "force_evals", "energy_err_max", "wall_spread"});
   std::vector<std::vector<CostRun>> curves(methods.size());  // per method: the runs of timing.h
   for (std::size_t i = 0; i < timing_hs.size(); ++i) {
     const double h = timing_hs[i];
     const std::int64_t n = steps_to(t_end, h);
     for (std::size_t m = 0; m < methods.size(); ++m) {
-      const double wall = seconds(methods[m], h, n);
+      const RunTime t = timed(methods[m], h, n);
+      const double wall = t.seconds();
       const EnergyRun& r = timing_runs[i][m];
-      cost.row(label_of(methods[m]), h, n, wall, 1e9 * wall / static_cast<double>(n), r.force_evals, r.max_err);
+      cost.row(label_of(methods[m]), h, n, wall, 1e9 * wall / static_cast<double>(n), r.force_evals, r.max_err,
+               t.spread());
       curves[m].push_back({h, static_cast<double>(n), wall, static_cast<double>(r.force_evals), r.max_err});
     }
   }
@@ -472,10 +478,14 @@ void run_timing(Context& ctx) {
   json& timing = ctx.summary["timing"];
   const double h8 = s.real("oscillator.h");
   const std::int64_t n_timing = s.integer("timing.steps");
-  json ns_per_step;
-  for (const auto& m : methods)
-    ns_per_step[label_of(m)] = 1e9 * seconds(m, h8, n_timing) / static_cast<double>(n_timing);
+  json ns_per_step, ns_spread;
+  for (const auto& m : methods) {
+    const RunTime t = timed(m, h8, n_timing);
+    ns_per_step[label_of(m)] = 1e9 * t.seconds() / static_cast<double>(n_timing);
+    ns_spread[label_of(m)] = t.spread();
+  }
   timing["ns_per_step"] = ns_per_step;
+  timing["ns_per_step_spread"] = ns_spread;
   json relative;  // ns per step relative to the first method of timing.methods
   for (const auto& m : methods)
     relative[label_of(m)] = ns_per_step[label_of(m)].get<double>() / ns_per_step[label_of(methods[0])].get<double>();
@@ -483,8 +493,8 @@ void run_timing(Context& ctx) {
   if (ns_per_step.contains("se") && ns_per_step.contains("se_compensated"))
     timing["ns_per_step_ratio_compensated_over_se"] =
         ns_per_step["se_compensated"].get<double>() / ns_per_step["se"].get<double>();
-  timing["method"] = "median of timing.repeats runs after one warm-up, steady_clock, single thread; "
-                     "ns_per_step at oscillator.h over timing.steps steps";
+  timing["method"] = timing_method_text(repeats) + "; ns_per_step at oscillator.h over timing.steps steps";
+  timing["spread"] = spreads.to_json();  // of every timed measurement of the study
   // Error at equal wall time: at the geometric middle of the wall-time range
   // that all methods cover.
   double w_lo = 0, w_hi = std::numeric_limits<double>::infinity();

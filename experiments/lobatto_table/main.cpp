@@ -38,6 +38,7 @@
 #include "geomint/runner/experiment.hpp"
 #include "geomint/runner/published.hpp"
 #include "geomint/runner/timing.hpp"
+#include "geomint/runner/timing_report.hpp"
 #include "geomint/sweep/parallel_map.hpp"
 #include "geomint/systems/counting.hpp"
 #include "geomint/systems/elastic_pendulum.hpp"
@@ -127,13 +128,21 @@ Schema schema() {
              "methods compared with Lobatto on the nonlinear pendulum")
       .real("reference.rtol", positive(), "tolerances of the odeint Bulirsch-Stoer reference")
       .real("reference.atol", positive(), "")
-      .integer("timing.repeats", at_least(1), "timed repetitions (median)")
+      .integer("timing.repeats", at_least(1), "timed runs (>= 10 ms each) per measurement; the minimum is the estimate, the spread is reported")
       .texts("timing.methods", methods_for<NonlinearPendulum>(), 1,
              "methods timed on the nonlinear pendulum at the steps nonlinear.h, against its reference")
       .reals("timing.error_targets", positive(), 1,
              "errors whose cost (wall time, force evaluations) each method's runs are asked for")
       .text("timing.equal_wall", methods_for<NonlinearPendulum>(),
-            "the method of timing.methods whose most expensive run sets the wall time of the comparison at equal cost");
+            "the method of timing.methods whose most expensive run sets the wall time of the comparison at equal cost")
+      .texts("long_run_cost.methods", methods_for<HarmonicOscillator>(), 1,
+             "methods whose cost is measured on the oscillator of Fig. 2 over long_run.periods periods (001: lobatto, "
+             "simpson, implicit_midpoint)")
+      .reals("long_run_cost.h", positive(), 3, "steps of the long-run work-precision study")
+      .reals("long_run_cost.error_targets", positive(), 1,
+             "phase errors at the end of the long run whose cost (wall time, force evaluations) each method is asked for")
+      .integer("long_run_cost.timing_steps", at_least(1),
+               "steps of the timed segment; a long run's wall time is its steps times the time per step measured on it");
   return s;
 }
 
@@ -187,6 +196,16 @@ void check_nonlinear(const Scene& s) {
   for (double h : s.reals("nonlinear.h"))
     check_lobatto(s, "nonlinear.h", h * kNonlinearOmega, "h = " + format_double(h) + ", frequency 1");
   for (const auto& m : s.texts("nonlinear.methods")) check_pendulum_steps(s, "nonlinear.methods", m);
+}
+
+void check_long_run_cost(const Scene& s) {
+  check_distinct_methods(s, "long_run_cost.methods");
+  for (double h : s.reals("long_run_cost.h")) {
+    const double hw = h * s.real("oscillator.omega");
+    const std::string what = "h = " + format_double(h);
+    for (const auto& m : s.texts("long_run_cost.methods"))
+      check_oscillatory_bound(s, "long_run_cost.h", "long_run_cost.methods", m, hw, what);
+  }
 }
 
 void check_timing(const Scene& s) {
@@ -715,8 +734,9 @@ void run_timing(Context& ctx) {
   const auto [pend, pz0] = pendulum(s);
   const Z1 pref = reference_solution(pend, pz0, t_end, s.real("reference.rtol"), s.real("reference.atol"));
   const int repeats = static_cast<int>(s.integer("timing.repeats"));
-  Csv cost({"method", "h", "steps", "wall_s", "ns_per_step", "force_evals", "error"});
-  json ns = json::object();
+  Csv cost({"method", "h", "steps", "wall_s", "ns_per_step", "force_evals", "error", "wall_spread"});
+  json ns = json::object(), ns_spread = json::object();
+  SpreadTally spreads;
   std::map<std::string, std::vector<CostRun>> runs;
   for (const auto& m : s.texts("timing.methods")) {
     const std::string label = label_of(m);
@@ -727,12 +747,14 @@ void run_timing(Context& ctx) {
                                           return integrate(method, pz0, h, n);
                                         }),
                                         pref);
-      const double wall = with_method(m, pend, [&](const auto& method) {
-        return time_runs(repeats, [&] { do_not_optimize(integrate(method, pz0, h, n)); }).seconds();
+      const RunTime t = with_method(m, pend, [&](const auto& method) {
+        return time_runs(repeats, [&] { do_not_optimize(integrate(method, pz0, h, n)); });
       });
-      cost << label << h << n << wall << 1e9 * wall / static_cast<double>(n) << evals << err;
+      spreads.add(t);
+      const double wall = t.seconds();
+      cost << label << h << n << wall << 1e9 * wall / static_cast<double>(n) << evals << err << t.spread();
       cost.end_row();
-      if (h == nh.back()) ns[label] = 1e9 * wall / static_cast<double>(n);
+      if (h == nh.back()) ns[label] = 1e9 * wall / static_cast<double>(n), ns_spread[label] = t.spread();
       runs[label].push_back({h, static_cast<double>(n), wall, static_cast<double>(evals), err});
     }
   }
@@ -742,11 +764,120 @@ void run_timing(Context& ctx) {
   ctx.summary["methods"]["timing"] = timed;
   ctx.summary["timing"] = {
       {"ns_per_step", ns},
-      {"method", "nonlinear pendulum to nonlinear.t_end; median of timing.repeats runs after one warm-up, single "
-                 "thread; ns_per_step at the smallest nonlinear.h; force evaluations count U_q and U_qq calls"},
+      {"ns_per_step_spread", ns_spread},
+      {"spread", spreads.to_json()},
+      {"method", "nonlinear pendulum to nonlinear.t_end; " + timing_method_text(repeats) +
+                     "; ns_per_step at the smallest nonlinear.h; force evaluations count U_q and U_qq calls"},
       {"equal_wall_s", equal_wall},
       {"cost", cost_summary(timed.get<std::vector<std::string>>(), runs, ns, equal_wall,
                             s.reals("timing.error_targets"))}};
+}
+
+// ---- What the accuracy costs on the oscillator of Fig. 2 over long_run.periods periods, against the
+// closed form ----
+
+void run_long_run_cost(Context& ctx) {
+  const Scene& s = ctx.scene;
+  ctx.progress("cost: long runs on the oscillator");
+  const auto [osc, A, T, z0] = oscillator(s);
+  const auto methods = s.texts("long_run_cost.methods");
+  const auto hs = s.reals("long_run_cost.h");
+  const double periods = s.real("long_run.periods");
+  const int repeats = static_cast<int>(s.integer("timing.repeats"));
+  const auto steps_of = [&](double h) { return std::llround(periods * T / h); };
+  // Errors and force evaluations: one counting run per method and step (in parallel): the largest
+  // |H(z_j) - H(z_0)| over the run (Fig. 2's quantity) and |z_N - z(t_N)|_2 at its end, both against
+  // the closed form of the oscillator.
+  struct Measured {
+    std::int64_t evals = 0;
+    double energy = 0, phase = 0;
+  };
+  const std::size_t nh = hs.size();
+  const auto measured = parallel_map(methods.size() * nh, [&](std::size_t task) {
+    Measured r;
+    const double h = hs[task % nh];
+    const std::int64_t n = steps_of(h);
+    const double H0 = osc.H(z0);
+    const Counting<HarmonicOscillator> counted{osc, &r.evals};
+    const Z1 zN = with_method(methods[task / nh], counted, [&](const auto& m) {
+      return integrate(m, z0, h, n, [&](std::int64_t, const Z1& z) { r.energy = std::max(r.energy, std::abs(osc.H(z) - H0)); });
+    });
+    r.phase = phase_distance(zN, osc.exact(z0, static_cast<double>(n) * h));
+    return r;
+  });
+  // Wall time of the same runs without observation, serial (runner/timing.hpp).
+  Csv cost({"method", "h", "steps", "wall_s", "ns_per_step", "force_evals", "phase_err", "energy_err", "wall_spread"});
+  SpreadTally spreads;
+  json ns = json::object(), ns_spread = json::object();
+  std::map<std::string, std::vector<CostRun>> phase_runs, energy_runs;
+  for (std::size_t task = 0; task < measured.size(); ++task) {
+    const std::string& m = methods[task / nh];
+    const std::string label = label_of(m);
+    const double h = hs[task % nh];
+    const std::int64_t n = steps_of(h);
+    // The time per step on the oscillator does not depend on where the step is taken: it is measured
+    // on a segment of long_run_cost.timing_steps steps (at most the run), and the run's wall time is
+    // its n steps at that rate.
+    const std::int64_t n_timed = std::min<std::int64_t>(n, s.integer("long_run_cost.timing_steps"));
+    const RunTime t = with_method(m, osc, [&](const auto& method) {
+      return time_runs(repeats, [&] { do_not_optimize(integrate(method, z0, h, n_timed)); });
+    });
+    spreads.add(t);
+    const Measured& r = measured[task];
+    const double per_step = t.seconds() / static_cast<double>(n_timed), wall = per_step * static_cast<double>(n);
+    cost << label << h << n << wall << 1e9 * per_step << r.evals << r.phase << r.energy << t.spread();
+    cost.end_row();
+    if (h == *std::min_element(hs.begin(), hs.end()))  // time per step at the smallest step
+      ns[label] = 1e9 * per_step, ns_spread[label] = t.spread();
+    phase_runs[label].push_back({h, static_cast<double>(n), wall, static_cast<double>(r.evals), r.phase});
+    energy_runs[label].push_back({h, static_cast<double>(n), wall, static_cast<double>(r.evals), r.energy});
+  }
+  ctx.write("timing_long_run.csv", cost);
+  // The closed form's own error at t_N = periods T: the round-off of cos and sin of omega t_N, about
+  // u omega t_N in the phase, i.e. u omega t_N |(A, m omega A)| in z (A and m omega A: the amplitudes
+  // of q and p).
+  const double t_N = periods * T;
+  const double reference_error = std::numeric_limits<double>::epsilon() * osc.w * t_N * std::hypot(A, osc.m * osc.w * A);
+  json errors = json::object();
+  for (const auto& m : methods) {
+    const std::string label = label_of(m);
+    double phase_min = std::numeric_limits<double>::infinity(), energy_max = 0, energy_min = phase_min;
+    for (const CostRun& r : phase_runs[label]) phase_min = std::min(phase_min, r.err);
+    for (const CostRun& r : energy_runs[label]) energy_min = std::min(energy_min, r.err), energy_max = std::max(energy_max, r.err);
+    errors[label] = {{"phase_min", phase_min}, {"energy_min", energy_min}, {"energy_max", energy_max}};
+  }
+  ctx.summary["methods"]["long_run_cost"] = labels(methods);
+  ctx.summary["long_run_cost"] = {{"t_end", t_N}, {"h_range", range_of(hs)}, {"reference_error", reference_error},
+                                  {"errors", errors},
+                                  {"norms", "phase: |z_N - z(t_N)|_2 against the closed form; energy: max over the "
+                                            "steps of |H(z_j) - H(z_0)|"}};
+  // The common budget: the smallest over the methods of their most expensive run (inside every
+  // method's measured range when the ranges overlap).
+  double equal_wall = std::numeric_limits<double>::infinity();
+  for (const auto& m : methods) equal_wall = std::min(equal_wall, largest_wall(by_decreasing_h(phase_runs[label_of(m)])));
+  json c = json::object();
+  for (const auto& m : methods) {
+    const std::string label = label_of(m);
+    const auto phase = by_decreasing_h(phase_runs[label]), energy = by_decreasing_h(energy_runs[label]);
+    json cm = {{"ns_per_step", ns[label]}, {"ns_per_step_spread", ns_spread[label]},
+               {"relative_cost", ns[label].get<double>() / ns[label_of(methods.front())].get<double>()},
+               {"evals_per_step", phase.empty() ? json(nullptr) : json(phase.back().evals / phase.back().steps)},
+               {"phase_err_at_equal_wall", optional_json(error_at_wall(phase, equal_wall))},
+               {"energy_err_at_equal_wall", optional_json(error_at_wall(energy, equal_wall))}};
+    cm["wall_s_to"] = json::array(), cm["evals_to"] = json::array();  // per target of long_run_cost.error_targets
+    for (double target : s.reals("long_run_cost.error_targets")) {
+      cm["wall_s_to"].push_back(optional_json(cost_to_reach(phase, target, &CostRun::wall_s)));
+      cm["evals_to"].push_back(optional_json(cost_to_reach(phase, target, &CostRun::evals)));
+    }
+    c[label] = cm;
+  }
+  ctx.summary["timing"]["long_run_cost"] = {
+      {"cost", c},
+      {"equal_wall_s", equal_wall},
+      {"spread", spreads.to_json()},
+      {"method", "the oscillator of Fig. 2 over long_run.periods periods, every call of a step through integrate; " +
+                     timing_method_text(repeats) + "; ns_per_step at the smallest long_run_cost.h; force evaluations "
+                     "count U_q and U_qq calls"}};
 }
 
 }  // namespace
@@ -769,6 +900,9 @@ int main(int argc, char** argv) {
       {"timing", "cost: error against wall time and force evaluations", {"timing.csv"},
        {"timing", "nonlinear.h", "nonlinear.t_end", "nonlinear.pendulum_q0", "reference"},
        check_timing, run_timing},
+      {"long_run_cost", "cost over the long run of Fig 2: error against wall time and force evaluations",
+       {"timing_long_run.csv"}, {"long_run_cost", "long_run.periods", "oscillator", "timing.repeats"},
+       check_long_run_cost, run_long_run_cost},
   };
   return run_experiment(argc, argv, std::move(spec), GEOMINT_EXPERIMENT_DIR);
 }

@@ -17,6 +17,8 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -25,10 +27,13 @@
 #include "geomint/geometry/clouds.hpp"
 #include "geomint/geometry/hull_volume.hpp"
 #include "geomint/geometry/volume_series.hpp"
+#include "geomint/analysis/work_precision.hpp"
+#include "geomint/integrators/runge_kutta4.hpp"
 #include "geomint/integrators/conformal_variational.hpp"
 #include "geomint/methods/registry.hpp"
 #include "geomint/observables/error_norms.hpp"
 #include "geomint/observables/order_fit.hpp"
+#include "geomint/observables/symplecticity.hpp"
 #include "geomint/reference/odeint_reference.hpp"
 #include "geomint/runner/experiment.hpp"
 #include "geomint/runner/timing.hpp"
@@ -36,6 +41,7 @@
 #include "geomint/systems/nonholonomic_golden.hpp"
 #include "geomint/systems/nonholonomic_modified_series.hpp"
 #include "geomint/systems/nonholonomic_particle.hpp"
+#include "geomint/systems/nonholonomic_variational.hpp"
 
 using namespace geomint;
 using json = nlohmann::ordered_json;
@@ -95,7 +101,12 @@ Schema schema() {
       .reals("order_study.ells", at_least(0), 1, "its truncation orders ell")
       .real("reference.rtol", positive(), "tolerances of the odeint Bulirsch-Stoer reference on (3.8)")
       .real("reference.atol", positive(), "")
-      .integer("timing.repeats", at_least(1), "timed repetitions (median)")
+      .integer("timing.repeats", at_least(1), "timed runs of >= 10 ms each (the minimum is the estimate)")
+      .text("cost.discretization", method_choices(),
+            "the discrete Lagrangian (5.1) of Phi^(4) and Phi^(0) in the comparison with RK4")
+      .reals("cost.rk4_h", positive(), 3, "steps of the classical RK4 on (3.8), the baseline that preserves neither")
+      .real("cost.target_err", positive(), "trajectory error at which the cost to reach it is reported")
+      .real("cost.target_energy_err", positive(), "energy error max |H - H0| at which the cost to reach it is reported")
       .alias("observables", "studies");  // the older name of the studies list
   return s;
 }
@@ -365,6 +376,75 @@ PhiStudy phi_study(Context& ctx) {
   return {sys, z0, rtol, atol, h, scene_methods(s)};
 }
 
+// ---- Fig. 5.1: is the flow symplectic? The defect max |Phi^T Omega Phi - Omega| of its Jacobian ----
+
+// The linear symplectic map (x, y, px, py) -> (x + y, y, px, py - px): Omega-preserving, shadow-area changing.
+Point4 linear_symplectic_shear(const Point4& z) { return {z[0] + z[1], z[1], z[2], z[3] - z[2]}; }
+
+// Along the trajectory from z0, at t_j = j h <= t_end: the defect of the Jacobian of the exact flow
+// (3.8), of the flow of H with N = 1 (symplectic: the same odeint variational equations, so its
+// defect is what the integration itself contributes), and of Psi_{h,E}^j with E = H(z0) fixed
+// (symplectic: round-off only), for each scene method; and, for (3.8), the measure identity
+// det Phi(t) = N(y(t)) / N(y0) (mu = N^{-1} d^4 z preserved) as a check of Phi.
+void run_symplecticity(Context& ctx, const NonholonomicParticle& sys, const Point4& z0a, double t_end, double rtol,
+                       double atol) {
+  const Scene& s = ctx.scene;
+  const double h = s.real("h");
+  const auto methods = scene_methods(s);
+  put_run_facts(ctx, methods);
+  const std::int64_t n = steps_in(t_end, h);
+  ctx.progress("Fig. 5.1: symplecticity defect of the flow");
+  const Vec<4> z0(z0a[0], z0a[1], z0a[2], z0a[3]);
+  const auto flows = parallel_map(2, [&](std::size_t k) {
+    return variational_flow(sys, z0, k == 0 ? ParticleFlow::conformal : ParticleFlow::hamiltonian, h, n, rtol, atol);
+  });
+  const double E = sys.H(as_state(z0a));
+  const auto psi = parallel_map(methods.size(), [&](std::size_t k) {
+    std::vector<double> defect{0.0};
+    Mat<4> J = Mat<4>::Identity();
+    Z z = as_state(z0a);
+    for (std::int64_t j = 0; j < n; ++j) {
+      const Z z1 = conformal_variational_step(methods[k], sys, z, h, E).z;
+      J = psi_step_jacobian(methods[k], sys, z, z1, h, E) * J;
+      defect.push_back(symplecticity_defect<4>(J));
+      z = z1;
+    }
+    return defect;
+  });
+  std::vector<std::string> cols{"t", "conformal_flow", "hamiltonian_flow", "measure_identity_err"};
+  for (Discretization d : methods) cols.push_back(std::string("psi_") + discretization_name(d));
+  Csv csv(cols);
+  double ham_max = 0, measure_max = 0;
+  const double N0 = NonholonomicParticle::N(z0[1]);
+  for (std::size_t j = 0; j <= static_cast<std::size_t>(n); ++j) {
+    const double dc = symplecticity_defect<4>(flows[0][j].Phi), dh = symplecticity_defect<4>(flows[1][j].Phi);
+    const double m = std::abs(flows[0][j].Phi.determinant() * N0 / NonholonomicParticle::N(flows[0][j].z[1]) - 1);
+    ham_max = std::max(ham_max, dh), measure_max = std::max(measure_max, m);
+    csv << static_cast<double>(j) * h << dc << dh << m;
+    for (const auto& p : psi) csv << p[j];
+    csv.end_row();
+  }
+  ctx.write("shape_symplecticity.csv", csv);
+  json& r = ctx.summary["reproduced"]["symplecticity"];
+  r["t_end"] = static_cast<double>(n) * h;
+  r["samples"] = n + 1;
+  r["conformal_flow_at_t_end"] = symplecticity_defect<4>(flows[0].back().Phi);
+  json at_snapshots = json::array();  // at the snapshot times of Fig. 5.1
+  const double dt = s.real("shape.snapshot_dt");
+  for (std::int64_t k = 0; k <= s.integer("shape.snapshots"); ++k) {
+    const std::int64_t j = std::llround(static_cast<double>(k) * dt / h);
+    if (j <= n && std::abs(static_cast<double>(j) * h - static_cast<double>(k) * dt) < 1e-9)
+      at_snapshots.push_back(symplecticity_defect<4>(flows[0][static_cast<std::size_t>(j)].Phi));
+  }
+  r["conformal_flow_at_snapshots"] = at_snapshots;
+  r["hamiltonian_flow_max"] = ham_max;
+  r["measure_identity_max_err"] = measure_max;
+  json psi_max;
+  for (std::size_t k = 0; k < methods.size(); ++k)
+    psi_max[discretization_name(methods[k])] = *std::max_element(psi[k].begin(), psi[k].end());
+  put_methods(ctx, "psi_max", psi_max, "symplecticity");
+}
+
 // ---- Fig. 5.1: a large cloud on a 3-sphere under the reference flow ----
 
 void run_shape(Context& ctx) {
@@ -395,9 +475,22 @@ void run_shape(Context& ctx) {
   }
   ctx.write("shape.csv", pts);
   ctx.write("shape_areas.csv", areas);
-  put(ctx, "reproduced", "shape_area_sum", sums);  // not constant: the flow is not symplectic (003 Sec. 5.2.1)
+  // The sum of the shadow areas describes the figure; it is not a symplectic invariant: the linear
+  // symplectic map S (x, y, px, py) = (x + y, y, px, py - px) changes it (for a round ball from
+  // 2 pi r^2 to 2 sqrt(2) pi r^2), here applied to the cloud at t = 0.
+  {
+    std::vector<std::array<double, 2>> a, b;
+    for (const auto& p : paths) {
+      const Point4 z = linear_symplectic_shear(p.front());
+      a.push_back({z[0], z[2]}), b.push_back({z[1], z[3]});
+    }
+    put(ctx, "reproduced", "shape_area_sum_after_shear", convex_area(a) + convex_area(b));
+    put(ctx, "reproduced", "shape_area_sum_round_ball", 2 * std::numbers::pi * std::pow(s.real("shape.radius"), 2));
+  }
+  put(ctx, "reproduced", "shape_area_sum", sums);  // a description of the figure, not an invariant
   put(ctx, "reproduced", "shape_area_sum_last", sums.back());
   put(ctx, "reproduced", "shape_t_end", static_cast<double>(snaps) * dt);  // the time of the last snapshot
+  run_symplecticity(ctx, sys, z0, static_cast<double>(snaps) * dt, rtol, atol);
 }
 
 // ---- Figs 5.2 and 5.4: hull volumes of the 600-cell cloud under Phi^(ell) and the reference ----
@@ -464,6 +557,15 @@ void cloud_volumes(Context& ctx, const PhiStudy& p, const std::vector<Point4>& c
       json ptp;
       for (std::size_t k = 0; k < p.methods.size(); ++k) ptp[discretization_name(p.methods[k])] = relative_peak_to_peak(vols[k][m], window);
       put_methods(ctx, phi + measure_name(all_measures[m]), ptp, nest);
+    }
+    // the amplitude (half the ptp) in mu^(4)_mod, the quantity 003 reads off Fig. 5.2
+    const auto mu4 = std::find(all_measures.begin(), all_measures.end(), 4);
+    if (mu4 != all_measures.end()) {
+      json amp;
+      for (std::size_t k = 0; k < p.methods.size(); ++k)
+        amp[discretization_name(p.methods[k])] =
+            relative_amplitude(vols[k][static_cast<std::size_t>(mu4 - all_measures.begin())], window);
+      put_methods(ctx, "amplitude_phi" + std::to_string(ell) + "_mu4", amp, nest);
     }
     // in its own measure mu^(ell)_mod, less the reference's relative volume (the hull artefact both share)
     const std::size_t own = static_cast<std::size_t>(std::find(all_measures.begin(), all_measures.end(), ell) - all_measures.begin());
@@ -688,6 +790,140 @@ void run_order_study(Context& ctx) {
   if (!fits.empty()) ctx.summary["fits"] = fits;
 }
 
+// ---- work-precision: Phi^(4) against Phi^(0) and RK4 ----
+
+// One timed run: its step, its trajectory (z_0 .. z_n; Newton iterations for Phi^(ell)) and its time.
+struct TimedRun {
+  double h;
+  Trajectory tr;
+  RunTime time;
+};
+
+// (3.8) as z' = f(z) on Vec<4>, for runge_kutta4; `evals` counts the evaluations of f.
+struct ParticleField {
+  const NonholonomicParticle& sys;
+  std::int64_t* evals;
+  Vec<4> f(const Vec<4>& z) const {
+    ++*evals;
+    const Point4 d = sys.rhs({z[0], z[1], z[2], z[3]});
+    return {d[0], d[1], d[2], d[3]};
+  }
+};
+
+Trajectory run_rk4(const NonholonomicParticle& sys, double h, const Point4& z0, std::int64_t n, std::int64_t* evals) {
+  const ParticleField field{sys, evals};
+  Trajectory t;
+  t.z.reserve(static_cast<std::size_t>(n) + 1);
+  Vec<4> y(z0[0], z0[1], z0[2], z0[3]);
+  t.z.push_back(z0);
+  for (std::int64_t j = 0; j < n; ++j) {
+    y = runge_kutta4(field, y, h);
+    t.z.push_back({y[0], y[1], y[2], y[3]});
+  }
+  return t;
+}
+
+json or_null(const std::optional<double>& v) { return v ? json(*v) : json(nullptr); }
+
+// At equal cost (003, harmonic scene, not in the paper): Phi^(4) and Phi^(0) with the discretization
+// cmp over order_study.h (the Phi^(4) runs are those of the cost study) and the classical RK4 on
+// (3.8) over cost.rk4_h, each from z0 with N = floor(T/h) steps, T = energies.t_end. Two errors:
+// the trajectory error |z_N - z(t_N)|_2 against the reference at t_N (whose own error, against a
+// reference at 100x tighter tolerances, is reported), and the energy error max_j |H(z_j) - H0|
+// (bounded for the conformal methods, drifting for RK4). Costs: wall time (time_runs: the minimum
+// of timing.repeats runs of >= 10 ms) and evaluations (Newton iterations of Psi_{h,E}, each the
+// discrete momentum with its 2x2 Jacobian; 4 evaluations of (3.8) per RK4 step).
+void work_precision(Context& ctx, const NonholonomicParticle& sys, const Point4& z0, double rtol, double atol,
+                    Discretization cmp, const std::vector<TimedRun>& phi4_runs) {
+  const Scene& s = ctx.scene;
+  const double T = s.real("energies.t_end"), H0 = sys.H(as_state(z0));
+  const int repeats = static_cast<int>(s.integer("timing.repeats"));
+  ctx.progress("cost: Phi^(4), Phi^(0) and RK4 at equal cost");
+  std::vector<TimedRun> phi0_runs, rk4_runs;
+  std::vector<std::int64_t> rk4_evals;
+  for (double hh : s.reals("order_study.h")) {
+    const std::int64_t n = steps_in(T, hh);
+    Trajectory tr;
+    const RunTime rt = time_runs(repeats, [&] {
+      tr = run_phi(cmp, sys, hh, 0, z0, n);
+      do_not_optimize(tr.z.back());
+    });
+    phi0_runs.push_back({hh, tr, rt});
+  }
+  for (double hh : s.reals("cost.rk4_h")) {
+    const std::int64_t n = steps_in(T, hh);
+    Trajectory tr;
+    std::int64_t evals = 0;
+    const RunTime rt = time_runs(repeats, [&] {
+      evals = 0;
+      tr = run_rk4(sys, hh, z0, n, &evals);
+      do_not_optimize(tr.z.back());
+    });
+    rk4_runs.push_back({hh, tr, rt}), rk4_evals.push_back(evals);
+  }
+  const char* names[] = {"phi4", "phi0", "rk4"};
+  const std::vector<TimedRun>* all[] = {&phi4_runs, &phi0_runs, &rk4_runs};
+  Csv csv({"method", "h", "steps", "t_end", "err", "energy_err", "evals", "wall_s", "wall_spread"});
+  std::vector<CostRun> traj[3], energy[3];
+  double ref_err = 0, spread_max = 0;
+  for (int m = 0; m < 3; ++m)
+    for (std::size_t i = 0; i < all[m]->size(); ++i) {
+      const TimedRun& r = (*all[m])[i];
+      const std::int64_t n = static_cast<std::int64_t>(r.tr.z.size()) - 1;
+      const double tN = static_cast<double>(n) * r.h;
+      const auto ref = reference_samples(sys, z0, tN, 1, rtol, atol).back();
+      const auto tight = reference_samples(sys, z0, tN, 1, reference_check_factor * rtol, reference_check_factor * atol).back();
+      ref_err = std::max(ref_err, phase_distance(as_state(ref), as_state(tight)));
+      double e_energy = 0;
+      for (const Point4& z : r.tr.z) e_energy = std::max(e_energy, std::abs(sys.H(as_state(z)) - H0));
+      const double err = phase_distance(as_state(r.tr.z.back()), as_state(ref));
+      const double evals = m == 2 ? static_cast<double>(rk4_evals[i]) : static_cast<double>(r.tr.iterations);
+      spread_max = std::max(spread_max, r.time.spread());
+      csv.row(names[m], r.h, n, tN, err, e_energy, evals, r.time.seconds(), r.time.spread());
+      traj[m].push_back({r.h, static_cast<double>(n), r.time.seconds(), evals, err});
+      energy[m].push_back({r.h, static_cast<double>(n), r.time.seconds(), evals, e_energy});
+    }
+  ctx.write("timing_work_precision.csv", csv);
+  // the common budget: the largest wall time that every method reaches
+  double budget = std::numeric_limits<double>::infinity();
+  for (int m = 0; m < 3; ++m) budget = std::min(budget, largest_wall(traj[m]));
+  const double target = s.real("cost.target_err"), target_energy = s.real("cost.target_energy_err");
+  json w, wt;  // w: what does not depend on the clock (deterministic); wt: wall-time quantities (timing)
+  w["discretization"] = discretization_name(cmp);
+  w["methods"] = {"phi4", "phi0", "rk4"};
+  w["reference_error"] = ref_err;
+  w["reference_check_factor"] = reference_check_factor;
+  w["target_err"] = target;
+  w["target_energy_err"] = target_energy;
+  wt["budget_s"] = budget;
+  for (int m = 0; m < 3; ++m) {
+    const auto t = by_decreasing_h(traj[m]), e = by_decreasing_h(energy[m]);
+    json c, ct;
+    ct["err_at_budget"] = or_null(error_at_wall(t, budget));
+    ct["energy_err_at_budget"] = or_null(error_at_wall(e, budget));
+    ct["wall_s_to_target"] = or_null(cost_to_reach(t, target, &CostRun::wall_s));
+    c["evals_to_target"] = or_null(cost_to_reach(t, target, &CostRun::evals));
+    ct["wall_s_to_target_energy"] = or_null(cost_to_reach(e, target_energy, &CostRun::wall_s));
+    c["evals_to_target_energy"] = or_null(cost_to_reach(e, target_energy, &CostRun::evals));
+    std::vector<double> hs, errs;
+    for (const CostRun& r : t) hs.push_back(r.h), errs.push_back(r.err);
+    c["order"] = fit_order(hs, errs, 0.0, "work precision").order;  // trajectory error against h
+    ct["ns_per_step_at_h_max"] = 1e9 * t.front().wall_s / t.front().steps;
+    w[names[m]] = c, wt[names[m]] = ct;
+  }
+  // speeds as ratios measured in this run: the cost of each method to reach the target over that of RK4
+  for (const char* key : {"wall_s_to_target", "wall_s_to_target_energy"}) {
+    const json r = wt["rk4"][key];  // copies: inserting into wt (an ordered_json) moves its elements
+    for (const char* m : {"phi4", "phi0"}) {
+      const json x = wt[m][key];
+      wt["ratio_to_rk4"][m][key] = x.is_number() && r.is_number() ? json(x.get<double>() / r.get<double>()) : json(nullptr);
+    }
+  }
+  ctx.summary["timing"]["work_precision"] = wt;
+  ctx.summary["reproduced"]["work_precision"] = w;
+  put(ctx, "timing", "work_precision_spread_max", spread_max);
+}
+
 // ---- cost: error at energies.t_end against wall time, per method (Phi^(4)), over order_study.h ----
 
 void run_cost(Context& ctx) {
@@ -701,7 +937,10 @@ void run_cost(Context& ctx) {
   for (double hh : hs)
     if (std::abs(static_cast<double>(steps_in(T, hh)) * hh / T - 1) < 1e-9) h_at_T.push_back(hh);
   Csv csv({"method", "h", "steps", "t_end", "err", "wall_s", "ns_per_step", "newton_iterations_per_step"});
-  json ns_per_step, newton_at_h, err_at_T, order;
+  json ns_per_step, newton_at_h, err_at_T, order, time_at_h;
+  double spread_max = 0;
+  const Discretization cmp = *parse_discretization(method_info(s.text("cost.discretization")).label);
+  std::vector<TimedRun> phi4_runs;  // the runs of Phi^(4) with the compared discretization, reused below
   for (Discretization d : methods) {
     const char* name = discretization_name(d);
     std::vector<double> errs;
@@ -709,20 +948,25 @@ void run_cost(Context& ctx) {
       const std::int64_t n = steps_in(T, hh);  // the error is taken at n h <= T, against the reference there
       const auto ref = reference_samples(sys, z0, static_cast<double>(n) * hh, 1, rtol, atol).back();
       Trajectory tr;
-      const double sec = time_runs(static_cast<int>(s.integer("timing.repeats")), [&] {
+      const RunTime rt = time_runs(static_cast<int>(s.integer("timing.repeats")), [&] {
         tr = run_phi(d, sys, hh, 4, z0, n);
         do_not_optimize(tr.z.back());
-      }).seconds();
+      });
+      const double sec = rt.seconds();
+      spread_max = std::max(spread_max, rt.spread());
+      if (d == cmp) phi4_runs.push_back({hh, tr, rt});
       const double ns = 1e9 * sec / static_cast<double>(n), err = phase_distance(as_state(tr.z.back()), as_state(ref));
       const double newton = static_cast<double>(tr.iterations) / static_cast<double>(n);
       csv.row(name, hh, n, static_cast<double>(n) * hh, err, sec, ns, newton);
       errs.push_back(err);
       if (std::find(h_at_T.begin(), h_at_T.end(), hh) != h_at_T.end()) err_at_T[name].push_back(err);
-      if (hh == h) ns_per_step[name] = ns, newton_at_h[name] = newton;
+      if (hh == h) ns_per_step[name] = ns, newton_at_h[name] = newton, time_at_h[name] = to_json(rt);
     }
     order[name] = fit_order(hs, errs, 0.0, "cost").order;  // error against h over all the steps
   }
   ctx.write("timing_cost.csv", csv);
+  put(ctx, "timing", "cost_at_h", time_at_h);
+  put(ctx, "timing", "cost_spread_max", spread_max);
   put(ctx, "timing", "ns_per_step", ns_per_step);
   put(ctx, "timing", "ns_per_step_ranges", method_ranges(ns_per_step));
   put_methods(ctx, "newton_iterations_per_step_phi4", newton_at_h);
@@ -730,6 +974,7 @@ void run_cost(Context& ctx) {
   put(ctx, "reproduced", "cost_err_at_t_end", err_at_T);
   ctx.summary["orders"]["cost_error_phi4"] = order;
   ctx.summary["ranges"]["cost_error_phi4"] = method_ranges(order);
+  work_precision(ctx, sys, z0, rtol, atol, cmp, phi4_runs);
 }
 
 }  // namespace
@@ -744,7 +989,8 @@ int main(int argc, char** argv) {
     return keys;
   };
   spec.studies = {
-      {"shape", "003 Fig 5.1", {"shape.csv", "shape_areas.csv"}, with({"seed", "shape"}), nullptr, run_shape},
+      {"shape", "003 Fig 5.1", {"shape.csv", "shape_areas.csv", "shape_symplecticity.csv"},
+       with({"seed", "shape", "h", "methods"}), nullptr, run_shape},
       {"volumes", "003 Figs 5.2, 5.4", {"volumes_phi*.csv", "volumes_authors_phi*.csv"},
        with({"h", "methods", "t_end", "ptp_window", "cloud"}),
        check_volumes, run_volumes},
@@ -756,9 +1002,16 @@ int main(int argc, char** argv) {
       {"order_study", "order of measure preservation (003 Cor. 4.3)", {"order_study.csv"},
        with({"methods", "order_study", "ptp_window"}, false), check_order_study, run_order_study},
       // the cost runs take the steps of the order study to the end time of the energies
-      {"cost", "error against wall time of each discretization", {"timing_cost.csv"},
-       with({"h", "methods", "energies.t_end", "order_study.h", "timing"}),
-       [](const Scene& s) { check_at_least_one_step(s, "energies.t_end", s.reals("order_study.h"), "max(order_study.h)"); },
+      {"cost", "error against wall time of each discretization; Phi^(4) against Phi^(0) and RK4 at equal cost",
+       {"timing_cost.csv", "timing_work_precision.csv"},
+       with({"h", "methods", "energies.t_end", "order_study.h", "timing", "cost"}),
+       [](const Scene& s) {
+         check_at_least_one_step(s, "energies.t_end", s.reals("order_study.h"), "max(order_study.h)");
+         check_at_least_one_step(s, "energies.t_end", s.reals("cost.rk4_h"), "max(cost.rk4_h)");
+         const auto ms = scene_methods(s);
+         if (std::find(ms.begin(), ms.end(), *parse_discretization(method_info(s.text("cost.discretization")).label)) == ms.end())
+           s.reject("cost.discretization", "must be one of the scene's methods (its Phi^(4) runs are reused)");
+       },
        run_cost},
   };
   return run_experiment(argc, argv, std::move(spec), GEOMINT_EXPERIMENT_DIR);

@@ -27,6 +27,7 @@
 #include "geomint/reference/odeint_reference.hpp"
 #include "geomint/runner/experiment.hpp"
 #include "geomint/runner/timing.hpp"
+#include "geomint/runner/timing_report.hpp"
 #include "geomint/sweep/parallel_map.hpp"
 #include "geomint/systems/counting.hpp"
 #include "geomint/systems/elastic_pendulum.hpp"
@@ -119,7 +120,7 @@ Schema schema() {
       .real("reference.rtol", positive(), "relative tolerance of the odeint Bulirsch-Stoer reference")
       .real("reference.atol", positive(), "absolute tolerance of the odeint Bulirsch-Stoer reference")
       .texts("timing.methods", choices, 1, "methods of the cost study (registry names or labels)")
-      .integer("timing.repeats", at_least(1), "timed repetitions per run (the median is reported)")
+      .integer("timing.repeats", at_least(1), "timed runs (>= 10 ms each) per measurement; the minimum is the estimate, the spread is reported")
       .reals("timing.error_targets", positive(), 1,
              "phase errors for which the wall time and the force evaluations to reach them are reported");
   return s;
@@ -348,7 +349,7 @@ json cost_summary(const std::vector<std::string>& methods, const std::vector<std
   return out;
 }
 
-// ---- What the accuracy costs: median wall time of each method from
+// ---- What the accuracy costs: wall time (runner/timing.hpp) of each method from
 // initial[0] to t_end (pre once, post once, eq. (23)); force evaluations and
 // phase errors (against the reference at initial[0]) from separate counting runs. ----
 
@@ -378,27 +379,32 @@ void timing_with(Context& ctx, const Sys& sys) {
     c.phase = phase_distance(zN, z_ref);
     return c;
   });
-  Csv cost({"method", "h", "steps", "wall_s", "ns_per_step", "force_evals", "phase_err"});
-  json ns_per_step, timing;
+  Csv cost({"method", "h", "steps", "wall_s", "ns_per_step", "force_evals", "phase_err", "wall_spread"});
+  json ns_per_step, ns_spread, timing;
+  SpreadTally spreads;
   std::vector<std::vector<CostRun>> runs(methods.size());  // per method, its runs of `h`
   const double h_ns = *std::min_element(hs.begin(), hs.end());
   for (std::size_t task = 0; task < counts.size(); ++task) {
     const std::string label = label_of(methods[task / nh]);
     const double h = hs[task % nh];
     const std::int64_t n = steps_to(t_end, h);
-    const double wall = with_method(methods[task / nh], sys, [&](const auto& m) {  // (the dispatch outside the clock)
-      return time_runs(repeats, [&] { do_not_optimize(integrate_inlined(m, z0, h, n)); }).seconds();
+    const RunTime t = with_method(methods[task / nh], sys, [&](const auto& m) {  // (the dispatch outside the clock)
+      return time_runs(repeats, [&] { do_not_optimize(integrate_inlined(m, z0, h, n)); });
     });
-    cost.row(label, h, n, wall, 1e9 * wall / static_cast<double>(n), counts[task].evals, counts[task].phase);
+    spreads.add(t);
+    const double wall = t.seconds();
+    cost.row(label, h, n, wall, 1e9 * wall / static_cast<double>(n), counts[task].evals, counts[task].phase, t.spread());
     runs[task / nh].push_back({h, static_cast<double>(n), wall, static_cast<double>(counts[task].evals), counts[task].phase});
-    if (h == h_ns) ns_per_step[label] = 1e9 * wall / static_cast<double>(n);
+    if (h == h_ns) ns_per_step[label] = 1e9 * wall / static_cast<double>(n), ns_spread[label] = t.spread();
   }
   ctx.write("timing.csv", cost);
   timing["ns_per_step"] = ns_per_step;
+  timing["ns_per_step_spread"] = ns_spread;
+  timing["spread"] = spreads.to_json();  // of every timed run of the study
   if (ns_per_step.contains("sv") && ns_per_step.contains("rowlands"))
     timing["ns_per_step_ratio_rowlands_over_sv"] = ns_per_step["rowlands"].get<double>() / ns_per_step["sv"].get<double>();
-  timing["method"] = "median of timing.repeats runs after one warm-up, steady_clock, single thread, from initial[0] "
-                     "to t_end (pre- and postprocessing once, every call inlined); ns_per_step at the smallest h";
+  timing["method"] = timing_method_text(repeats) + "; from initial[0] to t_end (pre- and postprocessing once, every "
+                     "call inlined); ns_per_step at the smallest h";
   const double budget = largest_wall(by_decreasing_h(runs[0]));  // the most expensive run of the first method
   timing["cost"] = cost_summary(methods, runs, s.reals("timing.error_targets"), budget);
   timing["equal_wall_s"] = budget;

@@ -18,11 +18,15 @@
 #include <map>
 #include <numbers>
 #include <random>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "geomint/analysis/growth_episodes.hpp"
 #include "geomint/analysis/linear_stability.hpp"
+#include "geomint/analysis/orbit_average.hpp"
+#include "geomint/analysis/work_precision.hpp"
 #include "geomint/core/integrate.hpp"
 #include "geomint/integrators/runge_kutta4.hpp"
 #include "geomint/integrators/takahashi_imada.hpp"
@@ -35,6 +39,7 @@
 #include "geomint/observables/order_fit.hpp"
 #include "geomint/observables/stiffness.hpp"
 #include "geomint/observables/symplecticity.hpp"
+#include "geomint/reference/odeint_reference.hpp"
 #include "geomint/runner/experiment.hpp"
 #include "geomint/runner/published.hpp"
 #include "geomint/runner/timing.hpp"
@@ -428,6 +433,35 @@ void run_pendulum(Context& ctx) {
       {"reference", {{"step", kReferenceStep},
                      {"t_end", t_ref},
                      {"periods", (ref_end.q[0] - p0.q[0]) / (2 * std::numbers::pi)}}}};  // turns of the rotating pendulum
+
+  // The local drift over the whole run: the least-squares slope of H + h^2 H_3 in each of pendulum.slope_windows
+  // consecutive windows, against (4.3) averaged over the rotating orbit of the window's mean energy H.
+  const auto windows = static_cast<std::size_t>(s.integer("pendulum.slope_windows"));
+  const auto rate_at = [&](double E) {
+    return rotation_average(up, E, [&](double q, double p) { return simplified_ti_drift_rate(up, make_state(q, p), h); });
+  };
+  Csv ls({"t_start", "t_end", "t_mid", "H_mean", "local_slope", "predicted_slope", "rel_difference"});
+  double worst = 0, worst_t = 0;
+  const std::size_t per = ts_all.size() / windows;
+  for (std::size_t w = 0; w < windows; ++w) {
+    const std::size_t a = w * per, b = w + 1 == windows ? ts_all.size() : (w + 1) * per;
+    const std::span<const double> tw(ts_all.data() + a, b - a), ew(es_all.data() + a, b - a);
+    double H_mean = 0;
+    for (std::size_t k = a; k < b; ++k) H_mean += up.H(p0) + Hs_all[k];
+    H_mean /= static_cast<double>(b - a);
+    const double local = linear_fit(tw, ew).slope, pred = rate_at(H_mean), rel = std::abs(local - pred) / std::abs(pred);
+    ls.row(ts_all[a], ts_all[b - 1], 0.5 * (ts_all[a] + ts_all[b - 1]), H_mean, local, pred, rel);
+    if (rel > worst) worst = rel, worst_t = 0.5 * (ts_all[a] + ts_all[b - 1]);
+  }
+  ctx.write("fig2_local_slope.csv", ls);
+  ctx.summary["pendulum"]["local_slope"] = {
+      {"windows", windows},
+      {"window_length", ts_all[per] - ts_all[0]},
+      {"max_rel_difference", worst},
+      {"max_rel_difference_at", worst_t},
+      // (4.3) over the orbit of the start's energy (quadrature) against its average along the RK4 orbit above
+      {"predicted_at_start", rate_at(up.H(p0))},
+      {"predicted_at_start_rel_difference", std::abs(rate_at(up.H(p0)) / rate_predicted - 1)}};
 }
 
 // ---- Fig. 3: Henon-Heiles k = 3, E along the simplified method: bounded, no drift ----
@@ -573,6 +607,15 @@ void ensemble_with(Context& ctx, const HH& hhk) {
   const double printed_sigma = printed.value.get<double>(), printed_t = printed.requires_.at("t_end").get<double>();
   ensemble["printed_sigma2_over_t"] = printed_sigma * printed_sigma / printed_t;
   ensemble["sigma2_over_t_minus_printed"] = ensemble["sigma2_over_t"].get<double>() - printed_sigma * printed_sigma / printed_t;
+  // The printed sigma against ours carried to the printed time by the printed law sigma ~ t^gamma (published.toml:
+  // hh5_sigma_exponent), in standard errors of ours (relative 1/sqrt(2(M-1))): a check that the quick scene can make.
+  const double gamma_printed = published_value("hh5_sigma_exponent");
+  const double carried = sigmas.back() * std::pow(printed_t / ts.back(), gamma_printed);
+  ensemble["printed_sigma_check"] = {
+      {"printed", printed_sigma},
+      {"carried_to_printed_t", carried},
+      {"exponent", gamma_printed},
+      {"score", std::abs(carried - printed_sigma) / (carried * standard_error_of_deviation(1.0, static_cast<double>(M)))}};
 
   // Fig. 5: Poincare cuts (q1 = 0 upwards, p1 > 0) of the trajectory with the largest error,
   // on the window where its error grows fastest and on the one where it is flattest.
@@ -595,9 +638,47 @@ void ensemble_with(Context& ctx, const HH& hhk) {
     double p2_sum = 0;
   };
   std::map<std::string, Cuts> cuts;
+  // The growth episodes of its recorded error (analysis/growth_episodes.hpp; the scene's ensemble.episode_*).
+  const double sample_dt = time_of(1);
+  const auto half = static_cast<std::size_t>(std::max(1.0, std::round(s.real("ensemble.episode_half_width") / sample_dt)));
+  const auto min_samples = static_cast<std::size_t>(std::max(1.0, std::round(s.real("ensemble.episode_min_length") / sample_dt)));
+  std::vector<double> t_rec(ns);
+  for (std::size_t k = 0; k < ns; ++k) t_rec[k] = time_of(k);
+  const std::vector<double> run_slope = running_slope(t_rec, e, half);
+  const SlopeNoise slope_sn = slope_noise(run_slope);
+  const std::vector<Episode> episodes = growth_episodes(run_slope, s.real("ensemble.episode_threshold"), min_samples);
+  std::vector<int> episode_of(ns, -1);  // the episode of the interval [t_k, t_{k+1}), or -1 (the complement)
+  for (std::size_t i = 0; i < episodes.size(); ++i)
+    for (std::size_t k = episodes[i].begin; k < episodes[i].end; ++k) episode_of[k] = static_cast<int>(i);
+  Csv f5e({"t", "E_err", "running_slope", "episode", "sign"});
+  for (std::size_t k = 0; k < ns; ++k)
+    f5e.row(t_rec[k], e[k], run_slope[k], static_cast<std::int64_t>(episode_of[k]),
+            static_cast<std::int64_t>(episode_of[k] >= 0 ? episodes[static_cast<std::size_t>(episode_of[k])].sign : 0));
+  ctx.write("fig5_episodes.csv", f5e);
+  // Per episode (the last entry: the complement): its cuts, and (4.3) integrated along the steps, h sum dE/dt.
+  std::vector<Cuts> ep_cuts(episodes.size() + 1);
+  std::vector<double> ep_predicted(episodes.size() + 1, 0.0);
+  std::vector<std::int64_t> ep_steps(episodes.size() + 1, 0), ep_steps_negative(episodes.size() + 1, 0);
+  Csv f5c({"episode", "sign", "t", "q2", "p2"});
   Z2 prev = starts[worst_i];
   integrate(simplified_ti_method(hhk, false), starts[worst_i], h, n4, [&](std::int64_t j, const Z2& z) {
     const double t = static_cast<double>(j) * h;
+    const std::size_t k_prev = j > 0 ? static_cast<std::size_t>((j - 1) / every4) : 0;
+    const int ep = k_prev < ns ? episode_of[k_prev] : -1;
+    const std::size_t slot = ep >= 0 ? static_cast<std::size_t>(ep) : episodes.size();
+    if (j > 0 && k_prev + 1 < ns) {
+      ep_predicted[slot] += h * simplified_ti_drift_rate(hhk, prev, h);
+      ++ep_steps[slot], ep_steps_negative[slot] += prev.p[1] < 0;
+    }
+    if (j > 0 && k_prev + 1 < ns && prev.q[0] < 0 && z.q[0] >= 0 && z.p[0] > 0) {
+      const double a = -prev.q[0] / (z.q[0] - prev.q[0]);
+      const double p2 = prev.p[1] + a * (z.p[1] - prev.p[1]);
+      Cuts& c = ep_cuts[slot];
+      ++c.count, c.negative += p2 < 0, c.p2_sum += p2;
+      if (ep >= 0)
+        f5c.row(static_cast<std::int64_t>(ep), static_cast<std::int64_t>(episodes[static_cast<std::size_t>(ep)].sign), t - (1 - a) * h,
+                prev.q[1] + a * (z.q[1] - prev.q[1]), p2);
+    }
     for (const auto& [label, w] : {std::pair{"growth", steep}, std::pair{"no_growth", flat}}) {
       if (j > 0 && t >= static_cast<double>(w) * tw && t < static_cast<double>(w + 1) * tw && prev.q[0] < 0 &&
           z.q[0] >= 0 && z.p[0] > 0) {
@@ -636,6 +717,70 @@ void ensemble_with(Context& ctx, const HH& hhk) {
     const double length = printed_window["t_end"].get<double>() - printed_window["t_start"].get<double>();
     poincare["printed"][label] = {{"length", length}, {"cuts_per_time", printed_window["cuts"].get<double>() / length}};
   }
+  // The episodes against (4.3): dE/dt = -h^4/2880 U^(5)(p^5) = h^4/120 p2^5 for k = 5 (U_22222 = -24): E rises where
+  // the time average of p2^5 over the episode is positive. The change (4.3) predicts, h sum_n dE/dt(p_n, q_n) over the
+  // episode's steps, against the recorded change; and the share of the cuts, and of the steps, with p2 < 0.
+  const auto share = [](const Cuts& c) { return c.count ? static_cast<double>(c.negative) / static_cast<double>(c.count) : 0.0; };
+  const auto time_share = [&](std::size_t slot) {
+    return ep_steps[slot] ? static_cast<double>(ep_steps_negative[slot]) / static_cast<double>(ep_steps[slot]) : 0.0;
+  };
+  double worst_rel = 0;
+  int cut_sign_positive = 0;  // growths with a majority of cuts at p2 > 0 and declines with a majority at p2 < 0
+  json eps = json::array();
+  Cuts growth_all, decline_all;
+  int agree = 0;
+  double growth_time = 0;
+  std::size_t longest = episodes.size();
+  for (std::size_t i = 0; i < episodes.size(); ++i) {
+    const Episode& ep = episodes[i];
+    const std::size_t last = std::min(ep.end, ns - 1);
+    const double ta = t_rec[ep.begin], tb = t_rec[last], change = e[last] - e[ep.begin];
+    const Cuts& c = ep_cuts[i];
+    (ep.sign > 0 ? growth_all : decline_all).count += c.count;
+    (ep.sign > 0 ? growth_all : decline_all).negative += c.negative;
+    const bool agrees = (ep_predicted[i] > 0) == (change > 0);
+    agree += agrees;
+    cut_sign_positive += c.count > 0 && (ep.sign > 0) == (share(c) < 0.5);
+    worst_rel = std::max(worst_rel, std::abs(ep_predicted[i] / change - 1));
+    if (ep.sign > 0) growth_time += tb - ta;
+    if (ep.sign > 0 && (longest == episodes.size() || tb - ta > t_rec[std::min(episodes[longest].end, ns - 1)] -
+                                                                    t_rec[episodes[longest].begin]))
+      longest = i;
+    eps.push_back({{"t_start", ta},
+                   {"t_end", tb},
+                   {"sign", ep.sign},
+                   {"cuts", c.count},
+                   {"share_p2_negative", share(c)},
+                   {"mean_p2", c.count ? c.p2_sum / static_cast<double>(c.count) : 0.0},
+                   {"share_time_p2_negative", time_share(i)},
+                   {"E_err_change", change},
+                   {"E_change_predicted", ep_predicted[i]},  // h sum of (4.3) over the episode's steps
+                   {"predicted_over_recorded", ep_predicted[i] / change},
+                   {"E_err_slope", change / (tb - ta)},
+                   {"sign_agrees_with_43", agrees}});
+  }
+  const Cuts& rest = ep_cuts[episodes.size()];
+  json ep_summary = {{"rule", {{"half_width", static_cast<double>(half) * sample_dt},
+                               {"half_width_samples", half},
+                               {"threshold", s.real("ensemble.episode_threshold")},
+                               {"min_length", static_cast<double>(min_samples) * sample_dt},
+                               {"slope_median", slope_sn.centre},
+                               {"slope_noise", slope_sn.noise}}},
+                     {"count", episodes.size()},
+                     {"sign_agrees_with_43", agree},                 // episodes whose recorded change has the sign of (4.3)
+                     {"max_rel_difference_from_43", worst_rel},       // max |predicted / recorded - 1| over the episodes
+                     {"cut_majority_on_side_of_change", cut_sign_positive},
+                     {"growth_time", growth_time},
+                     {"list", eps},
+                     {"growth", {{"cuts", growth_all.count}, {"share_p2_negative", share(growth_all)}}},
+                     {"decline", {{"cuts", decline_all.count}, {"share_p2_negative", share(decline_all)}}},
+                     {"complement", {{"cuts", rest.count}, {"share_p2_negative", share(rest)},
+                                     {"share_time_p2_negative", time_share(episodes.size())},
+                                     {"mean_p2", rest.count ? rest.p2_sum / static_cast<double>(rest.count) : 0.0},
+                                     {"E_change_predicted", ep_predicted[episodes.size()]}}}};
+  if (longest < episodes.size()) ep_summary["longest_growth"] = eps[longest];
+  poincare["episodes"] = ep_summary;
+  ctx.write("fig5_episode_cuts.csv", f5c);
   ctx.summary["ensemble"] = ensemble;
   ctx.summary["poincare"] = poincare;
   put(ctx, "timing",
@@ -653,6 +798,22 @@ void run_ensemble(Context& ctx) {
 
 // ---- Fig. 6: the Lennard-Jones cluster ----
 
+using LJ = LennardJones<9>;
+using Z18 = PhaseState<18>;
+
+Vec<2> lj_grid(int k) { return Vec<2>(1 + k % 3, 1 + k / 3); }  // (i, j), i, j in {1, 2, 3}
+
+// Start i of Fig. 6: the grid with each coordinate perturbed uniformly by at most lj.perturbation, p = 0, from the
+// stream seeded by (lj.seed, i).
+Z18 lj_start_of(const Scene& s, std::size_t i) {
+  std::seed_seq seq{static_cast<std::uint64_t>(s.integer("lj.seed")), static_cast<std::uint64_t>(i)};
+  std::mt19937_64 rng(seq);
+  std::uniform_real_distribution<double> u(-s.real("lj.perturbation"), s.real("lj.perturbation"));
+  Z18 z;
+  for (int k = 0; k < 9; ++k) z.q[2 * k] = lj_grid(k)[0] + u(rng), z.q[2 * k + 1] = lj_grid(k)[1] + u(rng);
+  return z;
+}
+
 constexpr std::size_t kLjShown = 50;          // Fig. 6: trajectories drawn (004: 50)
 constexpr std::int64_t kStiffnessEvery = 10;   // Fig. 6: the stiffness along the scan starts, every this many steps of lj.h
 
@@ -660,19 +821,10 @@ void run_lj(Context& ctx) {
   const Scene& s = ctx.scene;
   ctx.progress("Fig. 6: Lennard-Jones cluster");
   const std::int64_t samples = s.integer("samples");
-  using LJ = LennardJones<9>;
-  using Z18 = PhaseState<18>;
   const LJ lj;
   json reproduced;
-  const auto grid = [](int k) { return Vec<2>(1 + k % 3, 1 + k / 3); };  // (i, j), i, j in {1, 2, 3}
-  const auto lj_start = [&](std::size_t i) {  // the grid, perturbed; p = 0
-    std::seed_seq seq{static_cast<std::uint64_t>(s.integer("lj.seed")), static_cast<std::uint64_t>(i)};
-    std::mt19937_64 rng(seq);
-    std::uniform_real_distribution<double> u(-s.real("lj.perturbation"), s.real("lj.perturbation"));
-    Z18 z;
-    for (int k = 0; k < 9; ++k) z.q[2 * k] = grid(k)[0] + u(rng), z.q[2 * k + 1] = grid(k)[1] + u(rng);
-    return z;
-  };
+  const auto grid = lj_grid;
+  const auto lj_start = [&](std::size_t i) { return lj_start_of(s, i); };
   // The step-size scan: max |H - H0| over t <= lj.scan_t, diverged beyond lj.blowup or when not finite.
   const auto hs = s.reals("lj.h_scan");
   const auto scan_size = static_cast<std::size_t>(s.integer("lj.scan_size"));
@@ -751,20 +903,23 @@ void run_lj(Context& ctx) {
     return r;
   });
   const double wall6 = std::chrono::duration<double>(std::chrono::steady_clock::now() - tl0).count();
-  Csv f6({"t", "mu", "sigma", "H_err_rms", "Hhat_err_rms"});
-  std::vector<double> ts, sigmas, H_rms, Hhat_rms;
+  Csv f6({"t", "mu", "sigma", "H_err_rms", "Hhat_err_rms", "Hhat_change_rms"});
+  std::vector<double> ts, sigmas, H_rms, Hhat_rms, Hhat_change;
   const std::size_t nsl = lj_series[0].E.size();
   double mu_f = 0, sigma_f = 0, H_max = 0;
   for (std::size_t k = 0; k < nsl; ++k) {
     std::vector<double> E;
-    double hr = 0, hhr = 0;
+    double hr = 0, hhr = 0, hcr = 0;  // hcr: H(p^_n, q^_n) - H(p^_0, q^_0), what (1.5) makes random-walk
     for (const auto& r : lj_series) E.push_back(r.E[k]), hr += r.H[k] * r.H[k], hhr += r.Hhat[k] * r.Hhat[k];
+    for (const auto& r : lj_series) hcr += (r.Hhat[k] - r.Hhat[0]) * (r.Hhat[k] - r.Hhat[0]);
     for (const auto& r : lj_series) H_max = std::max(H_max, std::abs(r.H[k]));
     const auto [mu, sigma] = mean_and_deviation(E);
     const double t = static_cast<double>(k) * static_cast<double>(every_l) * hl;
     const double H_rms_k = std::sqrt(hr / static_cast<double>(Ml)), Hhat_rms_k = std::sqrt(hhr / static_cast<double>(Ml));
-    f6.row(t, mu, sigma, H_rms_k, Hhat_rms_k);
+    const double Hhat_change_k = std::sqrt(hcr / static_cast<double>(Ml));
+    f6.row(t, mu, sigma, H_rms_k, Hhat_rms_k, Hhat_change_k);
     ts.push_back(t), sigmas.push_back(sigma), H_rms.push_back(H_rms_k), Hhat_rms.push_back(Hhat_rms_k);
+    Hhat_change.push_back(Hhat_change_k);
     mu_f = mu, sigma_f = sigma;
   }
   ctx.write("fig6_stats.csv", f6);
@@ -808,6 +963,10 @@ void run_lj(Context& ctx) {
       {"Hhat_err_rms_start", Hhat_rms[0]},           // the offset H(chi_h(p_0, q_0)) - H_0
       {"Hhat_err_rms_variation", Hhat_variation},   // max |rms / its start - 1| over t > 0
       {"H_over_Hhat_err_rms", H_spread["mean"].get<double>() / Hhat_spread["mean"].get<double>()},
+      // H(p^_n, q^_n) - H(p^_0, q^_0): its root mean square at t_end, against sigma of E, and its growth exponent
+      {"Hhat_change_rms_final", Hhat_change.back()},
+      {"Hhat_change_over_sigma_final", Hhat_change.back() / sigma_f},
+      {"Hhat_change_exponent", power_law_exponent(ts, Hhat_change, s.real("lj.t_end") / 10)},
       // the published mean and standard deviation (published.toml) in standard errors of ours, and ours from zero
       {"standard_scores", {{"mu_from_printed", std::abs(mu_f - published_value("lj_mu_final")) / mu_se},
                            {"mu_from_zero", std::abs(mu_f) / mu_se},
@@ -823,6 +982,166 @@ void run_lj(Context& ctx) {
        {"fig6_steps", static_cast<double>(Ml) * static_cast<double>(nl)},
        {"fig6_ns_per_step_thread", 1e9 * wall6 * ctx.threads / (static_cast<double>(Ml) * static_cast<double>(nl))}});
   put_differences(ctx, "lj");
+}
+
+// ---- Fig. 6, the printed step: sigma of the error of E against h (a small ensemble over a short span). The random
+// walk of (4.3) gives sigma ~ h^4 t^(1/2); the fitted exponent in h, and the step at which the published sigma at the
+// published time would be reached (carried there by the published t^(1/2)) ----
+
+void run_lj_steps(Context& ctx) {
+  const Scene& s = ctx.scene;
+  ctx.progress("Fig. 6: sigma against h");
+  const LJ lj;
+  const auto hs = s.reals("lj_steps.h");
+  const auto M = static_cast<std::size_t>(s.integer("lj_steps.size"));
+  const double T = s.real("lj_steps.t_end");
+  const auto err = parallel_map(hs.size() * M, [&](std::size_t task) {
+    const double h = hs[task / M];
+    const Z18 start = lj_start_of(s, task % M);
+    const double E0 = simplified_ti_modified_energy(lj, start, h);
+    return simplified_ti_modified_energy(lj, integrate(simplified_ti_method(lj, false), start, h, steps_to(T, h)), h) - E0;
+  });
+  Csv out({"h", "mu", "sigma", "sigma_stderr"});
+  std::vector<double> log_h, log_sigma;
+  json per_h = json::array();
+  for (std::size_t k = 0; k < hs.size(); ++k) {
+    const MeanDeviation md = mean_and_deviation(std::span<const double>(err.data() + k * M, M));
+    out.row(hs[k], md.mean, md.sd, standard_error_of_deviation(md.sd, static_cast<double>(M)));
+    log_h.push_back(std::log(hs[k])), log_sigma.push_back(std::log(md.sd));
+    per_h.push_back({{"h", hs[k]}, {"sigma", md.sd}, {"mu", md.mean}});
+  }
+  ctx.write("fig6_steps.csv", out);
+  const LinearFit fit = linear_fit(log_h, log_sigma);
+  // the standard error of the slope from the relative standard error 1/sqrt(2(M-1)) of each sigma (independent starts
+  // per h are not assumed: the same starts are used at every h, so this is a scale, not a confidence bound)
+  double sxx = 0, mean_log_h = 0;
+  for (double x : log_h) mean_log_h += x / static_cast<double>(log_h.size());
+  for (double x : log_h) sxx += (x - mean_log_h) * (x - mean_log_h);
+  const double rel_se = standard_error_of_deviation(1.0, static_cast<double>(M));
+  const double printed_sigma = published_value("lj_sigma_final"), printed_gamma = published_value("lj_sigma_exponent");
+  const double printed_t = published_entry("lj_sigma_final").requires_.at("lj.t_end").get<double>();
+  const double printed_h = published_value("lj_h");
+  const double carry = std::pow(printed_t / T, printed_gamma);  // sigma(printed t) / sigma(T) of the random walk
+  const double implied_h = std::exp((std::log(printed_sigma / carry) - fit.intercept) / fit.slope);
+  ctx.summary["lj_steps"] = {
+      {"t_end", T},
+      {"size", M},
+      {"sigma", per_h},
+      {"exponent", fit.slope},
+      {"exponent_stderr", rel_se / std::sqrt(sxx)},
+      {"printed_sigma", printed_sigma},
+      {"printed_t", printed_t},
+      {"carry_to_printed_t", carry},
+      {"implied_step", implied_h},  // the h at which the fit, carried to the printed t, gives the printed sigma
+      {"implied_step_over_printed", implied_h / printed_h},
+      {"sigma_at_printed_step", std::exp(fit.intercept + fit.slope * std::log(printed_h)) * carry}};
+}
+
+// ---- Cost: work-precision of the methods of work_precision.methods (processed where they have processing, as
+// Fig. 1) on the harmonic oscillator of Fig. 1 (exact solution) and on Henon-Heiles k = 3 from the start of Fig. 3
+// (odeint reference): the global error at work_precision.t_end against the wall time and the force evaluations ----
+
+struct WpRow {
+  std::string method;
+  CostRun run;
+  double spread = 0;
+};
+
+// The runs of one method on one problem: error(z_end) of the processed end state, evals by a counting run.
+template <class Sys, class Err>
+std::vector<WpRow> wp_runs(const Scene& s, const std::string& method, const Sys& sys, const typename Sys::State& z0,
+                           const Err& error) {
+  const double T = s.real("work_precision.t_end");
+  const int repeats = static_cast<int>(s.integer("timing.repeats"));
+  std::vector<WpRow> rows;
+  for (double h : s.reals("work_precision.h")) {
+    const std::int64_t n = steps_to(T, h);
+    std::int64_t evals = 0;
+    const Counting<Sys> counted{sys, &evals};
+    with_method(method, counted, [&](const auto& m) { return integrate(m, z0, h, n); });
+    const auto [err, rt] = with_method(method, sys, [&](const auto& m) {
+      const RunTime t = time_runs(repeats, [&] { do_not_optimize(integrate_inlined(m, z0, h, n)); });
+      return std::pair{error(integrate(m, z0, h, n)), t};
+    });
+    rows.push_back({label_of(method), {h, static_cast<double>(n), rt.seconds(), static_cast<double>(evals), err}, rt.spread()});
+  }
+  return rows;
+}
+
+void run_work_precision(Context& ctx) {
+  const Scene& s = ctx.scene;
+  ctx.progress("cost: work-precision");
+  const double T = s.real("work_precision.t_end"), target = s.real("work_precision.target");
+  const auto methods = s.texts("work_precision.methods");
+  // the reference of Henon-Heiles: odeint at rtol = atol = work_precision.reference_tol, its error estimated by the
+  // difference to the solution at a 100 times tighter tolerance
+  const HenonHeiles hh{{}, 3};
+  const Z2 hh0 = hh_start(hh, s.real("hh3.q2"), s.real("hh3.p2"), s.real("hh.H0"));
+  const double tol = s.real("work_precision.reference_tol");
+  const Z2 ref = reference_solution(hh, hh0, T, tol / 100, tol / 100);
+  const Z2 ref_coarse = reference_solution(hh, hh0, T, tol, tol);
+  const auto norm2 = [](const Z2& a, const Z2& b) { return std::sqrt((a.q - b.q).squaredNorm() + (a.p - b.p).squaredNorm()); };
+  const Z1 osc0 = make_state(0.0, 1.0);
+  const Z1 osc_end = kOscillator.exact(osc0, T);
+  Csv out({"problem", "method", "h", "steps", "wall_s", "wall_spread", "force_evals", "error"});
+  json wp = {{"t_end", T}, {"target", target}, {"repeats", s.integer("timing.repeats")},
+             {"reference", {{"oscillator", "exact solution"},
+                            {"henon_heiles_tol", tol / 100},
+                            {"henon_heiles_error", norm2(ref, ref_coarse)}}}};  // estimate: against tol
+  const auto or_null = [](std::optional<double> v) { return v ? json(*v) : json(nullptr); };
+  for (const std::string problem : {"oscillator", "henon_heiles"}) {
+    std::vector<std::vector<CostRun>> curves;
+    json to_reach, evals_to_reach, spread_max;
+    for (const auto& m : methods) {
+      const auto rows = problem == "oscillator"
+                            ? wp_runs(s, m, kOscillator, osc0, [&](const Z1& z) {
+                                return std::hypot(z.p[0] - osc_end.p[0], kOscillator.w * (z.q[0] - osc_end.q[0]));
+                              })
+                            : wp_runs(s, m, hh, hh0, [&](const Z2& z) { return norm2(z, ref); });
+      std::vector<CostRun> c;
+      double sp = 0;
+      for (const auto& r : rows) {
+        out.row(problem, r.method, r.run.h, r.run.steps, r.run.wall_s, r.spread, r.run.evals, r.run.err);
+        c.push_back(r.run), sp = std::max(sp, r.spread);
+      }
+      c = by_decreasing_h(c);
+      to_reach[label_of(m)] = {{"wall_s", or_null(cost_to_reach(c, target, &CostRun::wall_s))},
+                               {"evals", or_null(cost_to_reach(c, target, &CostRun::evals))},
+                               {"ns_per_eval", 1e9 * rows.back().run.wall_s / rows.back().run.evals}};
+      evals_to_reach[label_of(m)] = or_null(cost_to_reach(c, target, &CostRun::evals));
+      spread_max[label_of(m)] = sp;
+      curves.push_back(c);
+    }
+    double w_lo = 0, w_hi = std::numeric_limits<double>::infinity();
+    for (const auto& c : curves) {
+      double lo = std::numeric_limits<double>::infinity(), hi = 0;
+      for (const auto& r : c) lo = std::min(lo, r.wall_s), hi = std::max(hi, r.wall_s);
+      w_lo = std::max(w_lo, lo), w_hi = std::min(w_hi, hi);
+    }
+    json at_wall = nullptr;
+    if (w_lo < w_hi) {
+      const double w_star = std::sqrt(w_lo * w_hi);
+      at_wall = {{"wall_s", w_star}};
+      for (std::size_t m = 0; m < methods.size(); ++m) at_wall[label_of(methods[m])] = or_null(error_at_wall(curves[m], w_star));
+    }
+    // (wall times: summary.timing.work_precision, which figure_values.gp and the thread check leave out)
+    wp[problem] = {{"evals_to_reach", evals_to_reach}};
+    json& wt = ctx.summary["timing"]["work_precision"][problem];
+    wt = {{"cost_to_reach", to_reach}, {"error_at_equal_wall_time", at_wall}, {"largest_spread", spread_max}};
+    // the ratios of the costs to reach the target, relative to the first method, in wall time and in force evaluations
+    json ratio;
+    const std::string first = label_of(methods[0]);
+    for (const auto& m : methods) {
+      const auto& a = to_reach[label_of(m)];
+      const auto& b = to_reach[first];
+      if (!a["wall_s"].is_null() && !b["wall_s"].is_null())
+        ratio[label_of(m)] = {{"wall_s", a["wall_s"].get<double>() / b["wall_s"].get<double>()},
+                              {"evals", a["evals"].get<double>() / b["evals"].get<double>()}};
+    }
+    wt["cost_ratio_to_" + first] = ratio;
+  }
+  ctx.write("timing_work_precision.csv", out);
+  ctx.summary["work_precision"] = wp;
 }
 
 // ---- Symplecticity against volume preservation: the one-step Jacobian (central
@@ -878,16 +1197,22 @@ void timing_with(Context& ctx, const HH& hhk) {
   const double h = s.real("h");
   const std::int64_t n = s.integer("timing.steps");
   const int repeats = static_cast<int>(s.integer("timing.repeats"));
-  json ns_per_step;
-  for (const auto& m : s.texts("timing.methods"))
-    ns_per_step[label_of(m)] = with_kernel(m, hhk, [&](const auto& kernel) {
-      return 1e9 * time_runs(repeats, [&] { do_not_optimize(integrate_inlined(kernel, z, h, n)); }).seconds() /
-             static_cast<double>(n);
+  json ns_per_step, runs, spread;
+  for (const auto& m : s.texts("timing.methods")) {
+    const RunTime t = with_kernel(m, hhk, [&](const auto& kernel) {
+      return time_runs(repeats, [&] { do_not_optimize(integrate_inlined(kernel, z, h, n)); });
     });
+    ns_per_step[label_of(m)] = 1e9 * t.seconds() / static_cast<double>(n);
+    spread[label_of(m)] = t.spread();
+    runs[label_of(m)] = to_json(t);
+  }
   put(ctx, "timing",
       {{"ns_per_step", ns_per_step},
-       {"method", "median of " + std::to_string(repeats) + " runs of " + std::to_string(n) +
-                      " steps, single thread, every call inlined; fig4_wall_s, fig6_wall_s: the ensembles on --threads threads"}});
+       {"spread", spread},  // (max - min) / min over the timed runs
+       {"runs", runs},
+       {"method", "minimum of " + std::to_string(repeats) + " timed runs (after a warm-up; each run repeats the " +
+                      std::to_string(n) + " steps until it lasts at least 10 ms), single thread, every call inlined; "
+                      "spread = (max - min) / min; fig4_wall_s, fig6_wall_s: the ensembles on --threads threads, one run"}});
   if (ns_per_step.contains("sv")) {  // per step, relative to Stormer-Verlet
     json relative;
     for (const auto& [label, ns] : ns_per_step.items()) relative[label] = double(ns) / double(ns_per_step["sv"]);
@@ -911,6 +1236,9 @@ Schema schema() {
       .real("pendulum.p0", any_finite(), "")
       .real("pendulum.t_end", positive(), "Fig. 2 time span")
       .real("pendulum.fit_t", positive(), "the drift rate is fitted over t <= fit_t, where the energy has not yet fallen")
+      .integer("pendulum.slope_windows", at_least(2),
+               "the local drift: least-squares slopes over this many consecutive windows of the run, against (4.3) at "
+               "each window's energy")
       .real("hh3.q2", any_finite(), "Fig. 3 start q2 (q1 = 0, p1 > 0 from hh.H0); the centre of the Fig. 4 starts")
       .real("hh3.p2", any_finite(), "Fig. 3 start p2")
       .real("hh3.t_end", positive(), "Fig. 3 time span")
@@ -923,6 +1251,12 @@ Schema schema() {
       .integer("ensemble.size", at_least(2), "Fig. 4 trajectories (004: 100)")
       .integer("ensemble.seed", non_negative(), "seed; trajectory i uses its own stream (seed, i)")
       .real("ensemble.perturbation", non_negative(), "q2 and p2 of each start perturbed uniformly by at most this")
+      .real("ensemble.episode_half_width", positive(),
+            "Fig. 5 episodes: the running slope of the error of E of the trajectory is fitted over +- this time")
+      .real("ensemble.episode_threshold", positive(),
+            "Fig. 5 episodes: a sample belongs to an episode where its running slope differs from their median by more "
+            "than this many robust standard deviations (1.4826 MAD) of the running slopes")
+      .real("ensemble.episode_min_length", positive(), "Fig. 5 episodes: the shortest episode (time units)")
       .real("ensemble.outlier", positive(), "trajectories whose max |error| exceeds this go to Fig. 4's upper panel (004: 2e-6)")
       .integer("samples", at_least(10), "output times per long run")
       .reals("lj.h_scan", positive(), 1, "Fig. 6: steps scanned for stability (004 prints h = 0.2)")
@@ -940,10 +1274,21 @@ Schema schema() {
       .real("symplecticity.q2", any_finite(), "start q2 of the check (q1 = 0, p1 > 0 from hh.H0)")
       .real("symplecticity.p2", any_finite(), "start p2 of the check")
       .real("symplecticity.fd_step", positive(), "step of the central differences of the Jacobian")
+      .reals("lj_steps.h", positive(), 3, "Fig. 6: steps at which sigma of the error of E is measured (its power of h)")
+      .integer("lj_steps.size", at_least(2), "trajectories per step of lj_steps (the starts of Fig. 6: lj.seed)")
+      .real("lj_steps.t_end", positive(), "time at which sigma is measured in lj_steps")
+      .texts("work_precision.methods", method_choices<Counting<HenonHeiles>>(), 2,
+             "methods of the work-precision study (processed where they have processing; registry names or labels)")
+      .reals("work_precision.h", positive(), 3, "steps of the work-precision runs (every method)")
+      .real("work_precision.t_end", positive(), "the global error of a work-precision run is taken at this time")
+      .real("work_precision.target", positive(), "target error of the cost to reach it")
+      .real("work_precision.reference_tol", positive(),
+            "odeint tolerance of the Henon-Heiles reference error estimate (the reference itself: 100 times tighter)")
       .texts("timing.methods", method_choices<HenonHeiles>(), 1,
              "methods timed (their kernels, on the Fig. 4 system; registry names or labels)")
       .integer("timing.steps", at_least(1), "steps of each timed run")
-      .integer("timing.repeats", at_least(1), "timed runs per method (the median is reported)");
+      .integer("timing.repeats", at_least(1),
+               "timed runs per method and step, each of at least 10 ms (the minimum is the estimate, the spread reported)");
   return s;
 }
 
@@ -955,15 +1300,26 @@ int main(int argc, char** argv) {
   spec.studies = {
       {"oscillator", "004 Fig 1", {"oscillator.csv", "oscillator_closed_forms.csv"}, {"oscillator"}, check_oscillator,
        run_oscillator},
-      {"pendulum", "004 Fig 2", {"fig2_pendulum.csv"}, {"h", "samples", "pendulum"}, nullptr, run_pendulum},
+      {"pendulum", "004 Fig 2", {"fig2_pendulum.csv", "fig2_local_slope.csv"}, {"h", "samples", "pendulum"}, nullptr, run_pendulum},
       {"hh3", "004 Fig 3", {"fig3_hh3.csv"}, {"h", "samples", "hh3", "hh.H0"},
        [](const Scene& s) { check_hh_start(s, "hh3", HenonHeiles{{}, 3}); },
        run_hh3},
-      {"ensemble", "004 Figs 4, 5", {"fig4_stats.csv", "fig4_trajectories.csv", "fig5_poincare.csv"},
+      {"ensemble", "004 Figs 4, 5", {"fig4_stats.csv", "fig4_trajectories.csv", "fig5_poincare.csv", "fig5_episodes.csv", "fig5_episode_cuts.csv"},
        {"h", "t_end", "samples", "hh", "ensemble", "hh3.q2", "hh3.p2"},
        [](const Scene& s) { with_ensemble_system(s, [&](const auto& hh) { check_hh_start(s, "hh3", hh); }); },
        run_ensemble},
       {"lj", "004 Fig 6", {"fig6_*.csv"}, {"lj", "samples"}, nullptr, run_lj},
+      {"lj_steps", "004 Fig 6: sigma against h (the printed step)", {"fig6_steps.csv"}, {"lj_steps", "lj.seed", "lj.perturbation"},
+       nullptr, run_lj_steps},
+      {"work_precision", "cost: error against wall time and force evaluations (oscillator, Henon-Heiles k = 3)",
+       {"timing_work_precision.csv"},
+       {"work_precision", "timing.repeats", "hh3.q2", "hh3.p2", "hh.H0"},
+       [](const Scene& s) {
+         check_methods(s, "work_precision.methods", Counting<HenonHeiles>{HenonHeiles{{}, 3}, nullptr});
+         check_methods(s, "work_precision.methods", Counting<HarmonicOscillator>{kOscillator, nullptr});
+         check_hh_start(s, "hh3", HenonHeiles{{}, 3});
+       },
+       run_work_precision},
       {"symplecticity", "004 Sect. 1.3: TI symplectic, the simplified TI only volume-preserving", {},
        {"symplecticity", "h", "hh.H0"},
        [](const Scene& s) {

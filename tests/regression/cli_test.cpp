@@ -91,6 +91,19 @@ TEST(Cli, UnwritableOutputDirectory) {
   EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
 }
 
+TEST(Cli, OutputDirectoryThatIsNotAResultsDirectoryIsNeverReplaced) {
+  // --out naming a directory of a user's files (as --out ~ would): refused before any work, untouched.
+  const fs::path home = work / "home";
+  fs::create_directories(home);
+  std::ofstream(home / "precious.txt") << "x";
+  const Outcome r = run("--quick --out " + home.string());
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("not a results directory"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_EQ(std::distance(fs::directory_iterator(home), fs::directory_iterator{}), 1);
+  EXPECT_FALSE(fs::exists(work / "home.partial"));
+}
+
 TEST(Cli, UnknownOptionAndHelp) {
   EXPECT_EQ(run("--bogus").code, 2);
   const Outcome help = run("--help");

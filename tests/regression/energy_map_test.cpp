@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <map>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -17,6 +18,8 @@
 #include <nlohmann/json.hpp>
 
 #include "geomint/integrators/symplectic_euler.hpp"
+#include "geomint/observables/rms_energy_error.hpp"
+#include "geomint/observables/order_fit.hpp"
 #include "geomint/systems/elastic_pendulum.hpp"
 #include "geomint/transforms/polar.hpp"
 #include "summary.hpp"
@@ -80,11 +83,8 @@ TEST(EnergyMap, EpsAtFixedStartsMatchesTheLibrarySymplecticEuler) {
   const std::int64_t steps = summary()["grid"]["steps"];
   const ElasticPendulumWithGravity cart{m, {SpringTerm{k, l}, GravityTerm{m, g}}};
   const ElasticPendulumPolarWithGravity polar{m, {SpringPolarTerm{k, l}, GravityPolarTerm{m, g}}};
-  const auto eps_of = [&](const auto& sys, PhaseState<2> z) {  // 000 eq. (50)
-    const double H0 = sys.H(z);
-    double sum = 0;
-    for (std::int64_t j = 1; j <= steps; ++j) z = symplectic_euler_pq(sys, z, h), sum += std::pow(sys.H(z) - H0, 2);
-    return std::sqrt(sum / static_cast<double>(steps));
+  const auto eps_of = [&](const auto& sys, const PhaseState<2>& z) {  // 000 eq. (50)
+    return symplectic_euler_rms_energy_error(sys, z, h, steps);
   };
   const CsvFile map = read_csv(dir / "map.csv");
   const std::size_t cx = map.column("x0"), cy = map.column("y0"), ec = map.column("eps_cartesian"),
@@ -164,16 +164,20 @@ TEST(EnergyMap, ResumeGivesTheSameMap) {
   // Stop after one round of batches, resume, and compare with an uninterrupted run (the map study alone).
   const std::string bin = std::string(GEOMINT_BIN_DIR) + "/energy_map --quick --study map --set grid.nx=48 --set grid.ny=48 ";
   const fs::path a = dir.parent_path() / "energy_map-resume", b = dir.parent_path() / "energy_map-straight";
-  fs::remove_all(a), fs::remove_all(b);
+  fs::remove_all(a), fs::remove_all(b), fs::remove_all(a.string() + ".partial");
   const int stopped = std::system((bin + "--set checkpoint.stop_after=1 --out " + a.string() + " 2>/dev/null").c_str());
   ASSERT_TRUE(WIFEXITED(stopped));
   EXPECT_EQ(WEXITSTATUS(stopped), 3);
-  EXPECT_TRUE(fs::exists(a / "energy_map.checkpoint.json"));
+  // A stopped run leaves DIR as it was and keeps its checkpoint in DIR.partial (runner/experiment.hpp).
+  const fs::path partial = a.string() + ".partial";
+  EXPECT_TRUE(fs::exists(partial / "energy_map.checkpoint.json"));
   EXPECT_FALSE(fs::exists(a / "map.csv"));
+  EXPECT_FALSE(fs::exists(partial / "map.csv"));
   ASSERT_EQ(std::system((bin + "--resume --out " + a.string() + " 2>/dev/null").c_str()), 0);
   ASSERT_EQ(std::system((bin + "--out " + b.string() + " 2>/dev/null").c_str()), 0);
   EXPECT_EQ(read(a / "map.csv"), read(b / "map.csv"));
   EXPECT_FALSE(fs::exists(a / "energy_map.checkpoint.json"));
+  EXPECT_FALSE(fs::exists(partial));
 }
 
 TEST(EnergyMap, PrintedInverseOf63IsAnotherPendulum) {
@@ -235,4 +239,70 @@ TEST(EnergyMap, GridScansHoldTheRowsOfTheMap) {
   }
   EXPECT_EQ(rows, summary()["grid"]["points"].get<int>());
   EXPECT_EQ(blanks, summary()["grid"]["ny"].get<int>() - 1);
+}
+
+// The work-precision study (timing_cost.csv): its energy errors (50) at every start and step against
+// the library's symplectic Euler in both coordinate systems; one force evaluation per step; the
+// errors of order 1 in h, fitted here from the CSV; each start inside the polar divergence boundary;
+// the cost to reach a start's error target interpolated between the measured runs.
+TEST(EnergyMap, WorkPrecisionErrorsMatchTheLibrarySymplecticEuler) {
+  const json run = json::parse(std::ifstream(dir / "run.json"));
+  const auto& sc = run["scene"];
+  const double l = sc["pendulum"]["l"], m = sc["pendulum"]["m"], k = sc["pendulum"]["k"], g = sc["pendulum"]["g"];
+  const double t_end = sc["cost"]["t_end"];
+  const ElasticPendulumWithGravity cart{m, {SpringTerm{k, l}, GravityTerm{m, g}}};
+  const ElasticPendulumPolarWithGravity polar{m, {SpringPolarTerm{k, l}, GravityPolarTerm{m, g}}};
+  const auto& starts = sc["cost"]["starts"];
+  const CsvFile cost = read_csv(dir / "timing_cost.csv");
+  const std::size_t cc = cost.column("coordinates"), ci = cost.column("start"), ch = cost.column("h"),
+                    cs = cost.column("steps"), cf = cost.column("force_evals"), ce = cost.column("eps");
+  ASSERT_EQ(cost.rows.size(), 2 * starts.size() * sc["cost"]["dt"].size());
+  std::map<std::pair<std::string, int>, std::pair<std::vector<double>, std::vector<double>>> curves;
+  for (const auto& row : cost.rows) {
+    const int i = std::stoi(row[ci]);
+    const double h = std::stod(row[ch]), eps = std::stod(row[ce]);
+    const std::int64_t steps = std::llround(t_end / h);
+    EXPECT_EQ(std::stoll(row[cs]), steps);
+    EXPECT_EQ(std::stoll(row[cf]), steps);  // symplectic Euler: one gradient of U per step
+    const auto z0 = make_state<2>(Vec<2>(starts[i][0].get<double>(), starts[i][1].get<double>()), Vec<2>(0.0, 0.0));
+    const double ref = row[cc] == "cartesian" ? symplectic_euler_rms_energy_error(cart, z0, h, steps)
+                                              : symplectic_euler_rms_energy_error(polar, polar_from_cartesian(z0), h, steps);
+    EXPECT_NEAR(eps, ref, 1e-9 * ref) << row[cc] << " start " << i << " h = " << h;
+    curves[{row[cc], i}].first.push_back(h), curves[{row[cc], i}].second.push_back(eps);
+  }
+  for (const auto& [key, curve] : curves)  // eq. (50) of a first-order method: eps = O(h)
+    EXPECT_NEAR(fit_order(curve.first, curve.second, roundoff_floor()).order, 1.0, 0.1) << key.first << " " << key.second;
+  const auto& wp = summary()["work_precision"];
+  for (const auto& st : wp["starts"]) {
+    EXPECT_LT(st["r0_over_boundary"].get<double>(), 1.0);
+    EXPECT_LT(st["reference_error"].get<double>(), 1e-6 * st["eps_range"]["cartesian"]["min"].get<double>());
+  }
+  // The cost at a start's target lies between the wall times of the two runs that bracket it.
+  const auto& per_start = summary()["timing"]["work_precision"]["per_start"];
+  ASSERT_EQ(per_start.size(), starts.size());
+  for (const auto& p : per_start) {
+    const double target = p["target"];
+    for (const std::string c : {"cartesian", "polar"}) {
+      const auto& [hs, es] = curves[{c, p["start"].get<int>()}];
+      double lo = 0, hi = 0;  // the evaluations of the bracketing runs
+      for (std::size_t j = 0; j + 1 < hs.size(); ++j)
+        if (es[j] >= target && target >= es[j + 1]) lo = t_end / hs[j], hi = t_end / hs[j + 1];
+      ASSERT_GT(hi, 0.0) << c;
+      EXPECT_GE(p["evals"][c].get<double>(), lo) << c;
+      EXPECT_LE(p["evals"][c].get<double>(), hi) << c;
+    }
+  }
+}
+
+// The timing method (runner/timing.hpp, runner/timing_report.hpp): every timed measurement of the cost
+// study reports its spread (max - min) / min beside its minimum: one per row of timing_cost.csv per start (one timed function per system and step runs every start), and
+// summary.json's timing.work_precision.spread is over all of them. (Structure only: no timing value is asserted.)
+TEST(EnergyMap, EveryTimedMeasurementReportsItsSpread) {
+  const CsvFile t = read_csv(results_dir("energy_map") / "timing_cost.csv");
+  const double largest = largest_spread(t);
+  const auto& spread = summary_of("energy_map")["timing"]["work_precision"]["spread"];
+  ASSERT_TRUE(spread.is_object());
+  EXPECT_EQ(spread["measurements"].get<std::size_t>() * summary()["work_precision"]["start_count"].get<std::size_t>(),
+            t.rows.size());
+  EXPECT_DOUBLE_EQ(spread["max"].get<double>(), largest);
 }

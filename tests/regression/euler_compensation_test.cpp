@@ -150,3 +150,15 @@ TEST(EulerCompensation, EnergyNormFiftyIsPreAsymptoticOverFigureNine) {
   EXPECT_LT(slopes.back(), *std::max_element(slopes.begin(), slopes.end()));
   EXPECT_GT(slopes.back(), 2.0);
 }
+
+// The timing method (runner/timing.hpp, runner/timing_report.hpp): every timed measurement of the cost
+// study reports its spread (max - min) / min beside its minimum: one per row of timing.csv and one per method for ns_per_step, and
+// summary.json's timing.spread is over all of them. (Structure only: no timing value is asserted.)
+TEST(EulerCompensation, EveryTimedMeasurementReportsItsSpread) {
+  const CsvFile t = read_csv(results_dir("euler_compensation") / "timing.csv");
+  const double largest = largest_spread(t);
+  const auto& spread = summary_of("euler_compensation")["timing"]["spread"];
+  ASSERT_TRUE(spread.is_object());
+  EXPECT_EQ(spread["measurements"].get<std::size_t>(), t.rows.size() + summary_of("euler_compensation")["timing"]["ns_per_step"].size());
+  EXPECT_GE(spread["max"].get<double>(), largest);
+}

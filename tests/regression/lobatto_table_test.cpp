@@ -3,12 +3,21 @@
 // nonlinear extension. Orders and the bound are the registry's (methods/registry.hpp).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <limits>
+#include <fstream>
+#include <map>
+#include <numbers>
 #include <string>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "geomint/analysis/lobatto_oscillator.hpp"
 #include "geomint/methods/registry.hpp"
+#include "geomint/observables/order_fit.hpp"
 #include "summary.hpp"
 
 using json = nlohmann::json;
@@ -82,4 +91,71 @@ TEST(LobattoTable, MeasuredGrowthIsTheExactGrowth) {
   EXPECT_GT(exact, 0);
   EXPECT_NEAR(measured, exact, 0.01 * exact);
   EXPECT_LT(std::abs(r["H_rate_minus_exact"].get<double>()), 10 * r["roundoff_in_H"].get<double>());
+}
+
+// The work-precision runs over the long run of Fig. 2 (timing_long_run.csv) against closed forms in
+// exact arithmetic: the Lobatto scheme is the rotation by theta of 001 (13)-(14) (q_N = A cos(N theta),
+// p_N = -sqrt(-b/c) A sin(N theta)), the implicit midpoint rule on the oscillator the rotation by
+// 2 atan(h omega / 2) (it conserves H); the phase error at t_N against the exact flow from either.
+// The Lobatto phase errors fall as h^6 (N steps of a phase error O(h^7)), fitted from the CSV.
+TEST(LobattoTable, LongRunCostErrorsMatchTheClosedForms) {
+  const json run = json::parse(std::ifstream(results_dir("lobatto_table") / "run.json"));
+  const auto& sc = run["scene"];
+  const double m = sc["oscillator"]["m"], w = sc["oscillator"]["omega"], A = sc["oscillator"]["amplitude"];
+  const double periods = sc["long_run"]["periods"], T = 2 * std::numbers::pi / w;
+  const CsvFile csv = read_csv(results_dir("lobatto_table") / "timing_long_run.csv");
+  const std::size_t cm = csv.column("method"), ch = csv.column("h"), cs = csv.column("steps"),
+                    cp = csv.column("phase_err"), ce = csv.column("energy_err"), cf = csv.column("force_evals");
+  std::map<std::string, std::vector<double>> hs, phase;
+  std::map<std::string, double> evals_per_step;
+  int checked = 0;
+  for (const auto& row : csv.rows) {
+    const std::string method = row[cm];
+    const double h = std::stod(row[ch]), err = std::stod(row[cp]);
+    const std::int64_t n = std::stoll(row[cs]);
+    EXPECT_EQ(n, std::llround(periods * T / h)) << method;
+    const double per_step = std::stod(row[cf]) / static_cast<double>(n);  // a linear problem: the same every step
+    if (evals_per_step.count(method)) EXPECT_DOUBLE_EQ(per_step, evals_per_step[method]) << method;
+    evals_per_step[method] = per_step;
+    hs[method].push_back(h), phase[method].push_back(err);
+    const double t = static_cast<double>(n) * h, N = static_cast<double>(n);
+    const auto distance = [&](double q, double p) {  // to the exact flow at t_N
+      return std::hypot(q - A * std::cos(w * t), p + m * w * A * std::sin(w * t));
+    };
+    if (method == label("lobatto")) {
+      const auto orbit = geomint::lobatto_exact_orbit(h, m, w, A);
+      ASSERT_TRUE(orbit);
+      const auto k = geomint::lobatto_coefficients(h, m, w);
+      const double exact = distance(A * std::cos(N * orbit->theta), -std::sqrt(-k.b / k.c) * A * std::sin(N * orbit->theta));
+      EXPECT_NEAR(err, exact, 1e-6 * exact + 1e-9) << "h = " << h;
+      // |H_j - H_0| <= |K| in exact arithmetic; in floating point up to the round-off of N steps, N u H_0
+      EXPECT_LE(std::stod(row[ce]), std::abs(orbit->K) + N * std::numeric_limits<double>::epsilon() * orbit->H0) << "h = " << h;
+      EXPECT_GE(std::stod(row[ce]), 0.5 * std::abs(orbit->K)) << "h = " << h;  // sin^2(j theta) comes near 1 in a period
+      ++checked;
+    } else if (method == label("implicit_midpoint")) {
+      const double theta = 2 * std::atan(h * w / 2);
+      const double exact = distance(A * std::cos(N * theta), -m * w * A * std::sin(N * theta));
+      EXPECT_NEAR(err, exact, 1e-6 * exact + 1e-9) << "h = " << h;
+      EXPECT_LT(std::stod(row[ce]), 1e-9 * 0.5 * m * w * w * A * A) << "h = " << h;  // H conserved up to round-off
+      ++checked;
+    }
+  }
+  EXPECT_EQ(checked, 2 * static_cast<int>(sc["long_run_cost"]["h"].size()));
+  EXPECT_NEAR(geomint::fit_order(hs[label("lobatto")], phase[label("lobatto")], geomint::roundoff_floor()).order,
+              method_info("lobatto").order, 0.3);
+  EXPECT_NEAR(summary()["long_run_cost"]["reference_error"].get<double>(),
+              std::numeric_limits<double>::epsilon() * w * periods * T * std::hypot(A, m * w * A), 1e-20);
+}
+
+// The timing method (runner/timing.hpp, runner/timing_report.hpp): every timed measurement of the cost
+// study reports its spread (max - min) / min beside its minimum: one per row of timing_long_run.csv (the long runs of Fig. 2), and
+// summary.json's timing.long_run_cost.spread is over all of them. (Structure only: no timing value is asserted.)
+TEST(LobattoTable, EveryTimedMeasurementReportsItsSpread) {
+  const CsvFile t = read_csv(results_dir("lobatto_table") / "timing_long_run.csv");
+  const double largest = largest_spread(t);
+  const auto& spread = summary_of("lobatto_table")["timing"]["long_run_cost"]["spread"];
+  ASSERT_TRUE(spread.is_object());
+  EXPECT_EQ(spread["measurements"].get<std::size_t>(), t.rows.size());
+  EXPECT_GE(spread["max"].get<double>(), largest);
+  EXPECT_DOUBLE_EQ(spread["max"].get<double>(), largest);
 }

@@ -177,3 +177,16 @@ TEST(RowlandsConvergence, CostSummaryOfTheTimingStudy) {
   }
   EXPECT_EQ(summary()["methods"]["timing"].size(), cost.size());
 }
+
+// The timing method (runner/timing.hpp, runner/timing_report.hpp): every timed measurement of the cost
+// study reports its spread (max - min) / min beside its minimum: one per row of timing.csv, and
+// summary.json's timing.spread is over all of them. (Structure only: no timing value is asserted.)
+TEST(RowlandsConvergence, EveryTimedMeasurementReportsItsSpread) {
+  const CsvFile t = read_csv(results_dir("rowlands_convergence") / "timing.csv");
+  const double largest = largest_spread(t);
+  const auto& spread = summary_of("rowlands_convergence")["timing"]["spread"];
+  ASSERT_TRUE(spread.is_object());
+  EXPECT_EQ(spread["measurements"].get<std::size_t>(), t.rows.size());
+  EXPECT_GE(spread["max"].get<double>(), largest);
+  EXPECT_DOUBLE_EQ(spread["max"].get<double>(), largest);
+}

@@ -1,5 +1,7 @@
 #pragma once
 // The summary.json and CSV files of an experiment's quick run (the ctest fixture <name>.quick_run).
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -55,4 +57,17 @@ inline CsvFile read_csv(const std::filesystem::path& file) {
   csv.names = split_csv_line(line);
   while (std::getline(in, line)) csv.rows.push_back(split_csv_line(line));
   return csv;
+}
+
+// The largest value of the wall_spread column of a timing CSV, (max - min) / min of each timed
+// measurement (runner/timing.hpp); each one must be finite and >= 0.
+inline double largest_spread(const CsvFile& t) {
+  const std::size_t c = t.column("wall_spread");
+  double largest = 0;
+  for (const auto& row : t.rows) {
+    const double s = std::stod(row[c]);
+    if (!(std::isfinite(s) && s >= 0)) throw std::runtime_error("wall_spread " + row[c] + " is not finite and >= 0");
+    largest = std::max(largest, s);
+  }
+  return largest;
 }

@@ -65,6 +65,96 @@ TEST(OutputDir, RejectsUnwritableDirectories) {
   }
 }
 
+namespace {
+
+std::string read_text(const fs::path& f) {
+  std::ifstream in(f);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// A scratch directory, removed with everything in it.
+struct Scratch {
+  fs::path root = fs::temp_directory_path() / ("geomint_results_test_" + std::to_string(::getpid()));
+  Scratch() { fs::remove_all(root), fs::create_directories(root); }
+  ~Scratch() { fs::remove_all(root); }
+};
+
+// A finished run of `experiment` writing `files` into DIR.
+void finished_run(const fs::path& dir, const std::string& experiment, const std::vector<std::string>& files) {
+  ResultsDir results(dir, experiment, false);
+  OutputDir out(results.staging_path());
+  for (const auto& f : files) out.write(f, f + "\n");
+  out.write("run.json", "{\"experiment\": \"" + experiment + "\"}\n");
+  results.commit();
+}
+
+}  // namespace
+
+TEST(ResultsDir, ReplacesTheDirectoryAsAWholeOnlyOnCommit) {
+  Scratch t;
+  const fs::path dir = t.root / "res";
+  finished_run(dir, "exp", {"old.csv", "both.csv"});
+  EXPECT_TRUE(fs::exists(dir / "old.csv"));
+  EXPECT_FALSE(fs::exists(t.root / "res.partial"));
+  {  // a failed run: DIR is exactly as it was
+    ResultsDir failed(dir, "exp", false);
+    OutputDir(failed.staging_path()).write("both.csv", "new\n");
+    failed.discard();
+  }
+  EXPECT_EQ(read_text(dir / "both.csv"), "both.csv\n");
+  EXPECT_FALSE(fs::exists(t.root / "res.partial"));
+  {  // a killed run (neither commit nor discard) leaves DIR as it was, too
+    ResultsDir killed(dir, "exp", false);
+    OutputDir(killed.staging_path()).write("both.csv", "new\n");
+  }
+  EXPECT_EQ(read_text(dir / "both.csv"), "both.csv\n");
+  finished_run(dir, "exp", {"new.csv", "both.csv"});  // the next run empties the killed one's staging
+  EXPECT_FALSE(fs::exists(dir / "old.csv"));  // replaced as a whole, not merged
+  EXPECT_TRUE(fs::exists(dir / "new.csv"));
+  EXPECT_EQ(read_text(dir / "both.csv"), "both.csv\n");
+  EXPECT_FALSE(fs::exists(t.root / "res.partial"));
+  EXPECT_FALSE(fs::exists(dir / ".geomint-staging"));
+}
+
+TEST(ResultsDir, RefusesToReplaceWhatIsNotAResultsDirectoryOfTheExperiment) {
+  Scratch t;
+  const fs::path home = t.root / "home";
+  fs::create_directories(home);
+  std::ofstream(home / "precious.txt") << "x";
+  EXPECT_THROW(ResultsDir(home, "exp", false), OutputError);
+  EXPECT_THROW(ResultsDir(t.root / "home/", "exp", false), OutputError);  // with a trailing slash
+  EXPECT_TRUE(fs::exists(home / "precious.txt"));
+  EXPECT_FALSE(fs::exists(t.root / "home.partial"));
+  finished_run(t.root / "other", "other_exp", {"a.csv"});
+  EXPECT_THROW(ResultsDir(t.root / "other", "exp", false), OutputError);  // another experiment's results
+  EXPECT_THROW(ResultsDir("/", "exp", false), OutputError);
+  fs::create_directories(t.root / "empty");
+  EXPECT_NO_THROW(ResultsDir(t.root / "empty", "exp", false).discard());  // an empty directory may be replaced
+  fs::create_directories(t.root / "x.partial");  // a staging name holding a user's files
+  std::ofstream(t.root / "x.partial" / "notes.txt") << "x";
+  EXPECT_THROW(ResultsDir(t.root / "x", "exp", false), OutputError);
+}
+
+TEST(ResultsDir, ResumeKeepsTheInterruptedRunAndDropsItsTemporaries) {
+  Scratch t;
+  const fs::path dir = t.root / "res";
+  {
+    ResultsDir stopped(dir, "exp", false);
+    OutputDir(stopped.staging_path()).write("checkpoint.json", "{}\n");
+    std::ofstream(stopped.staging_path() / ".checkpoint.json.tmp-12345") << "half";  // a killed writer's temporary
+  }
+  ResultsDir resumed(dir, "exp", true);
+  EXPECT_TRUE(resumed.resumed());
+  EXPECT_TRUE(fs::exists(resumed.staging_path() / "checkpoint.json"));
+  EXPECT_FALSE(fs::exists(resumed.staging_path() / ".checkpoint.json.tmp-12345"));
+  ResultsDir fresh(dir, "exp", false);  // without --resume the interrupted run is dropped
+  EXPECT_FALSE(fresh.resumed());
+  EXPECT_FALSE(fs::exists(fresh.staging_path() / "checkpoint.json"));
+  EXPECT_FALSE(ResultsDir(t.root / "new", "exp", true).resumed());  // nothing to resume
+}
+
 TEST(ParallelMap, ResultsByIndexAndLowestIndexErrorWins) {
   const auto v = parallel_map(100, [](std::size_t i) { return static_cast<double>(i) * 0.5; });
   for (std::size_t i = 0; i < v.size(); ++i) EXPECT_EQ(v[i], 0.5 * static_cast<double>(i));

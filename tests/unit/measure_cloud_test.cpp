@@ -16,6 +16,7 @@
 #include "geomint/observables/symplecticity.hpp"
 #include "geomint/systems/nonholonomic_golden.hpp"
 #include "geomint/systems/nonholonomic_modified_series.hpp"
+#include "geomint/systems/nonholonomic_variational.hpp"
 
 using namespace geomint;
 
@@ -201,6 +202,76 @@ TEST(MeasureCloud, VolumeSeriesPeakToPeak) {
   EXPECT_DOUBLE_EQ(relative_peak_to_peak_minus(v, r, 4), 0.5 - (-0.2));
   EXPECT_EQ(peak_to_peak(std::vector<double>{}), 0.0);
   EXPECT_EQ(peak_to_peak(std::vector<double>{-1.0, 3.0, 2.0}), 4.0);
+}
+
+// The window decides: a peak outside the first `count` samples does not count, and the amplitude
+// is half the peak-to-peak.
+TEST(MeasureCloud, PeakToPeakOverAWindowIgnoresLaterSamples) {
+  const std::vector<double> v{1.0, 1.1, 0.95, 1.05, 0.5, 2.0};
+  EXPECT_NEAR(peak_to_peak(relative_volumes(v, 4)), 0.15, 1e-15);
+  EXPECT_NEAR(relative_peak_to_peak(v, 4), 0.15, 1e-15);
+  EXPECT_NEAR(relative_peak_to_peak(v, 6), 1.5, 1e-15);  // the whole series
+  EXPECT_NEAR(relative_amplitude(v, 4), 0.075, 1e-15);
+  EXPECT_DOUBLE_EQ(peak_to_peak(std::vector<double>{0.2}), 0.0);
+}
+
+// N(y) g(z) is the field (3.8), and the AD Jacobians of both flows match central differences.
+TEST(MeasureCloud, FieldJacobiansMatchFiniteDifferences) {
+  const Vec<4> z(0.3, -0.4, 0.7, 1.1);
+  for (const auto* sys : {&harmonic, &free_particle}) {
+    const auto f = sys->rhs({z[0], z[1], z[2], z[3]});
+    const Vec<4> g = canonical_field<double>(*sys, z), nf = NonholonomicParticle::N(z[1]) * g;
+    for (int i = 0; i < 4; ++i) EXPECT_NEAR(nf[i], f[i], 1e-15);
+    for (ParticleFlow flow : {ParticleFlow::conformal, ParticleFlow::hamiltonian}) {
+      const auto [v, J] = field_and_jacobian(*sys, z, flow);
+      const double d = 1e-6;
+      for (int c = 0; c < 4; ++c) {
+        Vec<4> a = z, b = z;
+        a[c] += d, b[c] -= d;
+        const Vec<4> fd = (field_and_jacobian(*sys, a, flow).first - field_and_jacobian(*sys, b, flow).first) / (2 * d);
+        EXPECT_LT((fd - J.col(c)).cwiseAbs().maxCoeff(), 1e-9) << c;
+      }
+    }
+  }
+}
+
+// The exact Jacobian of one step of Psi_{h,E} (implicit function theorem) against central differences
+// of the step, and its symplecticity defect at round-off.
+TEST(MeasureCloud, StepJacobianMatchesFiniteDifferencesAndIsSymplectic) {
+  const Z z = state(0.3, -0.4, 0.7, 1.1);
+  const double h = 0.25, E = 1.2, dz = 1e-6;
+  for (Discretization d : all_discretizations) {
+    const Z z1 = conformal_variational_step(d, harmonic, z, h, E).z;
+    const Mat<4> J = psi_step_jacobian(d, harmonic, z, z1, h, E);
+    Mat<4> fd;
+    for (int c = 0; c < 4; ++c) {
+      Z a = z, b = z;
+      (c < 2 ? a.q[c] : a.p[c - 2]) += dz;
+      (c < 2 ? b.q[c] : b.p[c - 2]) -= dz;
+      const Z za = conformal_variational_step(d, harmonic, a, h, E).z, zb = conformal_variational_step(d, harmonic, b, h, E).z;
+      fd.col(c) << (za.q - zb.q) / (2 * dz), (za.p - zb.p) / (2 * dz);
+    }
+    EXPECT_LT((J - fd).cwiseAbs().maxCoeff(), 1e-8) << discretization_name(d);
+    EXPECT_LT(symplecticity_defect<4>(J), 1e-14) << discretization_name(d);
+  }
+}
+
+// Over a few periods, the variational equations of the flow of H (N = 1) keep Phi symplectic to the
+// integration tolerance, those of (3.8) do not, and both agree with finite differences of the flow.
+TEST(MeasureCloud, VariationalFlowJacobians) {
+  const Vec<4> z0(0.0, 0.0, 1.0, 1.0);
+  const auto c = variational_flow(harmonic, z0, ParticleFlow::conformal, 1.0, 5, 1e-12, 1e-12);
+  const auto ham = variational_flow(harmonic, z0, ParticleFlow::hamiltonian, 1.0, 5, 1e-12, 1e-12);
+  EXPECT_LT(symplecticity_defect<4>(ham.back().Phi), 1e-10);
+  EXPECT_GT(symplecticity_defect<4>(c.back().Phi), 0.1);
+  const double d = 1e-6;
+  for (int k = 0; k < 4; ++k) {
+    Vec<4> a = z0, b = z0;
+    a[k] += d, b[k] -= d;
+    const Vec<4> za = variational_flow(harmonic, a, ParticleFlow::conformal, 1.0, 5, 1e-13, 1e-13).back().z;
+    const Vec<4> zb = variational_flow(harmonic, b, ParticleFlow::conformal, 1.0, 5, 1e-13, 1e-13).back().z;
+    EXPECT_LT(((za - zb) / (2 * d) - c.back().Phi.col(k)).cwiseAbs().maxCoeff(), 1e-6) << k;
+  }
 }
 
 // The 5-point rule is exact for quadratic densities: the standard 4-simplex, int x^a = a!/(4 + |a|)!.

@@ -111,6 +111,10 @@ TEST(Scene, RejectsOutOfRangeNanAndNegative) {
   EXPECT_NE(error_of(valid, {"convergence.h=[0.1, -0.05, 0.025]"}).find("each a finite number > 0"),
             std::string::npos);
   EXPECT_NE(error_of(valid, {"convergence.h=[0.1, 0.05]"}).find("at least 3"), std::string::npos);
+  // An integer key declared without an upper bound still fits an int: 2^31 is refused, 2^31 - 1 is not.
+  EXPECT_EQ(error_of(valid, {"decay.steps=2147483648"}),
+            "decay.steps = 2147483648 (from --set): must be an integer, a finite number >= 1 and <= 2147483647");
+  EXPECT_EQ(error_of(valid, {"decay.steps=2147483647"}), "");
 }
 
 TEST(Scene, RejectsUnknownKeys) {

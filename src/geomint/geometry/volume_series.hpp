@@ -1,8 +1,8 @@
 #pragma once
 // Volume series of a point cloud under a flow (003 Figs 5.2, 5.4): the relative change
-// V(t_j)/V(t_0) - 1 and its peak-to-peak range over a time window, of one series or of its
-// difference from a reference series (which removes what both share, e.g. the convex-hull
-// artefact of a cloud).
+// V(t_j)/V(t_0) - 1 and its peak-to-peak range (and half of it, the amplitude) over a time window,
+// of one series or of its difference from a reference series (which removes what both share, e.g.
+// the convex-hull artefact of a cloud).
 #include <algorithm>
 #include <cstddef>
 #include <span>
@@ -27,6 +27,12 @@ inline double peak_to_peak(std::span<const double> x) {
 // The peak-to-peak of V_j / V_0 - 1 over the first `count` samples.
 inline double relative_peak_to_peak(std::span<const double> v, std::size_t count) {
   return peak_to_peak(relative_volumes(v, count));
+}
+
+// The amplitude of V_j / V_0 - 1 over the first `count` samples, half its peak-to-peak: the size
+// that a plot shows as "the amplitude of the fluctuations" (003 Sec. 5.2.1), comparable with it.
+inline double relative_amplitude(std::span<const double> v, std::size_t count) {
+  return 0.5 * relative_peak_to_peak(v, count);
 }
 
 // The peak-to-peak over the first `count` samples of (V_j / V_0 - 1) - (R_j / R_0 - 1): the relative

@@ -1,6 +1,7 @@
 #pragma once
 // Output files appear whole or not at all: each is written to a temporary name
-// in the same directory and renamed over the target.
+// in the same directory and renamed over the target; and a results directory is
+// replaced as a whole, only when its run succeeds.
 #include <filesystem>
 #include <stdexcept>
 #include <string>
@@ -27,6 +28,30 @@ class OutputDir {
  private:
   std::filesystem::path dir_;
   std::vector<std::string> written_;
+};
+
+// The results directory DIR of one run of `experiment`. The run writes into the
+// staging directory DIR.partial (a sibling, so that the final rename stays on one
+// file system); commit() then replaces DIR by it in one rename, so a failed or
+// killed run leaves the previous DIR exactly as it was. The constructor refuses
+// (OutputError, before any work) a DIR, or a DIR.partial, that exists, is not
+// empty and is not a results directory of this experiment (a run.json naming it,
+// or the staging marker), so that --out can never replace a user's files. With
+// `resume`, the staging directory of an interrupted run is kept (its checkpoint
+// is what --resume continues from); otherwise it is emptied.
+class ResultsDir {
+ public:
+  ResultsDir(const std::filesystem::path& dir, const std::string& experiment, bool resume);
+  const std::filesystem::path& final_path() const { return final_; }
+  const std::filesystem::path& staging_path() const { return staging_; }
+  bool resumed() const { return resumed_; }  // the staging directory of an earlier run was kept
+  void commit();   // DIR := the staging directory (leftover temporaries removed)
+  void discard();  // removes the staging directory (DIR is untouched)
+
+ private:
+  std::filesystem::path final_, staging_;
+  std::string experiment_;
+  bool resumed_ = false;
 };
 
 }  // namespace geomint

@@ -4,24 +4,135 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <cmath>
-#include <set>
+#include <atomic>
 #include <chrono>
+#include <cmath>
+#include <csignal>
 #include <cstdio>
+#include <cstring>
+#include <set>
 #include <filesystem>
+#include <fstream>
+#include <limits>
 #include <iostream>
 #include <optional>
 
 #include <CLI/CLI.hpp>
 
+#include "geomint/integrators/newton.hpp"
 #include "geomint/io/run_info.hpp"
 #include "geomint/runner/published.hpp"
 
 namespace geomint {
 
-void Context::progress(std::string_view what) const {
-  if (::isatty(STDERR_FILENO)) std::cerr << "  " << what << '\n';
+namespace {
+
+double seconds_since_start() {
+  static const auto t0 = std::chrono::steady_clock::now();
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
+
+// "1 h 02 min", "3 min 05 s", "12 s".
+std::string duration_text(double s) {
+  char buf[32];
+  if (s >= 3600) std::snprintf(buf, sizeof buf, "%d h %02d min", int(s / 3600), int(std::fmod(s, 3600) / 60));
+  else if (s >= 60) std::snprintf(buf, sizeof buf, "%d min %02d s", int(s / 60), int(std::fmod(s, 60)));
+  else std::snprintf(buf, sizeof buf, "%.0f s", s);
+  return buf;
+}
+
+std::string fmt_count(double n) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, n < 1e6 ? "%.0f" : "%.3g", n);
+  return buf;
+}
+
+std::string fmt_bytes(double b) {
+  char buf[32];
+  const char* unit[] = {"B", "KiB", "MiB", "GiB", "TiB"};
+  int u = 0;
+  while (b >= 1024 && u < 4) b /= 1024, ++u;
+  std::snprintf(buf, sizeof buf, "%.3g %s", b, unit[u]);
+  return buf;
+}
+
+std::string fmt_seconds(double s) { return s < 1 ? fmt_count(s * 1e3) + " ms" : duration_text(s); }
+
+// MemAvailable of /proc/meminfo in bytes (0 if unknown).
+double available_memory_bytes() {
+  std::ifstream in("/proc/meminfo");
+  std::string key;
+  double kib = 0;
+  while (in >> key) {
+    if (key == "MemAvailable:" && in >> kib) return kib * 1024;
+    in.ignore(std::numeric_limits<std::streamsize>::max(), '\n');
+  }
+  return 0;
+}
+
+}  // namespace
+
+void Context::progress(std::string_view what) const {
+  const double now = seconds_since_start();
+  if (!::isatty(STDERR_FILENO) && now - last_line_ < 10) return;
+  last_line_ = now;
+  std::cerr << "  " << what << std::endl;
+}
+
+void Context::progress(std::string_view what, double done, double total, std::string_view unit) const {
+  const double now = seconds_since_start();
+  if (what != progress_what_ || done < progress_done_) progress_what_ = what, progress_start_ = now;
+  progress_done_ = done;
+  const bool tty = ::isatty(STDERR_FILENO);
+  if (done < total && now - last_line_ < (tty ? 0.1 : 10)) return;
+  last_line_ = now;
+  const double elapsed = now - progress_start_, rate = elapsed > 0 ? done / elapsed : 0;
+  std::string line = "  " + std::string(what) + ": " + std::to_string(static_cast<long long>(done)) + " / " +
+                     std::to_string(static_cast<long long>(total)) + " " + std::string(unit);
+  if (rate > 0 && done < total) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, ", %.3g %.*s/s, ", rate, static_cast<int>(unit.size()), unit.data());
+    line += buf + duration_text((total - done) / rate) + " left";
+  }
+  if (tty) std::cerr << '\r' << line << "\033[K" << (done >= total ? "\n" : "") << std::flush;
+  else std::cerr << line << std::endl;
+}
+
+namespace {
+
+volatile std::sig_atomic_t g_stop = 0;
+std::atomic<int> g_stop_points{0};
+char g_stop_message[512], g_exit_message[512];  // composed before any signal can arrive
+
+extern "C" void on_signal(int sig) {
+  if (g_stop_points.load() > 0 && !g_stop) {
+    g_stop = 1;
+    [[maybe_unused]] auto n = ::write(STDERR_FILENO, g_stop_message, std::strlen(g_stop_message));
+    return;
+  }
+  [[maybe_unused]] auto n = ::write(STDERR_FILENO, g_exit_message, std::strlen(g_exit_message));
+  std::signal(sig, SIG_DFL);
+  std::raise(sig);
+}
+
+void install_signal_handlers(const std::string& name, const ResultsDir& results) {
+  std::snprintf(g_stop_message, sizeof g_stop_message,
+                "\n%s: interrupted: stopping at the next checkpoint (continue with --resume; a second "
+                "signal stops at once)\n", name.c_str());
+  std::snprintf(g_exit_message, sizeof g_exit_message, "\n%s: interrupted: stopped; %s is unchanged\n", name.c_str(),
+                results.final_path().c_str());
+  struct sigaction sa {};
+  sa.sa_handler = on_signal;
+  sigemptyset(&sa.sa_mask);
+  sigaction(SIGINT, &sa, nullptr);
+  sigaction(SIGTERM, &sa, nullptr);
+}
+
+}  // namespace
+
+bool stop_requested() { return g_stop != 0; }
+StopPoint::StopPoint() { ++g_stop_points; }
+StopPoint::~StopPoint() { --g_stop_points; }
 
 bool file_matches(std::string_view pattern, std::string_view name) {
   const auto star = pattern.find('*');
@@ -31,6 +142,18 @@ bool file_matches(std::string_view pattern, std::string_view name) {
 }
 
 namespace {
+
+// The dotted key of the first number in `j` that is not finite, if any.
+std::optional<std::string> first_non_finite(const nlohmann::ordered_json& j, const std::string& at = "") {
+  if (j.is_number_float() && !std::isfinite(j.get<double>())) return at.empty() ? std::string("(root)") : at;
+  if (j.is_object())
+    for (const auto& [k, v] : j.items())
+      if (auto bad = first_non_finite(v, at.empty() ? k : at + "." + k)) return bad;
+  if (j.is_array())
+    for (std::size_t i = 0; i < j.size(); ++i)
+      if (auto bad = first_non_finite(j[i], at + "." + std::to_string(i))) return bad;
+  return std::nullopt;
+}
 
 constexpr const char* kStudiesKey = "studies";
 
@@ -176,8 +299,49 @@ std::string keys_help(const ExperimentSpec& spec, const std::string& dir) {
   }
   for (const auto& [from, to] : spec.schema.aliases()) s += "  " + from + "  older spelling of " + to + "\n";
   s += "\nExit codes: 0 done; 1 internal error; 2 bad input (before any work); 3 stopped with a checkpoint "
-       "(--resume continues)\n";
+       "(--resume continues); 4 numerical failure (a NaN or Inf, Newton's method not converged, a trajectory "
+       "outside its chart)\n"
+       "Output: the run writes into DIR.partial and replaces --out DIR by it only when it succeeds; a DIR that "
+       "is not a results directory of this experiment is never replaced.\n";
   return s;
+}
+
+// A study's counts, checked before any work: exactly representable as doubles (steps are
+// counted in 64-bit integers and t = n h), and memory the machine has.
+void check_plan(const Study& st, const StudyPlan& p) {
+  constexpr double exact = 9007199254740992.0;  // 2^53
+  if (!(p.steps <= exact) || !(p.force_evals <= exact))
+    throw SceneError("study " + st.name + ": " + fmt_count(p.steps) + " steps (" + fmt_count(p.force_evals) +
+                     " force evaluations) exceed 2^53; shorten the run or enlarge the step");
+  const double available = available_memory_bytes();
+  if (available > 0 && p.memory_bytes > available)
+    throw SceneError("study " + st.name + " needs about " + fmt_bytes(p.memory_bytes) + " of memory, more than the " +
+                     fmt_bytes(available) + " available; make the grid, ensemble or record smaller");
+}
+
+void print_plan(std::ostream& os, const std::vector<const Study*>& studies, const std::vector<StudyPlan>& plans,
+                int threads) {
+  char line[256];
+  const auto row = [&](const std::string& a, const std::string& b, const std::string& c, const std::string& d,
+                       const std::string& e) {
+    std::snprintf(line, sizeof line, "%-18s %12s %12s %10s %14s", a.c_str(), b.c_str(), c.c_str(), d.c_str(), e.c_str());
+    os << line;
+  };
+  row("study", "steps", "force evals", "memory", "wall time");
+  os << "   (estimated, " << threads << " threads)\n";
+  double total = 0;
+  bool all = true;
+  for (std::size_t i = 0; i < studies.size(); ++i) {
+    const StudyPlan& p = plans[i];
+    const bool has = static_cast<bool>(studies[i]->plan), estimated = has && p.ns_per_step > 0;
+    const double wall = p.steps * p.ns_per_step * 1e-9 / threads;
+    total += estimated ? wall : 0, all = all && estimated;
+    row(studies[i]->name, has ? fmt_count(p.steps) : "-", has ? fmt_count(p.force_evals) : "-",
+        has ? fmt_bytes(p.memory_bytes) : "-", estimated ? fmt_seconds(wall) : "no estimate");
+    os << "   " << studies[i]->makes << (p.note.empty() ? "" : "; " + p.note) << '\n';
+  }
+  row("total", "", "", "", fmt_seconds(total));
+  os << (all ? "" : "   (studies without an estimate not counted)") << '\n';
 }
 
 }  // namespace
@@ -202,9 +366,13 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
   app.add_flag("--list-studies", list_studies, "Print each study: name, the figure or table it makes, its CSV files");
   app.add_option("--out", out_dir, "Output directory")->capture_default_str();
   app.add_option("--threads", threads, "Threads (results do not depend on it)")
-      ->check(CLI::PositiveNumber)
+      ->check(CLI::Range(1, 4096))
       ->capture_default_str();
   app.add_option("--set", overrides, "Override a scene key: --set key=value (repeatable)");
+  bool plan_only = false;
+  app.add_flag("--plan", plan_only,
+               "Validate, print what each study would run (steps, force evaluations, memory, estimated wall time) "
+               "and exit without running");
   bool resume = false;
   app.add_flag("--resume", resume,
                "Continue an interrupted run from the checkpoint in --out (experiments that write checkpoints)");
@@ -224,6 +392,7 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
   if (scene_file.empty()) scene_file = experiment_dir + "/" + (quick ? std::string("quick") : name) + ".toml";
 
   std::optional<Scene> scene;
+  std::optional<ResultsDir> results;
   std::optional<OutputDir> out;
   std::vector<const Study*> studies;
   const std::filesystem::path published_file = std::filesystem::path(experiment_dir) / "published.toml";
@@ -247,7 +416,19 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
       if (st->validate) st->validate(*scene);
     }
     scene->restrict_reads({});
-    out.emplace(out_dir);
+    std::vector<StudyPlan> plans;
+    for (const Study* st : studies) {
+      scene->restrict_reads(st->uses, "study " + st->name);
+      plans.push_back(st->plan ? st->plan(*scene) : StudyPlan{});
+      check_plan(*st, plans.back());
+    }
+    scene->restrict_reads({});
+    if (plan_only) {
+      print_plan(std::cout, studies, plans, threads);
+      return 0;
+    }
+    results.emplace(out_dir, name, resume);
+    out.emplace(results->staging_path());
   } catch (const SceneError& e) {
     std::cerr << name << ": scene error: " << e.what() << '\n';
     return 2;
@@ -256,9 +437,13 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
     return 2;
   }
 
+  if (resume && !results->resumed())
+    std::cerr << name << ": --resume: no interrupted run in " << results->staging_path().string()
+              << "; starting from the beginning\n";
+  install_signal_handlers(name, *results);
   omp_set_num_threads(threads);
   Context ctx(*scene, *out, threads);
-  ctx.resume = resume;
+  ctx.resume = results->resumed();
   try {
     std::vector<std::string> ran;
     nlohmann::ordered_json study_wall = nlohmann::ordered_json::object();
@@ -266,7 +451,13 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
       const auto ts = std::chrono::steady_clock::now();
       const std::size_t files_before = out->written().size();
       scene->restrict_reads(st->uses, "study " + st->name);
-      st->run(ctx);
+      try {
+        st->run(ctx);
+      } catch (const IntegrationError& e) {  // Newton's method (integrators/newton.hpp)
+        throw NumericalFailure("study " + st->name + ": " + e.what());
+      } catch (const NumericalFailure& e) {
+        throw NumericalFailure("study " + st->name + ": " + e.what());
+      }
       scene->restrict_reads({});
       for (std::size_t i = files_before; i < out->written().size(); ++i) {
         const std::string& f = out->written()[i];
@@ -278,6 +469,8 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
     }
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
+    if (const auto bad = first_non_finite(ctx.summary))
+      throw NumericalFailure("summary value " + *bad + " is not finite");
     nlohmann::ordered_json summary = {{"experiment", name}, {"studies", ran}};
     for (auto& [k, v] : ctx.summary.items()) summary[k] = v;
     apply_published(published, summary, scene->to_json(), ran);
@@ -309,11 +502,19 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
     run["study_wall_s"] = study_wall;
     run["files"] = out->written();
     out->write("run.json", run.dump(2) + "\n");
+    results->commit();
   } catch (const Interrupted& e) {
-    std::cerr << name << ": stopped: " << e.what() << '\n';
+    std::cerr << name << ": stopped: " << e.what() << " (kept in " << results->staging_path().string()
+              << "; " << results->final_path().string() << " is unchanged)\n";
     return 3;
+  } catch (const NumericalFailure& e) {
+    results->discard();
+    std::cerr << name << ": numerical failure: " << e.what() << " (" << results->final_path().string()
+              << " is unchanged)\n";
+    return 4;
   } catch (const std::exception& e) {
-    std::cerr << name << ": error: " << e.what() << '\n';
+    results->discard();
+    std::cerr << name << ": error: " << e.what() << " (" << results->final_path().string() << " is unchanged)\n";
     return 1;
   }
   return 0;

@@ -3,7 +3,8 @@
 // contract of ARCHITECTURE.md section 3): --scene, --quick, --study,
 // --list-studies, --out, --threads, --set, --resume, --help; exit 0 on
 // success, 2 on bad input (before any work), 1 on a failure during the run,
-// 3 when stopped with a checkpoint.
+// 3 when stopped with a checkpoint, 4 on a numerical failure. --out DIR is
+// replaced as a whole, only when the run succeeds (io/atomic_file.hpp ResultsDir).
 //
 // An experiment is a set of studies, one per figure, table or analysis. The
 // scene says which run: the studies listed in its top-level `studies`, or, if
@@ -36,14 +37,50 @@ class Context {
   nlohmann::ordered_json summary = nlohmann::ordered_json::object();
 
   void write(const std::string& name, const Csv& csv) { out.write(name, csv.str()); }
-  // A line on stderr when it is a terminal.
+  // Progress on stderr: on a terminal every call, otherwise at most one line every 10 s.
   void progress(std::string_view what) const;
+  // The same with `done` of `total` units (e.g. "batches"), the rate since the first call for
+  // `what`, and the time left at that rate.
+  void progress(std::string_view what, double done, double total, std::string_view unit) const;
+
+ private:
+  mutable std::string progress_what_;
+  mutable double progress_start_ = 0, progress_done_ = 0, last_line_ = -1e9;  // seconds since the run began
+};
+
+// SIGINT and SIGTERM. While a StopPoint exists, the first signal only sets stop_requested(): the
+// study stops at its next checkpoint (Interrupted, exit 3); a second one ends the process. With no
+// StopPoint, a signal ends the process at once (the results directory stays as it was: the run
+// writes into its staging directory). Either way a line on stderr says what happens.
+bool stop_requested();
+struct StopPoint {
+  StopPoint();
+  ~StopPoint();
+  StopPoint(const StopPoint&) = delete;
+  StopPoint& operator=(const StopPoint&) = delete;
 };
 
 // Thrown by an experiment that stops early on purpose, leaving a checkpoint
 // for --resume; the run exits with code 3.
 struct Interrupted : std::runtime_error {
   using std::runtime_error::runtime_error;
+};
+
+// Thrown when a run produces a NaN or Inf, Newton's method does not converge, or a
+// trajectory leaves the domain of its chart; what() names the study, method, step
+// and time where it can. The run exits with code 4 and writes no results.
+struct NumericalFailure : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// What a study would cost (--plan), derived from the scene before any work: its counts are also
+// checked then (a count beyond 2^53, or memory beyond what the machine has, is refused: exit 2).
+struct StudyPlan {
+  double steps = 0;         // integration steps, all trajectories and runs together
+  double force_evals = 0;   // force (gradient) evaluations
+  double memory_bytes = 0;  // the largest memory the study holds at once
+  double ns_per_step = 0;   // estimated time per step and thread (0: no estimate)
+  std::string note;         // what the estimate rests on
 };
 
 struct Study {
@@ -53,6 +90,7 @@ struct Study {
   std::vector<std::string> uses;   // the scene keys or sections it reads (required when it runs)
   std::function<void(const Scene&)> validate;  // checks across keys; calls scene.reject(...)
   std::function<void(Context&)> run;
+  std::function<StudyPlan(const Scene&)> plan = {};  // --plan and the count checks (none: not estimated)
 };
 
 struct ExperimentSpec {

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cstdint>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 namespace geomint {
@@ -10,6 +12,7 @@ namespace geomint {
 namespace {
 
 std::string fmt(double v) {
+  if (v == std::floor(v) && std::fabs(v) < 1e15) return std::to_string(static_cast<std::int64_t>(v));  // exact integers
   std::ostringstream s;
   s << v;
   return s.str();
@@ -121,6 +124,7 @@ Schema& Schema::real(std::string key, Bound b, std::string doc) {
   return add({std::move(key), Type::real, b, 0, 0, {}, std::move(doc)});
 }
 Schema& Schema::integer(std::string key, Bound b, std::string doc) {
+  if (!b.lt && !b.le) b.le = static_cast<double>(std::numeric_limits<std::int32_t>::max());  // fits an int
   return add({std::move(key), Type::integer, b, 0, 0, {}, std::move(doc)});
 }
 Schema& Schema::reals(std::string key, Bound each, std::size_t min_len, std::string doc) {
