@@ -57,10 +57,11 @@ def build(args, log):
     return run(["cmake", "--build", str(args.build), "-j", str(args.jobs)], log) == 0
 
 
-def failed_tests(args, log):
-    """Runs ctest; returns the names of the failing tests ([] if all pass)."""
+def failed_tests(args, log, stop_on_failure=True):
+    """Runs ctest; returns the names of the failing tests ([] if all pass). A mutant is killed by its
+    first failing test: with `stop_on_failure` ctest stops there (the names are those that failed by then)."""
     cmd = ["ctest", "--test-dir", str(args.build), "-j", str(args.jobs), "--timeout", str(args.timeout),
-           "-E", args.exclude]
+           "-E", args.exclude] + (["--stop-on-failure"] if stop_on_failure else [])
     if args.tests:
         cmd += ["-R", args.tests]
     code = run(cmd, log)
@@ -117,7 +118,7 @@ def main():
     print("baseline: building and testing the unmodified tree", flush=True)
     if not build(args, logs / "baseline-build.log"):
         sys.exit(f"the unmodified tree does not build: {logs / 'baseline-build.log'}")
-    base_failed = failed_tests(args, logs / "baseline-ctest.log")
+    base_failed = failed_tests(args, logs / "baseline-ctest.log", stop_on_failure=False)
     if base_failed:
         sys.exit(f"the unmodified tree fails tests ({', '.join(base_failed)}): nothing can be measured")
 
