@@ -104,6 +104,24 @@ TEST(Cli, OutputDirectoryThatIsNotAResultsDirectoryIsNeverReplaced) {
   EXPECT_FALSE(fs::exists(work / "home.partial"));
 }
 
+TEST(Cli, PlanValidatesAndRunsNothing) {
+  // --plan: exit 0 with a line per study, no output directory; a bad scene is still refused (exit 2).
+  const fs::path out = work / "plan-out", listing = work / "plan.txt";
+  fs::create_directories(work);
+  fs::remove_all(out);
+  const int status = std::system((bin + " --quick --plan --out " + out.string() + " >" + listing.string() + " 2>/dev/null").c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0);
+  std::ifstream in(listing);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  for (const char* study : {"decay", "gompertz", "oscillator", "convergence", "timing"})
+    EXPECT_NE(ss.str().find(study), std::string::npos) << ss.str();
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_FALSE(fs::exists(work / "plan-out.partial"));
+  EXPECT_EQ(run("--quick --plan --set decay.h=-1").code, 2);
+}
+
 TEST(Cli, UnknownOptionAndHelp) {
   EXPECT_EQ(run("--bogus").code, 2);
   const Outcome help = run("--help");
