@@ -122,6 +122,22 @@ TEST(Cli, PlanValidatesAndRunsNothing) {
   EXPECT_EQ(run("--quick --plan --set decay.h=-1").code, 2);
 }
 
+TEST(Cli, ScenesAreFoundWhereGeomintExperimentsPoints) {
+  // A build moved away from its sources reads the scenes of GEOMINT_EXPERIMENTS/<name>: here a copy
+  // whose quick scene has an unknown key, so the refusal names the copy.
+  const fs::path exps = work / "experiments", copy = exps / "euler_compensation";
+  fs::remove_all(exps);
+  fs::create_directories(exps);
+  fs::copy(fs::path(GEOMINT_SOURCE_DIR) / "experiments" / "euler_compensation", copy, fs::copy_options::recursive);
+  std::ofstream(copy / "quick.toml", std::ios::app) << "\n[nosuch]\nkey = 1\n";
+  const Outcome r = run("--quick --plan");  // the sources' own quick scene: valid
+  EXPECT_EQ(r.code, 0) << r.err;
+  const Outcome moved = run("--quick --plan", "GEOMINT_EXPERIMENTS=" + exps.string() + " " + bin);
+  EXPECT_EQ(moved.code, 2) << moved.err;
+  EXPECT_NE(moved.err.find(copy.string()), std::string::npos) << moved.err;
+  EXPECT_NE(moved.err.find("nosuch.key"), std::string::npos) << moved.err;
+}
+
 TEST(Cli, UnknownOptionAndHelp) {
   EXPECT_EQ(run("--bogus").code, 2);
   const Outcome help = run("--help");

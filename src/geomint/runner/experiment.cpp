@@ -9,6 +9,7 @@
 #include <cmath>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <set>
 #include <filesystem>
@@ -302,7 +303,9 @@ std::string keys_help(const ExperimentSpec& spec, const std::string& dir) {
        "(--resume continues); 4 numerical failure (a NaN or Inf, Newton's method not converged, a trajectory "
        "outside its chart)\n"
        "Output: the run writes into DIR.partial and replaces --out DIR by it only when it succeeds; a DIR that "
-       "is not a results directory of this experiment is never replaced.\n";
+       "is not a results directory of this experiment is never replaced.\n"
+       "Scenes and published values: " + dir + " (a moved build looks for experiments/" + spec.name +
+       " above its own directory and the working directory; GEOMINT_EXPERIMENTS=DIR reads DIR/" + spec.name + ").\n";
   return s;
 }
 
@@ -346,7 +349,30 @@ void print_plan(std::ostream& os, const std::vector<const Study*>& studies, cons
 
 }  // namespace
 
-int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string& experiment_dir) {
+// The directory of the experiment's scenes and published.toml: $GEOMINT_EXPERIMENTS/<name> if that
+// variable is set; else the source directory the binary was built from, if it still exists; else
+// experiments/<name> in the nearest ancestor of the binary's directory or of the working directory
+// that has one (a build moved with its sources, or run from the repository). The first candidate
+// is returned if none exists, so that the error names it.
+std::string find_experiment_dir(const std::string& name, const std::string& built_from) {
+  namespace fs = std::filesystem;
+  const auto has_scene = [&](const fs::path& d) {
+    std::error_code ec;
+    return fs::is_regular_file(d / (name + ".toml"), ec);
+  };
+  if (const char* env = std::getenv("GEOMINT_EXPERIMENTS"); env && *env) return (fs::path(env) / name).string();
+  if (has_scene(built_from)) return built_from;
+  std::error_code ec;
+  for (fs::path start : {fs::read_symlink("/proc/self/exe", ec).parent_path(), fs::current_path(ec)})
+    for (fs::path d = start; !d.empty(); d = d.parent_path()) {
+      if (has_scene(d / "experiments" / name)) return (d / "experiments" / name).string();
+      if (d == d.root_path()) break;
+    }
+  return built_from;
+}
+
+int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string& built_from) {
+  const std::string experiment_dir = find_experiment_dir(spec.name, built_from);
   const auto start = std::chrono::system_clock::now();
   const auto t0 = std::chrono::steady_clock::now();
   const std::string name = spec.name;

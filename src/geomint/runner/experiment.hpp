@@ -100,7 +100,9 @@ struct ExperimentSpec {
   std::vector<Study> studies;  // in the order they run
 };
 
-int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string& experiment_dir);
+// `built_from`: the experiment's source directory when the binary was built (its scenes and
+// published.toml); a moved build finds them as find_experiment_dir (experiment.cpp) says.
+int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string& built_from);
 
 // Does a file name match a Study::files pattern ('*' matches any run of characters)?
 bool file_matches(std::string_view pattern, std::string_view name);
