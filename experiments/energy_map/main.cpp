@@ -7,14 +7,20 @@
 // Studies: map (Fig. 6, with a checkpoint for --resume), first_integrals
 // (Sec. 5.2), timing (the batched kernel against the straightforward scalar
 // loop), cost (work-precision of the two coordinate systems on a few starts).
+#include <fcntl.h>
 #include <omp.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cerrno>
 #include <cstdint>
+#include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <limits>
 #include <numbers>
 #include <string>
@@ -40,7 +46,10 @@ using json = nlohmann::ordered_json;
 
 namespace {
 
-constexpr std::size_t kCheckpointBatches = 32;  // batches per checkpoint round
+constexpr std::size_t kCheckpointBatches = 32;  // batches per round of the map
+// A checkpoint is written after a round when this much time has passed since the last one, and before
+// every stop (a signal, or checkpoint.stop_after): each write is synced to disk.
+constexpr std::chrono::seconds kCheckpointInterval{10};
 // The scene keys the map depends on (the map study adds `checkpoint`, the timing study `timing`).
 const std::vector<std::string> kMapKeys = {"dt", "t_max", "grid", "pendulum", "divergence"};
 
@@ -55,12 +64,98 @@ struct Point {
   EnergyMapPoint cart, polar;
 };
 
-json point_json(const EnergyMapPoint& p) {
-  return {std::isfinite(p.eps) ? json(p.eps) : json(nullptr), p.diverge_step};
-}
-EnergyMapPoint point_from(const json& j) {
-  return {j[0].is_null() ? std::nan("") : j[0].get<double>(), j[1].get<std::int64_t>()};
-}
+
+// The map's checkpoint, O(grid) in all: a log of the finished batches' points, appended round by round
+// (energy_map.checkpoint.points: per point eps and diverge_step of the Cartesian then the polar run, as
+// 8-byte double and int64 in the machine's byte order), and a small header written atomically after each
+// append (energy_map.checkpoint.json: the map's scene keys, the batch size, batches_done). The header
+// counts only what the log holds in full; a longer log (a run stopped mid-append) is cut back on resume.
+class MapCheckpoint {
+ public:
+  static constexpr std::size_t kRecordBytes = 4 * 8;  // per point: eps, step (Cartesian); eps, step (polar)
+
+  explicit MapCheckpoint(const std::filesystem::path& dir)
+      : header_(dir / "energy_map.checkpoint.json"), log_(dir / "energy_map.checkpoint.points") {}
+
+  // Appends the points of batches [from, to) to the log (synced), then writes the header: to batches done.
+  void append(const json& scene, const std::vector<Point>& points, std::size_t from, std::size_t to) const {
+    std::vector<char> bytes((to - from) * kEnergyMapBatch * kRecordBytes);
+    char* at = bytes.data();
+    for (std::size_t i = from * kEnergyMapBatch; i < to * kEnergyMapBatch; ++i)
+      for (const EnergyMapPoint& p : {points[i].cart, points[i].polar}) {
+        std::memcpy(at, &p.eps, 8), std::memcpy(at + 8, &p.diverge_step, 8);
+        at += 16;
+      }
+    const int fd = ::open(log_.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
+    if (fd < 0) throw OutputError("cannot write " + log_.string() + ": " + std::strerror(errno));
+    for (std::size_t off = 0; off < bytes.size();) {
+      const ssize_t n = ::write(fd, bytes.data() + off, bytes.size() - off);
+      if (n < 0 && errno == EINTR) continue;
+      if (n <= 0) {
+        const std::string why = std::strerror(errno);
+        ::close(fd);
+        throw OutputError("cannot write " + log_.string() + ": " + why);
+      }
+      off += static_cast<std::size_t>(n);
+    }
+    if (::fsync(fd) != 0 || ::close(fd) != 0) throw OutputError("cannot write " + log_.string() + ": " + std::strerror(errno));
+    write_file_atomic(header_, json{{"scene", scene}, {"batch", kEnergyMapBatch}, {"batches_done", to},
+                                    {"record_bytes", kRecordBytes}}.dump());
+  }
+
+  // The batches done by the checkpoint of the same map (0: none, or one of another scene), their
+  // points restored; the log cut back to them. A checkpoint that cannot be read is refused.
+  std::size_t load(const json& scene, std::size_t nbatches, std::vector<Point>& points) const {
+    if (!std::filesystem::exists(header_)) return 0;
+    json c;
+    try {
+      std::ifstream in(header_);
+      c = json::parse(in);
+    } catch (const json::exception& e) {
+      refuse(header_, std::string("not a checkpoint (") + e.what() + ")");
+    }
+    if (!c.is_object() || !c.contains("scene")) refuse(header_, "not a checkpoint (no scene)");
+    if (c["scene"] != scene) return 0;  // another map: start over
+    if (!c.contains("batch") || c["batch"] != kEnergyMapBatch || !c.contains("record_bytes") ||
+        c["record_bytes"] != kRecordBytes)
+      refuse(header_, "written by another version (batch or record size differs)");
+    if (!c.contains("batches_done") || !c["batches_done"].is_number_unsigned() ||
+        c["batches_done"].get<std::uint64_t>() > nbatches)
+      refuse(header_, "batches_done must be an integer in [0, " + std::to_string(nbatches) + "], the map's batches");
+    const auto done = static_cast<std::size_t>(c["batches_done"].get<std::uint64_t>());
+    const std::size_t need = done * kEnergyMapBatch * kRecordBytes;
+    std::error_code ec;
+    const auto size = std::filesystem::file_size(log_, ec);
+    if (ec || size < need)
+      refuse(log_, "holds " + std::to_string(ec ? 0 : size) + " bytes, fewer than the " + std::to_string(need) +
+                       " of the " + std::to_string(done) + " batches " + header_.filename().string() + " counts");
+    if (size > need) std::filesystem::resize_file(log_, need);  // a round appended but not counted
+    std::ifstream in(log_, std::ios::binary);
+    std::vector<char> bytes(need);
+    if (!in.read(bytes.data(), static_cast<std::streamsize>(need))) refuse(log_, "cannot be read");
+    const char* at = bytes.data();
+    for (std::size_t i = 0; i < done * kEnergyMapBatch; ++i)
+      for (EnergyMapPoint* p : {&points[i].cart, &points[i].polar}) {
+        std::memcpy(&p->eps, at, 8), std::memcpy(&p->diverge_step, at + 8, 8);
+        at += 16;
+      }
+    return done;
+  }
+
+  void remove() const { std::filesystem::remove(header_), std::filesystem::remove(log_); }
+
+ private:
+  // A checkpoint that cannot be used: one line naming the file and what to do, exit 2. (The runner maps
+  // only Interrupted and NumericalFailure thrown by a study to their own exit codes; the staging
+  // directory and its checkpoint are left as they are.)
+  [[noreturn]] static void refuse(const std::filesystem::path& file, const std::string& why) {
+    throw SceneError("checkpoint " + file.string() + ": " + why + "; delete " +
+                     (file.parent_path() / "energy_map.checkpoint.*").string() +
+                     " to start the map over, or run without --resume");
+  }
+
+  std::filesystem::path header_, log_;
+};
 
 // The map's grid of initial positions at rest, padded to whole batches (x0 = y0 = 0 fills:
 // marked dead at once), and its parameters.
@@ -218,6 +313,8 @@ void check_map(const Scene& s) {
   const double n = std::round(s.real("t_max") / dt);
   if (n < 1 || std::abs(n * dt - s.real("t_max")) > 1e-9 * s.real("t_max"))
     s.reject("t_max", "must be a positive multiple of dt = " + format_double(dt));
+  if (!(n <= max_exact_count))  // steps are counted in int64 and t = j dt
+    s.reject("t_max", "t_max / dt must be at most 2^53 steps: t_max <= " + format_double(max_exact_count * dt));
 }
 
 void check_timing(const Scene& s) {
@@ -231,6 +328,63 @@ void check_first_integrals(const Scene& s) {
     if (row[0] == 0.0 && row[1] == 0.0) s.reject("first_integrals.initial", "polar coordinates are singular at x = y = 0");
 }
 
+// ---- plans (--plan, and the counts checked before any work): counts in double from the scene ----
+
+// Measured on the machine of the paper-scene results (summary.json timing, 2 threads): the batched kernel
+// 0.47 (Cartesian) and 1.05 (polar) ns per trajectory-step and core; the scalar loop about 20-29 ns per step.
+constexpr double kKernelNsPerStep = 0.76;  // mean of the two batched kernels
+constexpr double kScalarNsPerStep = 25.0;  // the scalar loop (energy_map_scalar, symplectic Euler step loops)
+const char* const kNsNote = "ns per step measured from the paper-scene summary.json timing";
+
+struct GridCount {
+  double points, batches, steps;  // grid points, batches of 64 (padded), steps per trajectory (t_max / dt)
+};
+GridCount grid_count(const Scene& s) {
+  const double points = static_cast<double>(s.integer("grid.nx")) * static_cast<double>(s.integer("grid.ny"));
+  return {points, std::ceil(points / kEnergyMapBatch), std::round(s.real("t_max") / s.real("dt"))};
+}
+
+StudyPlan plan_map(const Scene& s) {
+  const GridCount n = grid_count(s);
+  const double padded = n.batches * kEnergyMapBatch;
+  // x0, y0 (padded) and both runs' points, then per grid point the statistics row and the text of map.csv
+  // and map_grid.csv (about 160 and 60 characters)
+  const double bytes = padded * (2 * sizeof(double) + sizeof(Point)) + n.points * (sizeof(EnergyMapRow) + 220.0);
+  const double steps = 2 * padded * n.steps;  // one run per coordinate system and grid point (padding lanes die at once)
+  return {steps, steps, bytes, kKernelNsPerStep, std::string("batched kernel; ") + kNsNote};
+}
+
+StudyPlan plan_first_integrals(const Scene& s) {
+  const double polar = static_cast<double>(s.reals("first_integrals.h").size() * s.real_rows("first_integrals.initial").size());
+  const double steps = polar + 2 * (static_cast<double>(s.integer("first_integrals.steps")) + 1);  // plain and compensated
+  return {steps, steps, 1001 * 100.0, kScalarNsPerStep, kNsNote};  // angular_momentum.csv: at most 1001 rows
+}
+
+StudyPlan plan_timing(const Scene& s) {
+  const GridCount n = grid_count(s);
+  const double repeats = static_cast<double>(s.integer("timing.repeats"));
+  // the kernel's sample (only when the map study does not run in the same process: an upper bound), both systems
+  const double kernel = 2 * repeats * std::min(static_cast<double>(s.integer("timing.kernel_batches")), n.batches) *
+                        kEnergyMapBatch * n.steps;
+  const double scalar = 2 * repeats * std::min(static_cast<double>(s.integer("timing.scalar_points")), n.points) *
+                        static_cast<double>(s.integer("timing.scalar_steps"));
+  const double steps = kernel + scalar, bytes = n.batches * kEnergyMapBatch * 2 * sizeof(double);
+  const double ns = steps > 0 ? (kernel * kKernelNsPerStep + scalar * kScalarNsPerStep) / steps : 0;
+  return {steps, steps, bytes, ns,
+          std::string("one call per timed run (runs lengthened to >= 10 ms not counted); the kernel sample only "
+                      "without the map study; ") + kNsNote};
+}
+
+StudyPlan plan_cost(const Scene& s) {
+  double per_start = 0;  // steps of one start at every step size
+  for (double dt : s.reals("cost.dt")) per_start += std::round(s.real("cost.t_end") / dt);
+  const double repeats = static_cast<double>(s.integer("timing.repeats"));
+  const double starts = static_cast<double>(s.real_rows("cost.starts").size());
+  const double steps = 2 * starts * per_start * (1 + repeats);  // both systems: the untimed run and the timed ones
+  return {steps, steps, starts * static_cast<double>(s.reals("cost.dt").size()) * 2 * 200.0, kScalarNsPerStep,
+          std::string("one call per timed run (runs lengthened to >= 10 ms not counted); ") + kNsNote};
+}
+
 // ---- Fig. 6: the map, in rounds of batches with a checkpoint after each ----
 
 void run_map(Context& ctx, MapCost& cost) {
@@ -240,24 +394,19 @@ void run_map(Context& ctx, MapCost& cost) {
 
   // Checkpoint: completed rounds of batches, for --resume (same map parameters only).
   std::vector<Point> points(g.nbatches * kEnergyMapBatch);
-  std::size_t done = 0;
-  const auto ckpt = ctx.out.path() / "energy_map.checkpoint.json";
+  const MapCheckpoint ckpt(ctx.out.path());
   const json resolved = s.to_json();
   json scene_json = json::object();  // how far to run, and the other studies' keys, are not part of what is computed
   for (const auto& key : kMapKeys) scene_json[key] = resolved.at(key);
-  if (ctx.resume && std::filesystem::exists(ckpt)) {
-    std::ifstream in(ckpt);
-    const json c = json::parse(in);
-    if (c["scene"] == scene_json && c["batch"] == kEnergyMapBatch) {
-      done = c["batches_done"].get<std::size_t>();
-      for (std::size_t i = 0; i < done * kEnergyMapBatch; ++i)
-        points[i] = {point_from(c["points"][i][0]), point_from(c["points"][i][1])};
-      ctx.progress("resuming after " + std::to_string(done) + " of " + std::to_string(g.nbatches) + " batches");
-    }
-  }
+  std::size_t done = ctx.resume ? ckpt.load(scene_json, g.nbatches, points) : 0;
+  if (done > 0) ctx.progress("resuming after " + std::to_string(done) + " of " + std::to_string(g.nbatches) + " batches");
+  if (done == 0) ckpt.remove();  // an append log always starts from its header's count
   double wall_cart = 0, wall_polar = 0;
   const auto stop_after = static_cast<std::size_t>(s.integer("checkpoint.stop_after"));
   std::size_t rounds = 0;
+  const StopPoint stop_point;  // SIGINT/SIGTERM: stop after the next checkpoint (exit 3)
+  std::size_t saved = done;    // batches in the checkpoint
+  auto saved_at = std::chrono::steady_clock::now();
   for (std::size_t first = done; first < g.nbatches; first += kCheckpointBatches) {
     if (stop_after > 0 && rounds++ == stop_after)
       throw Interrupted("after " + std::to_string(first) + " of " + std::to_string(g.nbatches) +
@@ -274,15 +423,18 @@ void run_map(Context& ctx, MapCost& cost) {
                                        : points[(first + b) * kEnergyMapBatch + i].polar) = res[b][static_cast<std::size_t>(i)];
     }
     const std::size_t now_done = first + count;
-    if (now_done < g.nbatches) {  // write the checkpoint (atomically)
-      json c = {{"scene", scene_json}, {"batch", kEnergyMapBatch}, {"batches_done", now_done}, {"points", json::array()}};
-      for (std::size_t i = 0; i < now_done * kEnergyMapBatch; ++i)
-        c["points"].push_back({point_json(points[i].cart), point_json(points[i].polar)});
-      write_file_atomic(ckpt, c.dump());
+    const bool stopping = stop_requested() || (stop_after > 0 && rounds == stop_after);
+    const auto now = std::chrono::steady_clock::now();
+    if (now_done < g.nbatches && (stopping || now - saved_at >= kCheckpointInterval)) {
+      ckpt.append(scene_json, points, saved, now_done);  // the batches since the last checkpoint, then the header
+      saved = now_done, saved_at = now;
     }
-    ctx.progress("map: " + std::to_string(now_done) + " / " + std::to_string(g.nbatches) + " batches");
+    if (stop_requested() && now_done < g.nbatches)
+      throw Interrupted("after " + std::to_string(now_done) + " of " + std::to_string(g.nbatches) +
+                        " batches (signal); continue with --resume");
+    ctx.progress("map", static_cast<double>(now_done), static_cast<double>(g.nbatches), "batches");
   }
-  std::filesystem::remove(ckpt);
+  ckpt.remove();
   const double done_fraction = 1.0 - static_cast<double>(done) / static_cast<double>(g.nbatches);
   cost = {true, wall_cart, wall_polar,
           static_cast<double>(g.npoints) * static_cast<double>(g.P.steps) * done_fraction};
@@ -506,6 +658,8 @@ void check_cost(const Scene& s) {
     const double n = std::round(t_end / dt);
     if (n < 1 || std::abs(n * dt - t_end) > 1e-9 * t_end)
       s.reject("cost.t_end", "must be a positive multiple of every cost.dt, here " + format_double(dt));
+    if (!(n <= max_exact_count))  // steps are counted in int64 and t = j dt
+      s.reject("cost.t_end", "cost.t_end / cost.dt must be at most 2^53 steps, here cost.dt = " + format_double(dt));
   }
   for (const auto& x : s.real_rows("cost.starts")) {
     const double r = std::hypot(x[0], x[1]);
@@ -647,13 +801,13 @@ int main(int argc, char** argv) {
   map_uses.insert(map_uses.end(), {"checkpoint", "map_statistics"});
   timing_uses.push_back("timing");
   spec.studies = {
-      {"map", "000 Fig 6", {"map.csv", "map_grid.csv"}, map_uses, check_map, [&](Context& ctx) { run_map(ctx, map_cost); }},
+      {"map", "000 Fig 6", {"map.csv", "map_grid.csv"}, map_uses, check_map, [&](Context& ctx) { run_map(ctx, map_cost); }, plan_map},
       {"first_integrals", "000 Sec 5.2", {"first_integrals.csv", "angular_momentum.csv"}, {"first_integrals"},
-       check_first_integrals, run_first_integrals},
+       check_first_integrals, run_first_integrals, plan_first_integrals},
       {"timing", "cost: batched kernel against the scalar loop, ns per step", {}, timing_uses, check_timing,
-       [&](Context& ctx) { run_timing(ctx, map_cost); }},
+       [&](Context& ctx) { run_timing(ctx, map_cost); }, plan_timing},
       {"cost", "cost: energy error against wall time and force evaluations, Cartesian and polar",
-       {"timing_cost.csv"}, {"cost", "pendulum", "divergence", "timing.repeats"}, check_cost, run_cost},
+       {"timing_cost.csv"}, {"cost", "pendulum", "divergence", "timing.repeats"}, check_cost, run_cost, plan_cost},
   };
   return run_experiment(argc, argv, std::move(spec), GEOMINT_EXPERIMENT_DIR);
 }

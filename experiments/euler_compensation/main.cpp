@@ -273,6 +273,8 @@ void check_steps(const Scene& s, const char* key, const char* methods_key) {
   check_distinct_methods(s, methods_key);
   const double t_end = s.real("convergence.t_end");
   for (double h : s.reals(key)) {
+    if (!(t_end / h <= max_exact_count))
+      s.reject(key, "at most 2^53 steps to convergence.t_end = " + format_double(t_end) + ", here h = " + format_double(h));
     for (const auto& m : s.texts(methods_key)) {
       if (method_info(m).name == CompensatedSymplecticEuler::info.name) check_oscillator_step(s, key, h);
       else check_oscillatory_bound(s, key, methods_key, m, h, "omega = 1");
@@ -520,6 +522,55 @@ void run_timing(Context& ctx) {
   ctx.summary["h_range"]["timing"] = h_range(timing_hs);
 }
 
+// ---- What each study would cost (--plan), from the scene before any work ----
+// Steps in double; ns per step are constants measured on the paper scene (results/euler_compensation,
+// summary timing.ns_per_step: symplectic Euler with (82), the most expensive, for the oscillator; study
+// wall time over its steps for Figs 2, 3).
+
+constexpr double kCellBytes = 24;        // one CSV cell held in memory
+constexpr double kOscillatorNs = 272;    // compensated symplectic Euler (82), the most expensive method
+constexpr double kScalarNs = 5000;       // Figs 2, 3: a step with its odeint reference from t = 0
+constexpr double kEvalsPerStep = 4;      // the most of the paper scene's methods (rk4)
+
+// Figs 2, 3: the steps of Euler in y and in ybar, and the trajectory CSV (8 columns) held in memory.
+StudyPlan plan_scalar(double steps, double figures) {
+  return {2 * figures * steps, 2 * figures * steps, (steps + 1) * 8 * kCellBytes, kScalarNs,
+          "each step also integrates its odeint reference from t = 0 (not counted); ns per step: paper-scene "
+          "study wall time over its steps"};
+}
+
+StudyPlan plan_decay(const Scene& s) { return plan_scalar(static_cast<double>(s.integer("decay.steps")), 2); }
+StudyPlan plan_gompertz(const Scene& s) { return plan_scalar(static_cast<double>(s.integer("gompertz.steps")), 1); }
+
+StudyPlan plan_oscillator(const Scene& s) {
+  const double n = static_cast<double>(s.integer("oscillator.steps"));
+  return {2 * n, 2 * n, (n + 1) * (sizeof(State) + 8 * kCellBytes), kOscillatorNs,
+          "ns per step: symplectic Euler with (82) (paper-scene summary timing.ns_per_step)"};
+}
+
+double steps_to_t_end(const Scene& s, const char* key) {
+  double steps = 0;
+  for (double h : s.reals(key)) steps += s.real("convergence.t_end") / h;
+  return steps;
+}
+
+StudyPlan plan_convergence(const Scene& s) {
+  const double methods = static_cast<double>(s.texts("convergence.methods").size());
+  const double steps = (methods + 2) * steps_to_t_end(s, "convergence.h");  // and Euler on (14), (17)
+  return {steps, steps * kEvalsPerStep, static_cast<double>(s.reals("convergence.h").size()) * (4 + 3 * methods) * kCellBytes,
+          kOscillatorNs, "ns per step: symplectic Euler with (82) (paper-scene summary timing.ns_per_step)"};
+}
+
+StudyPlan plan_timing(const Scene& s) {
+  const double methods = static_cast<double>(s.texts("timing.methods").size());
+  const double repeats = static_cast<double>(s.integer("timing.repeats"));
+  const double counted = methods * steps_to_t_end(s, "timing.h");
+  const double steps = counted * (1 + repeats) + methods * repeats * static_cast<double>(s.integer("timing.steps"));
+  return {steps, counted * kEvalsPerStep, methods * static_cast<double>(s.reals("timing.h").size()) * 8 * kCellBytes,
+          kOscillatorNs, "timed runs of < 10 ms are repeated to 10 ms (not counted); ns per step: symplectic Euler "
+          "with (82) (paper-scene summary timing.ns_per_step)"};
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -529,18 +580,18 @@ int main(int argc, char** argv) {
                       schema(),
                       {}};
   spec.studies = {
-      {"decay", "000 Fig 2", {"fig2_decay.csv", "fig2_decay_exact.csv"}, {"decay"}, check_decay, run_decay},
+      {"decay", "000 Fig 2", {"fig2_decay.csv", "fig2_decay_exact.csv"}, {"decay"}, check_decay, run_decay, plan_decay},
       {"gompertz", "000 Fig 3", {"fig3_gompertz.csv", "fig3_gompertz_exact.csv"}, {"gompertz"}, check_gompertz,
-       run_gompertz},
+       run_gompertz, plan_gompertz},
       {"oscillator", "000 Fig 8", {"fig8_phase.csv", "fig8_exact.csv"}, {"oscillator"},
-       [](const Scene& s) { check_oscillator_step(s, "oscillator.h", s.real("oscillator.h")); }, run_oscillator},
+       [](const Scene& s) { check_oscillator_step(s, "oscillator.h", s.real("oscillator.h")); }, run_oscillator, plan_oscillator},
       {"convergence", "000 Fig 9", {"fig9_convergence.csv", "orders.csv"},
        {"convergence", "oscillator.q0", "oscillator.p0", "oscillator.k", "decay.alpha", "decay.y0", "gompertz.a",
         "gompertz.b", "gompertz.y0"},
-       [](const Scene& s) { check_steps(s, "convergence.h", "convergence.methods"); }, run_convergence},
+       [](const Scene& s) { check_steps(s, "convergence.h", "convergence.methods"); }, run_convergence, plan_convergence},
       {"timing", "cost: error against wall time and force evaluations", {"timing.csv"},
        {"timing", "convergence.t_end", "oscillator.q0", "oscillator.p0", "oscillator.k", "oscillator.h"},
-       [](const Scene& s) { check_steps(s, "timing.h", "timing.methods"); }, run_timing},
+       [](const Scene& s) { check_steps(s, "timing.h", "timing.methods"); }, run_timing, plan_timing},
   };
   return run_experiment(argc, argv, std::move(spec), GEOMINT_EXPERIMENT_DIR);
 }

@@ -126,8 +126,8 @@ Schema schema() {
       .real_rows("nonlinear.elastic_initial", 4, any_finite(), 1, "elastic pendulum [x, y, px, py]")
       .texts("nonlinear.methods", methods_for<NonlinearPendulum>(), 0,
              "methods compared with Lobatto on the nonlinear pendulum")
-      .real("reference.rtol", positive(), "tolerances of the odeint Bulirsch-Stoer reference")
-      .real("reference.atol", positive(), "")
+      .real("reference.rtol", tolerance(), "tolerances of the odeint Bulirsch-Stoer reference")
+      .real("reference.atol", tolerance(), "")
       .integer("timing.repeats", at_least(1), "timed runs (>= 10 ms each) per measurement; the minimum is the estimate, the spread is reported")
       .texts("timing.methods", methods_for<NonlinearPendulum>(), 1,
              "methods timed on the nonlinear pendulum at the steps nonlinear.h, against its reference")
@@ -191,8 +191,23 @@ void check_pendulum_steps(const Scene& s, const char* methods_key, const std::st
     check_oscillatory_bound(s, "nonlinear.h", methods_key, method, h * kNonlinearOmega, "h = " + format_double(h) + ", frequency 1");
 }
 
+// Every step of nonlinear.h divides nonlinear.t_end (the runs end at t_end, where the reference is),
+// checked in double before the step count is rounded to an integer.
+void check_nonlinear_steps(const Scene& s) {
+  const double t_end = s.real("nonlinear.t_end");
+  for (double h : s.reals("nonlinear.h")) {
+    const double n = t_end / h;
+    if (!(n <= max_exact_count)) s.reject("nonlinear.h", "at most 2^53 steps to nonlinear.t_end, here h = " + format_double(h));
+    if (std::round(n) < 1 || std::abs(std::round(n) * h - t_end) > 1e-9 * t_end)
+      s.reject("nonlinear.h", "each h must divide nonlinear.t_end = " + format_double(t_end) + ", here h = " + format_double(h));
+  }
+}
+
 void check_nonlinear(const Scene& s) {
   check_distinct_methods(s, "nonlinear.methods");
+  check_nonlinear_steps(s);
+  const auto e = s.real_rows("nonlinear.elastic_initial")[0];
+  if (std::hypot(e[0], e[1]) == 0.0) s.reject("nonlinear.elastic_initial", "the spring force is singular at x = y = 0");
   for (double h : s.reals("nonlinear.h"))
     check_lobatto(s, "nonlinear.h", h * kNonlinearOmega, "h = " + format_double(h) + ", frequency 1");
   for (const auto& m : s.texts("nonlinear.methods")) check_pendulum_steps(s, "nonlinear.methods", m);
@@ -210,6 +225,7 @@ void check_long_run_cost(const Scene& s) {
 
 void check_timing(const Scene& s) {
   check_distinct_methods(s, "timing.methods");
+  check_nonlinear_steps(s);
   for (const auto& m : s.texts("timing.methods")) check_pendulum_steps(s, "timing.methods", m);
   const auto timed = s.texts("timing.methods");
   if (std::find(timed.begin(), timed.end(), s.text("timing.equal_wall")) == timed.end())
@@ -661,6 +677,11 @@ void run_nonlinear(Context& ctx) {
   std::vector<std::vector<double>> e_m(methods.size());
   for (std::size_t i = 0; i < nh.size(); ++i) {
     const auto& r = rows[i];
+    bool finite = std::isfinite(r.pendulum_err) && std::isfinite(r.elastic_err);
+    for (double e : r.compared) finite = finite && std::isfinite(e);
+    if (!finite)
+      throw NumericalFailure("study nonlinear: a non-finite error at h = " + format_double(nh[i]) + ", t = " +
+                             format_double(t_end) + " (pendulum, elastic pendulum or one of nonlinear.methods)");
     nl << nh[i] << r.pendulum_err << r.pendulum_iterations << r.elastic_err << r.elastic_iterations;
     for (std::size_t k = 0; k < methods.size(); ++k) nl << r.compared[k], e_m[k].push_back(r.compared[k]);
     nl.end_row();
@@ -880,6 +901,93 @@ void run_long_run_cost(Context& ctx) {
                      "count U_q and U_qq calls"}};
 }
 
+// ---- What each study would cost (--plan), from the scene before any work ----
+//
+// Steps are counted in double (t_end = 1e300 gives a huge count, refused by the runner, not an overflowed
+// integer). The ns per step are constants measured on the paper scene (results/lobatto_table, 2 threads):
+// summary timing.ns_per_step and timing.long_run_cost.cost.*.ns_per_step, and study wall time over steps for
+// the linear iterations; force evaluations per step are the largest of summary timing.cost.*.evals_per_step.
+
+constexpr double kCellBytes = 24;            // one CSV cell held in memory (text and separator)
+constexpr double kStateBytes = sizeof(Z1);   // one stored (q, p)
+constexpr double kOscillatorEvals = 11;      // force evaluations per step on the oscillator (Lobatto, the most)
+constexpr double kPendulumEvals = 16;        // per step on the nonlinear pendulum (Lobatto's Newton, the most)
+constexpr double kMatrixNs = 25;             // one step of a 2x2 one-step matrix (Fig. 2, stability runs)
+constexpr double kOscillatorNs = 280;        // one Lobatto step through integrate on the oscillator
+constexpr double kPendulumNs = 520;          // one Lobatto step (Newton) on the nonlinear pendulum
+
+double period_of(const Scene& s) { return 2 * std::numbers::pi / s.real("oscillator.omega"); }
+
+StudyPlan plan_table1(const Scene& s) {
+  double steps = 0, largest = 0;
+  const double runs = 2.0 + static_cast<double>(s.texts("table1.methods").size());  // Lobatto, (12), compared
+  for (double n : s.reals("meshes")) steps += runs * n, largest = std::max(largest, n);
+  return {steps, steps * kOscillatorEvals, 2 * (largest + 1) * kStateBytes, kOscillatorNs,
+          "ns per step: Lobatto on the oscillator (paper-scene summary timing.long_run_cost)"};
+}
+
+StudyPlan plan_figure1(const Scene& s) {
+  const double methods = static_cast<double>(s.texts("figure1.methods").size());
+  double steps = 0, largest = 0;
+  for (double n : s.reals("figure1.meshes")) steps += methods * n, largest = std::max(largest, n);
+  return {steps, steps * kOscillatorEvals, (largest + 1) * (methods * kStateBytes + (2 + 2 * methods) * kCellBytes),
+          kOscillatorNs, "ns per step: Lobatto on the oscillator (paper-scene summary timing.long_run_cost)"};
+}
+
+StudyPlan plan_long_run(const Scene& s) {
+  const double periods = s.real("long_run.periods"), T = period_of(s);
+  const double windows = static_cast<double>(s.integer("long_run.windows"));
+  double steps = 0;
+  for (double h : s.reals("long_run.h")) steps += periods * T / h;
+  const double runs = static_cast<double>(s.reals("long_run.h").size());
+  return {steps, 0, runs * windows * (3 * sizeof(double) + 5 * kCellBytes), kMatrixNs,
+          "iterates the one-step matrix (13), no force evaluations; ns per step: paper-scene study wall time over its steps"};
+}
+
+StudyPlan plan_stability(const Scene& s) {
+  const double points = static_cast<double>(s.integer("stability.points"));
+  const double methods = static_cast<double>(s.texts("stability.methods").size());
+  const double periods = s.real("long_run.periods");
+  double steps = points * (1 + methods);  // one one-step matrix per point and method
+  for (double factor : kBoundFactors) steps += periods * 2 * std::numbers::pi / (factor * method_info("lobatto").oscillatory_bound);
+  return {steps, 0, points * (2 + methods) * (sizeof(double) + kCellBytes), kMatrixNs,
+          "runs at the bound iterate the one-step matrix (13); ns per step: paper-scene study wall time over its steps"};
+}
+
+StudyPlan plan_nonlinear(const Scene& s) {
+  const double t_end = s.real("nonlinear.t_end");
+  const double runs = 2.0 + static_cast<double>(s.texts("nonlinear.methods").size());  // both pendulums, compared
+  double steps = 0;
+  for (double h : s.reals("nonlinear.h")) steps += runs * t_end / h;
+  return {steps, steps * kPendulumEvals, static_cast<double>(s.reals("nonlinear.h").size()) * runs * 4 * sizeof(double),
+          kPendulumNs, "odeint reference steps not counted; ns per step: Lobatto on the pendulum (paper-scene summary timing)"};
+}
+
+StudyPlan plan_timing(const Scene& s) {
+  const double t_end = s.real("nonlinear.t_end");
+  const double methods = static_cast<double>(s.texts("timing.methods").size());
+  const double repeats = static_cast<double>(s.integer("timing.repeats"));
+  double steps = 0;
+  for (double h : s.reals("nonlinear.h")) steps += methods * (1 + repeats) * t_end / h;  // a counting run, the timed runs
+  return {steps, steps / (1 + repeats) * kPendulumEvals, methods * static_cast<double>(s.reals("nonlinear.h").size()) * 8 * kCellBytes,
+          kPendulumNs, "timed runs of < 10 ms are repeated to 10 ms (not counted); ns per step: Lobatto on the pendulum (paper-scene summary timing)"};
+}
+
+StudyPlan plan_long_run_cost(const Scene& s) {
+  const double periods = s.real("long_run.periods"), T = period_of(s);
+  const double methods = static_cast<double>(s.texts("long_run_cost.methods").size());
+  const double repeats = static_cast<double>(s.integer("timing.repeats"));
+  const double timed = static_cast<double>(s.integer("long_run_cost.timing_steps"));
+  double counted = 0, steps = 0;
+  for (double h : s.reals("long_run_cost.h")) {
+    const double n = periods * T / h;
+    counted += methods * n, steps += methods * (n + repeats * std::min(n, timed));
+  }
+  return {steps, counted * kOscillatorEvals,
+          methods * static_cast<double>(s.reals("long_run_cost.h").size()) * 9 * kCellBytes, kOscillatorNs,
+          "ns per step: Lobatto on the oscillator (paper-scene summary timing.long_run_cost)"};
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -889,20 +997,20 @@ int main(int argc, char** argv) {
                       schema(),
                       {}};
   spec.studies = {
-      {"table1", "001 Table 1", {"table1.csv"}, {"meshes", "oscillator", "table1"}, check_table1, run_table1},
-      {"figure1", "001 Fig 1", {"fig1_N*.csv", "fig1_exact.csv"}, {"figure1", "oscillator"}, check_figure1, run_figure1},
-      {"long_run", "001 Fig 2", {"fig2_energy.csv"}, {"long_run", "oscillator"}, check_long_run, run_long_run},
+      {"table1", "001 Table 1", {"table1.csv"}, {"meshes", "oscillator", "table1"}, check_table1, run_table1, plan_table1},
+      {"figure1", "001 Fig 1", {"fig1_N*.csv", "fig1_exact.csv"}, {"figure1", "oscillator"}, check_figure1, run_figure1, plan_figure1},
+      {"long_run", "001 Fig 2", {"fig2_energy.csv"}, {"long_run", "oscillator"}, check_long_run, run_long_run, plan_long_run},
       {"stability", "stability set beyond 001 eq. (10); runs at 0.99 and 1.01 of the bound", {"stability.csv"},
-       {"stability", "oscillator", "long_run.periods"}, check_stability, run_stability},
+       {"stability", "oscillator", "long_run.periods"}, check_stability, run_stability, plan_stability},
       {"nonlinear", "nonlinear Lagrangians (Newton): order 6, symplecticity", {"nonlinear.csv"},
        {"nonlinear", "reference"},
-       check_nonlinear, run_nonlinear},
+       check_nonlinear, run_nonlinear, plan_nonlinear},
       {"timing", "cost: error against wall time and force evaluations", {"timing.csv"},
        {"timing", "nonlinear.h", "nonlinear.t_end", "nonlinear.pendulum_q0", "reference"},
-       check_timing, run_timing},
+       check_timing, run_timing, plan_timing},
       {"long_run_cost", "cost over the long run of Fig 2: error against wall time and force evaluations",
        {"timing_long_run.csv"}, {"long_run_cost", "long_run.periods", "oscillator", "timing.repeats"},
-       check_long_run_cost, run_long_run_cost},
+       check_long_run_cost, run_long_run_cost, plan_long_run_cost},
   };
   return run_experiment(argc, argv, std::move(spec), GEOMINT_EXPERIMENT_DIR);
 }

@@ -73,6 +73,10 @@ std::vector<Discretization> scene_methods(const Scene& s) {
   return out;
 }
 
+// The clouds are neighbourhoods of cloud.center (003: radius 0.01, 1e-5 and 0.3): from radius 3 on, the conformal
+// step's Newton iteration fails at h = 0.25 and the reference flow of far points overflows, leaving no hull.
+constexpr double kMaxRadius = 1.0;
+
 Schema schema() {
   Schema s;
   s.text("potential", {"harmonic", "free"}, "U = (x^2 + y^2)/2 or U = 0 (003 Secs 5.2, 5.3)")
@@ -83,24 +87,24 @@ Schema schema() {
              "discrete Lagrangians (5.1) by registry name (conformal_M, ...) or label (M, ...); CSV columns and "
              "summary keys use the label")
       .integer("seed", at_least(0), "seed of the random cloud of Fig. 5.1")
-      .real("cloud.radius", positive(), "circumradius of the 600-cell cloud (003: 0.01)")
+      .real("cloud.radius", {.gt = 0.0, .ge = {}, .lt = {}, .le = kMaxRadius}, "circumradius of the 600-cell cloud (003: 0.01)")
       .reals("cloud.center", any_finite(), 4, "centre [x, y, px, py] of every cloud and start of every trajectory")
       .boolean("cloud.authors_cloud",
                "also the cloud of the code of 003 (it drops the vertex (0, 0, r, 0): 119 vertices + centre), beside "
                "the full one: volumes_authors_phi*.csv, reproduced.authors_cloud")
       .reals("cloud.ells", at_least(0), 1, "truncation orders ell of the methods Phi^(ell) run on the cloud")
       .integer("shape.points", at_least(5), "points on the 3-sphere of Fig. 5.1 (003: 5000)")
-      .real("shape.radius", positive(), "radius of that sphere (003: 0.3)")
+      .real("shape.radius", {.gt = 0.0, .ge = {}, .lt = {}, .le = kMaxRadius}, "radius of that sphere (003: 0.3)")
       .real("shape.snapshot_dt", positive(), "time between snapshots (003: 2.75)")
       .integer("shape.snapshots", at_least(1), "snapshots after t = 0 (003: 5)")
       .real("energies.t_end", positive(), "end time of Figs 5.3, 5.5, 5.6 (003: 10) and of the cost runs")
       .real("long_run.t_end", positive(), "end time of the long run of Phi^(0) and Phi^(4)")
       .reals("order_study.h", positive(), 3, "steps of the order study and of the cost runs")
-      .real("order_study.radius", positive(), "radius of its 600-cell clouds (small enough for no hull artefact)")
+      .real("order_study.radius", {.gt = 0.0, .ge = {}, .lt = {}, .le = kMaxRadius}, "radius of its 600-cell clouds (small enough for no hull artefact)")
       .real("order_study.t_end", positive(), "its end time")
       .reals("order_study.ells", at_least(0), 1, "its truncation orders ell")
-      .real("reference.rtol", positive(), "tolerances of the odeint Bulirsch-Stoer reference on (3.8)")
-      .real("reference.atol", positive(), "")
+      .real("reference.rtol", tolerance(), "tolerances of the odeint Bulirsch-Stoer reference on (3.8)")
+      .real("reference.atol", tolerance(), "")
       .integer("timing.repeats", at_least(1), "timed runs of >= 10 ms each (the minimum is the estimate)")
       .text("cost.discretization", method_choices(),
             "the discrete Lagrangian (5.1) of Phi^(4) and Phi^(0) in the comparison with RK4")
@@ -132,14 +136,18 @@ void check_at_least_one_step(const Scene& s, const char* key, const std::vector<
   if (s.real(key) < longest) s.reject(key, std::string("must be at least one step ") + what + " = " + format_double(longest));
 }
 
+void check_first_step(const Scene& s, const char* key, const std::vector<double>& hs);
+
 void check_volumes(const Scene& s) {
   check_ells(s, "cloud.ells");
+  check_first_step(s, "h", {s.real("h")});
   check_at_least_one_step(s, "t_end", {s.real("h")}, "h");
   if (s.real("ptp_window") > s.real("t_end")) s.reject("ptp_window", "must not exceed t_end");
 }
 
 void check_order_study(const Scene& s) {
   check_ells(s, "order_study.ells");
+  check_first_step(s, "order_study.h", s.reals("order_study.h"));
   if (s.real("order_study.t_end") < s.real("ptp_window")) s.reject("order_study.t_end", "must be at least ptp_window");
   check_at_least_one_step(s, "order_study.t_end", s.reals("order_study.h"), "max(order_study.h)");
 }
@@ -206,7 +214,12 @@ CloudRun cloud_phi(Discretization d, const NonholonomicParticle& sys, double h, 
 // Volume of conv(cloud) for each density 1/N^(ell)_mod, ell in `measures` (0: mu itself, 1/N).
 std::vector<double> hull_volumes(const std::vector<Point4>& points, const ModifiedSeries& ms,
                                  const std::vector<int>& measures) {
-  const auto facets = hull_facets(points);
+  std::vector<HullFacet> facets;
+  try {
+    facets = hull_facets(points);
+  } catch (const std::domain_error& e) {  // a cloud that left the domain of the hull (not finite, degenerate)
+    throw NumericalFailure(std::string("hull volume: ") + e.what());
+  }
   std::vector<double> v;
   for (int m : measures)
     v.push_back(hull_integral(points, facets, points.front(), [&](const Point4& z) { return 1.0 / ms.N(m, as_state(z)); }));
@@ -977,6 +990,79 @@ void run_cost(Context& ctx) {
   work_precision(ctx, sys, z0, rtol, atol, cmp, phi4_runs);
 }
 
+
+// ---- what each study costs (--plan), from the scene before any work ----
+// ns per step and thread of each study: its wall time in the paper scenes on 2 threads (summary.json
+// timing.study_wall_s) times 2 over its steps below -- the hull volumes, references and timed repeats included;
+// force evaluations: Newton iterations, 3.86 per step (timing.newton_iterations_mean there). The odeint
+// reference samples count as steps.
+constexpr double kNewtonPerStep = 3.86, kPointBytes = 4 * 8;
+const char* const kPlanNote = "ns per step: the paper scene's study wall time on 2 threads over its steps (summary.json)";
+
+double steps_of(double t, double h) { return std::floor(t / h + 1e-9); }  // steps_in in double, before any cast
+
+StudyPlan make_plan(double steps, double memory, double ns_per_step, const std::string& extra = {}) {
+  return {steps, kNewtonPerStep * steps, memory, ns_per_step, extra.empty() ? kPlanNote : extra + "; " + kPlanNote};
+}
+
+StudyPlan plan_shape(const Scene& s) {
+  const double snaps = static_cast<double>(s.integer("shape.snapshots")), points = static_cast<double>(s.integer("shape.points"));
+  const double n = steps_of(snaps * s.real("shape.snapshot_dt"), s.real("h")), M = static_cast<double>(s.texts("methods").size());
+  return make_plan(M * n + points * snaps + 2 * n, points * (snaps + 1) * kPointBytes * 2 + (2 + M) * (n + 1) * 20 * 8, 15700);
+}
+
+StudyPlan plan_volumes(const Scene& s) {
+  const double n = steps_of(s.real("t_end"), s.real("h")), M = static_cast<double>(s.texts("methods").size());
+  const double runs = M * static_cast<double>(s.reals("cloud.ells").size()) + 1;  // + the reference
+  const double points = 2 * 121.0;  // the full cloud and the authors' (at most)
+  return make_plan(runs * points * n, runs * (n + 1) * 121 * kPointBytes, 9500);
+}
+
+StudyPlan plan_energies(const Scene& s) {
+  const double n = steps_of(s.real("energies.t_end"), s.real("h")), M = static_cast<double>(s.texts("methods").size());
+  const double runs = M * (max_modified_order / 2 + 1) + 2;
+  return make_plan(runs * n, runs * (n + 1) * kPointBytes, 7500);
+}
+
+StudyPlan plan_long_run(const Scene& s) {
+  const double n = steps_of(s.real("long_run.t_end"), s.real("h")), M = static_cast<double>(s.texts("methods").size());
+  return make_plan(2 * M * n, 2 * M * (n + 1) * kPointBytes, 1800);
+}
+
+StudyPlan plan_order_study(const Scene& s) {
+  const auto hs = s.reals("order_study.h");
+  const double T = s.real("order_study.t_end"), M = static_cast<double>(s.texts("methods").size());
+  const double ells_n = static_cast<double>(s.reals("order_study.ells").size()), h_min = *std::min_element(hs.begin(), hs.end());
+  double steps = M * 120 * steps_of(T, h_min / 2);  // the round-off probes
+  for (double h : hs) steps += M * ells_n * 120 * steps_of(T, h);
+  return make_plan(steps, 2 * (steps_of(T, h_min / 2) + 1) * 121 * kPointBytes, 8100, "the snapshots of two runs at once");
+}
+
+StudyPlan plan_cost(const Scene& s) {
+  const double T = s.real("energies.t_end"), runs = static_cast<double>(s.integer("timing.repeats")) + 1;
+  const double M = static_cast<double>(s.texts("methods").size());
+  double steps = 0, kept = 0;
+  for (double h : s.reals("order_study.h")) steps += (M + 1) * runs * steps_of(T, h), kept += 2 * (steps_of(T, h) + 1);
+  for (double h : s.reals("cost.rk4_h")) steps += runs * steps_of(T, h), kept += steps_of(T, h) + 1;
+  return make_plan(steps, kept * kPointBytes, 119000, "steps: a lower bound (timed runs last at least 10 ms each)");
+}
+
+// The conformal step's Newton iteration converges at each step of `key` from the centre cloud.center (one step of each
+// scene method, E = H(z0)): where it does not, every run of the study would fail in its first step.
+void check_first_step(const Scene& s, const char* key, const std::vector<double>& hs) {
+  const auto [sys, z0] = setup(s);
+  for (Discretization d : scene_methods(s))
+    for (double h : hs) {
+      try {
+        const Z z1 = conformal_variational_step(d, sys, as_state(z0), h, sys.H(as_state(z0))).z;
+        if (!std::isfinite(z1.q.squaredNorm() + z1.p.squaredNorm())) throw IntegrationError("non-finite step");
+      } catch (const IntegrationError&) {
+        s.reject(key, std::string("a step at which the Newton iteration of the conformal step ") + discretization_name(d) +
+                          " converges from cloud.center (here it does not at h = " + format_double(h) + "; 003: 0.25)");
+      }
+    }
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -990,17 +1076,27 @@ int main(int argc, char** argv) {
   };
   spec.studies = {
       {"shape", "003 Fig 5.1", {"shape.csv", "shape_areas.csv", "shape_symplecticity.csv"},
-       with({"seed", "shape", "h", "methods"}), nullptr, run_shape},
+       with({"seed", "shape", "h", "methods"}),
+       [](const Scene& s) { check_first_step(s, "h", {s.real("h")}); }, run_shape, plan_shape},
       {"volumes", "003 Figs 5.2, 5.4", {"volumes_phi*.csv", "volumes_authors_phi*.csv"},
        with({"h", "methods", "t_end", "ptp_window", "cloud"}),
-       check_volumes, run_volumes},
+       check_volumes, run_volumes, plan_volumes},
       {"energies", "003 Figs 5.3, 5.5, 5.6", {"energies_phi*.csv"}, with({"h", "methods", "energies"}),
-       [](const Scene& s) { check_at_least_one_step(s, "energies.t_end", {s.real("h")}, "h"); }, run_energies},
+       [](const Scene& s) {
+         check_at_least_one_step(s, "energies.t_end", {s.real("h")}, "h");
+         check_first_step(s, "h", {s.real("h")});
+       },
+       run_energies, plan_energies},
       {"long_run", "H under Phi^(0) and Phi^(4) to long_run.t_end", {"long_run.csv"},
        with({"h", "methods", "long_run"}),
-       [](const Scene& s) { check_at_least_one_step(s, "long_run.t_end", {s.real("h")}, "h"); }, run_long_run},
+       [](const Scene& s) {
+         check_at_least_one_step(s, "long_run.t_end", {s.real("h")}, "h");
+         check_first_step(s, "h", {s.real("h")});
+       },
+       run_long_run, plan_long_run},
       {"order_study", "order of measure preservation (003 Cor. 4.3)", {"order_study.csv"},
-       with({"methods", "order_study", "ptp_window"}, false), check_order_study, run_order_study},
+       with({"methods", "order_study", "ptp_window"}, false), check_order_study, run_order_study,
+       plan_order_study},
       // the cost runs take the steps of the order study to the end time of the energies
       {"cost", "error against wall time of each discretization; Phi^(4) against Phi^(0) and RK4 at equal cost",
        {"timing_cost.csv", "timing_work_precision.csv"},
@@ -1011,8 +1107,10 @@ int main(int argc, char** argv) {
          const auto ms = scene_methods(s);
          if (std::find(ms.begin(), ms.end(), *parse_discretization(method_info(s.text("cost.discretization")).label)) == ms.end())
            s.reject("cost.discretization", "must be one of the scene's methods (its Phi^(4) runs are reused)");
+         check_first_step(s, "h", {s.real("h")});
+         check_first_step(s, "order_study.h", s.reals("order_study.h"));
        },
-       run_cost},
+       run_cost, plan_cost},
   };
   return run_experiment(argc, argv, std::move(spec), GEOMINT_EXPERIMENT_DIR);
 }

@@ -117,8 +117,8 @@ Schema schema() {
       .texts("observables", {"energy_error", "phase_error"}, 1,
              "what the convergence study records: energy_error (eq. (50) and the max over the run), phase_error "
              "(|z_N - z(t_end)|_2 against the odeint reference, computed only if named)")
-      .real("reference.rtol", positive(), "relative tolerance of the odeint Bulirsch-Stoer reference")
-      .real("reference.atol", positive(), "absolute tolerance of the odeint Bulirsch-Stoer reference")
+      .real("reference.rtol", tolerance(), "relative tolerance of the odeint Bulirsch-Stoer reference")
+      .real("reference.atol", tolerance(), "absolute tolerance of the odeint Bulirsch-Stoer reference")
       .texts("timing.methods", choices, 1, "methods of the cost study (registry names or labels)")
       .integer("timing.repeats", at_least(1), "timed runs (>= 10 ms each) per measurement; the minimum is the estimate, the spread is reported")
       .reals("timing.error_targets", positive(), 1,
@@ -140,6 +140,7 @@ void check_methods(const Scene& s, const char* key) {
 void check_common(const Scene& s) {
   const double t_end = s.real("t_end");
   for (double h : s.reals("h")) {
+    if (!(t_end / h <= max_exact_count)) s.reject("h", "at most 2^53 steps to t_end = " + format_double(t_end) + ", here h = " + format_double(h));
     const double n = static_cast<double>(steps_to(t_end, h));
     if (n < 1 || std::abs(n * h - t_end) > 1e-9 * t_end) s.reject("h", "each h must divide t_end = " + format_double(t_end));
   }
@@ -423,6 +424,38 @@ void run_timing(Context& ctx) {
   with_elastic_pendulum(pendulum_of(ctx.scene), [&](const auto& sys) { timing_with(ctx, sys); });
 }
 
+// ---- What each study would cost (--plan), from the scene before any work ----
+// Steps in double (t_end / h summed over the runs); the ns per step and force evaluations per step are
+// constants measured on the paper scene (results/rowlands_convergence, summary timing.ns_per_step and
+// timing.cost.*.evals_per_step: the processed Rowlands method and the most evaluations per step, odeint_rkn_sb3a).
+
+constexpr double kNsPerStep = 40;   // the processed Rowlands method on the elastic pendulum
+constexpr double kEvalsPerStep = 6; // the most of the paper scene's methods (odeint_rkn_sb3a)
+constexpr double kCellBytes = 24;   // one CSV cell held in memory
+
+double steps_per_run(const Scene& s) {
+  double steps = 0;
+  for (double h : s.reals("h")) steps += s.real("t_end") / h;
+  return steps;
+}
+
+StudyPlan plan_convergence(const Scene& s) {
+  const double runs = static_cast<double>(s.real_rows("initial").size() * s.texts("methods").size());
+  const double steps = runs * steps_per_run(s);
+  const double rows = static_cast<double>(s.real_rows("initial").size() * s.reals("h").size());
+  return {steps, steps * kEvalsPerStep, rows * (3 + 4 * static_cast<double>(s.texts("methods").size())) * kCellBytes,
+          kNsPerStep, "odeint reference steps not counted; ns per step: the processed Rowlands method (paper-scene summary timing)"};
+}
+
+StudyPlan plan_timing(const Scene& s) {
+  const double methods = static_cast<double>(s.texts("timing.methods").size());
+  const double repeats = static_cast<double>(s.integer("timing.repeats"));
+  const double counted = methods * steps_per_run(s);
+  return {counted * (1 + repeats), counted * kEvalsPerStep, methods * static_cast<double>(s.reals("h").size()) * 8 * kCellBytes,
+          kNsPerStep, "timed runs of < 10 ms are repeated to 10 ms (not counted); ns per step: the processed Rowlands method "
+          "(paper-scene summary timing)"};
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -438,14 +471,14 @@ int main(int argc, char** argv) {
          check_common(s);
          check_methods(s, "methods");
        },
-       run_convergence},
+       run_convergence, plan_convergence},
       {"timing", "cost: error against wall time and force evaluations, against odeint's steppers", {"timing.csv"},
        {"timing", "initial", "t_end", "h", "pendulum", "reference"},
        [](const Scene& s) {
          check_common(s);
          check_methods(s, "timing.methods");
        },
-       run_timing},
+       run_timing, plan_timing},
   };
   return run_experiment(argc, argv, std::move(spec), GEOMINT_EXPERIMENT_DIR);
 }

@@ -125,15 +125,6 @@ std::string short_num(double v) {
   return buf;
 }
 
-// The Henon-Heiles start (q1 = 0, q2, p2) with p1 > 0 from hh.H0 exists (section: hh3 or symplecticity).
-template <class HH>
-void check_hh_start(const Scene& s, const std::string& section, const HH& hh) {
-  const double H0 = s.real("hh.H0"), q2 = s.real(section + ".q2"), p2 = s.real(section + ".p2");
-  if (!(2 * (H0 - hh.U(Vec<2>(0.0, q2))) - p2 * p2 > 0))
-    s.reject(section + ".p2", "the start q1 = 0, q2 = " + short_num(q2) + ", p2 = " + short_num(p2) + " (k = " +
-                                  std::to_string(hh.k) + ") needs U(0, q2) + p2^2/2 < hh.H0 = " + short_num(H0));
-}
-
 // Calls f with the Henon-Heiles system of Figs 4-5: exponent hh.k, coupling hh.coupling (compiled out if 0).
 template <class F>
 decltype(auto) with_ensemble_system(const Scene& s, F&& f) {
@@ -404,6 +395,9 @@ void run_pendulum(Context& ctx) {
   integrate(simplified_ti_method(up, false), p0, h, n, [&](std::int64_t j, const Z1& z) {
     if (j % every) return;
     const double t = static_cast<double>(j) * h, e = shifted_energy(up, z, h) - E0;
+    if (!std::isfinite(e))
+      throw NumericalFailure("simplified_takahashi_imada: the shifted energy is not finite at step " +
+                             std::to_string(j) + ", t = " + format_double(t));
     f2.row(t, e, up.H(z) - up.H(p0));
     ts_all.push_back(t), es_all.push_back(e), Hs_all.push_back(up.H(z) - up.H(p0));
     if (t <= s.real("pendulum.fit_t")) ts.push_back(t), es.push_back(e);
@@ -481,6 +475,9 @@ void run_hh3(Context& ctx) {
   integrate(simplified_ti_method(hh, false), start, h, n, [&](std::int64_t j, const Z2& z) {
     if (j % every) return;
     const double t = static_cast<double>(j) * h, e = simplified_ti_modified_energy(hh, z, h) - E0;
+    if (!std::isfinite(e))
+      throw NumericalFailure("simplified_takahashi_imada: E is not finite at step " + std::to_string(j) +
+                             ", t = " + format_double(t));
     f3.row(t, e, hh.H(z) - hh.H(start));
     ts.push_back(t), es.push_back(e), worst = std::max(worst, std::abs(e));
     worst_H = std::max(worst_H, std::abs(hh.H(z) - hh.H(start)));
@@ -539,6 +536,12 @@ void ensemble_with(Context& ctx, const HH& hhk) {
     return e;
   });
   const double wall4 = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  for (std::size_t i = 0; i < M; ++i)
+    for (std::size_t k = 0; k < series[i].size(); ++k)
+      if (!std::isfinite(series[i][k]))
+        throw NumericalFailure("simplified_takahashi_imada: E of trajectory " + std::to_string(i) +
+                               " is not finite at step " + std::to_string(static_cast<std::int64_t>(k) * every4) +
+                               ", t = " + format_double(time_of(k)));
   const std::size_t ns = series[0].size();
   json reproduced;
   Csv f4s({"t", "mu", "sigma"});
@@ -903,6 +906,14 @@ void run_lj(Context& ctx) {
     return r;
   });
   const double wall6 = std::chrono::duration<double>(std::chrono::steady_clock::now() - tl0).count();
+  for (std::size_t i = 0; i < Ml; ++i)  // diverged as the scan counts it (|H - H0| beyond lj.blowup), or not finite
+    for (std::size_t k = 0; k < lj_series[i].E.size(); ++k)
+      if (!std::isfinite(lj_series[i].E[k]) || !std::isfinite(lj_series[i].Hhat[k]) ||
+          !(std::abs(lj_series[i].H[k]) <= s.real("lj.blowup")))
+        throw NumericalFailure("simplified_takahashi_imada at lj.h = " + format_double(hl) + ": trajectory " +
+                               std::to_string(i) + " diverged (|H - H0| = " + format_double(std::abs(lj_series[i].H[k])) +
+                               " > lj.blowup) by step " + std::to_string(static_cast<std::int64_t>(k) * every_l) +
+                               ", t = " + format_double(static_cast<double>(k) * static_cast<double>(every_l) * hl));
   Csv f6({"t", "mu", "sigma", "H_err_rms", "Hhat_err_rms", "Hhat_change_rms"});
   std::vector<double> ts, sigmas, H_rms, Hhat_rms, Hhat_change;
   const std::size_t nsl = lj_series[0].E.size();
@@ -1001,6 +1012,10 @@ void run_lj_steps(Context& ctx) {
     const double E0 = simplified_ti_modified_energy(lj, start, h);
     return simplified_ti_modified_energy(lj, integrate(simplified_ti_method(lj, false), start, h, steps_to(T, h)), h) - E0;
   });
+  for (std::size_t task = 0; task < err.size(); ++task)
+    if (!std::isfinite(err[task]))
+      throw NumericalFailure("simplified_takahashi_imada at h = " + format_double(hs[task / M]) +
+                             ": E of trajectory " + std::to_string(task % M) + " is not finite at t = " + format_double(T));
   Csv out({"h", "mu", "sigma", "sigma_stderr"});
   std::vector<double> log_h, log_sigma;
   json per_h = json::array();
@@ -1063,6 +1078,9 @@ std::vector<WpRow> wp_runs(const Scene& s, const std::string& method, const Sys&
       const RunTime t = time_runs(repeats, [&] { do_not_optimize(integrate_inlined(m, z0, h, n)); });
       return std::pair{error(integrate(m, z0, h, n)), t};
     });
+    if (!std::isfinite(err))
+      throw NumericalFailure(method + " at h = " + format_double(h) + ": the error at t = " +
+                             format_double(T) + " is not finite");
     rows.push_back({label_of(method), {h, static_cast<double>(n), rt.seconds(), static_cast<double>(evals), err}, rt.spread()});
   }
   return rows;
@@ -1224,6 +1242,244 @@ void run_timing(Context& ctx) {
   with_ensemble_system(ctx.scene, [&](const auto& hhk) { timing_with(ctx, hhk); });
 }
 
+// ---- Checks before any work, and what each study costs (--plan) ----
+
+// The step of the simplified method (and of the timed kernels) below the oscillatory bound the registry declares,
+// at the highest frequency omega of the motion linearised where the study runs (observables/stiffness.hpp).
+void check_step_bound(const Scene& s, const char* step_key, double h, double omega, const std::string& where) {
+  check_oscillatory_bound(s, step_key, step_key, "simplified_takahashi_imada", h * omega, where, "2 sqrt(3)");
+}
+
+// Fig. 2: the rotating pendulum passes every q, so omega^2 = max_q U''(q) (on a grid of 3600 angles).
+double pendulum_omega() {
+  const UnsymmetricPendulum up;
+  double w2 = 0;
+  for (int i = 0; i < 3600; ++i) w2 = std::max(w2, max_hessian_eigenvalue(up, Vec<1>(2 * std::numbers::pi * i / 3600)));
+  return std::sqrt(w2);
+}
+
+// The escape energy of U = (q1^2 + q2^2)/2 + c q1^2 q2 - q2^k/k: the lowest of its saddles, on the axis
+// (q1 = 0, |q2| = 1: U = 1/2 - 1/k) and, for c != 0, at q2 = -1/(2c), q1^2 = (q2^(k-1) - q2)/c where that is
+// positive (1/6 for k = 3, c = 1, the triangle of 004 Fig. 3). Below it the motion from a start inside stays bounded.
+template <class HH>
+double hh_escape_energy(const HH& hh) {
+  double e = 0.5 - 1.0 / hh.k;
+  if (hh.c != 0.0) {
+    const double q2 = -1 / (2 * hh.c), q1sq = (int_pow(q2, hh.k - 1) - q2) / hh.c;
+    if (q1sq > 0) e = std::min(e, hh.U(Vec<2>(std::sqrt(q1sq), q2)));
+  }
+  return e;
+}
+
+// The Henon-Heiles starts q1 = 0, q2 in [q2 - d, q2 + d], p2 in [p2 - d, p2 + d] (d: the ensemble's
+// perturbation, 0 for one start) lie in the bounded well below the escape energy: hh.H0 below it, every q2 between
+// the saddles on the axis (q2 < 1, and q2 > -1 for even k: U(0, .) is monotone on either side of 0 there, so
+// p1^2 = 2 (H0 - U(0, q2)) - p2^2 > 0 at the corners of the box holds on all of it), and the step h below the
+// bound at the frequency of the linearisation at the start, max eig U''(0, q2) (a necessary condition).
+template <class HH>
+void check_hh_starts(const Scene& s, const std::string& section, const HH& hh, double d, bool check_h) {
+  const double H0 = s.real("hh.H0"), q2 = s.real(section + ".q2"), p2 = s.real(section + ".p2");
+  const double escape = hh_escape_energy(hh);
+  if (!(H0 < escape))
+    s.reject("hh.H0", "must be below the escape energy " + format_double(escape) + " of U (k = " + std::to_string(hh.k) +
+                          ", c = " + format_double(hh.c) + ": its lowest saddle); here " + format_double(H0));
+  // the unperturbed start is blamed on its keys, a perturbed one on ensemble.perturbation
+  const auto inside = [&](double a) { return a < 1 && (hh.k % 2 == 1 || a > -1); };
+  const auto exists = [&](double a, double b) { return 2 * (H0 - hh.U(Vec<2>(0.0, a))) - b * b > 0; };
+  if (!inside(q2))
+    s.reject(section + ".q2", "the start must lie between the saddles of U on q1 = 0 (q2 < 1" +
+                                  std::string(hh.k % 2 ? "" : ", q2 > -1") + "); here q2 = " + format_double(q2));
+  if (!exists(q2, p2))
+    s.reject(section + ".p2", "the start q1 = 0, q2 = " + short_num(q2) + ", p2 = " + short_num(p2) + " (k = " +
+                                  std::to_string(hh.k) + ") needs U(0, q2) + p2^2/2 < hh.H0 = " + short_num(H0));
+  for (const double a : {q2 - d, q2 + d})
+    for (const double b : {p2 - d, p2 + d})
+      if (!inside(a) || !exists(a, b))
+        s.reject("ensemble.perturbation", "the perturbed start q1 = 0, q2 = " + short_num(a) + ", p2 = " + short_num(b) +
+                                              " must lie between the saddles of U on q1 = 0 with U(0, q2) + p2^2/2 < "
+                                              "hh.H0 = " + short_num(H0) + "; here " + format_double(d));
+  if (check_h)
+    check_step_bound(s, "h", s.real("h"), std::sqrt(max_hessian_eigenvalue(hh, Vec<2>(0.0, q2))),
+                     "omega^2 = max eig U''(0, " + section + ".q2), Henon-Heiles k = " + std::to_string(hh.k));
+}
+
+// The samples a run of n steps keeps: every max(1, floor(n / samples)) steps, from step 0.
+double kept_samples(double n, double samples) { return std::floor(n / std::max(1.0, std::floor(n / samples))) + 1; }
+
+void check_pendulum(const Scene& s) {
+  const double h = s.real("h"), t_end = s.real("pendulum.t_end");
+  check_step_bound(s, "h", h, pendulum_omega(), "omega^2 = max_q U''(q) of the pendulum of Fig. 2");
+  if (t_end / h < 1) s.reject("pendulum.t_end", "must be at least one step h = " + format_double(h));
+  if (!(t_end / h <= max_exact_count))  // before the windows below, which would blame fit_t
+    s.reject("pendulum.t_end", "at most 2^53 steps h = " + format_double(h) + " (here " + format_double(t_end / h) + ")");
+  const double n = std::round(t_end / h), every = std::max(1.0, std::floor(n / static_cast<double>(s.integer("samples"))));
+  if (!(s.real("pendulum.fit_t") <= t_end && s.real("pendulum.fit_t") >= 2 * every * h))
+    s.reject("pendulum.fit_t", "must lie in [2 sample intervals, pendulum.t_end] = [" + format_double(2 * every * h) + ", " +
+                                   format_double(t_end) + "] (the drift rate is fitted over t <= fit_t)");
+  const double rows = kept_samples(n, static_cast<double>(s.integer("samples")));
+  if (static_cast<double>(s.integer("pendulum.slope_windows")) * 2 > rows)
+    s.reject("pendulum.slope_windows", "must be at most half the " + format_double(rows) +
+                                           " samples of the run (each window fits a slope through at least 2)");
+}
+
+void check_hh3(const Scene& s) {
+  check_hh_starts(s, "hh3", HenonHeiles{{}, 3}, 0.0, true);
+  if (s.real("hh3.t_end") / s.real("h") < 2) s.reject("hh3.t_end", "must be at least two steps h");
+}
+
+void check_ensemble(const Scene& s) {
+  with_ensemble_system(s, [&](const auto& hh) { check_hh_starts(s, "hh3", hh, s.real("ensemble.perturbation"), true); });
+  const double h = s.real("h"), t_end = s.real("t_end");
+  if (t_end / h < 2) s.reject("t_end", "must be at least two steps h");
+  for (const char* key : {"ensemble.episode_half_width", "ensemble.episode_min_length"})
+    if (s.real(key) > t_end) s.reject(key, "must not exceed t_end = " + format_double(t_end));
+}
+
+void check_work_precision(const Scene& s) {
+  check_methods(s, "work_precision.methods", Counting<HenonHeiles>{HenonHeiles{{}, 3}, nullptr});
+  check_methods(s, "work_precision.methods", Counting<HarmonicOscillator>{kOscillator, nullptr});
+  check_hh_starts(s, "hh3", HenonHeiles{{}, 3}, 0.0, false);
+  for (const auto& m : s.texts("work_precision.methods"))
+    for (double h : s.reals("work_precision.h")) {
+      check_oscillatory_bound(s, "work_precision.h", "work_precision.methods", m, kOscillator.w * h, "the oscillator");
+      if (s.real("work_precision.t_end") / h < 1)
+        s.reject("work_precision.t_end", "must be at least one step of every work_precision.h");
+    }
+}
+
+// Fig. 6: lj.h below the bound at the stiffness of the unperturbed grid (omega^2 = 86.8; the perturbed starts and
+// the motion are stiffer: a run that diverges anyway ends with a numerical failure, exit 4).
+void check_lj(const Scene& s) {
+  const LJ lj;
+  Vec<18> grid_q;
+  for (int k = 0; k < 9; ++k) grid_q.segment<2>(2 * k) = lj_grid(k);
+  check_step_bound(s, "lj.h", s.real("lj.h"), std::sqrt(max_hessian_eigenvalue(lj, grid_q)),
+                   "omega^2 = max eig U'' at the 3 x 3 grid of Fig. 6");
+  if (s.real("lj.t_end") / s.real("lj.h") < 2) s.reject("lj.t_end", "must be at least two steps lj.h");
+  for (double h : s.reals("lj.h_scan"))
+    if (s.real("lj.scan_t") / h < 1) s.reject("lj.scan_t", "must be at least one step of every lj.h_scan");
+}
+
+void check_lj_steps(const Scene& s) {
+  const LJ lj;
+  Vec<18> grid_q;
+  for (int k = 0; k < 9; ++k) grid_q.segment<2>(2 * k) = lj_grid(k);
+  const double omega = std::sqrt(max_hessian_eigenvalue(lj, grid_q));
+  for (double h : s.reals("lj_steps.h")) {
+    check_step_bound(s, "lj_steps.h", h, omega, "omega^2 = max eig U'' at the 3 x 3 grid of Fig. 6");
+    if (s.real("lj_steps.t_end") / h < 1) s.reject("lj_steps.t_end", "must be at least one step of every lj_steps.h");
+  }
+}
+
+// ns per step and thread measured on this machine (the paper scene's summary.json, timing): the Henon-Heiles ensemble
+// (fig4_ns_per_step_thread, 24.3) and the Lennard-Jones ensemble with its processing (fig6_ns_per_step_thread, 348).
+constexpr double kNsPerStepHH = 24.3, kNsPerStepLJ = 348.0;
+const char* const kNsNote = "ns per step: measured (paper scene, summary.json timing.fig4/fig6_ns_per_step_thread)";
+
+std::int64_t evals_of(const std::string& m) { return evals_per_step(m); }
+
+StudyPlan plan_oscillator(const Scene& s) {
+  const double T = s.real("oscillator.t_omega") / kOscillator.w;
+  StudyPlan p;
+  double largest_ti = 0;
+  for (const auto& m : s.texts("oscillator.methods")) {
+    const double e = static_cast<double>(evals_of(m));
+    for (double wh : s.reals("oscillator.omega_h")) {
+      const double h = step_at_equal_work(wh, evals_of(m));
+      if (beyond_bound(kOscillator.w * h, method_info(m).oscillatory_bound)) continue;
+      p.steps += T / h, p.force_evals += e * T / h;
+      if (label_of(m) == "ti") largest_ti = std::max(largest_ti, wh);
+    }
+  }
+  const double sv_steps = T * kOscillator.w / method_info("stormer_verlet").oscillatory_bound;
+  p.steps += sv_steps + (largest_ti > 0 ? T / largest_ti : 0.0);
+  p.force_evals += sv_steps + (largest_ti > 0 ? 2 * T / largest_ti : 0.0);
+  p.memory_bytes = 16 * sv_steps + 1e5;  // the sampled growth of SV at its bound: 2 doubles per step
+  p.ns_per_step = 10.8;
+  p.note = "ns per step: Stormer-Verlet's (summary.json timing.ns_per_step.sv of the paper scene)";
+  return p;
+}
+
+StudyPlan plan_pendulum(const Scene& s) {
+  const double n = s.real("pendulum.t_end") / s.real("h"), e = static_cast<double>(evals_of("simplified_takahashi_imada"));
+  StudyPlan p;
+  p.steps = n + static_cast<double>(kReferenceSteps);
+  p.force_evals = e * n + 4 * static_cast<double>(kReferenceSteps);
+  p.memory_bytes = kept_samples(n, static_cast<double>(s.integer("samples"))) * (3 * 8 + 80);  // 3 series + the CSV rows
+  p.ns_per_step = kNsPerStepHH;
+  p.note = kNsNote;
+  return p;
+}
+
+StudyPlan plan_hh3(const Scene& s) {
+  const double n = s.real("hh3.t_end") / s.real("h");
+  return {n, n * static_cast<double>(evals_of("simplified_takahashi_imada")),
+          kept_samples(n, static_cast<double>(s.integer("samples"))) * (2 * 8 + 80), kNsPerStepHH, kNsNote};
+}
+
+StudyPlan plan_ensemble(const Scene& s) {
+  const double n = s.real("t_end") / s.real("h"), M = static_cast<double>(s.integer("ensemble.size"));
+  const double rows = kept_samples(n, static_cast<double>(s.integer("samples")));
+  // M trajectories and the rerun of the one with the largest error (Fig. 5); the series of all M, and the CSVs
+  return {(M + 1) * n, (M + 1) * n * static_cast<double>(evals_of("simplified_takahashi_imada")),
+          M * rows * 8 + rows * 200 + M * std::min(rows, 201.0) * 60, kNsPerStepHH, kNsNote};
+}
+
+StudyPlan plan_lj(const Scene& s) {
+  const double scan_t = s.real("lj.scan_t"), scan_size = static_cast<double>(s.integer("lj.scan_size"));
+  const double hl = s.real("lj.h"), n = s.real("lj.t_end") / hl, M = static_cast<double>(s.integer("lj.size"));
+  StudyPlan p;
+  for (double h : s.reals("lj.h_scan")) p.steps += scan_size * scan_t / h;
+  p.steps += scan_size * scan_t / hl + M * n;
+  p.force_evals = p.steps * static_cast<double>(evals_of("simplified_takahashi_imada"));
+  p.memory_bytes = M * kept_samples(n, static_cast<double>(s.integer("samples"))) * 3 * 8;  // E, H, H^ of each trajectory
+  p.ns_per_step = kNsPerStepLJ;
+  p.note = kNsNote;
+  return p;
+}
+
+StudyPlan plan_lj_steps(const Scene& s) {
+  const double M = static_cast<double>(s.integer("lj_steps.size"));
+  StudyPlan p;
+  for (double h : s.reals("lj_steps.h")) p.steps += M * s.real("lj_steps.t_end") / h;
+  p.force_evals = p.steps * static_cast<double>(evals_of("simplified_takahashi_imada"));
+  p.memory_bytes = M * static_cast<double>(s.reals("lj_steps.h").size()) * 8;
+  p.ns_per_step = kNsPerStepLJ;
+  p.note = kNsNote;
+  return p;
+}
+
+StudyPlan plan_work_precision(const Scene& s) {
+  // per method, problem and step: a counting run, an error run and timing.repeats timed runs (each repeated up to
+  // 10 ms: the steps here are a lower bound); the odeint reference not counted
+  const double T = s.real("work_precision.t_end"), runs = 2 + static_cast<double>(s.integer("timing.repeats"));
+  StudyPlan p;
+  for (const auto& m : s.texts("work_precision.methods"))
+    for (double h : s.reals("work_precision.h"))
+      p.steps += 2 * runs * T / h, p.force_evals += 2 * runs * T / h * static_cast<double>(evals_of(m));
+  p.memory_bytes = 1e5;
+  p.ns_per_step = kNsPerStepHH;
+  p.note = "a lower bound (timed runs last at least 10 ms each); " + std::string(kNsNote);
+  return p;
+}
+
+StudyPlan plan_symplecticity(const Scene& s) {
+  // per method: 16 central differences of one step; Sect. 3.3: 4 steps of each of two methods
+  const double m = static_cast<double>(s.texts("symplecticity.methods").size());
+  return {16 * m + 8, 2 * (16 * m + 8), 1e4, kNsPerStepHH, kNsNote};
+}
+
+StudyPlan plan_timing(const Scene& s) {
+  const double n = static_cast<double>(s.integer("timing.steps")), r = static_cast<double>(s.integer("timing.repeats"));
+  StudyPlan p;
+  for (const auto& m : s.texts("timing.methods"))
+    p.steps += (r + 1) * n, p.force_evals += (r + 1) * n * static_cast<double>(evals_of(m));
+  p.memory_bytes = 1e4;
+  p.ns_per_step = kNsPerStepHH;
+  p.note = "a lower bound (each timed run lasts at least 10 ms); " + std::string(kNsNote);
+  return p;
+}
+
 Schema schema() {
   Schema s;
   s.reals("oscillator.omega_h", positive(), 3,
@@ -1282,8 +1538,8 @@ Schema schema() {
       .reals("work_precision.h", positive(), 3, "steps of the work-precision runs (every method)")
       .real("work_precision.t_end", positive(), "the global error of a work-precision run is taken at this time")
       .real("work_precision.target", positive(), "target error of the cost to reach it")
-      .real("work_precision.reference_tol", positive(),
-            "odeint tolerance of the Henon-Heiles reference error estimate (the reference itself: 100 times tighter)")
+      .real("work_precision.reference_tol", {.gt = {}, .ge = 1e-13, .lt = {}, .le = 1e-2},
+            "odeint tolerance of the Henon-Heiles reference error estimate (the reference itself: 100 times tighter, so in [1e-15, 1e-4])")
       .texts("timing.methods", method_choices<HenonHeiles>(), 1,
              "methods timed (their kernels, on the Fig. 4 system; registry names or labels)")
       .integer("timing.steps", at_least(1), "steps of each timed run")
@@ -1299,37 +1555,37 @@ int main(int argc, char** argv) {
                       schema(), {}};
   spec.studies = {
       {"oscillator", "004 Fig 1", {"oscillator.csv", "oscillator_closed_forms.csv"}, {"oscillator"}, check_oscillator,
-       run_oscillator},
-      {"pendulum", "004 Fig 2", {"fig2_pendulum.csv", "fig2_local_slope.csv"}, {"h", "samples", "pendulum"}, nullptr, run_pendulum},
+       run_oscillator, plan_oscillator},
+      {"pendulum", "004 Fig 2", {"fig2_pendulum.csv", "fig2_local_slope.csv"}, {"h", "samples", "pendulum"}, check_pendulum, run_pendulum,
+       plan_pendulum},
       {"hh3", "004 Fig 3", {"fig3_hh3.csv"}, {"h", "samples", "hh3", "hh.H0"},
-       [](const Scene& s) { check_hh_start(s, "hh3", HenonHeiles{{}, 3}); },
-       run_hh3},
+       check_hh3, run_hh3, plan_hh3},
       {"ensemble", "004 Figs 4, 5", {"fig4_stats.csv", "fig4_trajectories.csv", "fig5_poincare.csv", "fig5_episodes.csv", "fig5_episode_cuts.csv"},
        {"h", "t_end", "samples", "hh", "ensemble", "hh3.q2", "hh3.p2"},
-       [](const Scene& s) { with_ensemble_system(s, [&](const auto& hh) { check_hh_start(s, "hh3", hh); }); },
-       run_ensemble},
-      {"lj", "004 Fig 6", {"fig6_*.csv"}, {"lj", "samples"}, nullptr, run_lj},
+       check_ensemble, run_ensemble, plan_ensemble},
+      {"lj", "004 Fig 6", {"fig6_*.csv"}, {"lj", "samples"}, check_lj, run_lj, plan_lj},
       {"lj_steps", "004 Fig 6: sigma against h (the printed step)", {"fig6_steps.csv"}, {"lj_steps", "lj.seed", "lj.perturbation"},
-       nullptr, run_lj_steps},
+       check_lj_steps, run_lj_steps, plan_lj_steps},
       {"work_precision", "cost: error against wall time and force evaluations (oscillator, Henon-Heiles k = 3)",
        {"timing_work_precision.csv"},
        {"work_precision", "timing.repeats", "hh3.q2", "hh3.p2", "hh.H0"},
-       [](const Scene& s) {
-         check_methods(s, "work_precision.methods", Counting<HenonHeiles>{HenonHeiles{{}, 3}, nullptr});
-         check_methods(s, "work_precision.methods", Counting<HarmonicOscillator>{kOscillator, nullptr});
-         check_hh_start(s, "hh3", HenonHeiles{{}, 3});
-       },
-       run_work_precision},
+       check_work_precision, run_work_precision, plan_work_precision},
       {"symplecticity", "004 Sect. 1.3: TI symplectic, the simplified TI only volume-preserving", {},
        {"symplecticity", "h", "hh.H0"},
        [](const Scene& s) {
          check_methods(s, "symplecticity.methods", symplecticity_system(s));
-         check_hh_start(s, "symplecticity", symplecticity_system(s));
+         check_hh_starts(s, "symplecticity", symplecticity_system(s), 0.0, true);
        },
-       run_symplecticity},
+       run_symplecticity, plan_symplecticity},
       {"timing", "cost: ns per step of each method", {},
        {"timing", "h", "hh", "hh3.q2", "hh3.p2", "ensemble.seed", "ensemble.perturbation"},
-       [](const Scene& s) { with_ensemble_system(s, [&](const auto& hh) { check_methods(s, "timing.methods", hh); }); }, run_timing},
+       [](const Scene& s) {
+         with_ensemble_system(s, [&](const auto& hh) {
+           check_methods(s, "timing.methods", hh);
+           check_hh_starts(s, "hh3", hh, s.real("ensemble.perturbation"), true);
+         });
+       },
+       run_timing, plan_timing},
   };
   return run_experiment(argc, argv, std::move(spec), GEOMINT_EXPERIMENT_DIR);
 }

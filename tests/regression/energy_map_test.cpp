@@ -306,3 +306,119 @@ TEST(EnergyMap, EveryTimedMeasurementReportsItsSpread) {
             t.rows.size());
   EXPECT_DOUBLE_EQ(spread["max"].get<double>(), largest);
 }
+
+// ---- Bad input: refused before any work (exit 2, one line naming the key or file, --out not created) ----
+
+namespace {
+
+struct Outcome {
+  int code;
+  std::string err;
+};
+
+Outcome run_energy_map(const std::string& args) {
+  const fs::path err = dir.parent_path() / "energy_map-refused.stderr";
+  const int status = std::system((std::string(GEOMINT_BIN_DIR) + "/energy_map " + args + " >/dev/null 2>" + err.string()).c_str());
+  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read(err)};
+}
+
+void expect_refused(const std::string& args, const std::vector<std::string>& needles) {
+  const fs::path out = dir.parent_path() / "energy_map-refused";
+  fs::remove_all(out), fs::remove_all(out.string() + ".partial");
+  const Outcome r = run_energy_map("--quick --out " + out.string() + " " + args);
+  EXPECT_EQ(r.code, 2) << args << "\n" << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  for (const auto& n : needles) EXPECT_NE(r.err.find(n), std::string::npos) << "missing '" << n << "' in: " << r.err;
+  EXPECT_FALSE(fs::exists(out)) << args;
+  EXPECT_FALSE(fs::exists(out.string() + ".partial")) << args;
+}
+
+// A map stopped after one round (exit 3), its checkpoint in DIR.partial, for the --resume tests.
+fs::path stopped_map(const std::string& name) {
+  const fs::path out = dir.parent_path() / name;
+  fs::remove_all(out), fs::remove_all(out.string() + ".partial");
+  const Outcome r = run_energy_map("--quick --study map --set grid.nx=48 --set grid.ny=48 --set checkpoint.stop_after=1 "
+                                   "--out " + out.string());
+  EXPECT_EQ(r.code, 3) << r.err;
+  return out;
+}
+
+}  // namespace
+
+// t_max / dt = 5e300 steps used to wrap round in int64 (-9.2e18 steps, exit 0).
+TEST(EnergyMap, RefusesAStepCountBeyond2To53) { expect_refused("--set t_max=1e300", {"t_max", "1e+300", "2^53"}); }
+TEST(EnergyMap, RefusesAWorkPrecisionRunBeyond2To53) {
+  expect_refused("--set cost.t_end=1e300", {"cost.t_end", "1e+300", "2^53"});
+}
+// 1e9 x 41 grid points: refused by the map's plan before any allocation (it was a bad_alloc, exit 1, after work).
+TEST(EnergyMap, RefusesAGridBeyondTheMemory) { expect_refused("--set grid.nx=1000000000", {"study map", "memory"}); }
+TEST(EnergyMap, RefusesTimingRepeatsBeyondAnInt) {
+  expect_refused("--set timing.repeats=2147483648", {"timing.repeats", "2147483648", "2147483647"});
+}
+TEST(EnergyMap, RefusesAStepAboveTheStabilityBound) { expect_refused("--set dt=3.0", {"dt", "unstable", "dt < 2"}); }
+
+// --plan of the paper scene: every study with a finite step count, and nothing run.
+TEST(EnergyMap, PlanOfThePaperSceneCountsEveryStudy) {
+  const fs::path out = dir.parent_path() / "energy_map-plan", listing = dir.parent_path() / "energy_map-plan.txt";
+  fs::remove_all(out);
+  ASSERT_EQ(std::system((std::string(GEOMINT_BIN_DIR) + "/energy_map --plan --out " + out.string() + " >" +
+                         listing.string() + " 2>/dev/null").c_str()), 0);
+  std::istringstream lines(read(listing));
+  std::map<std::string, double> steps;
+  for (std::string line; std::getline(lines, line);) {
+    std::istringstream in(line);
+    std::string study, count;
+    in >> study >> count;
+    if (study == "map" || study == "first_integrals" || study == "timing" || study == "cost") steps[study] = std::stod(count);
+  }
+  ASSERT_EQ(steps.size(), 4u) << read(listing);
+  for (const auto& [study, n] : steps) EXPECT_TRUE(std::isfinite(n) && n > 0) << study;
+  EXPECT_NEAR(steps["map"], 2.0 * 201 * 201 * 250000, 0.01 * steps["map"]);  // 2 n_x n_y t_max/dt, whole batches
+  EXPECT_FALSE(fs::exists(out));
+}
+
+// --resume with a checkpoint that counts more batches than the map has (it used to segfault).
+TEST(EnergyMap, ResumeRefusesACheckpointBeyondTheMap) {
+  const fs::path out = stopped_map("energy_map-ckpt-beyond"), ckpt = out.string() + ".partial/energy_map.checkpoint.json";
+  std::string c = read(ckpt);  // (edited as text: the scene's key order is part of what it is compared by)
+  const auto at = c.find("\"batches_done\":32");
+  ASSERT_NE(at, std::string::npos) << c;
+  c.replace(at, 17, "\"batches_done\":1000000");
+  std::ofstream(ckpt) << c;
+  const Outcome r = run_energy_map("--quick --study map --set grid.nx=48 --set grid.ny=48 --resume --out " + out.string());
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  EXPECT_NE(r.err.find(ckpt.string()), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("batches_done"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out));
+}
+
+// --resume with a header that is not JSON, or a points log shorter than its header counts: the file named, what to do.
+TEST(EnergyMap, ResumeRefusesACorruptCheckpoint) {
+  const std::string args = "--quick --study map --set grid.nx=48 --set grid.ny=48 --resume --out ";
+  {
+    const fs::path out = stopped_map("energy_map-ckpt-corrupt"), ckpt = out.string() + ".partial/energy_map.checkpoint.json";
+    std::ofstream(ckpt) << "{\"scene\": ";
+    const Outcome r = run_energy_map(args + out.string());
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find(ckpt.string()), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("delete"), std::string::npos) << r.err;
+  }
+  {
+    const fs::path out = stopped_map("energy_map-ckpt-short"), log = out.string() + ".partial/energy_map.checkpoint.points";
+    fs::resize_file(log, 1000);
+    const Outcome r = run_energy_map(args + out.string());
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find(log.string()), std::string::npos) << r.err;
+  }
+}
+
+// The checkpoint holds each finished batch once (O(grid), not rewritten in full each round): 32 bytes per
+// point of the batches its header counts.
+TEST(EnergyMap, CheckpointHoldsEachBatchOnce) {
+  const fs::path out = stopped_map("energy_map-ckpt-size");
+  const json c = json::parse(read(out.string() + ".partial/energy_map.checkpoint.json"));
+  EXPECT_EQ(c["batches_done"].get<std::size_t>(), 32u);
+  EXPECT_EQ(fs::file_size(out.string() + ".partial/energy_map.checkpoint.points"), 32u * 64u * 32u);
+}

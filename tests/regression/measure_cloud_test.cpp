@@ -4,15 +4,24 @@
 // ell + 2 (Corollary 4.3, on tiny clouds); on the free particle Phi^(0) drifts
 // in H where Phi^(4) does not (Figs 5.5, 5.6).
 #include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <sstream>
+#include <stdexcept>
+#include <vector>
 #include <fstream>
+#include <limits>
 #include <string>
 #include <utility>
 
 #include <nlohmann/json.hpp>
 
+#include "geomint/geometry/hull_volume.hpp"
 #include "geomint/methods/registry.hpp"
 #include "summary.hpp"
 
@@ -144,4 +153,125 @@ TEST(MeasureCloud, WorkPrecisionOrdersAndReference) {
   EXPECT_NEAR(w["phi0"]["order"].get<double>(), 2.0, 0.3);
   EXPECT_NEAR(w["rk4"]["order"].get<double>(), 4.0, 0.3);
   EXPECT_LT(w["reference_error"].get<double>(), 1e-10);
+}
+
+// ---- bad input: exit 2 before any work, one line naming the key, the value and what is allowed, nothing in --out;
+// a numerical failure: exit 4 ----
+namespace {
+namespace fs = std::filesystem;
+
+struct Outcome {
+  int code;
+  std::string err, out;
+};
+
+// Runs the experiment's binary with `args` (and --out DIR unless `plan`), stderr and stdout kept.
+Outcome run_measure_cloud(const std::string& args, const fs::path& out_dir) {
+  const fs::path work = fs::path(GEOMINT_TEST_RESULTS) / ("measure_cloud-cli-" + std::to_string(::getpid()));
+  fs::create_directories(work);
+  const fs::path err = work / "stderr.txt", out = work / "stdout.txt";
+  const std::string cmd = std::string(GEOMINT_BIN_DIR) + "/measure_cloud " + args +
+                          (out_dir.empty() ? "" : " --out " + out_dir.string()) + " >" + out.string() + " 2>" + err.string();
+  const int status = std::system(cmd.c_str());
+  const auto slurp = [](const fs::path& p) {
+    std::ifstream in(p);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+  };
+  Outcome o{WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(err), slurp(out)};
+  fs::remove_all(work);
+  return o;
+}
+
+// --quick --set `set`: exit `code`, the last line on stderr (the only one for code 2) holding every needle, no DIR
+// (nor DIR.partial) left.
+void expect_measure_cloud_exit(int code, const std::string& set, const std::vector<std::string>& needles) {
+  const fs::path out = fs::path(GEOMINT_TEST_RESULTS) / ("measure_cloud-refused-" + std::to_string(::getpid()));
+  fs::remove_all(out);
+  const Outcome r = run_measure_cloud("--quick --set '" + set + "'", out);
+  EXPECT_EQ(r.code, code) << set << "\n" << r.err;
+  // refused: the one line; a numerical failure: its last line (after the progress lines of the work done)
+  if (code == 2) EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  const std::string last = r.err.substr(r.err.rfind('\n', r.err.size() - 2) + 1);
+  for (const auto& n : needles) EXPECT_NE(last.find(n), std::string::npos) << "missing '" << n << "' in: " << r.err;
+  EXPECT_FALSE(fs::exists(out)) << set;
+  EXPECT_FALSE(fs::exists(out.string() + ".partial")) << set;
+}
+
+// --plan of the paper scene: exit 0, a line per study with a finite step count, nothing run.
+void expect_measure_cloud_plan(const std::vector<std::string>& studies, const std::string& scene = {}) {
+  const Outcome r = run_measure_cloud("--plan" + (scene.empty() ? std::string() : " --scene " + scene), {});
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (const auto& st : studies) {
+    std::istringstream lines(r.out);
+    std::string line;
+    bool found = false;
+    while (std::getline(lines, line)) {
+      std::istringstream words(line);
+      std::string name, steps;
+      if (!(words >> name >> steps) || name != st) continue;
+      found = true;
+      const double n = std::strtod(steps.c_str(), nullptr);
+      EXPECT_TRUE(std::isfinite(n) && n > 0 && n <= 9007199254740992.0) << st << ": " << line;
+    }
+    EXPECT_TRUE(found) << "no plan line for " << st << " in:\n" << r.out;
+  }
+}
+}  // namespace
+
+TEST(MeasureCloud, RefusesACloudRadiusBeyondANeighbourhood) {  // radius 1e300 once crashed Qhull
+  expect_measure_cloud_exit(2, "cloud.radius=1e300", {"cloud.radius = 1e+300", "<= 1"});
+  expect_measure_cloud_exit(2, "order_study.radius=10", {"order_study.radius = 10", "<= 1"});
+}
+TEST(MeasureCloud, RefusesAStepAtWhichNewtonDoesNotConverge) {  // h = 5 once failed after the work had started
+  expect_measure_cloud_exit(2, "h=5", {"h = 5", "Newton iteration of the conformal step"});
+  expect_measure_cloud_exit(2, "order_study.h=[5, 0.2, 0.1]", {"order_study.h", "Newton", "h = 5"});
+}
+TEST(MeasureCloud, RefusesAStepCountBeyond2To53) {
+  expect_measure_cloud_exit(2, "t_end=1e300", {"study volumes", "exceed 2^53"});
+  expect_measure_cloud_exit(2, "shape.snapshot_dt=1e300", {"study shape", "exceed 2^53"});  // once a segfault
+}
+TEST(MeasureCloud, RefusesAReferenceToleranceOutsideItsRange) {
+  expect_measure_cloud_exit(2, "reference.rtol=1e-300", {"reference.rtol", "1e-300", ">= 1e-15"});
+  expect_measure_cloud_exit(2, "reference.atol=1", {"reference.atol", "<= 0.01"});
+}
+TEST(MeasureCloud, PlanOfThePaperScenesCountsEveryStudy) {
+  expect_measure_cloud_plan({"shape", "volumes", "energies", "order_study", "cost"});
+  expect_measure_cloud_plan({"energies", "long_run"}, std::string(GEOMINT_SOURCE_DIR) + "/experiments/measure_cloud/free.toml");
+}
+// The hull refuses what Qhull cannot take, instead of crashing or printing its dump: a non-finite point, a cloud
+// beyond 1e100, a flat cloud (Qhull's own failure, its first line in the message).
+TEST(MeasureCloud, HullOfACloudQhullCannotTakeIsADomainError) {
+  std::vector<geomint::Point4> cloud;
+  for (int i = 0; i < 16; ++i)
+    cloud.push_back({static_cast<double>(i & 1), static_cast<double>((i >> 1) & 1), static_cast<double>((i >> 2) & 1),
+                     static_cast<double>((i >> 3) & 1)});
+  EXPECT_EQ(geomint::hull_facets(cloud).size() > 0, true);  // the unit tesseract
+  const auto refused = [](std::vector<geomint::Point4> points, const char* why) {
+    try {
+      geomint::hull_facets(points);
+      ADD_FAILURE() << "no error for a cloud with " << why;
+    } catch (const std::domain_error& e) {
+      EXPECT_NE(std::string(e.what()).find("not finite or beyond 1e100"), std::string::npos) << why << ": " << e.what();
+    }
+  };
+  auto bad = cloud;
+  bad[3][2] = std::nan("");
+  refused(bad, "a NaN");
+  bad = cloud;
+  bad[5][1] = std::numeric_limits<double>::infinity();
+  refused(bad, "an Inf");
+  bad = cloud;
+  for (auto& p : bad) p[0] *= 1e300;
+  refused(bad, "a width of 1e300");
+  bad = cloud;
+  for (auto& p : bad) p[3] = 0;  // flat: in a hyperplane
+  try {
+    geomint::hull_facets(bad);
+    ADD_FAILURE() << "a flat cloud has no 4-d hull";
+  } catch (const std::domain_error& e) {
+    EXPECT_NE(std::string(e.what()).find("Qhull failed"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("QH"), std::string::npos) << e.what();  // Qhull's message id
+  }
 }

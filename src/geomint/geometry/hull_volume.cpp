@@ -1,5 +1,7 @@
 #include "geomint/geometry/hull_volume.hpp"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <memory>
 #include <stdexcept>
@@ -19,14 +21,27 @@ std::vector<HullFacet> hull_facets(const std::vector<Point4>& points) {
   for (const Point4& p : points)
     for (int k = 0; k < 4; ++k) c[k] += p[k] / n;
   std::vector<coordT> coords(4 * points.size());
+  double width = 0;
+  bool finite = true;
   for (int i = 0; i < n; ++i)
-    for (int k = 0; k < 4; ++k) coords[4 * i + k] = points[i][k] - c[k];
+    for (int k = 0; k < 4; ++k) {
+      coords[4 * i + k] = points[i][k] - c[k];
+      finite = finite && std::isfinite(coords[4 * i + k]);
+      width = std::max(width, std::abs(coords[4 * i + k]));
+    }
+  // Qhull squares coordinates and has no defence against NaN or Inf: refuse what it cannot take.
+  if (!finite || width > 1e100)
+    throw std::domain_error("convex hull of " + std::to_string(n) + " points: a coordinate is not finite or beyond 1e100");
+  if (n < 5 || width == 0) throw std::domain_error("convex hull of " + std::to_string(n) + " points: the cloud is degenerate");
 
   auto qh_storage = std::make_unique<qhT>();
   qhT* qh = qh_storage.get();
-  qh_zero(qh, stderr);
+  // Qhull's messages go to a temporary file: its first line becomes the exception's text
+  const std::unique_ptr<std::FILE, int (*)(std::FILE*)> errfile(std::tmpfile(), &std::fclose);
+  std::FILE* err = errfile ? errfile.get() : stderr;
+  qh_zero(qh, err);
   char options[] = "qhull Qt";  // Qt: triangulated output, every facet a tetrahedron
-  const int exitcode = qh_new_qhull(qh, 4, n, coords.data(), False, options, nullptr, stderr);
+  const int exitcode = qh_new_qhull(qh, 4, n, coords.data(), False, options, nullptr, err);
   std::vector<HullFacet> facets;
   if (exitcode == 0) {
     facetT* facet;
@@ -48,7 +63,17 @@ std::vector<HullFacet> hull_facets(const std::vector<Point4>& points) {
   qh_freeqhull(qh, !qh_ALL);
   int curlong = 0, totlong = 0;
   qh_memfreeshort(qh, &curlong, &totlong);
-  if (exitcode != 0) throw std::runtime_error("Qhull failed on a cloud of " + std::to_string(n) + " points (exit code " + std::to_string(exitcode) + ")");
+  if (exitcode != 0) {
+    std::string first = "no message";
+    if (errfile) {
+      char line[512] = {};
+      std::rewind(err);
+      if (std::fgets(line, sizeof line, err)) first = line;
+      if (!first.empty() && first.back() == '\n') first.pop_back();
+    }
+    throw std::domain_error("Qhull failed on a cloud of " + std::to_string(n) + " points (exit code " +
+                            std::to_string(exitcode) + ": " + first + ")");
+  }
   if (facets.empty()) throw std::runtime_error("Qhull returned a facet that is not a tetrahedron");
   return facets;
 }

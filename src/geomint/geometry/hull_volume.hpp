@@ -14,7 +14,8 @@ namespace geomint {
 using HullFacet = std::array<int, 4>;  // indices into the point list
 
 // The boundary of conv(points) as tetrahedra (Qhull, reentrant API, option Qt).
-// Throws std::runtime_error if Qhull fails (e.g. a degenerate, flat cloud).
+// Throws std::domain_error for a cloud Qhull cannot take (a coordinate not finite or beyond 1e100 from the centroid,
+// fewer than 5 points, all equal) or on which it fails (with the first line of its message).
 std::vector<HullFacet> hull_facets(const std::vector<Point4>& points);
 
 // int_{conv(points)} rho over the simplices conv(apex, facet), apex inside the hull: the

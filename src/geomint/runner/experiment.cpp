@@ -312,8 +312,7 @@ std::string keys_help(const ExperimentSpec& spec, const std::string& dir) {
 // A study's counts, checked before any work: exactly representable as doubles (steps are
 // counted in 64-bit integers and t = n h), and memory the machine has.
 void check_plan(const Study& st, const StudyPlan& p) {
-  constexpr double exact = 9007199254740992.0;  // 2^53
-  if (!(p.steps <= exact) || !(p.force_evals <= exact))
+  if (!(p.steps <= max_exact_count) || !(p.force_evals <= max_exact_count))
     throw SceneError("study " + st.name + ": " + fmt_count(p.steps) + " steps (" + fmt_count(p.force_evals) +
                      " force evaluations) exceed 2^53; shorten the run or enlarge the step");
   const double available = available_memory_bytes();
@@ -533,6 +532,10 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
     std::cerr << name << ": stopped: " << e.what() << " (kept in " << results->staging_path().string()
               << "; " << results->final_path().string() << " is unchanged)\n";
     return 3;
+  } catch (const SceneError& e) {  // bad input found once the run has begun (e.g. a corrupt checkpoint)
+    std::cerr << name << ": bad input: " << e.what() << " (kept in " << results->staging_path().string() << "; "
+              << results->final_path().string() << " is unchanged)\n";
+    return 2;
   } catch (const NumericalFailure& e) {
     results->discard();
     std::cerr << name << ": numerical failure: " << e.what() << " (" << results->final_path().string()

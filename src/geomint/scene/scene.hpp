@@ -38,6 +38,11 @@ inline Bound positive() { return {.gt = 0.0, .ge = {}, .lt = {}, .le = {}}; }
 inline Bound non_negative() { return {.gt = {}, .ge = 0.0, .lt = {}, .le = {}}; }
 inline Bound any_finite() { return {}; }
 inline Bound at_least(double lo) { return {.gt = {}, .ge = lo, .lt = {}, .le = {}}; }
+// A tolerance of a reference solution: tighter than 1e-15 is below round-off, looser than 1e-2 is no reference.
+inline Bound tolerance() { return {.gt = {}, .ge = 1e-15, .lt = {}, .le = 1e-2}; }
+// The largest count of steps or evaluations a scene may ask for: 2^53, up to which counts are exact in
+// a double (steps are counted in 64-bit integers, t = n h).
+inline constexpr double max_exact_count = 9007199254740992.0;
 
 class Schema {
  public:
