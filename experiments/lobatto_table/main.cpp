@@ -39,6 +39,7 @@
 #include "geomint/runner/published.hpp"
 #include "geomint/runner/timing.hpp"
 #include "geomint/runner/timing_report.hpp"
+#include "geomint/runner/checkpoint.hpp"
 #include "geomint/sweep/parallel_map.hpp"
 #include "geomint/systems/counting.hpp"
 #include "geomint/systems/elastic_pendulum.hpp"
@@ -142,7 +143,10 @@ Schema schema() {
       .reals("long_run_cost.error_targets", positive(), 1,
              "phase errors at the end of the long run whose cost (wall time, force evaluations) each method is asked for")
       .integer("long_run_cost.timing_steps", at_least(1),
-               "steps of the timed segment; a long run's wall time is its steps times the time per step measured on it");
+               "steps of the timed segment; a long run's wall time is its steps times the time per step measured on it")
+      .integer("checkpoint.stop_after", non_negative(),
+               "long_run_cost: stop after this many rounds of its runs, leaving a checkpoint for --resume (0: run to the "
+               "end)");
   return s;
 }
 
@@ -813,8 +817,18 @@ void run_long_run_cost(Context& ctx) {
     std::int64_t evals = 0;
     double energy = 0, phase = 0;
   };
+  struct MeasuredCodec {  // evals (exact in a double below 2^53), energy, phase
+    void encode(const Measured& r, std::vector<double>& out) const {
+      out.insert(out.end(), {static_cast<double>(r.evals), r.energy, r.phase});
+    }
+    Measured decode(std::span<const double> v) const {
+      if (v.size() != 3) throw std::invalid_argument("a record of " + std::to_string(v.size()) + " values, not 3");
+      return {static_cast<std::int64_t>(v[0]), v[1], v[2]};
+    }
+  };
   const std::size_t nh = hs.size();
-  const auto measured = parallel_map(methods.size() * nh, [&](std::size_t task) {
+  const std::vector<std::string> keys = {"oscillator", "long_run.periods", "long_run_cost.methods", "long_run_cost.h"};
+  const auto measured = checkpointed_map<Measured>(ctx, {"long_run_cost", keys}, methods.size() * nh, [&](std::size_t task) {
     Measured r;
     const double h = hs[task % nh];
     const std::int64_t n = steps_of(h);
@@ -825,7 +839,7 @@ void run_long_run_cost(Context& ctx) {
     });
     r.phase = phase_distance(zN, osc.exact(z0, static_cast<double>(n) * h));
     return r;
-  });
+  }, MeasuredCodec{});
   // Wall time of the same runs without observation, serial (runner/timing.hpp).
   Csv cost({"method", "h", "steps", "wall_s", "ns_per_step", "force_evals", "phase_err", "energy_err", "wall_spread"});
   SpreadTally spreads;
@@ -1009,7 +1023,7 @@ int main(int argc, char** argv) {
        {"timing", "nonlinear.h", "nonlinear.t_end", "nonlinear.pendulum_q0", "reference"},
        check_timing, run_timing, plan_timing},
       {"long_run_cost", "cost over the long run of Fig 2: error against wall time and force evaluations",
-       {"timing_long_run.csv"}, {"long_run_cost", "long_run.periods", "oscillator", "timing.repeats"},
+       {"timing_long_run.csv"}, {"long_run_cost", "long_run.periods", "oscillator", "timing.repeats", "checkpoint"},
        check_long_run_cost, run_long_run_cost, plan_long_run_cost},
   };
   return run_experiment(argc, argv, std::move(spec), GEOMINT_EXPERIMENT_DIR);

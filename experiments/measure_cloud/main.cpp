@@ -37,6 +37,7 @@
 #include "geomint/reference/odeint_reference.hpp"
 #include "geomint/runner/experiment.hpp"
 #include "geomint/runner/timing.hpp"
+#include "geomint/runner/checkpoint.hpp"
 #include "geomint/sweep/parallel_map.hpp"
 #include "geomint/systems/nonholonomic_golden.hpp"
 #include "geomint/systems/nonholonomic_modified_series.hpp"
@@ -106,6 +107,9 @@ Schema schema() {
       .real("reference.rtol", tolerance(), "tolerances of the odeint Bulirsch-Stoer reference on (3.8)")
       .real("reference.atol", tolerance(), "")
       .integer("timing.repeats", at_least(1), "timed runs of >= 10 ms each (the minimum is the estimate)")
+      .integer("checkpoint.stop_after", non_negative(),
+               "volumes, order_study: stop after this many rounds of reference paths or cloud runs, leaving a "
+               "checkpoint for --resume (0: run to the end)")
       .text("cost.discretization", method_choices(),
             "the discrete Lagrangian (5.1) of Phi^(4) and Phi^(0) in the comparison with RK4")
       .reals("cost.rk4_h", positive(), 3, "steps of the classical RK4 on (3.8), the baseline that preserves neither")
@@ -508,9 +512,30 @@ void run_shape(Context& ctx) {
 
 // ---- Figs 5.2 and 5.4: hull volumes of the 600-cell cloud under Phi^(ell) and the reference ----
 
-// Hull volumes in mu of the images of `cloud` under the reference flow at t_j = j h, j = 0..n.
-std::vector<double> reference_volumes(const PhiStudy& p, const std::vector<Point4>& cloud, std::int64_t n) {
-  const auto paths = parallel_map(cloud.size(), [&](std::size_t i) { return reference_samples(p.sys, cloud[i], p.h, n, p.rtol, p.atol); });
+// A reference path as doubles (its points one after the other), for a checkpoint.
+struct PathCodec {
+  void encode(const std::vector<Point4>& path, std::vector<double>& out) const {
+    for (const Point4& z : path) out.insert(out.end(), z.begin(), z.end());
+  }
+  std::vector<Point4> decode(std::span<const double> v) const {
+    if (v.size() % 4 != 0) throw std::invalid_argument("a record of " + std::to_string(v.size()) + " values, not points of 4");
+    std::vector<Point4> path(v.size() / 4);
+    for (std::size_t j = 0; j < path.size(); ++j) std::copy_n(v.begin() + static_cast<std::ptrdiff_t>(4 * j), 4, path[j].begin());
+    return path;
+  }
+};
+
+// The scene keys the reference paths of the volumes study depend on (their checkpoints).
+const std::vector<std::string> kReferencePathKeys = {"potential", "cloud.center", "cloud.radius", "h",
+                                                     "t_end",     "ptp_window",   "reference"};
+
+// Hull volumes in mu of the images of `cloud` under the reference flow at t_j = j h, j = 0..n; the
+// paths kept in the checkpoint `name`.
+std::vector<double> reference_volumes(Context& ctx, const std::string& name, const PhiStudy& p,
+                                      const std::vector<Point4>& cloud, std::int64_t n) {
+  const auto paths = checkpointed_map<std::vector<Point4>>(
+      ctx, {name, kReferencePathKeys}, cloud.size(),
+      [&](std::size_t i) { return reference_samples(p.sys, cloud[i], p.h, n, p.rtol, p.atol); }, PathCodec{});
   std::vector<Trajectory> per_point;
   for (const auto& z : paths) per_point.push_back(Trajectory{z, 0});
   const CloudRun ref = transpose(per_point);
@@ -535,7 +560,7 @@ void cloud_volumes(Context& ctx, const PhiStudy& p, const std::vector<Point4>& c
     else ctx.summary["reproduced"][nest][key] = std::move(value);
   };
   ctx.progress("Figs 5.2, 5.4: reference, " + std::to_string(cloud.size()) + " points");
-  const std::vector<double> ref_volumes = reference_volumes(p, cloud, n);
+  const std::vector<double> ref_volumes = reference_volumes(ctx, nest.empty() ? "volumes.reference" : "volumes.reference_" + nest, p, cloud, n);
   const std::vector<double> ref_relative = relative_volumes(ref_volumes, ref_volumes.size());
   put_here("cloud_points", cloud.size());
   put_here("ptp_reference_mu", relative_peak_to_peak(ref_volumes, window));
@@ -607,7 +632,7 @@ void run_volumes(Context& ctx) {
       hull_integral(cloud, facets0, cloud.front(), [](const Point4&) { return 1.0; }) / std::pow(r, 4));
   put(ctx, "reproduced", "hull_volume_exact_over_r4", six_hundred_cell_volume(1.0));
   const auto small = cloud_around(p.z0, six_hundred_cell_vertices(), artefact_radius_fraction * r);
-  const std::vector<double> small_volumes = reference_volumes(p, small, steps_in(s.real("ptp_window"), p.h));
+  const std::vector<double> small_volumes = reference_volumes(ctx, "volumes.reference_small", p, small, steps_in(s.real("ptp_window"), p.h));
   const double ptp_small = relative_peak_to_peak(small_volumes, small_volumes.size());
   put(ctx, "reproduced", "artefact_radius_fraction", artefact_radius_fraction);
   put(ctx, "reproduced", "ptp_reference_mu_small_radius", ptp_small);
@@ -746,7 +771,17 @@ void run_order_study(Context& ctx) {
     double ptp;
     std::int64_t iterations, steps;
   };
-  const auto results = parallel_map(tasks.size(), [&](std::size_t t) {
+  struct ResultCodec {  // ptp, iterations, steps (counts exact in a double below 2^53)
+    void encode(const Result& r, std::vector<double>& out) const {
+      out.insert(out.end(), {r.ptp, static_cast<double>(r.iterations), static_cast<double>(r.steps)});
+    }
+    Result decode(std::span<const double> v) const {
+      if (v.size() != 3) throw std::invalid_argument("a record of " + std::to_string(v.size()) + " values, not 3");
+      return {v[0], static_cast<std::int64_t>(v[1]), static_cast<std::int64_t>(v[2])};
+    }
+  };
+  const std::vector<std::string> keys = {"potential", "cloud.center", "methods", "order_study", "ptp_window"};
+  const auto results = checkpointed_map<Result>(ctx, {"order_study", keys}, tasks.size(), [&](std::size_t t) {
     const Task& T = tasks[t];
     const bool probe = T.e == es.size();
     const double hh = probe ? h_probe : hs[T.i];
@@ -758,7 +793,7 @@ void run_order_study(Context& ctx) {
     for (const auto& snap : run.snapshots) v.push_back(hull_volumes(snap, ms, {ell})[0]);
     return Result{relative_peak_to_peak(v, static_cast<std::size_t>(steps_in(s.real("ptp_window"), hh)) + 1), run.iterations,
                   run.steps};
-  });
+  }, ResultCodec{});
   Csv csv({"method", "ell", "h", "ptp"});
   double noise = 0;
   for (std::size_t t = 0; t < tasks.size(); ++t) {
@@ -1079,7 +1114,7 @@ int main(int argc, char** argv) {
        with({"seed", "shape", "h", "methods"}),
        [](const Scene& s) { check_first_step(s, "h", {s.real("h")}); }, run_shape, plan_shape},
       {"volumes", "003 Figs 5.2, 5.4", {"volumes_phi*.csv", "volumes_authors_phi*.csv"},
-       with({"h", "methods", "t_end", "ptp_window", "cloud"}),
+       with({"h", "methods", "t_end", "ptp_window", "cloud", "checkpoint"}),
        check_volumes, run_volumes, plan_volumes},
       {"energies", "003 Figs 5.3, 5.5, 5.6", {"energies_phi*.csv"}, with({"h", "methods", "energies"}),
        [](const Scene& s) {
@@ -1095,7 +1130,7 @@ int main(int argc, char** argv) {
        },
        run_long_run, plan_long_run},
       {"order_study", "order of measure preservation (003 Cor. 4.3)", {"order_study.csv"},
-       with({"methods", "order_study", "ptp_window"}, false), check_order_study, run_order_study,
+       with({"methods", "order_study", "ptp_window", "checkpoint"}, false), check_order_study, run_order_study,
        plan_order_study},
       // the cost runs take the steps of the order study to the end time of the energies
       {"cost", "error against wall time of each discretization; Phi^(4) against Phi^(0) and RK4 at equal cost",

@@ -43,6 +43,7 @@
 #include "geomint/runner/experiment.hpp"
 #include "geomint/runner/published.hpp"
 #include "geomint/runner/timing.hpp"
+#include "geomint/runner/checkpoint.hpp"
 #include "geomint/sweep/parallel_map.hpp"
 #include "geomint/systems/counting.hpp"
 #include "geomint/systems/hamiltonian_field.hpp"
@@ -514,6 +515,9 @@ std::vector<std::size_t> all_of(std::size_t M) {
 }
 
 constexpr std::size_t kPoincareWindows = 20;  // Fig. 5: the run of the trajectory is cut into this many windows
+// The scene keys the ensemble's series depend on (its checkpoint).
+const std::vector<std::string> kEnsembleKeys = {"h", "t_end", "samples", "hh", "ensemble.size", "ensemble.seed",
+                                                "ensemble.perturbation", "hh3.q2", "hh3.p2"};
 
 template <class HH>
 void ensemble_with(Context& ctx, const HH& hhk) {
@@ -526,8 +530,8 @@ void ensemble_with(Context& ctx, const HH& hhk) {
   const auto time_of = [&](std::size_t k) { return static_cast<double>(k) * static_cast<double>(every4) * h; };
   std::vector<Z2> starts(M);
   for (std::size_t i = 0; i < M; ++i) starts[i] = ensemble_start(s, hhk, i);
-  const auto t0 = std::chrono::steady_clock::now();
-  const auto series = parallel_map(M, [&](std::size_t i) {
+  const auto t0 = std::chrono::steady_clock::now();  // (on --resume: the part run since)
+  const auto series = checkpointed_map<std::vector<double>>(ctx, {"ensemble", kEnsembleKeys}, M, [&](std::size_t i) {
     std::vector<double> e;
     const double E0 = simplified_ti_modified_energy(hhk, starts[i], h);
     integrate(simplified_ti_method(hhk, false), starts[i], h, n4, [&](std::int64_t j, const Z2& z) {
@@ -889,11 +893,22 @@ void run_lj(Context& ctx) {
   // The ensemble at lj.h: E error (3.3)+(4.2), H error, and H at the processed variables (1.5).
   const auto Ml = static_cast<std::size_t>(s.integer("lj.size"));
   const std::int64_t nl = steps_to(s.real("lj.t_end"), hl), every_l = std::max<std::int64_t>(1, nl / samples);
-  const auto tl0 = std::chrono::steady_clock::now();
+  const auto tl0 = std::chrono::steady_clock::now();  // (on --resume: the part run since)
   struct Series {
     std::vector<double> E, H, Hhat;
   };
-  const auto lj_series = parallel_map(Ml, [&](std::size_t i) {
+  struct SeriesCodec {  // E, H, Hhat one after the other (of equal length)
+    void encode(const Series& r, std::vector<double>& out) const {
+      for (const auto* v : {&r.E, &r.H, &r.Hhat}) out.insert(out.end(), v->begin(), v->end());
+    }
+    Series decode(std::span<const double> v) const {
+      if (v.size() % 3 != 0) throw std::invalid_argument("a record of " + std::to_string(v.size()) + " values, not 3 series");
+      const auto k = static_cast<std::ptrdiff_t>(v.size() / 3);
+      return {{v.begin(), v.begin() + k}, {v.begin() + k, v.begin() + 2 * k}, {v.begin() + 2 * k, v.end()}};
+    }
+  };
+  const std::vector<std::string> series_keys = {"samples", "lj.h", "lj.t_end", "lj.size", "lj.seed", "lj.perturbation"};
+  const auto lj_series = checkpointed_map<Series>(ctx, {"lj", series_keys}, Ml, [&](std::size_t i) {
     Series r;
     const Z18 start = lj_start(i);
     const double E0 = simplified_ti_modified_energy(lj, start, hl), Hs = lj.H(start);
@@ -904,7 +919,7 @@ void run_lj(Context& ctx) {
       r.Hhat.push_back(lj.H(ti_process(lj, z, hl, takahashi_imada_alpha)) - Hs);
     });
     return r;
-  });
+  }, SeriesCodec{});
   const double wall6 = std::chrono::duration<double>(std::chrono::steady_clock::now() - tl0).count();
   for (std::size_t i = 0; i < Ml; ++i)  // diverged as the scan counts it (|H - H0| beyond lj.blowup), or not finite
     for (std::size_t k = 0; k < lj_series[i].E.size(); ++k)
@@ -1521,6 +1536,9 @@ Schema schema() {
       .real("lj.h", positive(), "Fig. 6: the step used for the statistics")
       .real("lj.t_end", positive(), "Fig. 6 time span (004: 2e4)")
       .integer("lj.size", at_least(2), "Fig. 6 trajectories (004: 400)")
+      .integer("checkpoint.stop_after", non_negative(),
+               "ensemble, lj: stop after this many rounds of trajectories, leaving a checkpoint for --resume (0: run to "
+               "the end)")
       .integer("lj.seed", non_negative(), "seed; trajectory i uses its own stream (seed, i)")
       .real("lj.perturbation", non_negative(), "each coordinate of the 3 x 3 grid perturbed uniformly by at most this (004: 0.01)")
       .real("lj.blowup", positive(), "|H - H0| above this marks a scan run diverged")
@@ -1561,9 +1579,9 @@ int main(int argc, char** argv) {
       {"hh3", "004 Fig 3", {"fig3_hh3.csv"}, {"h", "samples", "hh3", "hh.H0"},
        check_hh3, run_hh3, plan_hh3},
       {"ensemble", "004 Figs 4, 5", {"fig4_stats.csv", "fig4_trajectories.csv", "fig5_poincare.csv", "fig5_episodes.csv", "fig5_episode_cuts.csv"},
-       {"h", "t_end", "samples", "hh", "ensemble", "hh3.q2", "hh3.p2"},
+       {"h", "t_end", "samples", "hh", "ensemble", "hh3.q2", "hh3.p2", "checkpoint"},
        check_ensemble, run_ensemble, plan_ensemble},
-      {"lj", "004 Fig 6", {"fig6_*.csv"}, {"lj", "samples"}, check_lj, run_lj, plan_lj},
+      {"lj", "004 Fig 6", {"fig6_*.csv"}, {"lj", "samples", "checkpoint"}, check_lj, run_lj, plan_lj},
       {"lj_steps", "004 Fig 6: sigma against h (the printed step)", {"fig6_steps.csv"}, {"lj_steps", "lj.seed", "lj.perturbation"},
        check_lj_steps, run_lj_steps, plan_lj_steps},
       {"work_precision", "cost: error against wall time and force evaluations (oscillator, Henon-Heiles k = 3)",

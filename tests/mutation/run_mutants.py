@@ -27,8 +27,8 @@ import tomllib
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
-# The `*.figures` tests render plots and assert no number; leave them out.
-DEFAULT_EXCLUDE = r"\.figures$"
+# The `*.figures` tests render plots and assert no number, the `faults.*` tests refusals and kills: leave them out.
+DEFAULT_EXCLUDE = r"\.figures$|^faults\."
 
 
 def load_mutants(path):

@@ -255,3 +255,10 @@ TEST(LobattoTable, RefuseSingularElasticInitialCondition) {
 TEST(LobattoTable, PlanOfThePaperSceneHasFiniteStepCounts) {
   expect_lobatto_table_plan({"table1", "figure1", "long_run", "stability", "nonlinear", "timing", "long_run_cost"});
 }
+
+// Checkpoints (runner/checkpoint.hpp): the long runs of the cost study, stopped after one round and resumed (on 1
+// thread), give the files of a run straight through (timing_long_run.csv holds wall times: only summary.json's
+// errors and counts are compared).
+TEST(LobattoTable, ResumedLongRunCostGivesTheSameResults) {
+  expect_resume_identical("lobatto_table", "--quick --study long_run_cost", 1, "long_run_cost");
+}

@@ -275,3 +275,16 @@ TEST(MeasureCloud, HullOfACloudQhullCannotTakeIsADomainError) {
     EXPECT_NE(std::string(e.what()).find("QH"), std::string::npos) << e.what();  // Qhull's message id
   }
 }
+
+// Checkpoints (runner/checkpoint.hpp): the reference paths of the volumes study and the cloud runs of the order
+// study, stopped after one round and resumed (on 1 thread), give the files of a run straight through.
+TEST(MeasureCloud, ResumedVolumesGiveTheSameFiles) {
+  expect_resume_identical("measure_cloud",
+                          "--quick --study volumes --set t_end=3 --set ptp_window=2 --set 'methods=[\"conformal_M\"]'", 1,
+                          "volumes");
+}
+TEST(MeasureCloud, ResumedOrderStudyGivesTheSameFiles) {
+  expect_resume_identical("measure_cloud",
+                          "--quick --study order_study --set order_study.t_end=3 --set ptp_window=2 --set 'methods=[\"conformal_M\"]' "
+                          "--set 'order_study.h=[0.25, 0.125, 0.0625]'", 1, "order_study");
+}

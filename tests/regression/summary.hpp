@@ -1,14 +1,19 @@
 #pragma once
 // The summary.json and CSV files of an experiment's quick run (the ctest fixture <name>.quick_run).
+#include <sys/wait.h>
+
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <cstdlib>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 inline std::filesystem::path results_dir(const std::string& experiment) {
@@ -70,4 +75,47 @@ inline double largest_spread(const CsvFile& t) {
     largest = std::max(largest, s);
   }
   return largest;
+}
+
+// Checkpoints (runner/checkpoint.hpp): `experiment` with `args` (a scene, a study, small --set values) stopped
+// after one round (checkpoint.stop_after = 1: exit 3, the results directory DIR as it was, a *.checkpoint.json in
+// DIR.partial), resumed with --threads `resume_threads`, gives the CSV files and summary.json (its timing aside)
+// of a run straight through on 2 threads; DIR then holds no checkpoint and DIR.partial is gone.
+inline void expect_resume_identical(const std::string& experiment, const std::string& args, int resume_threads,
+                                    const std::string& tag) {
+  namespace fs = std::filesystem;
+  const auto read = [](const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  const auto run = [&](const std::string& more, const fs::path& out) {
+    const int status = std::system((std::string(GEOMINT_BIN_DIR) + "/" + experiment + " " + args + " " + more +
+                                    " --out " + out.string() + " >/dev/null 2>" + out.string() + ".stderr").c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+  };
+  const fs::path a = results_dir(experiment + "-resume-" + tag), b = results_dir(experiment + "-straight-" + tag);
+  const fs::path partial = a.string() + ".partial";
+  fs::remove_all(a), fs::remove_all(partial), fs::remove_all(b);
+  fs::create_directories(a);  // an earlier result, which a stopped run leaves as it was
+  std::ofstream(a / "run.json") << "{\"experiment\": \"" << experiment << "\"}\n";
+  ASSERT_EQ(run("--threads 2 --set checkpoint.stop_after=1", a), 3) << read(a.string() + ".stderr");
+  const std::string stopped = read(a.string() + ".stderr");
+  EXPECT_NE(stopped.find("continue with: "), std::string::npos) << stopped;
+  EXPECT_NE(stopped.find("--resume"), std::string::npos) << stopped;
+  EXPECT_EQ(std::distance(fs::directory_iterator(a), fs::directory_iterator{}), 1);
+  int checkpoints = 0;
+  for (const auto& e : fs::directory_iterator(partial)) checkpoints += e.path().string().ends_with(".checkpoint.json");
+  EXPECT_GE(checkpoints, 1);
+  ASSERT_EQ(run("--threads " + std::to_string(resume_threads) + " --resume", a), 0) << read(a.string() + ".stderr");
+  ASSERT_EQ(run("--threads 2", b), 0) << read(b.string() + ".stderr");
+  EXPECT_FALSE(fs::exists(partial));
+  for (const auto& e : fs::directory_iterator(b)) {
+    const std::string f = e.path().filename().string();
+    if (!f.ends_with(".csv") || f.starts_with("timing")) continue;
+    EXPECT_EQ(read(a / f), read(e.path())) << f;
+  }
+  for (const auto& e : fs::directory_iterator(a)) EXPECT_EQ(e.path().string().find(".checkpoint."), std::string::npos) << e.path();
+  auto sa = nlohmann::json::parse(read(a / "summary.json")), sb = nlohmann::json::parse(read(b / "summary.json"));
+  sa.erase("timing"), sb.erase("timing");
+  EXPECT_EQ(sa, sb);
 }

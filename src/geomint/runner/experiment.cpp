@@ -22,6 +22,7 @@
 
 #include "geomint/integrators/newton.hpp"
 #include "geomint/io/run_info.hpp"
+#include "geomint/runner/checkpoint.hpp"
 #include "geomint/runner/published.hpp"
 
 namespace geomint {
@@ -273,30 +274,67 @@ std::string studies_help(const ExperimentSpec& spec) {
   return s;
 }
 
-std::string keys_help(const ExperimentSpec& spec, const std::string& dir) {
+// Every scene key: its type, what it admits, its default (the paper scene's value; null where the paper
+// scene has none), its meaning and the studies that read it (--list-keys --json, and --help).
+nlohmann::ordered_json keys_json(const ExperimentSpec& spec, const std::string& dir) {
   const auto paper = paper_scene(spec, dir);
-  const auto json = paper ? paper->to_json() : nlohmann::ordered_json();
-  std::string s = "\nScene keys (default: the paper scene " + dir + "/" + spec.name +
-                  ".toml; override any with --set key=value):\n";
-  for (const auto& e : spec.schema.entries()) {
-    std::string users;
-    for (const auto& st : spec.studies)
-      if (key_under(e.key, st.uses)) users += (users.empty() ? "" : ", ") + st.name;
-    std::string def = "(none)";
-    if (paper && paper->has(e.key)) {
-      const auto ptr = nlohmann::ordered_json::json_pointer("/" + [&] {
-        std::string p = e.key;
-        std::replace(p.begin(), p.end(), '.', '/');
-        return p;
-      }());
-      def = json.at(ptr).dump();
+  const auto scene = paper ? paper->to_json() : nlohmann::ordered_json();
+  const auto schema_type = [](Schema::Type t) {
+    switch (t) {
+      case Schema::Type::real: return "real";
+      case Schema::Type::integer: return "integer";
+      case Schema::Type::reals: return "reals";
+      case Schema::Type::real_rows: return "real_rows";
+      case Schema::Type::boolean: return "boolean";
+      case Schema::Type::text: return "text";
+      case Schema::Type::texts: return "texts";
     }
-    s += "  " + e.key + "  (" + type_name(e.type);
-    const std::string allowed = allowed_values(e);
-    if (!allowed.empty()) s += "; " + allowed;
-    s += ")  default " + def + "\n";
-    if (!e.doc.empty()) s += "      " + e.doc + "\n";
-    if (!users.empty() && e.key != kStudiesKey) s += "      used by: " + users + "\n";
+    return "?";
+  };
+  auto keys = nlohmann::ordered_json::array();
+  for (const auto& e : spec.schema.entries()) {
+    nlohmann::ordered_json k = {{"key", e.key}, {"type", schema_type(e.type)}, {"type_name", type_name(e.type)},
+                                {"allowed", allowed_values(e)}};
+    const bool numeric = e.type == Schema::Type::real || e.type == Schema::Type::integer ||
+                         e.type == Schema::Type::reals || e.type == Schema::Type::real_rows;
+    if (numeric) {
+      auto b = nlohmann::ordered_json::object();
+      for (const auto& [name, v] : {std::pair{"gt", e.bound.gt}, {"ge", e.bound.ge}, {"lt", e.bound.lt}, {"le", e.bound.le}})
+        if (v) b[name] = *v;
+      k["bound"] = b;
+    }
+    if (e.type == Schema::Type::reals || e.type == Schema::Type::texts || e.type == Schema::Type::real_rows)
+      k["min_len"] = e.min_len;
+    if (e.type == Schema::Type::real_rows) k["row_len"] = e.row_len;
+    if (!e.choices.empty()) k["choices"] = e.choices;
+    k["default"] = nullptr;
+    if (paper && paper->has(e.key)) {
+      std::string p = "/" + e.key;
+      std::replace(p.begin(), p.end(), '.', '/');
+      k["default"] = scene.at(nlohmann::ordered_json::json_pointer(p));
+    }
+    k["doc"] = e.doc;
+    auto users = nlohmann::ordered_json::array();
+    for (const auto& st : spec.studies)
+      if (e.key != kStudiesKey && key_under(e.key, st.uses)) users.push_back(st.name);
+    k["used_by"] = users;
+    keys.push_back(k);
+  }
+  return keys;
+}
+
+std::string keys_help(const ExperimentSpec& spec, const std::string& dir) {
+  std::string s = "\nScene keys (default: the paper scene " + dir + "/" + spec.name +
+                  ".toml; override any with --set key=value; --list-keys --json lists them as JSON):\n";
+  for (const auto& k : keys_json(spec, dir)) {
+    const std::string allowed = k["allowed"];
+    s += "  " + k["key"].get<std::string>() + "  (" + k["type_name"].get<std::string>() +
+         (allowed.empty() ? "" : "; " + allowed) + ")  default " + (k["default"].is_null() ? "(none)" : k["default"].dump()) + "\n";
+    if (!k["doc"].get<std::string>().empty()) s += "      " + k["doc"].get<std::string>() + "\n";
+    if (!k["used_by"].empty()) {
+      std::vector<std::string> users = k["used_by"];
+      s += "      used by: " + join(users) + "\n";
+    }
   }
   for (const auto& [from, to] : spec.schema.aliases()) s += "  " + from + "  older spelling of " + to + "\n";
   s += "\nExit codes: 0 done; 1 internal error; 2 bad input (before any work); 3 stopped with a checkpoint "
@@ -307,6 +345,22 @@ std::string keys_help(const ExperimentSpec& spec, const std::string& dir) {
        "Scenes and published values: " + dir + " (a moved build looks for experiments/" + spec.name +
        " above its own directory and the working directory; GEOMINT_EXPERIMENTS=DIR reads DIR/" + spec.name + ").\n";
   return s;
+}
+
+// The command line of this run with --resume, each argument quoted for the shell where it needs it.
+std::string resume_command(int argc, char** argv) {
+  std::string command;
+  bool has_resume = false;
+  for (int i = 0; i < argc; ++i) {
+    const std::string a = argv[i];
+    has_resume = has_resume || a == "--resume";
+    const bool plain = !a.empty() && a.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789"
+                                                         "_-+=.,/:@%") == std::string::npos;
+    std::string quoted = "'";
+    for (char c : a) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    command += (i ? " " : "") + (plain ? a : quoted + "'");
+  }
+  return has_resume ? command : command + " --resume";
 }
 
 // A study's counts, checked before any work: exactly representable as doubles (steps are
@@ -346,13 +400,37 @@ void print_plan(std::ostream& os, const std::vector<const Study*>& studies, cons
   os << (all ? "" : "   (studies without an estimate not counted)") << '\n';
 }
 
+// The same as JSON (--plan --json): estimated wall times in seconds, null where there is no estimate.
+nlohmann::ordered_json plan_json(const std::vector<const Study*>& studies, const std::vector<StudyPlan>& plans, int threads) {
+  nlohmann::ordered_json j = {{"threads", threads}, {"studies", nlohmann::ordered_json::array()}};
+  double total = 0;
+  bool all = true;
+  for (std::size_t i = 0; i < studies.size(); ++i) {
+    const StudyPlan& p = plans[i];
+    const bool has = static_cast<bool>(studies[i]->plan), estimated = has && p.ns_per_step > 0;
+    const double wall = p.steps * p.ns_per_step * 1e-9 / threads;
+    total += estimated ? wall : 0, all = all && estimated;
+    nlohmann::ordered_json st = {{"study", studies[i]->name}, {"makes", studies[i]->makes}};
+    st["steps"] = has ? nlohmann::ordered_json(p.steps) : nlohmann::ordered_json();
+    st["force_evals"] = has ? nlohmann::ordered_json(p.force_evals) : nlohmann::ordered_json();
+    st["memory_bytes"] = has ? nlohmann::ordered_json(p.memory_bytes) : nlohmann::ordered_json();
+    st["wall_s"] = estimated ? nlohmann::ordered_json(wall) : nlohmann::ordered_json();
+    st["note"] = p.note;
+    j["studies"].push_back(st);
+  }
+  j["wall_s"] = total;
+  j["all_estimated"] = all;
+  return j;
+}
+
 }  // namespace
 
 // The directory of the experiment's scenes and published.toml: $GEOMINT_EXPERIMENTS/<name> if that
-// variable is set; else the source directory the binary was built from, if it still exists; else
-// experiments/<name> in the nearest ancestor of the binary's directory or of the working directory
-// that has one (a build moved with its sources, or run from the repository). The first candidate
-// is returned if none exists, so that the error names it.
+// variable is set; else, for an installed binary (cmake --install), <prefix>/share/geomint/experiments/<name>
+// beside its bin directory; else the source directory the binary was built from, if it still exists; else
+// experiments/<name> in the nearest ancestor of the binary's directory or of the working directory that
+// has one (a build moved with its sources, or run from the repository). The first candidate is returned
+// if none exists, so that the error names it.
 std::string find_experiment_dir(const std::string& name, const std::string& built_from) {
   namespace fs = std::filesystem;
   const auto has_scene = [&](const fs::path& d) {
@@ -360,9 +438,13 @@ std::string find_experiment_dir(const std::string& name, const std::string& buil
     return fs::is_regular_file(d / (name + ".toml"), ec);
   };
   if (const char* env = std::getenv("GEOMINT_EXPERIMENTS"); env && *env) return (fs::path(env) / name).string();
-  if (has_scene(built_from)) return built_from;
   std::error_code ec;
-  for (fs::path start : {fs::read_symlink("/proc/self/exe", ec).parent_path(), fs::current_path(ec)})
+  const fs::path exe_dir = fs::read_symlink("/proc/self/exe", ec).parent_path();
+  if (const fs::path installed = exe_dir.parent_path() / "share" / "geomint" / "experiments" / name;
+      !exe_dir.empty() && has_scene(installed))
+    return installed.string();
+  if (has_scene(built_from)) return built_from;
+  for (fs::path start : {exe_dir, fs::current_path(ec)})
     for (fs::path d = start; !d.empty(); d = d.parent_path()) {
       if (has_scene(d / "experiments" / name)) return (d / "experiments" / name).string();
       if (d == d.root_path()) break;
@@ -380,7 +462,7 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
 
   CLI::App app{spec.description, name};
   std::string scene_file;
-  bool quick = false, list_studies = false;
+  bool quick = false, list_studies = false, list_keys = false, as_json = false;
   std::string out_dir = "results/" + name;
   int threads = omp_get_max_threads();
   std::vector<std::string> overrides, only;
@@ -389,6 +471,9 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
       ->excludes(scene_opt);
   app.add_option("--study", only, "Run only this study of the scene (repeatable; see --list-studies)");
   app.add_flag("--list-studies", list_studies, "Print each study: name, the figure or table it makes, its CSV files");
+  app.add_flag("--list-keys", list_keys,
+                                     "Print every scene key: type, allowed values, default, meaning, the studies that read it");
+  app.add_flag("--json", as_json, "With --list-keys or --plan: print JSON");
   app.add_option("--out", out_dir, "Output directory")->capture_default_str();
   app.add_option("--threads", threads, "Threads (results do not depend on it)")
       ->check(CLI::Range(1, 4096))
@@ -410,8 +495,24 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
     std::cerr << name << ": " << e.what() << " (see --help)\n";
     return 2;
   }
+  if (as_json && !list_keys && !plan_only) {
+    std::cerr << name << ": --json goes with --list-keys or --plan (see --help)\n";
+    return 2;
+  }
   if (list_studies) {
     for (const auto& st : spec.studies) std::cout << st.name << '\t' << st.makes << '\t' << join(st.files, " ") << '\n';
+    return 0;
+  }
+  if (list_keys) {
+    const auto keys = keys_json(spec, experiment_dir);
+    if (as_json) {
+      std::cout << keys.dump(2) << '\n';
+    } else {
+      for (const auto& k : keys)
+        std::cout << k["key"].get<std::string>() << '\t' << k["type_name"].get<std::string>() << '\t'
+                  << k["allowed"].get<std::string>() << '\t' << (k["default"].is_null() ? "" : k["default"].dump())
+                  << '\t' << k["doc"].get<std::string>() << '\n';
+    }
     return 0;
   }
   if (scene_file.empty()) scene_file = experiment_dir + "/" + (quick ? std::string("quick") : name) + ".toml";
@@ -449,7 +550,10 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
     }
     scene->restrict_reads({});
     if (plan_only) {
-      print_plan(std::cout, studies, plans, threads);
+      if (as_json)
+        std::cout << plan_json(studies, plans, threads).dump(2) << '\n';
+      else
+        print_plan(std::cout, studies, plans, threads);
       return 0;
     }
     results.emplace(out_dir, name, resume);
@@ -469,6 +573,8 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
   omp_set_num_threads(threads);
   Context ctx(*scene, *out, threads);
   ctx.resume = results->resumed();
+  ctx.experiment = name;
+  ctx.resume_command = resume_command(argc, argv);
   try {
     std::vector<std::string> ran;
     nlohmann::ordered_json study_wall = nlohmann::ordered_json::object();
@@ -476,6 +582,7 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
       const auto ts = std::chrono::steady_clock::now();
       const std::size_t files_before = out->written().size();
       scene->restrict_reads(st->uses, "study " + st->name);
+      ctx.study = st->name;
       try {
         st->run(ctx);
       } catch (const IntegrationError& e) {  // Newton's method (integrators/newton.hpp)
@@ -527,6 +634,7 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
     run["study_wall_s"] = study_wall;
     run["files"] = out->written();
     out->write("run.json", run.dump(2) + "\n");
+    remove_checkpoints(out->path());
     results->commit();
   } catch (const Interrupted& e) {
     std::cerr << name << ": stopped: " << e.what() << " (kept in " << results->staging_path().string()

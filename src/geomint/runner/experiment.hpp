@@ -32,6 +32,8 @@ class Context {
   OutputDir& out;
   int threads;
   bool resume = false;  // --resume: continue from the checkpoint in the output directory, if any
+  std::string experiment, study;  // the experiment, and the study that runs
+  std::string resume_command;     // the command line of the run with --resume (for a stopped run's message)
   // What summary.json reports besides "experiment", "studies" and the wall
   // times: "published", "reproduced", "orders", "timing", ...
   nlohmann::ordered_json summary = nlohmann::ordered_json::object();

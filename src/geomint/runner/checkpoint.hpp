@@ -1,0 +1,172 @@
+#pragma once
+// Checkpoints of a long study's independent tasks (issue 16, item 5): checkpointed_map computes
+// out[i] = f(i), i < n, in rounds and keeps the finished tasks in the staging directory, so that a
+// stopped run (a signal, or the scene's checkpoint.stop_after; Interrupted, exit 3) continues with
+// --resume where it stopped, with the same results as a run straight through, for any thread count.
+//
+// Files (in ctx.out.path(), the staging directory DIR.partial; removed when the run commits):
+//   <name>.checkpoint.log   the finished tasks' records in task order, appended round by round: per
+//                           record a uint64 count L, then L doubles (the machine's byte order);
+//   <name>.checkpoint.json  the header, written atomically after each append: format, experiment,
+//                           study, name, the scene keys the tasks depend on, the binary (build_info),
+//                           n, tasks_done and log_bytes, the part of the log that holds them in full.
+// On --resume a header that is missing means nothing to resume, one of other scene values is
+// discarded (start over); one that cannot be used (not JSON, another format, another binary,
+// tasks_done beyond n, a log shorter than log_bytes, a value that is not finite) is refused with a
+// SceneError naming the file and the field (exit 2). A log longer than log_bytes (a run stopped in
+// the middle of an append) is cut back. Every write costs what is new: O(work) in all.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <optional>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "geomint/runner/experiment.hpp"
+#include "geomint/sweep/parallel_map.hpp"
+
+namespace geomint {
+
+struct CheckpointSpec {
+  std::string name;               // the files' stem: the study's name, or "<study>.<part>" for a study's second loop
+  std::vector<std::string> keys;  // the scene keys (dotted; sections or values) the tasks depend on
+  std::size_t round = 0;          // tasks per round (0: n/32, at least the thread count)
+};
+
+// A task's record as doubles. A study passes its own codec (encode, decode) for a struct; decode
+// gets the doubles encode wrote and throws std::invalid_argument for a record of the wrong length.
+template <class R>
+struct RecordCodec;
+
+template <>
+struct RecordCodec<double> {
+  void encode(double x, std::vector<double>& out) const { out.push_back(x); }
+  double decode(std::span<const double> v) const {
+    if (v.size() != 1) throw std::invalid_argument("a record of " + std::to_string(v.size()) + " values, not 1");
+    return v[0];
+  }
+};
+
+template <>
+struct RecordCodec<std::vector<double>> {
+  void encode(const std::vector<double>& x, std::vector<double>& out) const { out.insert(out.end(), x.begin(), x.end()); }
+  std::vector<double> decode(std::span<const double> v) const { return {v.begin(), v.end()}; }
+};
+
+// The header and log of one checkpointed map (the part that does not depend on the record type).
+class CheckpointLog {
+ public:
+  CheckpointLog(const Context& ctx, const CheckpointSpec& spec, std::size_t n);
+
+  struct Records {
+    std::vector<double> values;
+    std::vector<std::size_t> offsets{0};  // record k: values[offsets[k], offsets[k + 1])
+    std::size_t size() const { return offsets.size() - 1; }
+    std::span<const double> operator[](std::size_t k) const {
+      return {values.data() + offsets[k], offsets[k + 1] - offsets[k]};
+    }
+  };
+  // With `resume`, the records of the tasks the checkpoint holds (validated; the log cut back to
+  // them); otherwise, or for a checkpoint of other scene values, none (its files removed).
+  Records load(bool resume);
+  // Appends the records (values, split by `lengths`) of the tasks after tasks_done(), synced, then
+  // writes the header: tasks_done() + lengths.size() tasks.
+  void append(std::span<const double> values, std::span<const std::size_t> lengths);
+  std::size_t tasks_done() const { return tasks_done_; }
+  const std::string& name() const { return name_; }
+  [[noreturn]] void refuse_log(const std::string& why) const { refuse(log_, why); }
+
+ private:
+  [[noreturn]] void refuse(const std::filesystem::path& file, const std::string& why) const;
+  void reset();
+
+  std::string name_;
+  std::filesystem::path header_, log_;
+  nlohmann::ordered_json identity_;  // the header less tasks_done and log_bytes
+  std::size_t n_, tasks_done_ = 0;
+  std::uint64_t log_bytes_ = 0;
+};
+
+// Removes every checkpoint (*.checkpoint.json, *.checkpoint.log) in `dir`: the runner, before it commits.
+void remove_checkpoints(const std::filesystem::path& dir);
+
+// A checkpoint is written after a round when this much time has passed since the last one, at the
+// end, and before every stop.
+inline constexpr std::chrono::seconds kCheckpointInterval{10};
+
+// out[i] = f(i) for i < n, computed in rounds with parallel_map (results stored by index, so they
+// do not depend on the thread count; reductions come after, in the study). After a round, if
+// kCheckpointInterval has passed since the last save, the map is done, or a stop is requested
+// (SIGINT/SIGTERM, stop_requested(); or the scene's checkpoint.stop_after rounds), the finished
+// tasks not yet saved are appended to the log. A record with a value that is not finite is not
+// saved (nor any after it): a resumed run recomputes it and the study's own check reports it. On a
+// stop, Interrupted names where it stopped and the command that resumes. With ctx.resume the
+// tasks the checkpoint holds are read back instead of computed. The rounds are the one place where
+// tasks are handed out: a distributed version splits each round here.
+template <class R, class F, class Codec = RecordCodec<R>>
+std::vector<R> checkpointed_map(Context& ctx, const CheckpointSpec& spec, std::size_t n, const F& f,
+                                const Codec& codec = {}) {
+  CheckpointLog log(ctx, spec, n);
+  std::vector<std::optional<R>> slots(n);
+  std::size_t done = 0;
+  {
+    const CheckpointLog::Records restored = log.load(ctx.resume);
+    for (; done < restored.size(); ++done) try {
+        slots[done].emplace(codec.decode(restored[done]));
+      } catch (const std::invalid_argument& e) {
+        log.refuse_log("task " + std::to_string(done) + ": " + e.what());
+      }
+  }
+  if (done > 0) ctx.progress("resuming " + log.name() + " after " + std::to_string(done) + " of " + std::to_string(n) + " tasks");
+  const std::int64_t stop_after = ctx.scene.has("checkpoint.stop_after") ? ctx.scene.integer("checkpoint.stop_after") : 0;
+  const std::size_t round =
+      spec.round > 0 ? spec.round : std::max<std::size_t>({1, (n + 31) / 32, static_cast<std::size_t>(ctx.threads)});
+  std::vector<double> values;
+  std::vector<std::size_t> lengths;
+  bool blocked = false;  // a record that is not finite: nothing from it on is saved
+  auto saved_at = std::chrono::steady_clock::now();
+  const auto save = [&] {
+    values.clear(), lengths.clear();
+    for (std::size_t i = log.tasks_done(); i < done && !blocked; ++i) {
+      const std::size_t before = values.size();
+      codec.encode(*slots[i], values);
+      blocked = !std::all_of(values.begin() + static_cast<std::ptrdiff_t>(before), values.end(),
+                             [](double v) { return std::isfinite(v); });
+      if (blocked) values.resize(before);
+      else lengths.push_back(values.size() - before);
+    }
+    if (!lengths.empty()) log.append(values, lengths);
+    saved_at = std::chrono::steady_clock::now();
+  };
+  const StopPoint stop_point;  // SIGINT/SIGTERM: stop at the next checkpoint
+  for (std::int64_t rounds = 0;; ++rounds) {
+    const bool by_count = stop_after > 0 && rounds == stop_after;
+    const bool stop = done < n && (stop_requested() || by_count);
+    if (done > log.tasks_done() && !blocked &&
+        (stop || done == n || std::chrono::steady_clock::now() - saved_at >= kCheckpointInterval))
+      save();
+    if (stop)
+      throw Interrupted(log.name() + " after " + std::to_string(done) + " of " + std::to_string(n) + " tasks (" +
+                        (by_count ? "checkpoint.stop_after = " + std::to_string(stop_after) : std::string("signal")) +
+                        "); continue with: " + ctx.resume_command);
+    if (done == n) break;
+    const std::size_t first = done, count = std::min(round, n - done);
+    auto results = parallel_map(count, [&](std::size_t i) { return f(first + i); });
+    for (std::size_t i = 0; i < count; ++i) slots[first + i].emplace(std::move(results[i]));
+    done += count;
+    ctx.progress(log.name(), static_cast<double>(done), static_cast<double>(n), "tasks");
+  }
+  std::vector<R> out;
+  out.reserve(n);
+  for (auto& s : slots) out.push_back(std::move(*s));
+  return out;
+}
+
+}  // namespace geomint

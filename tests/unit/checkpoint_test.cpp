@@ -1,0 +1,245 @@
+// runner/checkpoint.hpp: checkpointed_map keeps its finished tasks, resumes from them with the same
+// results, and refuses (SceneError naming the file) a checkpoint it cannot use.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <atomic>
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "geomint/runner/checkpoint.hpp"
+
+using namespace geomint;
+namespace fs = std::filesystem;
+
+namespace {
+
+// Task i: i % 5 + 1 values (records of different lengths).
+std::vector<double> task(std::size_t i) {
+  std::vector<double> v;
+  for (std::size_t k = 0; k <= i % 5; ++k) v.push_back(std::sin(static_cast<double>(i) + 0.1 * static_cast<double>(k)));
+  return v;
+}
+constexpr std::size_t kTasks = 37;
+
+std::string read(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+// A staging directory, a scene (a = 1, checkpoint.stop_after) and a Context on them.
+struct Fixture {
+  fs::path dir = fs::temp_directory_path() / ("geomint_checkpoint_test_" + std::to_string(::getpid()));
+  Scene scene;
+  OutputDir out;
+  Context ctx;
+  std::atomic<int> calls{0};
+
+  explicit Fixture(int stop_after = 0, double a = 1.0, bool fresh = true)
+      : scene(load(stop_after, a)), out(prepare(fresh)), ctx(scene, out, 2) {
+    ctx.experiment = "unit", ctx.study = "tasks", ctx.resume = !fresh, ctx.resume_command = "unit --resume";
+  }
+  static Scene load(int stop_after, double a) {
+    const fs::path file = fs::temp_directory_path() / ("geomint_checkpoint_scene_" + std::to_string(::getpid()) + ".toml");
+    std::ofstream(file) << "a = " << a << "\n[checkpoint]\nstop_after = " << stop_after << "\n";
+    Schema schema;
+    schema.real("a", any_finite()).integer("checkpoint.stop_after", non_negative());
+    return Scene::load(file, {}, schema);
+  }
+  fs::path prepare(bool fresh) const {
+    if (fresh) fs::remove_all(dir);
+    return dir;
+  }
+  std::vector<std::vector<double>> run(std::size_t round = 5) {
+    return checkpointed_map<std::vector<double>>(ctx, {"", {"a"}, round}, kTasks, [&](std::size_t i) {
+      ++calls;
+      return task(i);
+    });
+  }
+  fs::path header() const { return dir / "tasks.checkpoint.json"; }
+  fs::path log() const { return dir / "tasks.checkpoint.log"; }
+};
+
+std::vector<std::vector<double>> straight() {
+  std::vector<std::vector<double>> v;
+  for (std::size_t i = 0; i < kTasks; ++i) v.push_back(task(i));
+  return v;
+}
+
+// A run stopped after one round of 5 tasks (checkpoint.stop_after = 1).
+void stop_after_one_round() {
+  Fixture f(1);
+  EXPECT_THROW(f.run(), Interrupted);
+  EXPECT_EQ(f.calls, 5);
+}
+
+// A resumed run's refusal: a SceneError whose message names `file` and `needle`.
+void expect_refused(const fs::path& file, const std::string& needle) {
+  Fixture f(0, 1.0, false);
+  try {
+    f.run();
+    ADD_FAILURE() << "not refused: " << needle;
+  } catch (const SceneError& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find(file.string()), std::string::npos) << what;
+    EXPECT_NE(what.find(needle), std::string::npos) << what;
+    EXPECT_EQ(what.find('\n'), std::string::npos) << what;
+  }
+}
+
+nlohmann::ordered_json header_json(const fs::path& p) { return nlohmann::ordered_json::parse(read(p)); }
+
+void write_header(const fs::path& p, const nlohmann::ordered_json& h) { std::ofstream(p) << h.dump(1); }
+
+}  // namespace
+
+TEST(Checkpoint, RoundTripHoldsEachTaskOnce) {
+  Fixture f;
+  EXPECT_EQ(f.run(), straight());
+  EXPECT_EQ(f.calls, static_cast<int>(kTasks));
+  const auto h = header_json(f.header());  // the finished map is kept until the run commits
+  EXPECT_EQ(h["tasks_done"], kTasks);
+  EXPECT_EQ(h["n"], kTasks);
+  EXPECT_EQ(h["experiment"], "unit");
+  EXPECT_EQ(h["study"], "tasks");
+  EXPECT_EQ(h["scene"]["a"], 1.0);
+  EXPECT_TRUE(h["build"].contains("git_commit"));
+  std::size_t bytes = 0;
+  for (const auto& r : straight()) bytes += 8 + 8 * r.size();  // a count and the values, once
+  EXPECT_EQ(h["log_bytes"], bytes);
+  EXPECT_EQ(fs::file_size(f.log()), bytes);
+  // Read back whole: no task computed again.
+  Fixture again(0, 1.0, false);
+  EXPECT_EQ(again.run(), straight());
+  EXPECT_EQ(again.calls, 0);
+  remove_checkpoints(f.dir);
+  EXPECT_FALSE(fs::exists(f.header()));
+  EXPECT_FALSE(fs::exists(f.log()));
+}
+
+TEST(Checkpoint, ResumeAfterAStopGivesTheSameResults) {
+  stop_after_one_round();
+  Fixture f(0, 1.0, true);  // (a fresh run: the stopped run's checkpoint is not read)
+  EXPECT_EQ(f.run(), straight());
+  EXPECT_EQ(f.calls, static_cast<int>(kTasks));
+  stop_after_one_round();
+  EXPECT_EQ(header_json(Fixture(0, 1.0, false).header())["tasks_done"], 5u);
+  Fixture resumed(0, 1.0, false);
+  EXPECT_EQ(resumed.run(7), straight());  // (another round size: the tasks are stored by index)
+  EXPECT_EQ(resumed.calls, static_cast<int>(kTasks) - 5);
+}
+
+TEST(Checkpoint, StopNamesWhereAndTheResumeCommand) {
+  Fixture f(2);
+  try {
+    f.run();
+    ADD_FAILURE() << "not stopped";
+  } catch (const Interrupted& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("10 of 37 tasks"), std::string::npos) << what;
+    EXPECT_NE(what.find("checkpoint.stop_after = 2"), std::string::npos) << what;
+    EXPECT_NE(what.find("unit --resume"), std::string::npos) << what;
+  }
+}
+
+TEST(Checkpoint, OtherSceneValuesStartOver) {
+  stop_after_one_round();
+  Fixture f(0, 2.0, false);
+  EXPECT_EQ(f.run(), straight());
+  EXPECT_EQ(f.calls, static_cast<int>(kTasks));
+}
+
+TEST(Checkpoint, MissingHeaderStartsOver) {
+  stop_after_one_round();
+  fs::remove(Fixture(0, 1.0, false).header());
+  Fixture f(0, 1.0, false);
+  EXPECT_EQ(f.run(), straight());
+  EXPECT_EQ(f.calls, static_cast<int>(kTasks));
+}
+
+TEST(Checkpoint, LogLongerThanCountedIsCutBack) {  // a run stopped in the middle of an append
+  stop_after_one_round();
+  const fs::path log = Fixture(0, 1.0, false).log();
+  std::ofstream(log, std::ios::app) << "partial record";
+  Fixture f(0, 1.0, false);
+  EXPECT_EQ(f.run(), straight());
+  EXPECT_EQ(f.calls, static_cast<int>(kTasks) - 5);
+}
+
+TEST(Checkpoint, ResumeRefusesACorruptHeader) {
+  stop_after_one_round();
+  const fs::path header = Fixture(0, 1.0, false).header();
+  std::ofstream(header) << "{\"format\": ";
+  expect_refused(header, "not JSON");
+}
+
+TEST(Checkpoint, ResumeRefusesATruncatedLog) {
+  stop_after_one_round();
+  const fs::path log = Fixture(0, 1.0, false).log();
+  fs::resize_file(log, fs::file_size(log) - 3);
+  expect_refused(log, "log_bytes");
+}
+
+TEST(Checkpoint, ResumeRefusesTamperedHeaders) {
+  const auto tampered = [](const std::string& field, const nlohmann::ordered_json& value, const std::string& needle) {
+    stop_after_one_round();
+    const fs::path header = Fixture(0, 1.0, false).header();
+    auto h = header_json(header);
+    nlohmann::ordered_json::json_pointer at("/" + field);
+    h[at] = value;
+    write_header(header, h);
+    expect_refused(header, needle);
+  };
+  tampered("format", 99, "format");
+  tampered("build/git_commit", "0000000", "build.git_commit");
+  tampered("build/cxx_flags", "-O0", "build.cxx_flags");
+  tampered("n", 36, "n is 36");
+  tampered("tasks_done", -1, "tasks_done");
+  tampered("log_bytes", 8, "log_bytes");   // fewer bytes than the records counted
+  tampered("tasks_done", 3, "log_bytes");  // fewer records than the bytes counted
+  tampered("study", "other", "study");
+}
+
+TEST(Checkpoint, ResumeRefusesACheckpointBeyondTheTasks) {
+  stop_after_one_round();
+  const fs::path header = Fixture(0, 1.0, false).header();
+  auto h = header_json(header);
+  h["tasks_done"] = 1000000;
+  write_header(header, h);
+  expect_refused(header, "tasks_done");
+}
+
+TEST(Checkpoint, ResumeRefusesAValueThatIsNotFinite) {
+  stop_after_one_round();
+  const fs::path log = Fixture(0, 1.0, false).log();
+  std::string bytes = read(log);
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::memcpy(bytes.data() + 8 + 8 + 8, &nan, 8);  // task 1's first value (task 0 holds one)
+  std::ofstream(log, std::ios::binary | std::ios::trunc) << bytes;
+  expect_refused(log, "task 1 is not finite");
+}
+
+// A task whose record is not finite is not saved (nor any after it): resumed, it is computed again.
+TEST(Checkpoint, RecordsThatAreNotFiniteAreNotSaved) {
+  Fixture f(1);
+  const auto bad = [&](std::size_t i) {
+    ++f.calls;
+    return i == 3 ? std::numeric_limits<double>::infinity() : static_cast<double>(i);
+  };
+  EXPECT_THROW(checkpointed_map<double>(f.ctx, {"", {"a"}, 5}, kTasks, bad), Interrupted);
+  EXPECT_EQ(header_json(f.header())["tasks_done"], 3u);
+  Fixture resumed(0, 1.0, false);
+  const auto out = checkpointed_map<double>(resumed.ctx, {"", {"a"}, 5}, kTasks, bad);
+  EXPECT_TRUE(std::isinf(out[3]));
+  EXPECT_EQ(out[36], 36.0);
+}
