@@ -7,22 +7,19 @@
 // Studies: map (Fig. 6, with a checkpoint for --resume), first_integrals
 // (Sec. 5.2), timing (the batched kernel against the straightforward scalar
 // loop), cost (work-precision of the two coordinate systems on a few starts).
-#include <fcntl.h>
 #include <omp.h>
-#include <unistd.h>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
-#include <cerrno>
 #include <cstdint>
 #include <cstdlib>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <iostream>
 #include <limits>
 #include <numbers>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -31,6 +28,7 @@
 #include "geomint/io/atomic_file.hpp"
 #include "geomint/methods/registry.hpp"
 #include "geomint/observables/order_fit.hpp"
+#include "geomint/runner/checkpoint.hpp"
 #include "geomint/runner/experiment.hpp"
 #include "geomint/analysis/work_precision.hpp"
 #include "geomint/runner/timing.hpp"
@@ -46,10 +44,6 @@ using json = nlohmann::ordered_json;
 
 namespace {
 
-constexpr std::size_t kCheckpointBatches = 32;  // batches per round of the map
-// A checkpoint is written after a round when this much time has passed since the last one, and before
-// every stop (a signal, or checkpoint.stop_after): each write is synced to disk.
-constexpr std::chrono::seconds kCheckpointInterval{10};
 // The scene keys the map depends on (the map study adds `checkpoint`, the timing study `timing`).
 const std::vector<std::string> kMapKeys = {"dt", "t_max", "grid", "pendulum", "divergence"};
 
@@ -65,96 +59,28 @@ struct Point {
 };
 
 
-// The map's checkpoint, O(grid) in all: a log of the finished batches' points, appended round by round
-// (energy_map.checkpoint.points: per point eps and diverge_step of the Cartesian then the polar run, as
-// 8-byte double and int64 in the machine's byte order), and a small header written atomically after each
-// append (energy_map.checkpoint.json: the map's scene keys, the batch size, batches_done). The header
-// counts only what the log holds in full; a longer log (a run stopped mid-append) is cut back on resume.
-class MapCheckpoint {
- public:
-  static constexpr std::size_t kRecordBytes = 4 * 8;  // per point: eps, step (Cartesian); eps, step (polar)
-
-  explicit MapCheckpoint(const std::filesystem::path& dir)
-      : header_(dir / "energy_map.checkpoint.json"), log_(dir / "energy_map.checkpoint.points") {}
-
-  // Appends the points of batches [from, to) to the log (synced), then writes the header: to batches done.
-  void append(const json& scene, const std::vector<Point>& points, std::size_t from, std::size_t to) const {
-    std::vector<char> bytes((to - from) * kEnergyMapBatch * kRecordBytes);
-    char* at = bytes.data();
-    for (std::size_t i = from * kEnergyMapBatch; i < to * kEnergyMapBatch; ++i)
-      for (const EnergyMapPoint& p : {points[i].cart, points[i].polar}) {
-        std::memcpy(at, &p.eps, 8), std::memcpy(at + 8, &p.diverge_step, 8);
-        at += 16;
-      }
-    const int fd = ::open(log_.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
-    if (fd < 0) throw OutputError("cannot write " + log_.string() + ": " + std::strerror(errno));
-    for (std::size_t off = 0; off < bytes.size();) {
-      const ssize_t n = ::write(fd, bytes.data() + off, bytes.size() - off);
-      if (n < 0 && errno == EINTR) continue;
-      if (n <= 0) {
-        const std::string why = std::strerror(errno);
-        ::close(fd);
-        throw OutputError("cannot write " + log_.string() + ": " + why);
-      }
-      off += static_cast<std::size_t>(n);
+// A batch's points as a checkpoint record (runner/checkpoint.hpp): eps and diverge_step per point, eps
+// of a diverged point (NaN by contract) stored as 0 and restored from its diverge_step >= 0.
+struct BatchCodec {
+  void encode(const std::vector<EnergyMapPoint>& batch, std::vector<double>& out) const {
+    for (const EnergyMapPoint& p : batch) {
+      if (p.diverge_step >= 0 && !std::isnan(p.eps)) throw std::logic_error("energy_map: a diverged point with a finite eps");
+      out.push_back(p.diverge_step >= 0 ? 0.0 : p.eps), out.push_back(static_cast<double>(p.diverge_step));
     }
-    if (::fsync(fd) != 0 || ::close(fd) != 0) throw OutputError("cannot write " + log_.string() + ": " + std::strerror(errno));
-    write_file_atomic(header_, json{{"scene", scene}, {"batch", kEnergyMapBatch}, {"batches_done", to},
-                                    {"record_bytes", kRecordBytes}}.dump());
   }
-
-  // The batches done by the checkpoint of the same map (0: none, or one of another scene), their
-  // points restored; the log cut back to them. A checkpoint that cannot be read is refused.
-  std::size_t load(const json& scene, std::size_t nbatches, std::vector<Point>& points) const {
-    if (!std::filesystem::exists(header_)) return 0;
-    json c;
-    try {
-      std::ifstream in(header_);
-      c = json::parse(in);
-    } catch (const json::exception& e) {
-      refuse(header_, std::string("not a checkpoint (") + e.what() + ")");
+  std::vector<EnergyMapPoint> decode(std::span<const double> v) const {
+    if (v.size() != 2 * kEnergyMapBatch)
+      throw std::invalid_argument("a record of " + std::to_string(v.size()) + " values, not " + std::to_string(2 * kEnergyMapBatch));
+    std::vector<EnergyMapPoint> batch(kEnergyMapBatch);
+    for (std::size_t i = 0; i < batch.size(); ++i) {
+      const double step = v[2 * i + 1];
+      if (!(step >= -1 && step == std::floor(step)))
+        throw std::invalid_argument("point " + std::to_string(i) + ": diverge_step " + std::to_string(step) + " is not a step");
+      batch[i].diverge_step = static_cast<std::int64_t>(step);
+      batch[i].eps = step >= 0 ? std::numeric_limits<double>::quiet_NaN() : v[2 * i];
     }
-    if (!c.is_object() || !c.contains("scene")) refuse(header_, "not a checkpoint (no scene)");
-    if (c["scene"] != scene) return 0;  // another map: start over
-    if (!c.contains("batch") || c["batch"] != kEnergyMapBatch || !c.contains("record_bytes") ||
-        c["record_bytes"] != kRecordBytes)
-      refuse(header_, "written by another version (batch or record size differs)");
-    if (!c.contains("batches_done") || !c["batches_done"].is_number_unsigned() ||
-        c["batches_done"].get<std::uint64_t>() > nbatches)
-      refuse(header_, "batches_done must be an integer in [0, " + std::to_string(nbatches) + "], the map's batches");
-    const auto done = static_cast<std::size_t>(c["batches_done"].get<std::uint64_t>());
-    const std::size_t need = done * kEnergyMapBatch * kRecordBytes;
-    std::error_code ec;
-    const auto size = std::filesystem::file_size(log_, ec);
-    if (ec || size < need)
-      refuse(log_, "holds " + std::to_string(ec ? 0 : size) + " bytes, fewer than the " + std::to_string(need) +
-                       " of the " + std::to_string(done) + " batches " + header_.filename().string() + " counts");
-    if (size > need) std::filesystem::resize_file(log_, need);  // a round appended but not counted
-    std::ifstream in(log_, std::ios::binary);
-    std::vector<char> bytes(need);
-    if (!in.read(bytes.data(), static_cast<std::streamsize>(need))) refuse(log_, "cannot be read");
-    const char* at = bytes.data();
-    for (std::size_t i = 0; i < done * kEnergyMapBatch; ++i)
-      for (EnergyMapPoint* p : {&points[i].cart, &points[i].polar}) {
-        std::memcpy(&p->eps, at, 8), std::memcpy(&p->diverge_step, at + 8, 8);
-        at += 16;
-      }
-    return done;
+    return batch;
   }
-
-  void remove() const { std::filesystem::remove(header_), std::filesystem::remove(log_); }
-
- private:
-  // A checkpoint that cannot be used: one line naming the file and what to do, exit 2. (The runner maps
-  // only Interrupted and NumericalFailure thrown by a study to their own exit codes; the staging
-  // directory and its checkpoint are left as they are.)
-  [[noreturn]] static void refuse(const std::filesystem::path& file, const std::string& why) {
-    throw SceneError("checkpoint " + file.string() + ": " + why + "; delete " +
-                     (file.parent_path() / "energy_map.checkpoint.*").string() +
-                     " to start the map over, or run without --resume");
-  }
-
-  std::filesystem::path header_, log_;
 };
 
 // The map's grid of initial positions at rest, padded to whole batches (x0 = y0 = 0 fills:
@@ -250,7 +176,7 @@ json upright_column(const MapSetup& g, const std::vector<Point>& points) {
 struct MapCost {
   bool ran = false;
   double wall_cart = 0, wall_polar = 0;  // wall time of the batched kernel, per coordinate system
-  double trajectory_steps = 0;           // computed in this run, per coordinate system (a resumed run: the rest)
+  double steps_cart = 0, steps_polar = 0;  // trajectory-steps computed in this run (a resumed run: the rest)
 };
 
 const char* coordinates_name(Coordinates c) { return c == Coordinates::cartesian ? "cartesian" : "polar"; }
@@ -277,7 +203,9 @@ Schema schema() {
       .real_rows("first_integrals.initial", 4, any_finite(), 1, "free-particle states [x, y, px, py], x, y not both 0")
       .integer("first_integrals.steps", at_least(1), "steps of the Cartesian angular-momentum run")
       .integer("checkpoint.stop_after", non_negative(),
-               "stop after this many rounds of 32 batches, leaving a checkpoint for --resume (0: run to the end)")
+               "stop after this many rounds (1/32 of the batches of 64 starts, Cartesian then polar), leaving a "
+               "checkpoint for --resume (0: run to the end)")
+      .real("checkpoint.interval", non_negative(), "seconds between checkpoint saves (0: after every round); a SIGKILL loses at most this much work")
       .integer("timing.repeats", at_least(1),
                "timed runs (>= 10 ms each) per measurement; the minimum is the estimate, the spread is reported")
       .integer("timing.scalar_points", at_least(1), "initial conditions timed with the scalar reference loop")
@@ -392,52 +320,31 @@ void run_map(Context& ctx, MapCost& cost) {
   const MapSetup g = map_setup(s);
   const EnergyMapKernel kernel = energy_map_kernels().front().run;
 
-  // Checkpoint: completed rounds of batches, for --resume (same map parameters only).
+  // Each coordinate system's batches as a checkpointed map (runner/checkpoint.hpp): a stopped run
+  // continues with --resume; the kernel's wall time and the batches computed in this run, for the cost.
   std::vector<Point> points(g.nbatches * kEnergyMapBatch);
-  const MapCheckpoint ckpt(ctx.out.path());
-  const json resolved = s.to_json();
-  json scene_json = json::object();  // how far to run, and the other studies' keys, are not part of what is computed
-  for (const auto& key : kMapKeys) scene_json[key] = resolved.at(key);
-  std::size_t done = ctx.resume ? ckpt.load(scene_json, g.nbatches, points) : 0;
-  if (done > 0) ctx.progress("resuming after " + std::to_string(done) + " of " + std::to_string(g.nbatches) + " batches");
-  if (done == 0) ckpt.remove();  // an append log always starts from its header's count
-  double wall_cart = 0, wall_polar = 0;
-  const auto stop_after = static_cast<std::size_t>(s.integer("checkpoint.stop_after"));
-  std::size_t rounds = 0;
-  const StopPoint stop_point;  // SIGINT/SIGTERM: stop after the next checkpoint (exit 3)
-  std::size_t saved = done;    // batches in the checkpoint
-  auto saved_at = std::chrono::steady_clock::now();
-  for (std::size_t first = done; first < g.nbatches; first += kCheckpointBatches) {
-    if (stop_after > 0 && rounds++ == stop_after)
-      throw Interrupted("after " + std::to_string(first) + " of " + std::to_string(g.nbatches) +
-                        " batches (checkpoint.stop_after); continue with --resume");
-    const std::size_t count = std::min(kCheckpointBatches, g.nbatches - first);
-    for (const auto c : {Coordinates::cartesian, Coordinates::polar}) {
-      const auto t0 = std::chrono::steady_clock::now();
-      const auto res = run_batches(kernel, c, g, count, [&](std::size_t b) { return first + b; });
-      (c == Coordinates::cartesian ? wall_cart : wall_polar) +=
-          std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-      for (std::size_t b = 0; b < count; ++b)
-        for (int i = 0; i < kEnergyMapBatch; ++i)
-          (c == Coordinates::cartesian ? points[(first + b) * kEnergyMapBatch + i].cart
-                                       : points[(first + b) * kEnergyMapBatch + i].polar) = res[b][static_cast<std::size_t>(i)];
-    }
-    const std::size_t now_done = first + count;
-    const bool stopping = stop_requested() || (stop_after > 0 && rounds == stop_after);
-    const auto now = std::chrono::steady_clock::now();
-    if (now_done < g.nbatches && (stopping || now - saved_at >= kCheckpointInterval)) {
-      ckpt.append(scene_json, points, saved, now_done);  // the batches since the last checkpoint, then the header
-      saved = now_done, saved_at = now;
-    }
-    if (stop_requested() && now_done < g.nbatches)
-      throw Interrupted("after " + std::to_string(now_done) + " of " + std::to_string(g.nbatches) +
-                        " batches (signal); continue with --resume");
-    ctx.progress("map", static_cast<double>(now_done), static_cast<double>(g.nbatches), "batches");
+  double steps_done[2] = {0, 0}, wall[2] = {0, 0};
+  for (const auto c : {Coordinates::cartesian, Coordinates::polar}) {
+    const int ci = c == Coordinates::cartesian ? 0 : 1;
+    std::atomic<std::size_t> computed = 0;
+    const auto t0 = std::chrono::steady_clock::now();
+    const auto batches = checkpointed_map<std::vector<EnergyMapPoint>>(
+        ctx, {std::string("map.") + coordinates_name(c), kMapKeys}, g.nbatches,
+        [&](std::size_t b) {
+          std::vector<EnergyMapPoint> out(kEnergyMapBatch);
+          kernel(c, g.P, &g.x0[b * kEnergyMapBatch], &g.y0[b * kEnergyMapBatch], out.data());
+          ++computed;
+          return out;
+        },
+        BatchCodec{});
+    wall[ci] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    steps_done[ci] = static_cast<double>(g.npoints) * static_cast<double>(g.P.steps) *
+                     static_cast<double>(computed) / static_cast<double>(g.nbatches);
+    for (std::size_t i = 0; i < points.size(); ++i)
+      (ci == 0 ? points[i].cart : points[i].polar) = batches[i / kEnergyMapBatch][i % kEnergyMapBatch];
   }
-  ckpt.remove();
-  const double done_fraction = 1.0 - static_cast<double>(done) / static_cast<double>(g.nbatches);
-  cost = {true, wall_cart, wall_polar,
-          static_cast<double>(g.npoints) * static_cast<double>(g.P.steps) * done_fraction};
+  // (a run resumed after one coordinate system was done has no kernel time for it: the timing study samples)
+  cost = {steps_done[0] > 0 && steps_done[1] > 0, wall[0], wall[1], steps_done[0], steps_done[1]};
 
   // The map, and the analytic boundary of the polar runs r0 >= 2l + (2mg/k) cos(theta0), cos(theta0) = y0/r0.
   Csv map({"x0", "y0", "H0", "eps_cartesian", "eps_polar", "diverged_cartesian", "diverged_polar",
@@ -567,7 +474,7 @@ void run_timing(Context& ctx, const MapCost& map) {
 
   // The kernel: wall time times threads over the trajectory-steps computed.
   const int repeats = static_cast<int>(s.integer("timing.repeats"));
-  double wall_cart = map.wall_cart, wall_polar = map.wall_polar, steps = map.trajectory_steps;
+  double wall_cart = map.wall_cart, wall_polar = map.wall_polar, steps_cart = map.steps_cart, steps_polar = map.steps_polar;
   json kernel_spread = nullptr;  // the sample's spread; the map's wall time is one run, not repeated
   std::string kernel_method = "map: wall time of the batched kernel in the map study of this run, times threads, over "
                               "the trajectory-steps it computed (the map is one long run, not a repeated measurement: "
@@ -589,15 +496,15 @@ void run_timing(Context& ctx, const MapCost& map) {
       (c == Coordinates::cartesian ? wall_cart : wall_polar) = t.seconds();
       kernel_spread[coordinates_name(c)] = t.spread();
     }
-    steps = static_cast<double>(trajectories) * static_cast<double>(g.P.steps);
+    steps_cart = steps_polar = static_cast<double>(trajectories) * static_cast<double>(g.P.steps);
     timing["kernel_sample"] = {{"batches", count}, {"trajectories", trajectories},
                                {"wall_s", {{"cartesian", wall_cart}, {"polar", wall_polar}}}};
     kernel_method = "sample: the map study did not run in this process; wall time of the batched kernel on "
                     "timing.kernel_batches batches of the grid (evenly spaced, t_max/dt steps each; runs after "
                     "an untimed warm-up; the minimum over timing.repeats runs), times threads, over their trajectory-steps";
   }
-  const double ns_cart = 1e9 * wall_cart * ctx.threads / steps;
-  const double ns_polar = 1e9 * wall_polar * ctx.threads / steps;
+  const double ns_cart = 1e9 * wall_cart * ctx.threads / steps_cart;
+  const double ns_polar = 1e9 * wall_polar * ctx.threads / steps_polar;
 
   // The scalar loop, one trajectory at a time, single thread.
   ctx.progress("cost: scalar reference loop");

@@ -146,7 +146,8 @@ Schema schema() {
                "steps of the timed segment; a long run's wall time is its steps times the time per step measured on it")
       .integer("checkpoint.stop_after", non_negative(),
                "long_run_cost: stop after this many rounds of its runs, leaving a checkpoint for --resume (0: run to the "
-               "end)");
+               "end)")
+      .real("checkpoint.interval", non_negative(), "seconds between checkpoint saves (0: after every round); a SIGKILL loses at most this much work");
   return s;
 }
 

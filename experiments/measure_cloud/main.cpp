@@ -110,6 +110,7 @@ Schema schema() {
       .integer("checkpoint.stop_after", non_negative(),
                "volumes, order_study: stop after this many rounds of reference paths or cloud runs, leaving a "
                "checkpoint for --resume (0: run to the end)")
+      .real("checkpoint.interval", non_negative(), "seconds between checkpoint saves (0: after every round); a SIGKILL loses at most this much work")
       .text("cost.discretization", method_choices(),
             "the discrete Lagrangian (5.1) of Phi^(4) and Phi^(0) in the comparison with RK4")
       .reals("cost.rk4_h", positive(), 3, "steps of the classical RK4 on (3.8), the baseline that preserves neither")
@@ -169,7 +170,7 @@ std::vector<Point4> reference_samples(const NonholonomicParticle& sys, const Poi
   std::vector<Point4> out{z0};
   Point4 x = z0;
   for (std::int64_t j = 1; j <= n; ++j) {
-    odeint::integrate_adaptive(stepper, f, x, static_cast<double>(j - 1) * dt, static_cast<double>(j) * dt, 0.1 * dt);
+    reference_integrate(stepper, f, x, static_cast<double>(j - 1) * dt, static_cast<double>(j) * dt, 0.1 * dt);
     out.push_back(x);
   }
   return out;
@@ -825,7 +826,7 @@ void run_order_study(Context& ctx) {
       try {
         const OrderFit fit = fit_order(hs, ptp, floor, "order study");
         o[name] = fit.order, f[name] = to_json(fit), points[name] = fit.points;
-      } catch (const std::invalid_argument&) {
+      } catch (const NumericalFailure&) {
         o[name] = nullptr, points[name] = nullptr;  // fewer than 3 steps above the noise: no order is claimed
       }
     }

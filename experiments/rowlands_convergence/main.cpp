@@ -284,8 +284,8 @@ void convergence_with(Context& ctx, const Sys& sys) {
         const OrderFit f = [&] {
           try {
             return fit_order(hs, *err, floor, (name + suffix).c_str());
-          } catch (const std::invalid_argument& e) {
-            throw std::runtime_error(std::string(e.what()) + " (initial condition " + std::to_string(i) + ", floor " +
+          } catch (const NumericalFailure& e) {
+            throw NumericalFailure(std::string(e.what()) + " (initial condition " + std::to_string(i) + ", floor " +
                                      format_double(floor) + ": the errors reach round-off or the reference's accuracy there; add larger h)");
           }
         }();

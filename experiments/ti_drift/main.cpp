@@ -264,12 +264,14 @@ void run_oscillator(Context& ctx) {
   }
   ctx.write("oscillator.csv", oc);
 
-  // The closed forms of Sect. 1.4 (start q0 = 0), over omega h_eff up to SV's bound (it runs at h = h_eff/2).
+  // The closed forms of Sect. 1.4 (start q0 = 0), over omega h_eff up to SV's bound (it runs at h = h_eff/2);
+  // TI's is nan beyond its own bound 2 sqrt(3), where ti_beyond_bound = 1.
   const double sv_eff_bound = 2 * method_info("stormer_verlet").oscillatory_bound;
-  Csv cf({"omega_h", "sv_rel_H", "ti_rel_H"});
+  Csv cf({"omega_h", "sv_rel_H", "ti_rel_H", "ti_beyond_bound"});
   for (int i = 1; i <= 400; ++i) {
     const double y = sv_eff_bound * i / 401.0;
-    cf.row(y, closed_form("stormer_verlet", y / 2), closed_form("takahashi_imada", y));
+    const bool beyond = !(y < method_info("takahashi_imada").oscillatory_bound);
+    cf.row(y, closed_form("stormer_verlet", y / 2), closed_form("takahashi_imada", y), static_cast<std::int64_t>(beyond));
   }
   ctx.write("oscillator_closed_forms.csv", cf);
 
@@ -1324,6 +1326,10 @@ double kept_samples(double n, double samples) { return std::floor(n / std::max(1
 void check_pendulum(const Scene& s) {
   const double h = s.real("h"), t_end = s.real("pendulum.t_end");
   check_step_bound(s, "h", h, pendulum_omega(), "omega^2 = max_q U''(q) of the pendulum of Fig. 2");
+  const double H0 = UnsymmetricPendulum().H(make_state(s.real("pendulum.q0"), s.real("pendulum.p0")));
+  if (!(std::isfinite(H0) && H0 > UnsymmetricPendulum::U_max()))  // Fig. 2 and (4.3) averaged over the orbit need a pendulum that turns over
+    s.reject("pendulum.p0", "the start must turn over: H(q0, p0) = " + format_double(H0) + " must exceed max U = " +
+                                format_double(UnsymmetricPendulum::U_max()));
   if (t_end / h < 1) s.reject("pendulum.t_end", "must be at least one step h = " + format_double(h));
   if (!(t_end / h <= max_exact_count))  // before the windows below, which would blame fit_t
     s.reject("pendulum.t_end", "at most 2^53 steps h = " + format_double(h) + " (here " + format_double(t_end / h) + ")");
@@ -1539,6 +1545,7 @@ Schema schema() {
       .integer("checkpoint.stop_after", non_negative(),
                "ensemble, lj: stop after this many rounds of trajectories, leaving a checkpoint for --resume (0: run to "
                "the end)")
+      .real("checkpoint.interval", non_negative(), "seconds between checkpoint saves (0: after every round); a SIGKILL loses at most this much work")
       .integer("lj.seed", non_negative(), "seed; trajectory i uses its own stream (seed, i)")
       .real("lj.perturbation", non_negative(), "each coordinate of the 3 x 3 grid perturbed uniformly by at most this (004: 0.01)")
       .real("lj.blowup", positive(), "|H - H0| above this marks a scan run diverged")

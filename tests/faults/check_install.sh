@@ -16,7 +16,8 @@ for exe in euler_compensation rowlands_convergence energy_map lobatto_table ti_d
   bin=$prefix/bin/$exe
   [[ -x $bin ]] || { echo "FAIL: $bin not installed"; exit 1; }
   [[ -f $scenes/$exe/$exe.toml && -f $scenes/$exe/quick.toml ]] || { echo "FAIL: $exe's scenes not installed"; exit 1; }
-  "$bin" --help | grep -qF "$scenes/$exe/$exe.toml" || { echo "FAIL: $exe --help does not name $scenes/$exe"; exit 1; }
+  help=$("$bin" --help)  # (not piped into grep -q, whose early exit would make pipefail report --help's SIGPIPE)
+  grep -qF "$scenes/$exe/$exe.toml" <<< "$help" || { echo "FAIL: $exe --help does not name $scenes/$exe"; exit 1; }
   "$bin" --list-keys --json > /dev/null || { echo "FAIL: $exe --list-keys --json"; exit 1; }
   "$bin" --plan > /dev/null || { echo "FAIL: $exe --plan on the installed paper scene"; exit 1; }
 done

@@ -1,18 +1,20 @@
 #!/usr/bin/env python3
 """The fault suite of one experiment: hostile input never crashes it, hangs it or makes it lie.
 
-    run_faults.py BIN WORK [--seed S] [--runs N] [--kills N]
+    run_faults.py BIN WORK [--seed S] [--runs N] [--kills N] [--checkpoint-set KEY=VALUE ...]
 
 1. Every scene key from `BIN --list-keys --json`, set to each hostile value of its type (0, -1, NaN,
    +-Inf, 1e300, 1e-300, 2^31, 2^63 - 1, 2^63, an empty list, a wrong type, a list of them), through
    `BIN --plan --json --set KEY=VALUE`. Allowed outcomes: exit 0 with a plan whose numbers are finite
    and non-negative; exit 2 with one line on stderr that names a scene key (the key itself, or, for a
    condition across keys, the one it conflicts with). Never a signal, exit 1, a hang, or more lines.
-2. A seeded sample of the accepted hostile settings whose quick plan is estimated under a few seconds
-   is run for real on the quick scene: exit 0 with finite results (summary.json and every CSV), exit 2
-   naming a key, or exit 4 (numerical failure) with DIR left as it was.
-3. Every study with a checkpoint (a key `checkpoint.stop_after` it reads): killed (SIGKILL) at seeded
-   random moments and resumed, the CSVs are byte-identical to an uninterrupted run; its checkpoint
+2. A seeded sample of the accepted hostile settings is run for real on the quick scene, restricted
+   to the studies that read the key, where its plan is estimated under a few seconds: exit 0 with
+   finite results (summary.json and every CSV; a CSV's nan only where its row says why, see
+   non_finite_in), exit 2 naming a key, or exit 4 (numerical failure) with DIR left as it was.
+3. Every study with a checkpoint (a key `checkpoint.stop_after` it reads), on the quick scene with a
+   save after every round (checkpoint.interval = 0) and the --checkpoint-set values on top (to keep a
+   long study short): killed (SIGKILL) at seeded random moments and resumed, the CSVs are byte-identical to an uninterrupted run; its checkpoint
    corrupted, truncated and tampered with, --resume exits 2 naming the file.
 Prints one line per failure and a tally; exits 1 if anything failed.
 """
@@ -126,24 +128,42 @@ def check_plan_faults(binary, keys, scene_args):
 
 
 def non_finite_in(out_dir):
-    for f in sorted(Path(out_dir).glob("*.csv")) + [Path(out_dir) / "summary.json"]:
+    """The first non-finite value of summary.json or a CSV (timing files aside). A CSV marks a value
+    that does not exist as nan, with a flag in the same row that says why: column `<what>_<part>`
+    beside `diverged_<part>` = 1 (energy_map's map.csv: eps_polar where diverged_polar = 1), or
+    column `<method>_<what>` beside `<method>_beyond_bound` = 1 (ti_drift's closed forms)."""
+    summary = Path(out_dir) / "summary.json"
+    m = NON_FINITE.search(summary.read_text())
+    if m:
+        return f"summary.json: '{m.group(0)}'"
+    for f in sorted(Path(out_dir).glob("*.csv")):
         if f.name.startswith("timing"):
             continue
-        m = NON_FINITE.search(f.read_text())
-        if m:
-            return f"{f.name}: '{m.group(0)}'"
+        lines = f.read_text().splitlines()
+        head = lines[0].split(",") if lines else []
+        flags = lambda c: ["diverged_" + c.rsplit("_", 1)[-1], c.split("_", 1)[0] + "_beyond_bound"]
+        flag = {i: [head.index(g) for g in flags(c) if g in head and g != c] for i, c in enumerate(head)}
+        for n, line in enumerate(lines[1:], 2):
+            cells = line.split(",")
+            for i, cell in enumerate(cells):
+                if NON_FINITE.search(cell):
+                    if any(g < len(cells) and cells[g].strip() == "1" for g in flag.get(i, [])):
+                        continue
+                    return f"{f.name} line {n}, column {head[i] if i < len(head) else i}: '{cell.strip()}'"
     return None
 
 
 def check_real_runs(binary, keys, accepted, work, rng, count):
     """Part 2: a sample of the accepted settings, run for real on the quick scene if short."""
     rng.shuffle(accepted)
+    used_by = {k["key"]: k["used_by"] for k in keys}
     done = 0
     for key, v in accepted:
         if done == count:
             break
         setting = f"{key}={v}"
-        rc, out, _ = run([binary, "--quick", "--plan", "--json", "--set", setting])
+        studies = [a for st in used_by.get(key, []) for a in ("--study", st)]
+        rc, out, _ = run([binary, "--quick", *studies, "--plan", "--json", "--set", setting])
         if rc != 0:
             continue  # refused for the quick scene: part 1 checks refusals
         plan = json.loads(out)
@@ -152,9 +172,9 @@ def check_real_runs(binary, keys, accepted, work, rng, count):
         done += 1
         out_dir = work / f"run-{done}"
         shutil.rmtree(out_dir, ignore_errors=True)
-        label = f"--quick --set {setting[:80]}"
+        label = f"--quick {' '.join(studies)} --set {setting[:80]}"
         t0 = time.monotonic()
-        rc, _, err = run([binary, "--quick", "--threads", "2", "--set", setting, "--out", str(out_dir)], timeout=120)
+        rc, _, err = run([binary, "--quick", *studies, "--threads", "2", "--set", setting, "--out", str(out_dir)], timeout=120)
         wall = time.monotonic() - t0
         if rc is None:
             fail(f"{label}: hangs (> 120 s; planned {plan['wall_s']:.2f} s)")
@@ -178,11 +198,13 @@ def csv_bytes(out_dir):
     return {f.name: f.read_bytes() for f in sorted(Path(out_dir).glob("*.csv")) if not f.name.startswith("timing")}
 
 
-def check_checkpoints(binary, keys, work, rng, kills):
+def check_checkpoints(binary, keys, work, rng, kills, settings):
     """Part 3: kill-and-resume and damaged checkpoints, for every study with a checkpoint."""
     studies = sorted({(k["key"], st) for k in keys if k["key"].endswith("checkpoint.stop_after") for st in k["used_by"]})
+    # a save after every round, so that a kill lands between saves
+    settings = (["checkpoint.interval=0"] if any(k["key"] == "checkpoint.interval" for k in keys) else []) + settings
     for key, study in studies:
-        base = [binary, "--quick", "--study", study]
+        base = [binary, "--quick", "--study", study] + [a for s in settings for a in ("--set", s)]
         ref = work / f"ckpt-{study}-ref"
         shutil.rmtree(ref, ignore_errors=True)
         t0 = time.monotonic()
@@ -211,7 +233,7 @@ def check_checkpoints(binary, keys, work, rng, kills):
             elif list(Path(str(out) + ".partial").glob("*")) or list(out.glob("*.tmp*")):
                 fail(f"{study}: resumed after a kill at {at:.2f} s: leftover staging or temporary files")
             print(f"  {study}: killed at {at:.2f} s of {duration:.2f} s, resumed -> exit {rc}", flush=True)
-        for damage in ("corrupt", "truncate", "tamper"):
+        for damage, done in (("corrupt", "corrupted"), ("truncate", "truncated"), ("tamper", "tampered with")):
             out = work / f"ckpt-{study}-{damage}"
             partial = Path(str(out) + ".partial")
             shutil.rmtree(out, ignore_errors=True), shutil.rmtree(partial, ignore_errors=True)
@@ -240,8 +262,8 @@ def check_checkpoints(binary, keys, work, rng, kills):
                 header.write_text(new)
             rc, _, err = run([*base, "--resume", "--out", str(out)], timeout=300)
             if rc != 2 or target.name not in err:
-                fail(f"{study}: --resume with a {damage}d {target.name}: exit {rc}, stderr: {err.strip()[-300:]}")
-            print(f"  {study}: {damage}d {target.name} -> exit {rc}", flush=True)
+                fail(f"{study}: --resume with {target.name} {done}: exit {rc}, stderr: {err.strip()[-300:]}")
+            print(f"  {study}: {target.name} {done} -> exit {rc}", flush=True)
     return len(studies)
 
 
@@ -252,6 +274,8 @@ def main():
     ap.add_argument("--seed", type=int, default=20261125)
     ap.add_argument("--runs", type=int, default=6, help="real runs of accepted hostile settings")
     ap.add_argument("--kills", type=int, default=2, help="kill-and-resume runs per checkpointed study")
+    ap.add_argument("--checkpoint-set", action="append", default=[], metavar="KEY=VALUE",
+                    help="a --set for the checkpoint runs (part 3), to keep a long study short")
     args = ap.parse_args()
     args.work.mkdir(parents=True, exist_ok=True)
     rng = random.Random(args.seed)
@@ -264,7 +288,7 @@ def main():
     t1 = time.monotonic()
     runs = check_real_runs(args.binary, keys, accepted, args.work, rng, args.runs)
     t2 = time.monotonic()
-    studies = check_checkpoints(args.binary, keys, args.work, rng, args.kills)
+    studies = check_checkpoints(args.binary, keys, args.work, rng, args.kills, args.checkpoint_set)
     t3 = time.monotonic()
     tried = sum(len(hostile_values(k)) for k in keys)
     print(f"{Path(args.binary).name}: {len(keys)} keys, {tried} hostile settings through --plan "

@@ -10,6 +10,7 @@ most 600 lines).
 """
 import json
 import pathlib
+import shutil
 import subprocess
 import sys
 import tomllib
@@ -25,7 +26,7 @@ def cited_tests(results, runs):
 
 
 def main() -> int:
-    source, results, work, methods_bin = (pathlib.Path(a) for a in sys.argv[1:5])
+    source, all_results, work, methods_bin = (pathlib.Path(a) for a in sys.argv[1:5])
     script = source / "scripts" / "report.py"
     problems = []
     text = script.read_text(encoding="utf-8")
@@ -37,6 +38,17 @@ def main() -> int:
     work.mkdir(parents=True, exist_ok=True)
     methods = work / "methods.json"
     methods.write_text(subprocess.run([str(methods_bin), "--json"], capture_output=True, text=True, check=True).stdout)
+    # The quick runs (<name>, and <name>-<v> of a second paper scene), copied: other tests write and remove
+    # directories of their own beside them while this one runs.
+    results = work / "results"
+    shutil.rmtree(results, ignore_errors=True)
+    for exp_dir in sorted((source / "experiments").glob("*/main.cpp")):
+        exp = exp_dir.parent.name
+        variants = [p.stem for p in exp_dir.parent.glob("*.toml")
+                    if p.stem not in (exp, "published", "quick") and not p.stem.startswith("quick-")]
+        for run in [exp] + [f"{exp}-{v}" for v in variants]:
+            if (all_results / run / "summary.json").exists():
+                shutil.copytree(all_results / run, results / run)
     runs = sorted(p.parent.name for p in results.glob("*/summary.json"))
     lookups_tex = work / "lookups.tex"  # every run's wall time, in two formats
     lookups_tex.write_text("".join(f"\\result{{{r}}}{{timing.wall_s}} \\result[sci]{{{r}}}{{timing.wall_s}}\n"

@@ -160,24 +160,10 @@ TEST(EnergyMap, CompensatedSummationKeepsTheAngularMomentumWherePlainSummationDr
   EXPECT_LT(r["cartesian_L_max_rel_drift"].get<double>(), r["cartesian_L_max_rel_drift_plain"].get<double>());
 }
 
+// The map stopped after one round of its Cartesian batches and resumed on 1 thread gives the files of a run
+// straight through (a stop during the polar batches: the fault suite's kills, tests/faults).
 TEST(EnergyMap, ResumeGivesTheSameMap) {
-  // Stop after one round of batches, resume, and compare with an uninterrupted run (the map study alone).
-  const std::string bin = std::string(GEOMINT_BIN_DIR) + "/energy_map --quick --study map --set grid.nx=48 --set grid.ny=48 ";
-  const fs::path a = dir.parent_path() / "energy_map-resume", b = dir.parent_path() / "energy_map-straight";
-  fs::remove_all(a), fs::remove_all(b), fs::remove_all(a.string() + ".partial");
-  const int stopped = std::system((bin + "--set checkpoint.stop_after=1 --out " + a.string() + " 2>/dev/null").c_str());
-  ASSERT_TRUE(WIFEXITED(stopped));
-  EXPECT_EQ(WEXITSTATUS(stopped), 3);
-  // A stopped run leaves DIR as it was and keeps its checkpoint in DIR.partial (runner/experiment.hpp).
-  const fs::path partial = a.string() + ".partial";
-  EXPECT_TRUE(fs::exists(partial / "energy_map.checkpoint.json"));
-  EXPECT_FALSE(fs::exists(a / "map.csv"));
-  EXPECT_FALSE(fs::exists(partial / "map.csv"));
-  ASSERT_EQ(std::system((bin + "--resume --out " + a.string() + " 2>/dev/null").c_str()), 0);
-  ASSERT_EQ(std::system((bin + "--out " + b.string() + " 2>/dev/null").c_str()), 0);
-  EXPECT_EQ(read(a / "map.csv"), read(b / "map.csv"));
-  EXPECT_FALSE(fs::exists(a / "energy_map.checkpoint.json"));
-  EXPECT_FALSE(fs::exists(partial));
+  expect_resume_identical("energy_map", "--quick --study map --set grid.nx=48 --set grid.ny=48", 1, "map");
 }
 
 TEST(EnergyMap, PrintedInverseOf63IsAnotherPendulum) {
@@ -311,34 +297,17 @@ TEST(EnergyMap, EveryTimedMeasurementReportsItsSpread) {
 
 namespace {
 
-struct Outcome {
-  int code;
-  std::string err;
-};
-
-Outcome run_energy_map(const std::string& args) {
-  const fs::path err = dir.parent_path() / "energy_map-refused.stderr";
-  const int status = std::system((std::string(GEOMINT_BIN_DIR) + "/energy_map " + args + " >/dev/null 2>" + err.string()).c_str());
-  return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, read(err)};
-}
-
 void expect_refused(const std::string& args, const std::vector<std::string>& needles) {
-  const fs::path out = dir.parent_path() / "energy_map-refused";
-  fs::remove_all(out), fs::remove_all(out.string() + ".partial");
-  const Outcome r = run_energy_map("--quick --out " + out.string() + " " + args);
-  EXPECT_EQ(r.code, 2) << args << "\n" << r.err;
-  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-  for (const auto& n : needles) EXPECT_NE(r.err.find(n), std::string::npos) << "missing '" << n << "' in: " << r.err;
-  EXPECT_FALSE(fs::exists(out)) << args;
-  EXPECT_FALSE(fs::exists(out.string() + ".partial")) << args;
+  expect_exit("energy_map", 2, args, needles);
 }
 
-// A map stopped after one round (exit 3), its checkpoint in DIR.partial, for the --resume tests.
+const std::string kSmallMap = "--quick --study map --threads 2 --set grid.nx=48 --set grid.ny=48 ";
+
+// A map stopped after one round of 2 batches (exit 3), its checkpoint in DIR.partial, for the --resume tests.
 fs::path stopped_map(const std::string& name) {
   const fs::path out = dir.parent_path() / name;
   fs::remove_all(out), fs::remove_all(out.string() + ".partial");
-  const Outcome r = run_energy_map("--quick --study map --set grid.nx=48 --set grid.ny=48 --set checkpoint.stop_after=1 "
-                                   "--out " + out.string());
+  const BinaryOutcome r = run_binary("energy_map", kSmallMap + "--set checkpoint.stop_after=1 --out " + out.string());
   EXPECT_EQ(r.code, 3) << r.err;
   return out;
 }
@@ -377,48 +346,64 @@ TEST(EnergyMap, PlanOfThePaperSceneCountsEveryStudy) {
   EXPECT_FALSE(fs::exists(out));
 }
 
-// --resume with a checkpoint that counts more batches than the map has (it used to segfault).
-TEST(EnergyMap, ResumeRefusesACheckpointBeyondTheMap) {
-  const fs::path out = stopped_map("energy_map-ckpt-beyond"), ckpt = out.string() + ".partial/energy_map.checkpoint.json";
-  std::string c = read(ckpt);  // (edited as text: the scene's key order is part of what it is compared by)
-  const auto at = c.find("\"batches_done\":32");
-  ASSERT_NE(at, std::string::npos) << c;
-  c.replace(at, 17, "\"batches_done\":1000000");
-  std::ofstream(ckpt) << c;
-  const Outcome r = run_energy_map("--quick --study map --set grid.nx=48 --set grid.ny=48 --resume --out " + out.string());
-  EXPECT_EQ(r.code, 2) << r.err;
-  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-  EXPECT_NE(r.err.find(ckpt.string()), std::string::npos) << r.err;
-  EXPECT_NE(r.err.find("batches_done"), std::string::npos) << r.err;
-  EXPECT_FALSE(fs::exists(out));
-}
-
-// --resume with a header that is not JSON, or a points log shorter than its header counts: the file named, what to do.
-TEST(EnergyMap, ResumeRefusesACorruptCheckpoint) {
-  const std::string args = "--quick --study map --set grid.nx=48 --set grid.ny=48 --resume --out ";
+// --resume with a checkpoint that counts more batches than the map has (it used to segfault), a header that is not
+// JSON, or a record log shorter than its header counts: exit 2, one line naming the file (and the field).
+TEST(EnergyMap, ResumeRefusesADamagedCheckpoint) {
+  const auto resume = [](const fs::path& out) { return run_binary("energy_map", kSmallMap + "--resume --out " + out.string()); };
   {
-    const fs::path out = stopped_map("energy_map-ckpt-corrupt"), ckpt = out.string() + ".partial/energy_map.checkpoint.json";
-    std::ofstream(ckpt) << "{\"scene\": ";
-    const Outcome r = run_energy_map(args + out.string());
+    const fs::path out = stopped_map("energy_map-ckpt-beyond"), ckpt = out.string() + ".partial/map.cartesian.checkpoint.json";
+    std::string c = read(ckpt);
+    const std::string was = "\"tasks_done\": 2,";
+    const auto at = c.find(was);
+    ASSERT_NE(at, std::string::npos) << c;
+    c.replace(at, was.size(), "\"tasks_done\": 1000000,");
+    std::ofstream(ckpt) << c;
+    const BinaryOutcome r = resume(out);
     EXPECT_EQ(r.code, 2) << r.err;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
     EXPECT_NE(r.err.find(ckpt.string()), std::string::npos) << r.err;
-    EXPECT_NE(r.err.find("delete"), std::string::npos) << r.err;
+    EXPECT_NE(r.err.find("tasks_done"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(out));
   }
   {
-    const fs::path out = stopped_map("energy_map-ckpt-short"), log = out.string() + ".partial/energy_map.checkpoint.points";
+    const fs::path out = stopped_map("energy_map-ckpt-corrupt"), ckpt = out.string() + ".partial/map.cartesian.checkpoint.json";
+    std::ofstream(ckpt) << "{\"format\": ";
+    const BinaryOutcome r = resume(out);
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find(ckpt.string()), std::string::npos) << r.err;
+  }
+  {
+    const fs::path out = stopped_map("energy_map-ckpt-short"), log = out.string() + ".partial/map.cartesian.checkpoint.log";
     fs::resize_file(log, 1000);
-    const Outcome r = run_energy_map(args + out.string());
+    const BinaryOutcome r = resume(out);
     EXPECT_EQ(r.code, 2) << r.err;
     EXPECT_NE(r.err.find(log.string()), std::string::npos) << r.err;
   }
 }
 
-// The checkpoint holds each finished batch once (O(grid), not rewritten in full each round): 32 bytes per
-// point of the batches its header counts.
+// The checkpoint holds each finished batch once (O(grid), not rewritten in full each round): per batch a count and
+// 64 (eps, diverge_step) pairs, for the batches its header counts.
 TEST(EnergyMap, CheckpointHoldsEachBatchOnce) {
   const fs::path out = stopped_map("energy_map-ckpt-size");
-  const json c = json::parse(read(out.string() + ".partial/energy_map.checkpoint.json"));
-  EXPECT_EQ(c["batches_done"].get<std::size_t>(), 32u);
-  EXPECT_EQ(fs::file_size(out.string() + ".partial/energy_map.checkpoint.points"), 32u * 64u * 32u);
+  const json c = json::parse(read(out.string() + ".partial/map.cartesian.checkpoint.json"));
+  EXPECT_EQ(c["tasks_done"].get<std::size_t>(), 2u);
+  EXPECT_EQ(c["log_bytes"].get<std::size_t>(), 2u * (8u + 128u * 8u));
+  EXPECT_EQ(fs::file_size(out.string() + ".partial/map.cartesian.checkpoint.log"), 2u * (8u + 128u * 8u));
+  EXPECT_FALSE(fs::exists(out.string() + ".partial/map.polar.checkpoint.json"));
+}
+
+// Progress off a terminal (CI logs, batch jobs): a line when a checkpointed loop starts (where its rate is
+// measured from), then at most one every 10 s (with the rate, the time elapsed and the time left:
+// unit.Progress.*), and one when it ends (runner/experiment.hpp: Context::progress).
+TEST(EnergyMap, ProgressMarksTheStartAndTheEndOfEachLoop) {
+  const fs::path out = dir.parent_path() / "energy_map-progress";
+  fs::remove_all(out);
+  const BinaryOutcome r = run_binary("energy_map", kSmallMap + "--out " + out.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto start = r.err.find("  map.cartesian: 0 / 36 tasks\n"), end = r.err.find("  map.polar: 36 / 36 tasks\n");
+  EXPECT_NE(start, std::string::npos) << r.err;
+  EXPECT_NE(end, std::string::npos) << r.err;
+  EXPECT_LT(start, end) << r.err;
+  fs::remove_all(out);
 }

@@ -167,81 +167,17 @@ TEST(EulerCompensation, EveryTimedMeasurementReportsItsSpread) {
 }
 
 // ---- Bad input (the interface contract): exit 2 before any work, one stderr line naming the key,
-// the value and what is allowed, no results directory; --plan of the paper scene. ----
-
-namespace {
-
-struct CliOutcome {
-  int code;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-// Runs the experiment's binary with `args`; its exit code, stdout and stderr.
-CliOutcome run_euler_compensation(const std::string& args) {
-  const fs::path work = fs::path(GEOMINT_TEST_RESULTS) / ("euler_compensation-cli-" + std::to_string(::getpid()));
-  fs::create_directories(work);
-  const int status = std::system((std::string(GEOMINT_BIN_DIR) + "/euler_compensation " + args + " >" + (work / "out.txt").string() +
-                                  " 2>" + (work / "err.txt").string()).c_str());
-  CliOutcome r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(work / "out.txt"), slurp(work / "err.txt")};
-  fs::remove_all(work);
-  return r;
-}
-
-// The quick scene with `set` (--set arguments) is refused: exit `code`, one stderr line holding every
-// needle, and --out not created.
-void expect_euler_compensation_refused(const std::string& set, const std::vector<std::string>& needles, int code = 2) {
-  const fs::path out = fs::path(GEOMINT_TEST_RESULTS) / ("euler_compensation-refused-" + std::to_string(::getpid()));
-  fs::remove_all(out);
-  const CliOutcome r = run_euler_compensation("--quick --threads 1 --out " + out.string() + " " + set);
-  EXPECT_EQ(r.code, code) << set << "\n" << r.err;
-  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-  for (const auto& n : needles) EXPECT_NE(r.err.find(n), std::string::npos) << "missing '" << n << "' in: " << r.err;
-  EXPECT_FALSE(fs::exists(out)) << set;
-  EXPECT_FALSE(fs::exists(out.string() + ".partial")) << set;
-  fs::remove_all(out);
-}
-
-// --plan of the paper scene: exit 0, a line per study with a finite step count.
-void expect_euler_compensation_plan(const std::vector<std::string>& studies) {
-  const CliOutcome r = run_euler_compensation("--plan --out " + (fs::path(GEOMINT_TEST_RESULTS) / "euler_compensation-plan-never-written").string());
-  ASSERT_EQ(r.code, 0) << r.err;
-  for (const auto& st : studies) {
-    std::istringstream lines(r.out);
-    std::string line;
-    bool found = false;
-    while (std::getline(lines, line)) {
-      std::istringstream words(line);
-      std::string name, steps;
-      words >> name >> steps;
-      if (name != st) continue;
-      found = true;
-      char* end = nullptr;
-      const double n = std::strtod(steps.c_str(), &end);
-      EXPECT_TRUE(end != steps.c_str() && *end == '\0' && std::isfinite(n) && n > 0) << line;
-    }
-    EXPECT_TRUE(found) << st << " missing in:\n" << r.out;
-  }
-  EXPECT_FALSE(fs::exists(fs::path(GEOMINT_TEST_RESULTS) / "euler_compensation-plan-never-written"));
-}
-
-}  // namespace
+// the value and what is allowed, no results directory; --plan of the paper scene (tests/regression/summary.hpp: expect_exit, expect_plan). ----
 
 TEST(EulerCompensation, RefuseStepCountBeyond2To53) {
-  expect_euler_compensation_refused("--set convergence.t_end=1e300", {"convergence.h", "2^53"});
+  expect_exit("euler_compensation", 2, "--set convergence.t_end=1e300", {"convergence.h", "2^53"});
 }
 TEST(EulerCompensation, RefuseRepeatsBeyondInt) {
-  expect_euler_compensation_refused("--set timing.repeats=2147483648", {"timing.repeats", "2147483648"});
+  expect_exit("euler_compensation", 2, "--set timing.repeats=2147483648", {"timing.repeats", "2147483648"});
 }
 TEST(EulerCompensation, RefuseFigureLongerThanMemory) {
-  expect_euler_compensation_refused("--set oscillator.steps=2000000000", {"oscillator", "memory"});
+  expect_exit("euler_compensation", 2, "--set oscillator.steps=2000000000", {"oscillator", "memory"});
 }
 TEST(EulerCompensation, PlanOfThePaperSceneHasFiniteStepCounts) {
-  expect_euler_compensation_plan({"decay", "gompertz", "oscillator", "convergence", "timing"});
+  expect_plan("euler_compensation", {"decay", "gompertz", "oscillator", "convergence", "timing"});
 }

@@ -167,93 +167,29 @@ TEST(LobattoTable, EveryTimedMeasurementReportsItsSpread) {
 }
 
 // ---- Bad input (the interface contract): exit 2 before any work, one stderr line naming the key,
-// the value and what is allowed, no results directory; --plan of the paper scene. ----
-
-namespace {
-
-struct CliOutcome {
-  int code;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-// Runs the experiment's binary with `args`; its exit code, stdout and stderr.
-CliOutcome run_lobatto_table(const std::string& args) {
-  const fs::path work = fs::path(GEOMINT_TEST_RESULTS) / ("lobatto_table-cli-" + std::to_string(::getpid()));
-  fs::create_directories(work);
-  const int status = std::system((std::string(GEOMINT_BIN_DIR) + "/lobatto_table " + args + " >" + (work / "out.txt").string() +
-                                  " 2>" + (work / "err.txt").string()).c_str());
-  CliOutcome r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(work / "out.txt"), slurp(work / "err.txt")};
-  fs::remove_all(work);
-  return r;
-}
-
-// The quick scene with `set` (--set arguments) is refused: exit `code`, one stderr line holding every
-// needle, and --out not created.
-void expect_lobatto_table_refused(const std::string& set, const std::vector<std::string>& needles, int code = 2) {
-  const fs::path out = fs::path(GEOMINT_TEST_RESULTS) / ("lobatto_table-refused-" + std::to_string(::getpid()));
-  fs::remove_all(out);
-  const CliOutcome r = run_lobatto_table("--quick --threads 1 --out " + out.string() + " " + set);
-  EXPECT_EQ(r.code, code) << set << "\n" << r.err;
-  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-  for (const auto& n : needles) EXPECT_NE(r.err.find(n), std::string::npos) << "missing '" << n << "' in: " << r.err;
-  EXPECT_FALSE(fs::exists(out)) << set;
-  EXPECT_FALSE(fs::exists(out.string() + ".partial")) << set;
-  fs::remove_all(out);
-}
-
-// --plan of the paper scene: exit 0, a line per study with a finite step count.
-void expect_lobatto_table_plan(const std::vector<std::string>& studies) {
-  const CliOutcome r = run_lobatto_table("--plan --out " + (fs::path(GEOMINT_TEST_RESULTS) / "lobatto_table-plan-never-written").string());
-  ASSERT_EQ(r.code, 0) << r.err;
-  for (const auto& st : studies) {
-    std::istringstream lines(r.out);
-    std::string line;
-    bool found = false;
-    while (std::getline(lines, line)) {
-      std::istringstream words(line);
-      std::string name, steps;
-      words >> name >> steps;
-      if (name != st) continue;
-      found = true;
-      char* end = nullptr;
-      const double n = std::strtod(steps.c_str(), &end);
-      EXPECT_TRUE(end != steps.c_str() && *end == '\0' && std::isfinite(n) && n > 0) << line;
-    }
-    EXPECT_TRUE(found) << st << " missing in:\n" << r.out;
-  }
-  EXPECT_FALSE(fs::exists(fs::path(GEOMINT_TEST_RESULTS) / "lobatto_table-plan-never-written"));
-}
-
-}  // namespace
+// the value and what is allowed, no results directory; --plan of the paper scene (tests/regression/summary.hpp: expect_exit, expect_plan). ----
 
 TEST(LobattoTable, RefuseStepCountBeyond2To53) {
-  expect_lobatto_table_refused("--set long_run.periods=1e300", {"long_run", "2^53"});
+  expect_exit("lobatto_table", 2, "--set long_run.periods=1e300", {"long_run", "2^53"});
 }
 TEST(LobattoTable, RefuseNonlinearStepThatDoesNotDivideTEnd) {
-  expect_lobatto_table_refused("--set nonlinear.t_end=20.03", {"nonlinear.h", "divide nonlinear.t_end", "20.03"});
+  expect_exit("lobatto_table", 2, "--set nonlinear.t_end=20.03", {"nonlinear.h", "divide nonlinear.t_end", "20.03"});
 }
 TEST(LobattoTable, RefuseNonlinearStepsBeyondTheStabilityBound) {
-  expect_lobatto_table_refused("--set 'nonlinear.h=[10,5,2.5]'", {"nonlinear.h", "unstable", "h omega"});
+  expect_exit("lobatto_table", 2, "--set 'nonlinear.h=[10,5,2.5]'", {"nonlinear.h", "unstable", "h omega"});
 }
 TEST(LobattoTable, RefuseRepeatsBeyondInt) {
-  expect_lobatto_table_refused("--set timing.repeats=2147483648", {"timing.repeats", "2147483648"});
+  expect_exit("lobatto_table", 2, "--set timing.repeats=2147483648", {"timing.repeats", "2147483648"});
 }
 TEST(LobattoTable, RefuseReferenceToleranceOutsideRange) {
-  expect_lobatto_table_refused("--set reference.rtol=1e300", {"reference.rtol", "1e+300", "<= 0.01"});
-  expect_lobatto_table_refused("--set reference.atol=1e-300", {"reference.atol", ">= 1e-15"});
+  expect_exit("lobatto_table", 2, "--set reference.rtol=1e300", {"reference.rtol", "1e+300", "<= 0.01"});
+  expect_exit("lobatto_table", 2, "--set reference.atol=1e-300", {"reference.atol", ">= 1e-15"});
 }
 TEST(LobattoTable, RefuseSingularElasticInitialCondition) {
-  expect_lobatto_table_refused("--set 'nonlinear.elastic_initial=[[0.0, 0.0, 0.1, 0.0]]'", {"nonlinear.elastic_initial", "singular"});
+  expect_exit("lobatto_table", 2, "--set 'nonlinear.elastic_initial=[[0.0, 0.0, 0.1, 0.0]]'", {"nonlinear.elastic_initial", "singular"});
 }
 TEST(LobattoTable, PlanOfThePaperSceneHasFiniteStepCounts) {
-  expect_lobatto_table_plan({"table1", "figure1", "long_run", "stability", "nonlinear", "timing", "long_run_cost"});
+  expect_plan("lobatto_table", {"table1", "figure1", "long_run", "stability", "nonlinear", "timing", "long_run_cost"});
 }
 
 // Checkpoints (runner/checkpoint.hpp): the long runs of the cost study, stopped after one round and resumed (on 1

@@ -156,89 +156,27 @@ TEST(MeasureCloud, WorkPrecisionOrdersAndReference) {
 }
 
 // ---- bad input: exit 2 before any work, one line naming the key, the value and what is allowed, nothing in --out;
-// a numerical failure: exit 4 ----
-namespace {
-namespace fs = std::filesystem;
-
-struct Outcome {
-  int code;
-  std::string err, out;
-};
-
-// Runs the experiment's binary with `args` (and --out DIR unless `plan`), stderr and stdout kept.
-Outcome run_measure_cloud(const std::string& args, const fs::path& out_dir) {
-  const fs::path work = fs::path(GEOMINT_TEST_RESULTS) / ("measure_cloud-cli-" + std::to_string(::getpid()));
-  fs::create_directories(work);
-  const fs::path err = work / "stderr.txt", out = work / "stdout.txt";
-  const std::string cmd = std::string(GEOMINT_BIN_DIR) + "/measure_cloud " + args +
-                          (out_dir.empty() ? "" : " --out " + out_dir.string()) + " >" + out.string() + " 2>" + err.string();
-  const int status = std::system(cmd.c_str());
-  const auto slurp = [](const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-  };
-  Outcome o{WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(err), slurp(out)};
-  fs::remove_all(work);
-  return o;
-}
-
-// --quick --set `set`: exit `code`, the last line on stderr (the only one for code 2) holding every needle, no DIR
-// (nor DIR.partial) left.
-void expect_measure_cloud_exit(int code, const std::string& set, const std::vector<std::string>& needles) {
-  const fs::path out = fs::path(GEOMINT_TEST_RESULTS) / ("measure_cloud-refused-" + std::to_string(::getpid()));
-  fs::remove_all(out);
-  const Outcome r = run_measure_cloud("--quick --set '" + set + "'", out);
-  EXPECT_EQ(r.code, code) << set << "\n" << r.err;
-  // refused: the one line; a numerical failure: its last line (after the progress lines of the work done)
-  if (code == 2) EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-  const std::string last = r.err.substr(r.err.rfind('\n', r.err.size() - 2) + 1);
-  for (const auto& n : needles) EXPECT_NE(last.find(n), std::string::npos) << "missing '" << n << "' in: " << r.err;
-  EXPECT_FALSE(fs::exists(out)) << set;
-  EXPECT_FALSE(fs::exists(out.string() + ".partial")) << set;
-}
-
-// --plan of the paper scene: exit 0, a line per study with a finite step count, nothing run.
-void expect_measure_cloud_plan(const std::vector<std::string>& studies, const std::string& scene = {}) {
-  const Outcome r = run_measure_cloud("--plan" + (scene.empty() ? std::string() : " --scene " + scene), {});
-  ASSERT_EQ(r.code, 0) << r.err;
-  for (const auto& st : studies) {
-    std::istringstream lines(r.out);
-    std::string line;
-    bool found = false;
-    while (std::getline(lines, line)) {
-      std::istringstream words(line);
-      std::string name, steps;
-      if (!(words >> name >> steps) || name != st) continue;
-      found = true;
-      const double n = std::strtod(steps.c_str(), nullptr);
-      EXPECT_TRUE(std::isfinite(n) && n > 0 && n <= 9007199254740992.0) << st << ": " << line;
-    }
-    EXPECT_TRUE(found) << "no plan line for " << st << " in:\n" << r.out;
-  }
-}
-}  // namespace
+// a numerical failure: exit 4 (tests/regression/summary.hpp: expect_exit, expect_plan) ----
 
 TEST(MeasureCloud, RefusesACloudRadiusBeyondANeighbourhood) {  // radius 1e300 once crashed Qhull
-  expect_measure_cloud_exit(2, "cloud.radius=1e300", {"cloud.radius = 1e+300", "<= 1"});
-  expect_measure_cloud_exit(2, "order_study.radius=10", {"order_study.radius = 10", "<= 1"});
+  expect_exit("measure_cloud", 2, "--set 'cloud.radius=1e300'", {"cloud.radius = 1e+300", "<= 1"});
+  expect_exit("measure_cloud", 2, "--set 'order_study.radius=10'", {"order_study.radius = 10", "<= 1"});
 }
 TEST(MeasureCloud, RefusesAStepAtWhichNewtonDoesNotConverge) {  // h = 5 once failed after the work had started
-  expect_measure_cloud_exit(2, "h=5", {"h = 5", "Newton iteration of the conformal step"});
-  expect_measure_cloud_exit(2, "order_study.h=[5, 0.2, 0.1]", {"order_study.h", "Newton", "h = 5"});
+  expect_exit("measure_cloud", 2, "--set 'h=5'", {"h = 5", "Newton iteration of the conformal step"});
+  expect_exit("measure_cloud", 2, "--set 'order_study.h=[5, 0.2, 0.1]'", {"order_study.h", "Newton", "h = 5"});
 }
 TEST(MeasureCloud, RefusesAStepCountBeyond2To53) {
-  expect_measure_cloud_exit(2, "t_end=1e300", {"study volumes", "exceed 2^53"});
-  expect_measure_cloud_exit(2, "shape.snapshot_dt=1e300", {"study shape", "exceed 2^53"});  // once a segfault
+  expect_exit("measure_cloud", 2, "--set 't_end=1e300'", {"study volumes", "exceed 2^53"});
+  expect_exit("measure_cloud", 2, "--set 'shape.snapshot_dt=1e300'", {"study shape", "exceed 2^53"});  // once a segfault
 }
 TEST(MeasureCloud, RefusesAReferenceToleranceOutsideItsRange) {
-  expect_measure_cloud_exit(2, "reference.rtol=1e-300", {"reference.rtol", "1e-300", ">= 1e-15"});
-  expect_measure_cloud_exit(2, "reference.atol=1", {"reference.atol", "<= 0.01"});
+  expect_exit("measure_cloud", 2, "--set 'reference.rtol=1e-300'", {"reference.rtol", "1e-300", ">= 1e-15"});
+  expect_exit("measure_cloud", 2, "--set 'reference.atol=1'", {"reference.atol", "<= 0.01"});
 }
 TEST(MeasureCloud, PlanOfThePaperScenesCountsEveryStudy) {
-  expect_measure_cloud_plan({"shape", "volumes", "energies", "order_study", "cost"});
-  expect_measure_cloud_plan({"energies", "long_run"}, std::string(GEOMINT_SOURCE_DIR) + "/experiments/measure_cloud/free.toml");
+  expect_plan("measure_cloud", {"shape", "volumes", "energies", "order_study", "cost"});
+  expect_plan("measure_cloud", {"energies", "long_run"}, "--scene " + std::string(GEOMINT_SOURCE_DIR) + "/experiments/measure_cloud/free.toml");
 }
 // The hull refuses what Qhull cannot take, instead of crashing or printing its dump: a non-finite point, a cloud
 // beyond 1e100, a flat cloud (Qhull's own failure, its first line in the message).

@@ -196,82 +196,18 @@ TEST(RowlandsConvergence, EveryTimedMeasurementReportsItsSpread) {
 }
 
 // ---- Bad input (the interface contract): exit 2 before any work, one stderr line naming the key,
-// the value and what is allowed, no results directory; --plan of the paper scene. ----
-
-namespace {
-
-struct CliOutcome {
-  int code;
-  std::string out, err;
-};
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-// Runs the experiment's binary with `args`; its exit code, stdout and stderr.
-CliOutcome run_rowlands_convergence(const std::string& args) {
-  const fs::path work = fs::path(GEOMINT_TEST_RESULTS) / ("rowlands_convergence-cli-" + std::to_string(::getpid()));
-  fs::create_directories(work);
-  const int status = std::system((std::string(GEOMINT_BIN_DIR) + "/rowlands_convergence " + args + " >" + (work / "out.txt").string() +
-                                  " 2>" + (work / "err.txt").string()).c_str());
-  CliOutcome r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(work / "out.txt"), slurp(work / "err.txt")};
-  fs::remove_all(work);
-  return r;
-}
-
-// The quick scene with `set` (--set arguments) is refused: exit `code`, one stderr line holding every
-// needle, and --out not created.
-void expect_rowlands_convergence_refused(const std::string& set, const std::vector<std::string>& needles, int code = 2) {
-  const fs::path out = fs::path(GEOMINT_TEST_RESULTS) / ("rowlands_convergence-refused-" + std::to_string(::getpid()));
-  fs::remove_all(out);
-  const CliOutcome r = run_rowlands_convergence("--quick --threads 1 --out " + out.string() + " " + set);
-  EXPECT_EQ(r.code, code) << set << "\n" << r.err;
-  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-  for (const auto& n : needles) EXPECT_NE(r.err.find(n), std::string::npos) << "missing '" << n << "' in: " << r.err;
-  EXPECT_FALSE(fs::exists(out)) << set;
-  EXPECT_FALSE(fs::exists(out.string() + ".partial")) << set;
-  fs::remove_all(out);
-}
-
-// --plan of the paper scene: exit 0, a line per study with a finite step count.
-void expect_rowlands_convergence_plan(const std::vector<std::string>& studies) {
-  const CliOutcome r = run_rowlands_convergence("--plan --out " + (fs::path(GEOMINT_TEST_RESULTS) / "rowlands_convergence-plan-never-written").string());
-  ASSERT_EQ(r.code, 0) << r.err;
-  for (const auto& st : studies) {
-    std::istringstream lines(r.out);
-    std::string line;
-    bool found = false;
-    while (std::getline(lines, line)) {
-      std::istringstream words(line);
-      std::string name, steps;
-      words >> name >> steps;
-      if (name != st) continue;
-      found = true;
-      char* end = nullptr;
-      const double n = std::strtod(steps.c_str(), &end);
-      EXPECT_TRUE(end != steps.c_str() && *end == '\0' && std::isfinite(n) && n > 0) << line;
-    }
-    EXPECT_TRUE(found) << st << " missing in:\n" << r.out;
-  }
-  EXPECT_FALSE(fs::exists(fs::path(GEOMINT_TEST_RESULTS) / "rowlands_convergence-plan-never-written"));
-}
-
-}  // namespace
+// the value and what is allowed, no results directory; --plan of the paper scene (tests/regression/summary.hpp: expect_exit, expect_plan). ----
 
 TEST(RowlandsConvergence, RefuseReferenceToleranceOutsideRange) {
-  expect_rowlands_convergence_refused("--set reference.rtol=1e300", {"reference.rtol", "1e+300", "<= 0.01"});
-  expect_rowlands_convergence_refused("--set reference.rtol=1e-300", {"reference.rtol", "1e-300", ">= 1e-15"});
+  expect_exit("rowlands_convergence", 2, "--set reference.rtol=1e300", {"reference.rtol", "1e+300", "<= 0.01"});
+  expect_exit("rowlands_convergence", 2, "--set reference.rtol=1e-300", {"reference.rtol", "1e-300", ">= 1e-15"});
 }
 TEST(RowlandsConvergence, RefuseStepCountBeyond2To53) {
-  expect_rowlands_convergence_refused("--set t_end=1e300", {"h", "2^53"});
+  expect_exit("rowlands_convergence", 2, "--set t_end=1e300", {"h", "2^53"});
 }
 TEST(RowlandsConvergence, RefuseRepeatsBeyondInt) {
-  expect_rowlands_convergence_refused("--set timing.repeats=2147483648", {"timing.repeats", "2147483648"});
+  expect_exit("rowlands_convergence", 2, "--set timing.repeats=2147483648", {"timing.repeats", "2147483648"});
 }
 TEST(RowlandsConvergence, PlanOfThePaperSceneHasFiniteStepCounts) {
-  expect_rowlands_convergence_plan({"convergence", "timing"});
+  expect_plan("rowlands_convergence", {"convergence", "timing"});
 }

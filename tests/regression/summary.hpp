@@ -1,6 +1,7 @@
 #pragma once
 // The summary.json and CSV files of an experiment's quick run (the ctest fixture <name>.quick_run).
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -9,6 +10,7 @@
 #include <fstream>
 #include <iterator>
 #include <map>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -77,6 +79,75 @@ inline double largest_spread(const CsvFile& t) {
   return largest;
 }
 
+// ---- Running an experiment's binary (the command-line tests) ----
+
+inline std::string file_text(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+struct BinaryOutcome {
+  int code;  // the exit code; -1 if the process did not exit normally
+  std::string out, err;
+};
+
+// Runs GEOMINT_BIN_DIR/<experiment> with `args` (shell words): its exit code, stdout and stderr.
+inline BinaryOutcome run_binary(const std::string& experiment, const std::string& args) {
+  namespace fs = std::filesystem;
+  const fs::path work = fs::path(GEOMINT_TEST_RESULTS) / (experiment + "-cli-" + std::to_string(::getpid()));
+  fs::create_directories(work);
+  const fs::path out = work / "stdout.txt", err = work / "stderr.txt";
+  const int status = std::system((std::string(GEOMINT_BIN_DIR) + "/" + experiment + " " + args + " >" + out.string() +
+                                  " 2>" + err.string()).c_str());
+  BinaryOutcome r{WIFEXITED(status) ? WEXITSTATUS(status) : -1, file_text(out), file_text(err)};
+  fs::remove_all(work);
+  return r;
+}
+
+// The quick scene with `args` (e.g. "--set 'key=value'") ends with exit `code`: for 2 (refused before
+// any work) exactly one line on stderr, otherwise (a numerical failure after some work) its last
+// line, holding every needle; --out neither created nor DIR.partial left.
+inline void expect_exit(const std::string& experiment, int code, const std::string& args,
+                        const std::vector<std::string>& needles) {
+  namespace fs = std::filesystem;
+  const fs::path out = fs::path(GEOMINT_TEST_RESULTS) / (experiment + "-refused-" + std::to_string(::getpid()));
+  fs::remove_all(out), fs::remove_all(out.string() + ".partial");
+  const BinaryOutcome r = run_binary(experiment, "--quick --out " + out.string() + " " + args);
+  EXPECT_EQ(r.code, code) << args << "\n" << r.err;
+  if (code == 2) EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  const std::string last = r.err.substr(r.err.rfind('\n', r.err.size() - 2) + 1);
+  for (const auto& n : needles) EXPECT_NE(last.find(n), std::string::npos) << "missing '" << n << "' in: " << r.err;
+  EXPECT_FALSE(fs::exists(out)) << args;
+  EXPECT_FALSE(fs::exists(out.string() + ".partial")) << args;
+}
+
+// --plan (with `args`, e.g. a --scene; default the paper scene): exit 0, a line per study with a step
+// count in (0, 2^53], and --out not created (nothing runs).
+inline void expect_plan(const std::string& experiment, const std::vector<std::string>& studies,
+                        const std::string& args = {}) {
+  namespace fs = std::filesystem;
+  const fs::path never = fs::path(GEOMINT_TEST_RESULTS) / (experiment + "-plan-never-written");
+  const BinaryOutcome r = run_binary(experiment, "--plan " + args + " --out " + never.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (const auto& st : studies) {
+    std::istringstream lines(r.out);
+    std::string line;
+    bool found = false;
+    while (std::getline(lines, line)) {
+      std::istringstream words(line);
+      std::string name, steps;
+      if (!(words >> name >> steps) || name != st) continue;
+      found = true;
+      char* end = nullptr;
+      const double n = std::strtod(steps.c_str(), &end);
+      EXPECT_TRUE(end != steps.c_str() && *end == '\0' && std::isfinite(n) && n > 0 && n <= 9007199254740992.0)
+          << st << ": " << line;
+    }
+    EXPECT_TRUE(found) << "no plan line for " << st << " in:\n" << r.out;
+  }
+  EXPECT_FALSE(fs::exists(never));
+}
+
 // Checkpoints (runner/checkpoint.hpp): `experiment` with `args` (a scene, a study, small --set values) stopped
 // after one round (checkpoint.stop_after = 1: exit 3, the results directory DIR as it was, a *.checkpoint.json in
 // DIR.partial), resumed with --threads `resume_threads`, gives the CSV files and summary.json (its timing aside)
@@ -84,10 +155,7 @@ inline double largest_spread(const CsvFile& t) {
 inline void expect_resume_identical(const std::string& experiment, const std::string& args, int resume_threads,
                                     const std::string& tag) {
   namespace fs = std::filesystem;
-  const auto read = [](const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    return std::string(std::istreambuf_iterator<char>(in), {});
-  };
+  const auto read = file_text;
   const auto run = [&](const std::string& more, const fs::path& out) {
     const int status = std::system((std::string(GEOMINT_BIN_DIR) + "/" + experiment + " " + args + " " + more +
                                     " --out " + out.string() + " >/dev/null 2>" + out.string() + ".stderr").c_str());
@@ -100,8 +168,10 @@ inline void expect_resume_identical(const std::string& experiment, const std::st
   std::ofstream(a / "run.json") << "{\"experiment\": \"" << experiment << "\"}\n";
   ASSERT_EQ(run("--threads 2 --set checkpoint.stop_after=1", a), 3) << read(a.string() + ".stderr");
   const std::string stopped = read(a.string() + ".stderr");
-  EXPECT_NE(stopped.find("continue with: "), std::string::npos) << stopped;
-  EXPECT_NE(stopped.find("--resume"), std::string::npos) << stopped;
+  const auto command = stopped.find("continue with: ");
+  ASSERT_NE(command, std::string::npos) << stopped;
+  EXPECT_NE(stopped.find("--resume", command), std::string::npos) << stopped;
+  EXPECT_EQ(stopped.find("stop_after", command), std::string::npos) << "the resume command stops again: " << stopped;
   EXPECT_EQ(std::distance(fs::directory_iterator(a), fs::directory_iterator{}), 1);
   int checkpoints = 0;
   for (const auto& e : fs::directory_iterator(partial)) checkpoints += e.path().string().ends_with(".checkpoint.json");

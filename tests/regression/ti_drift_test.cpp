@@ -243,103 +243,41 @@ TEST(TiDrift, PublishedStabilityBoundOfTakahashiImadaIsTwoSqrtThree) {
 }
 
 // ---- bad input: exit 2 before any work, one line naming the key, the value and what is allowed, nothing in --out;
-// a numerical failure: exit 4 ----
-namespace {
-namespace fs = std::filesystem;
-
-struct Outcome {
-  int code;
-  std::string err, out;
-};
-
-// Runs the experiment's binary with `args` (and --out DIR unless `plan`), stderr and stdout kept.
-Outcome run_ti_drift(const std::string& args, const fs::path& out_dir) {
-  const fs::path work = fs::path(GEOMINT_TEST_RESULTS) / ("ti_drift-cli-" + std::to_string(::getpid()));
-  fs::create_directories(work);
-  const fs::path err = work / "stderr.txt", out = work / "stdout.txt";
-  const std::string cmd = std::string(GEOMINT_BIN_DIR) + "/ti_drift " + args +
-                          (out_dir.empty() ? "" : " --out " + out_dir.string()) + " >" + out.string() + " 2>" + err.string();
-  const int status = std::system(cmd.c_str());
-  const auto slurp = [](const fs::path& p) {
-    std::ifstream in(p);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-  };
-  Outcome o{WIFEXITED(status) ? WEXITSTATUS(status) : -1, slurp(err), slurp(out)};
-  fs::remove_all(work);
-  return o;
-}
-
-// --quick --set `set`: exit `code`, the last line on stderr (the only one for code 2) holding every needle, no DIR
-// (nor DIR.partial) left.
-void expect_ti_drift_exit(int code, const std::string& set, const std::vector<std::string>& needles) {
-  const fs::path out = fs::path(GEOMINT_TEST_RESULTS) / ("ti_drift-refused-" + std::to_string(::getpid()));
-  fs::remove_all(out);
-  const Outcome r = run_ti_drift("--quick --set '" + set + "'", out);
-  EXPECT_EQ(r.code, code) << set << "\n" << r.err;
-  // refused: the one line; a numerical failure: its last line (after the progress lines of the work done)
-  if (code == 2) EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-  const std::string last = r.err.substr(r.err.rfind('\n', r.err.size() - 2) + 1);
-  for (const auto& n : needles) EXPECT_NE(last.find(n), std::string::npos) << "missing '" << n << "' in: " << r.err;
-  EXPECT_FALSE(fs::exists(out)) << set;
-  EXPECT_FALSE(fs::exists(out.string() + ".partial")) << set;
-}
-
-// --plan of the paper scene: exit 0, a line per study with a finite step count, nothing run.
-void expect_ti_drift_plan(const std::vector<std::string>& studies, const std::string& scene = {}) {
-  const Outcome r = run_ti_drift("--plan" + (scene.empty() ? std::string() : " --scene " + scene), {});
-  ASSERT_EQ(r.code, 0) << r.err;
-  for (const auto& st : studies) {
-    std::istringstream lines(r.out);
-    std::string line;
-    bool found = false;
-    while (std::getline(lines, line)) {
-      std::istringstream words(line);
-      std::string name, steps;
-      if (!(words >> name >> steps) || name != st) continue;
-      found = true;
-      const double n = std::strtod(steps.c_str(), nullptr);
-      EXPECT_TRUE(std::isfinite(n) && n > 0 && n <= 9007199254740992.0) << st << ": " << line;
-    }
-    EXPECT_TRUE(found) << "no plan line for " << st << " in:\n" << r.out;
-  }
-}
-}  // namespace
+// a numerical failure: exit 4 (tests/regression/summary.hpp: expect_exit, expect_plan) ----
 
 TEST(TiDrift, RefusesAStepCountBeyond2To53) {  // t_end = 1e300 once ran an overflowed step count
-  expect_ti_drift_exit(2, "t_end=1e300", {"study ensemble", "exceed 2^53"});
-  expect_ti_drift_exit(2, "pendulum.t_end=1e300", {"pendulum.t_end", "1e+300", "2^53"});
+  expect_exit("ti_drift", 2, "--set 't_end=1e300'", {"study ensemble", "exceed 2^53"});
+  expect_exit("ti_drift", 2, "--set 'pendulum.t_end=1e300'", {"pendulum.t_end", "1e+300", "2^53"});
 }
 TEST(TiDrift, RefusesAStepBeyondTheStabilityBound) {  // of the simplified method at the pendulum's highest frequency
-  expect_ti_drift_exit(2, "h=3.0", {"h = 3", "simplified_takahashi_imada is unstable for h omega >= 2 sqrt(3)", "pendulum"});
+  expect_exit("ti_drift", 2, "--set 'h=3.0'", {"h = 3", "simplified_takahashi_imada is unstable for h omega >= 2 sqrt(3)", "pendulum"});
 }
 TEST(TiDrift, RefusesALennardJonesStepBeyondTheStabilityBound) {
-  expect_ti_drift_exit(2, "lj.h=0.5", {"lj.h = 0.5", "2 sqrt(3)", "3 x 3 grid"});
+  expect_exit("ti_drift", 2, "--set 'lj.h=0.5'", {"lj.h = 0.5", "2 sqrt(3)", "3 x 3 grid"});
 }
 TEST(TiDrift, RefusesAnEnergyAboveTheEscapeEnergy) {
-  expect_ti_drift_exit(2, "hh.H0=10", {"hh.H0 = 10", "escape energy 0.16666666666666666"});
+  expect_exit("ti_drift", 2, "--set 'hh.H0=10'", {"hh.H0 = 10", "escape energy 0.16666666666666666"});
 }
 TEST(TiDrift, RefusesAStartOutsideTheWell) {  // q2 = 100 lies beyond the saddle: p1 is real, the orbit escapes
-  expect_ti_drift_exit(2, "hh3.q2=100", {"hh3.q2 = 100", "between the saddles", "q2 < 1"});
-  expect_ti_drift_exit(2, "ensemble.perturbation=1", {"ensemble.perturbation", "perturbed start"});
+  expect_exit("ti_drift", 2, "--set 'hh3.q2=100'", {"hh3.q2 = 100", "between the saddles", "q2 < 1"});
+  expect_exit("ti_drift", 2, "--set 'ensemble.perturbation=1'", {"ensemble.perturbation", "perturbed start"});
 }
 TEST(TiDrift, RefusesAReferenceToleranceOutsideItsRange) {
-  expect_ti_drift_exit(2, "work_precision.reference_tol=1e-300", {"work_precision.reference_tol", "1e-300", ">= 1e-13"});
-  expect_ti_drift_exit(2, "work_precision.reference_tol=1", {"work_precision.reference_tol", "<= 0.01"});
+  expect_exit("ti_drift", 2, "--set 'work_precision.reference_tol=1e-300'", {"work_precision.reference_tol", "1e-300", ">= 1e-13"});
+  expect_exit("ti_drift", 2, "--set 'work_precision.reference_tol=1'", {"work_precision.reference_tol", "<= 0.01"});
 }
 TEST(TiDrift, RefusesRepeatsBeyondAnInt) {
-  expect_ti_drift_exit(2, "timing.repeats=2147483648", {"timing.repeats", "2147483648", "<= 2147483647"});
+  expect_exit("ti_drift", 2, "--set 'timing.repeats=2147483648'", {"timing.repeats", "2147483648", "<= 2147483647"});
 }
 TEST(TiDrift, RefusesPendulumWindowsThatHoldFewerThanTwoSamples) {
-  expect_ti_drift_exit(2, "pendulum.slope_windows=1000", {"pendulum.slope_windows", "1000", "half the"});
+  expect_exit("ti_drift", 2, "--set 'pendulum.slope_windows=1000'", {"pendulum.slope_windows", "1000", "half the"});
 }
 TEST(TiDrift, DivergingLennardJonesEnsembleIsANumericalFailure) {
   // lj.h = 0.1 passes the bound at the grid (h omega = 0.93) but diverges along the motion (the scan of Fig. 6)
-  expect_ti_drift_exit(4, "lj.h=0.1' --study 'lj", {"lj.h = 0.1", "diverged", "lj.blowup"});
+  expect_exit("ti_drift", 4, "--set 'lj.h=0.1' --study 'lj'", {"lj.h = 0.1", "diverged", "lj.blowup"});
 }
 TEST(TiDrift, PlanOfThePaperSceneCountsEveryStudy) {
-  expect_ti_drift_plan({"oscillator", "pendulum", "hh3", "ensemble", "lj", "lj_steps", "work_precision", "symplecticity",
+  expect_plan("ti_drift", {"oscillator", "pendulum", "hh3", "ensemble", "lj", "lj_steps", "work_precision", "symplecticity",
                         "timing"});
 }
 

@@ -37,7 +37,7 @@ std::string read(const fs::path& p) {
   return ss.str();
 }
 
-// A staging directory, a scene (a = 1, checkpoint.stop_after) and a Context on them.
+// A staging directory, a scene (a = 1, checkpoint.stop_after, checkpoint.interval if >= 0) and a Context on them.
 struct Fixture {
   fs::path dir = fs::temp_directory_path() / ("geomint_checkpoint_test_" + std::to_string(::getpid()));
   Scene scene;
@@ -45,15 +45,17 @@ struct Fixture {
   Context ctx;
   std::atomic<int> calls{0};
 
-  explicit Fixture(int stop_after = 0, double a = 1.0, bool fresh = true)
-      : scene(load(stop_after, a)), out(prepare(fresh)), ctx(scene, out, 2) {
+  explicit Fixture(int stop_after = 0, double a = 1.0, bool fresh = true, double interval = -1)
+      : scene(load(stop_after, a, interval)), out(prepare(fresh)), ctx(scene, out, 2) {
     ctx.experiment = "unit", ctx.study = "tasks", ctx.resume = !fresh, ctx.resume_command = "unit --resume";
   }
-  static Scene load(int stop_after, double a) {
+  static Scene load(int stop_after, double a, double interval) {
     const fs::path file = fs::temp_directory_path() / ("geomint_checkpoint_scene_" + std::to_string(::getpid()) + ".toml");
-    std::ofstream(file) << "a = " << a << "\n[checkpoint]\nstop_after = " << stop_after << "\n";
+    std::ofstream(file) << "a = " << a << "\n[checkpoint]\nstop_after = " << stop_after << "\n"
+                        << (interval >= 0 ? "interval = " + std::to_string(interval) + "\n" : "");
     Schema schema;
     schema.real("a", any_finite()).integer("checkpoint.stop_after", non_negative());
+    if (interval >= 0) schema.real("checkpoint.interval", non_negative());
     return Scene::load(file, {}, schema);
   }
   fs::path prepare(bool fresh) const {
@@ -242,4 +244,38 @@ TEST(Checkpoint, RecordsThatAreNotFiniteAreNotSaved) {
   const auto out = checkpointed_map<double>(resumed.ctx, {"", {"a"}, 5}, kTasks, bad);
   EXPECT_TRUE(std::isinf(out[3]));
   EXPECT_EQ(out[36], 36.0);
+}
+
+// checkpoint.interval = 0 saves after every round: a run that dies in its third round of 5 (a SIGKILL, here
+// an exception from a task) keeps the first two on disk. With the default interval (10 s) a short run saves
+// nothing before its end.
+TEST(Checkpoint, IntervalZeroSavesEveryRound) {
+  const auto dies_in_round_three = [](Fixture& f) {
+    EXPECT_THROW(checkpointed_map<std::vector<double>>(f.ctx, {"", {"a"}, 5}, kTasks,
+                                                       [](std::size_t i) {
+                                                         if (i == 12) throw std::runtime_error("killed");
+                                                         return task(i);
+                                                       }),
+                 std::runtime_error);
+  };
+  {
+    Fixture f(0, 1.0, true, 0.0);
+    dies_in_round_three(f);
+    EXPECT_EQ(header_json(f.header())["tasks_done"], 10u);
+    Fixture resumed(0, 1.0, false, 0.0);
+    EXPECT_EQ(resumed.run(), straight());
+    EXPECT_EQ(resumed.calls, static_cast<int>(kTasks) - 10);
+  }
+  Fixture g(0, 1.0, true);
+  dies_in_round_three(g);
+  EXPECT_FALSE(fs::exists(g.header()));
+}
+
+// The progress line: the count, and while not done the rate since the loop's start (tasks restored from a
+// checkpoint not counted), the time elapsed and the time left at that rate; done, the count alone.
+TEST(Progress, LineGivesTheRateTheElapsedTimeAndTheTimeLeft) {
+  EXPECT_EQ(progress_line("map", 30, 100, "tasks", 10, 40), "  map: 30 / 100 tasks, 0.5 tasks/s, 40 s elapsed, 2 min 20 s left");
+  EXPECT_EQ(progress_line("map", 0, 100, "tasks", 0, 0), "  map: 0 / 100 tasks");
+  EXPECT_EQ(progress_line("map", 100, 100, "tasks", 0, 200), "  map: 100 / 100 tasks");
+  EXPECT_EQ(progress_line("lj", 2, 400, "tasks", 0, 7300), "  lj: 2 / 400 tasks, 0.000274 tasks/s, 2 h 01 min elapsed, 403 h 31 min left");
 }

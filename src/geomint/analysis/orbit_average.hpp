@@ -6,8 +6,9 @@
 // than any power of 1/n). Used for the rate (4.3) of 004 at the current energy of Fig. 2's pendulum.
 #include <cmath>
 #include <numbers>
-#include <stdexcept>
+#include <string>
 
+#include "geomint/core/numerical_failure.hpp"
 #include "geomint/core/state.hpp"
 
 namespace geomint {
@@ -18,7 +19,8 @@ double rotation_average(const Sys& sys, double E, const F& f, int n = 4096) {
   for (int i = 0; i < n; ++i) {
     const double q = 2 * std::numbers::pi * i / n;
     const double kinetic = 2 * (E - sys.U(Vec<1>(q)));
-    if (!(kinetic > 0)) throw std::domain_error("rotation_average: the orbit of this energy does not rotate");
+    if (!(kinetic > 0))
+      throw NumericalFailure("rotation_average: the orbit of energy " + std::to_string(E) + " does not rotate (E <= max U)");
     const double p = std::sqrt(kinetic);
     num += f(q, p) / p, den += 1 / p;
   }

@@ -7,12 +7,13 @@
 
 #include <Eigen/LU>
 
+#include "geomint/core/numerical_failure.hpp"
 #include "geomint/core/state.hpp"
 
 namespace geomint {
 
-struct IntegrationError : std::runtime_error {
-  using std::runtime_error::runtime_error;
+struct IntegrationError : NumericalFailure {
+  using NumericalFailure::NumericalFailure;
 };
 
 // Solves r(x) = 0 from the guess x, where rj(x) returns the pair (r(x), r'(x)).

@@ -27,7 +27,7 @@ OrderFit fit_order(std::span<const double> h, std::span<const double> err, doubl
   }
   fit.points = static_cast<int>(x.size());
   if (fit.points < 3) {
-    throw std::invalid_argument(std::string(what) + ": only " + std::to_string(fit.points) +
+    throw NumericalFailure(std::string(what) + ": only " + std::to_string(fit.points) +
                                 " points above the round-off floor; at least 3 are needed");
   }
   const LinearFit line = linear_fit(x, y);

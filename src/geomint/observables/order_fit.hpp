@@ -6,6 +6,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "geomint/core/numerical_failure.hpp"
+
 namespace geomint {
 
 struct OrderFit {
@@ -23,7 +25,7 @@ inline double roundoff_floor(double scale = 1.0) { return 1e3 * std::numeric_lim
 
 // Fits over the points whose error is finite and above `min_err`
 // (points at the round-off plateau would flatten the slope). Throws
-// std::invalid_argument if fewer than 3 points remain.
+// NumericalFailure if fewer than 3 points remain (nothing to fit: the study fails, exit 4).
 OrderFit fit_order(std::span<const double> h, std::span<const double> err, double min_err,
                   const char* what = "fit_order");
 

@@ -97,13 +97,13 @@ class CheckpointLog {
 // Removes every checkpoint (*.checkpoint.json, *.checkpoint.log) in `dir`: the runner, before it commits.
 void remove_checkpoints(const std::filesystem::path& dir);
 
-// A checkpoint is written after a round when this much time has passed since the last one, at the
-// end, and before every stop.
+// A checkpoint is written after a round when the scene's checkpoint.interval (seconds; without the
+// key, kCheckpointInterval) has passed since the last one, at the end, and before every stop.
 inline constexpr std::chrono::seconds kCheckpointInterval{10};
 
 // out[i] = f(i) for i < n, computed in rounds with parallel_map (results stored by index, so they
 // do not depend on the thread count; reductions come after, in the study). After a round, if
-// kCheckpointInterval has passed since the last save, the map is done, or a stop is requested
+// checkpoint.interval has passed since the last save, the map is done, or a stop is requested
 // (SIGINT/SIGTERM, stop_requested(); or the scene's checkpoint.stop_after rounds), the finished
 // tasks not yet saved are appended to the log. A record with a value that is not finite is not
 // saved (nor any after it): a resumed run recomputes it and the study's own check reports it. On a
@@ -126,6 +126,8 @@ std::vector<R> checkpointed_map(Context& ctx, const CheckpointSpec& spec, std::s
   }
   if (done > 0) ctx.progress("resuming " + log.name() + " after " + std::to_string(done) + " of " + std::to_string(n) + " tasks");
   const std::int64_t stop_after = ctx.scene.has("checkpoint.stop_after") ? ctx.scene.integer("checkpoint.stop_after") : 0;
+  const std::chrono::duration<double> interval(
+      ctx.scene.has("checkpoint.interval") ? ctx.scene.real("checkpoint.interval") : kCheckpointInterval.count());
   const std::size_t round =
       spec.round > 0 ? spec.round : std::max<std::size_t>({1, (n + 31) / 32, static_cast<std::size_t>(ctx.threads)});
   std::vector<double> values;
@@ -146,11 +148,12 @@ std::vector<R> checkpointed_map(Context& ctx, const CheckpointSpec& spec, std::s
     saved_at = std::chrono::steady_clock::now();
   };
   const StopPoint stop_point;  // SIGINT/SIGTERM: stop at the next checkpoint
+  ctx.progress(log.name(), static_cast<double>(done), static_cast<double>(n), "tasks");  // (where the rate starts)
   for (std::int64_t rounds = 0;; ++rounds) {
     const bool by_count = stop_after > 0 && rounds == stop_after;
     const bool stop = done < n && (stop_requested() || by_count);
     if (done > log.tasks_done() && !blocked &&
-        (stop || done == n || std::chrono::steady_clock::now() - saved_at >= kCheckpointInterval))
+        (stop || done == n || std::chrono::steady_clock::now() - saved_at >= interval))
       save();
     if (stop)
       throw Interrupted(log.name() + " after " + std::to_string(done) + " of " + std::to_string(n) + " tasks (" +

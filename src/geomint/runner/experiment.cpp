@@ -81,21 +81,28 @@ void Context::progress(std::string_view what) const {
   std::cerr << "  " << what << std::endl;
 }
 
+std::string progress_line(std::string_view what, double done, double total, std::string_view unit, double done_then,
+                          double elapsed) {
+  std::string line = "  " + std::string(what) + ": " + std::to_string(static_cast<long long>(done)) + " / " +
+                     std::to_string(static_cast<long long>(total)) + " " + std::string(unit);
+  const double rate = elapsed > 0 ? (done - done_then) / elapsed : 0;
+  if (rate > 0 && done < total) {
+    char buf[64];
+    std::snprintf(buf, sizeof buf, ", %.3g %.*s/s, ", rate, static_cast<int>(unit.size()), unit.data());
+    line += buf + duration_text(elapsed) + " elapsed, " + duration_text((total - done) / rate) + " left";
+  }
+  return line;
+}
+
 void Context::progress(std::string_view what, double done, double total, std::string_view unit) const {
   const double now = seconds_since_start();
-  if (what != progress_what_ || done < progress_done_) progress_what_ = what, progress_start_ = now;
+  if (what != progress_what_ || done < progress_done_)
+    progress_what_ = what, progress_start_ = now, progress_done_start_ = done;
   progress_done_ = done;
   const bool tty = ::isatty(STDERR_FILENO);
   if (done < total && now - last_line_ < (tty ? 0.1 : 10)) return;
   last_line_ = now;
-  const double elapsed = now - progress_start_, rate = elapsed > 0 ? done / elapsed : 0;
-  std::string line = "  " + std::string(what) + ": " + std::to_string(static_cast<long long>(done)) + " / " +
-                     std::to_string(static_cast<long long>(total)) + " " + std::string(unit);
-  if (rate > 0 && done < total) {
-    char buf[64];
-    std::snprintf(buf, sizeof buf, ", %.3g %.*s/s, ", rate, static_cast<int>(unit.size()), unit.data());
-    line += buf + duration_text((total - done) / rate) + " left";
-  }
+  const std::string line = progress_line(what, done, total, unit, progress_done_start_, now - progress_start_);
   if (tty) std::cerr << '\r' << line << "\033[K" << (done >= total ? "\n" : "") << std::flush;
   else std::cerr << line << std::endl;
 }
@@ -347,12 +354,19 @@ std::string keys_help(const ExperimentSpec& spec, const std::string& dir) {
   return s;
 }
 
-// The command line of this run with --resume, each argument quoted for the shell where it needs it.
+// The command line of this run with --resume, each argument quoted for the shell where it needs it, less
+// a --set checkpoint.stop_after (the resumed run goes on to the end).
 std::string resume_command(int argc, char** argv) {
   std::string command;
   bool has_resume = false;
+  const auto stop_after = [](std::string_view a) { return a.starts_with("checkpoint.stop_after="); };
   for (int i = 0; i < argc; ++i) {
     const std::string a = argv[i];
+    if (a == "--set" && i + 1 < argc && stop_after(argv[i + 1])) {
+      ++i;
+      continue;
+    }
+    if (a.starts_with("--set=") && stop_after(std::string_view(a).substr(6))) continue;
     has_resume = has_resume || a == "--resume";
     const bool plain = !a.empty() && a.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ0123456789"
                                                          "_-+=.,/:@%") == std::string::npos;
@@ -364,15 +378,27 @@ std::string resume_command(int argc, char** argv) {
 }
 
 // A study's counts, checked before any work: exactly representable as doubles (steps are
-// counted in 64-bit integers and t = n h), and memory the machine has.
-void check_plan(const Study& st, const StudyPlan& p) {
+// counted in 64-bit integers and t = n h), and memory the machine has. `read`: the scene keys
+// the plan was computed from, named in the refusal.
+void check_plan(const Study& st, const StudyPlan& p, const std::vector<std::string>& read) {
+  const std::string from = read.empty() ? "" : " (from " + join(read) + ")";
   if (!(p.steps <= max_exact_count) || !(p.force_evals <= max_exact_count))
     throw SceneError("study " + st.name + ": " + fmt_count(p.steps) + " steps (" + fmt_count(p.force_evals) +
-                     " force evaluations) exceed 2^53; shorten the run or enlarge the step");
+                     " force evaluations) exceed 2^53" + from + "; shorten the run or enlarge the step");
   const double available = available_memory_bytes();
   if (available > 0 && p.memory_bytes > available)
     throw SceneError("study " + st.name + " needs about " + fmt_bytes(p.memory_bytes) + " of memory, more than the " +
-                     fmt_bytes(available) + " available; make the grid, ensemble or record smaller");
+                     fmt_bytes(available) + " available" + from + "; make the grid, ensemble or record smaller");
+}
+
+// A study's plan as shown: whether it has one, whether its wall time is estimated, and that time.
+struct ShownPlan {
+  bool has, estimated;
+  double wall_s;
+};
+ShownPlan shown_plan(const Study& st, const StudyPlan& p, int threads) {
+  const bool has = static_cast<bool>(st.plan);
+  return {has, has && p.ns_per_step > 0, p.steps * p.ns_per_step * 1e-9 / threads};
 }
 
 void print_plan(std::ostream& os, const std::vector<const Study*>& studies, const std::vector<StudyPlan>& plans,
@@ -389,8 +415,7 @@ void print_plan(std::ostream& os, const std::vector<const Study*>& studies, cons
   bool all = true;
   for (std::size_t i = 0; i < studies.size(); ++i) {
     const StudyPlan& p = plans[i];
-    const bool has = static_cast<bool>(studies[i]->plan), estimated = has && p.ns_per_step > 0;
-    const double wall = p.steps * p.ns_per_step * 1e-9 / threads;
+    const auto [has, estimated, wall] = shown_plan(*studies[i], p, threads);
     total += estimated ? wall : 0, all = all && estimated;
     row(studies[i]->name, has ? fmt_count(p.steps) : "-", has ? fmt_count(p.force_evals) : "-",
         has ? fmt_bytes(p.memory_bytes) : "-", estimated ? fmt_seconds(wall) : "no estimate");
@@ -407,8 +432,7 @@ nlohmann::ordered_json plan_json(const std::vector<const Study*>& studies, const
   bool all = true;
   for (std::size_t i = 0; i < studies.size(); ++i) {
     const StudyPlan& p = plans[i];
-    const bool has = static_cast<bool>(studies[i]->plan), estimated = has && p.ns_per_step > 0;
-    const double wall = p.steps * p.ns_per_step * 1e-9 / threads;
+    const auto [has, estimated, wall] = shown_plan(*studies[i], p, threads);
     total += estimated ? wall : 0, all = all && estimated;
     nlohmann::ordered_json st = {{"study", studies[i]->name}, {"makes", studies[i]->makes}};
     st["steps"] = has ? nlohmann::ordered_json(p.steps) : nlohmann::ordered_json();
@@ -545,8 +569,11 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
     std::vector<StudyPlan> plans;
     for (const Study* st : studies) {
       scene->restrict_reads(st->uses, "study " + st->name);
+      std::vector<std::string> read;
+      scene->log_reads(&read);
       plans.push_back(st->plan ? st->plan(*scene) : StudyPlan{});
-      check_plan(*st, plans.back());
+      scene->log_reads(nullptr);
+      check_plan(*st, plans.back(), read);
     }
     scene->restrict_reads({});
     if (plan_only) {
@@ -585,9 +612,7 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
       ctx.study = st->name;
       try {
         st->run(ctx);
-      } catch (const IntegrationError& e) {  // Newton's method (integrators/newton.hpp)
-        throw NumericalFailure("study " + st->name + ": " + e.what());
-      } catch (const NumericalFailure& e) {
+      } catch (const NumericalFailure& e) {  // also Newton's IntegrationError (integrators/newton.hpp)
         throw NumericalFailure("study " + st->name + ": " + e.what());
       }
       scene->restrict_reads({});

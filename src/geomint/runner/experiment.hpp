@@ -19,6 +19,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "geomint/core/numerical_failure.hpp"
 #include "geomint/io/atomic_file.hpp"
 #include "geomint/io/csv.hpp"
 #include "geomint/scene/scene.hpp"
@@ -42,13 +43,19 @@ class Context {
   // Progress on stderr: on a terminal every call, otherwise at most one line every 10 s.
   void progress(std::string_view what) const;
   // The same with `done` of `total` units (e.g. "batches"), the rate since the first call for
-  // `what`, and the time left at that rate.
+  // `what`, the time elapsed since then and the time left at that rate (progress_line).
   void progress(std::string_view what, double done, double total, std::string_view unit) const;
 
  private:
   mutable std::string progress_what_;
-  mutable double progress_start_ = 0, progress_done_ = 0, last_line_ = -1e9;  // seconds since the run began
+  mutable double progress_start_ = 0, progress_done_start_ = 0, progress_done_ = 0;
+  mutable double last_line_ = -1e9;  // seconds since the run began
 };
+
+// A progress line: "  what: done / total unit", and while not done, with the rate since `elapsed` seconds
+// ago, when `done_then` were done, "R unit/s, E elapsed, L left".
+std::string progress_line(std::string_view what, double done, double total, std::string_view unit, double done_then,
+                          double elapsed);
 
 // SIGINT and SIGTERM. While a StopPoint exists, the first signal only sets stop_requested(): the
 // study stops at its next checkpoint (Interrupted, exit 3); a second one ends the process. With no
@@ -68,12 +75,9 @@ struct Interrupted : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-// Thrown when a run produces a NaN or Inf, Newton's method does not converge, or a
-// trajectory leaves the domain of its chart; what() names the study, method, step
-// and time where it can. The run exits with code 4 and writes no results.
-struct NumericalFailure : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
+// NumericalFailure (core/numerical_failure.hpp), thrown by a study or what it calls (Newton's
+// IntegrationError, an order fit, an odeint reference): what() names the method, step and time
+// where it can; the runner adds the study. The run exits with code 4 and writes no results.
 
 // What a study would cost (--plan), derived from the scene before any work: its counts are also
 // checked then (a count beyond 2^53, or memory beyond what the machine has, is refused: exit 2).

@@ -392,6 +392,7 @@ toml::node_view<const toml::node> Scene::at(std::string_view key) const {
     throw std::logic_error(reader_ + " reads the scene key '" + std::string(key) + "', which it does not declare");
   const auto node = table_.at_path(key);
   if (!node) throw std::logic_error("Scene: key not present (not required by the studies that run): " + std::string(key));
+  if (read_log_ && std::find(read_log_->begin(), read_log_->end(), key) == read_log_->end()) read_log_->emplace_back(key);
   return node;
 }
 

@@ -98,6 +98,8 @@ class Scene {
   // Reads are restricted to the keys under `prefixes` (empty: no restriction), so
   // that a study that reads a key it did not declare fails loudly.
   void restrict_reads(std::vector<std::string> prefixes, std::string who = {}) const;
+  // Records the keys read from now on in `log` (each once, in the order first read); nullptr stops.
+  void log_reads(std::vector<std::string>* log) const { read_log_ = log; }
 
   bool has(std::string_view key) const;  // a key or a section
 
@@ -124,6 +126,7 @@ class Scene {
   std::map<std::string, std::string, std::less<>> origin_;  // leaf key -> "from --set" / "in FILE"
   mutable std::vector<std::string> readable_;
   mutable std::string reader_;
+  mutable std::vector<std::string>* read_log_ = nullptr;
 };
 
 }  // namespace geomint

@@ -18,6 +18,7 @@
 
 #include "geomint/core/state.hpp"
 #include "geomint/integrators/conformal_variational.hpp"
+#include "geomint/reference/odeint_reference.hpp"
 #include "geomint/systems/nonholonomic_particle.hpp"
 
 namespace geomint {
@@ -75,8 +76,7 @@ inline std::vector<FlowJacobian> variational_flow(const NonholonomicParticle& sy
   };
   std::vector<FlowJacobian> out{sample(x)};
   for (std::int64_t j = 1; j <= n; ++j) {
-    boost::numeric::odeint::integrate_adaptive(stepper, rhs, x, static_cast<double>(j - 1) * dt,
-                                               static_cast<double>(j) * dt, 0.1 * dt);
+    reference_integrate(stepper, rhs, x, static_cast<double>(j - 1) * dt, static_cast<double>(j) * dt, 0.1 * dt);
     out.push_back(sample(x));
   }
   return out;
