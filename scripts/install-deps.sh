@@ -1,14 +1,16 @@
 #!/usr/bin/env bash
 # Install the Debian packages a target needs, and only those that are missing.
 #   scripts/install-deps.sh [build|figures|paper]...   (default: build)
-# build   : compiler, CMake, the header libraries, GoogleTest, gnuplot and pdftotext (the
-#           figure test renders every script and checks its text, so `make test` needs them)
+# build   : compiler, CMake, the header libraries, GoogleTest, Open MPI (the ctest label mpi), gnuplot
+#           and pdftotext (the figure test renders every script and checks its text, so `make test`
+#           needs them)
 # figures : build + matplotlib (only where gnuplot is weak)
 # paper   : figures + TeX Live and latexmk
 set -euo pipefail
 
 build=(g++ cmake make pkg-config git libeigen3-dev libboost-dev libtomlplusplus-dev
-       libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev libsleef-dev libqhull-dev gnuplot-nox fonts-dejavu-core poppler-utils python3 python3-sympy)
+       libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev libsleef-dev libqhull-dev
+       libopenmpi-dev openmpi-bin gnuplot-nox fonts-dejavu-core poppler-utils python3 python3-sympy)
 figures=("${build[@]}" python3-numpy python3-matplotlib)
 paper=("${figures[@]}" latexmk texlive-latex-base texlive-latex-recommended
        texlive-latex-extra texlive-fonts-recommended)

@@ -9,6 +9,7 @@
 
 #include "geomint/io/atomic_file.hpp"
 #include "geomint/io/run_info.hpp"
+#include "geomint/sweep/mpi.hpp"
 
 namespace geomint {
 
@@ -77,6 +78,23 @@ void CheckpointLog::reset() {
 }
 
 CheckpointLog::Records CheckpointLog::load(bool resume) {
+  if (mpi::size() == 1) return load_here(resume);
+  Records records;  // rank 0 reads (or refuses), every rank receives
+  std::exception_ptr error;
+  if (mpi::is_root()) try {
+      records = load_here(resume);
+    } catch (...) {
+      error = std::current_exception();
+    }
+  if (mpi::all_max(error ? 1 : 0) != 0) throw_everywhere(0, error);
+  std::vector<double> offsets(records.offsets.begin(), records.offsets.end());
+  mpi::broadcast(records.values), mpi::broadcast(offsets);
+  records.offsets.assign(offsets.begin(), offsets.end());
+  tasks_done_ = records.size();
+  return records;
+}
+
+CheckpointLog::Records CheckpointLog::load_here(bool resume) {
   Records records;
   if (!resume || !fs::exists(header_)) {
     reset();
@@ -149,6 +167,10 @@ CheckpointLog::Records CheckpointLog::load(bool resume) {
 }
 
 void CheckpointLog::append(std::span<const double> values, std::span<const std::size_t> lengths) {
+  if (!mpi::is_root()) {  // rank 0 alone writes; the others keep count
+    tasks_done_ += lengths.size();
+    return;
+  }
   std::vector<char> raw(lengths.size() * 8 + values.size() * 8);
   std::size_t at = 0, v = 0;
   for (const std::size_t length : lengths) {
@@ -164,6 +186,36 @@ void CheckpointLog::append(std::span<const double> values, std::span<const std::
   json h = identity_;
   h["tasks_done"] = tasks_done_, h["log_bytes"] = log_bytes_;
   write_file_atomic(header_, h.dump(1) + "\n");
+}
+
+void throw_everywhere(int owner, std::exception_ptr error) {
+  enum Kind { other, scene, numerical, output, interrupted };
+  std::string message = "(no message)";
+  double kind = other;
+  if (mpi::rank() == owner) try {
+      std::rethrow_exception(error);
+    } catch (const SceneError& e) {
+      kind = scene, message = e.what();
+    } catch (const NumericalFailure& e) {
+      kind = numerical, message = e.what();
+    } catch (const OutputError& e) {
+      kind = output, message = e.what();
+    } catch (const Interrupted& e) {
+      kind = interrupted, message = e.what();
+    } catch (const std::exception& e) {
+      message = e.what();
+    } catch (...) {
+    }
+  std::vector<double> k{kind};
+  mpi::broadcast(k, owner), mpi::broadcast(message, owner);
+  if (mpi::rank() == owner) std::rethrow_exception(error);
+  switch (static_cast<int>(k[0])) {
+    case scene: throw SceneError(message);
+    case numerical: throw NumericalFailure(message);
+    case output: throw OutputError(message);
+    case interrupted: throw Interrupted(message);
+    default: throw std::runtime_error(message);
+  }
 }
 
 void remove_checkpoints(const fs::path& dir) {

@@ -20,6 +20,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <exception>
 #include <filesystem>
 #include <optional>
 #include <span>
@@ -30,6 +31,7 @@
 #include <nlohmann/json.hpp>
 
 #include "geomint/runner/experiment.hpp"
+#include "geomint/sweep/mpi.hpp"
 #include "geomint/sweep/parallel_map.hpp"
 
 namespace geomint {
@@ -75,9 +77,10 @@ class CheckpointLog {
   };
   // With `resume`, the records of the tasks the checkpoint holds (validated; the log cut back to
   // them); otherwise, or for a checkpoint of other scene values, none (its files removed).
+  // Under MPI rank 0 reads, every rank receives.
   Records load(bool resume);
   // Appends the records (values, split by `lengths`) of the tasks after tasks_done(), synced, then
-  // writes the header: tasks_done() + lengths.size() tasks.
+  // writes the header: tasks_done() + lengths.size() tasks. (Under MPI rank 0 writes; the others count.)
   void append(std::span<const double> values, std::span<const std::size_t> lengths);
   std::size_t tasks_done() const { return tasks_done_; }
   const std::string& name() const { return name_; }
@@ -85,6 +88,7 @@ class CheckpointLog {
 
  private:
   [[noreturn]] void refuse(const std::filesystem::path& file, const std::string& why) const;
+  Records load_here(bool resume);
   void reset();
 
   std::string name_;
@@ -93,6 +97,68 @@ class CheckpointLog {
   std::size_t n_, tasks_done_ = 0;
   std::uint64_t log_bytes_ = 0;
 };
+
+// The exception `error` of rank `owner` (null on the others), thrown on every rank of an MPI job: its
+// kind (SceneError, NumericalFailure, OutputError, Interrupted; another: std::runtime_error) and
+// message sent from the owner, so that every rank ends the same way.
+[[noreturn]] void throw_everywhere(int owner, std::exception_ptr error);
+
+// out[i] = f(first + i), i < count. In one process by parallel_map; in an MPI job task first + i runs
+// on rank i mod size (a cyclic split: the costly tasks of a round are spread), and every rank
+// receives every record (encoded by the codec: exact), so that the results are the same bytes on
+// every rank and for any number of ranks. A task that throws: the exception of the lowest such task,
+// on every rank (as parallel_map does in one process).
+template <class R, class F, class Codec>
+std::vector<R> map_round(std::size_t first, std::size_t count, const F& f, const Codec& codec) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const auto busy = [&] { mpi::count_busy(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()); };
+  if (mpi::size() == 1) {
+    auto out = parallel_map(count, [&](std::size_t i) { return f(first + i); });
+    busy();
+    return out;
+  }
+  const auto r = static_cast<std::size_t>(mpi::rank()), p = static_cast<std::size_t>(mpi::size());
+  const auto share = [&](std::size_t q) { return count > q ? (count - q + p - 1) / p : 0; };  // tasks of rank q
+  std::vector<char> threw(share(r), 0);
+  std::vector<double> mine;  // per task: its record's length, then the record
+  std::exception_ptr error;
+  std::int64_t failed = INT64_MAX;
+  try {
+    const auto results = parallel_map(share(r), [&](std::size_t k) {
+      try {
+        return f(first + r + k * p);
+      } catch (...) {
+        threw[k] = 1;
+        throw;
+      }
+    });
+    for (const R& x : results) {
+      const std::size_t at = mine.size();
+      mine.push_back(0), codec.encode(x, mine);
+      mine[at] = static_cast<double>(mine.size() - at - 1);
+    }
+  } catch (...) {
+    error = std::current_exception();
+    const auto k = static_cast<std::size_t>(std::find(threw.begin(), threw.end(), 1) - threw.begin());
+    failed = static_cast<std::int64_t>(r + k * p);
+  }
+  busy();
+  if (const std::int64_t lowest = mpi::all_min(failed); lowest != INT64_MAX)
+    throw_everywhere(static_cast<int>(static_cast<std::size_t>(lowest) % p), error);
+  const std::vector<double> all = mpi::all_gather(mine);
+  std::vector<std::optional<R>> slots(count);
+  std::size_t at = 0;
+  for (std::size_t q = 0; q < p; ++q)
+    for (std::size_t k = 0; k < share(q); ++k) {
+      const auto length = static_cast<std::size_t>(all[at]);
+      slots[q + k * p].emplace(codec.decode(std::span<const double>(all.data() + at + 1, length)));
+      at += 1 + length;
+    }
+  std::vector<R> out;
+  out.reserve(count);
+  for (auto& s : slots) out.push_back(std::move(*s));
+  return out;
+}
 
 // Removes every checkpoint (*.checkpoint.json, *.checkpoint.log) in `dir`: the runner, before it commits.
 void remove_checkpoints(const std::filesystem::path& dir);
@@ -128,8 +194,9 @@ std::vector<R> checkpointed_map(Context& ctx, const CheckpointSpec& spec, std::s
   const std::int64_t stop_after = ctx.scene.has("checkpoint.stop_after") ? ctx.scene.integer("checkpoint.stop_after") : 0;
   const std::chrono::duration<double> interval(
       ctx.scene.has("checkpoint.interval") ? ctx.scene.real("checkpoint.interval") : kCheckpointInterval.count());
-  const std::size_t round =
-      spec.round > 0 ? spec.round : std::max<std::size_t>({1, (n + 31) / 32, static_cast<std::size_t>(ctx.threads)});
+  const std::size_t round = spec.round > 0 ? spec.round
+                                            : std::max<std::size_t>({1, (n + 31) / 32,
+                                                                     static_cast<std::size_t>(ctx.threads * mpi::size())});
   std::vector<double> values;
   std::vector<std::size_t> lengths;
   bool blocked = false;  // a record that is not finite: nothing from it on is saved
@@ -151,7 +218,7 @@ std::vector<R> checkpointed_map(Context& ctx, const CheckpointSpec& spec, std::s
   ctx.progress(log.name(), static_cast<double>(done), static_cast<double>(n), "tasks");  // (where the rate starts)
   for (std::int64_t rounds = 0;; ++rounds) {
     const bool by_count = stop_after > 0 && rounds == stop_after;
-    const bool stop = done < n && (stop_requested() || by_count);
+    const bool stop = done < n && (mpi::all_max(stop_requested()) != 0 || by_count);  // (any rank's signal)
     if (done > log.tasks_done() && !blocked &&
         (stop || done == n || std::chrono::steady_clock::now() - saved_at >= interval))
       save();
@@ -161,7 +228,7 @@ std::vector<R> checkpointed_map(Context& ctx, const CheckpointSpec& spec, std::s
                         "); continue with: " + ctx.resume_command);
     if (done == n) break;
     const std::size_t first = done, count = std::min(round, n - done);
-    auto results = parallel_map(count, [&](std::size_t i) { return f(first + i); });
+    auto results = map_round<R>(first, count, f, codec);
     for (std::size_t i = 0; i < count; ++i) slots[first + i].emplace(std::move(results[i]));
     done += count;
     ctx.progress(log.name(), static_cast<double>(done), static_cast<double>(n), "tasks");

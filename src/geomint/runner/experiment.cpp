@@ -24,6 +24,7 @@
 #include "geomint/io/run_info.hpp"
 #include "geomint/runner/checkpoint.hpp"
 #include "geomint/runner/published.hpp"
+#include "geomint/sweep/mpi.hpp"
 
 namespace geomint {
 
@@ -377,6 +378,12 @@ std::string resume_command(int argc, char** argv) {
   return has_resume ? command : command + " --resume";
 }
 
+// The results directory of a rank other than 0 in an MPI job: a scratch directory, removed at the end.
+std::filesystem::path rank_scratch_dir(const std::string& name) {
+  return std::filesystem::temp_directory_path() /
+         (name + "-rank" + std::to_string(mpi::rank()) + "-" + std::to_string(::getpid()));
+}
+
 // A study's counts, checked before any work: exactly representable as doubles (steps are
 // counted in 64-bit integers and t = n h), and memory the machine has. `read`: the scene keys
 // the plan was computed from, named in the refusal.
@@ -477,6 +484,8 @@ std::string find_experiment_dir(const std::string& name, const std::string& buil
 }
 
 int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string& built_from) {
+  const mpi::Session mpi_session(argc, argv);  // (one process without mpirun)
+  if (!mpi::is_root()) std::cout.rdbuf(nullptr), std::cerr.rdbuf(nullptr);  // rank 0 speaks for the job
   const std::string experiment_dir = find_experiment_dir(spec.name, built_from);
   const auto start = std::chrono::system_clock::now();
   const auto t0 = std::chrono::steady_clock::now();
@@ -544,6 +553,7 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
   std::optional<Scene> scene;
   std::optional<ResultsDir> results;
   std::optional<OutputDir> out;
+  int refused = 0;
   std::vector<const Study*> studies;
   const std::filesystem::path published_file = std::filesystem::path(experiment_dir) / "published.toml";
   std::vector<Published> published;
@@ -583,15 +593,17 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
         print_plan(std::cout, studies, plans, threads);
       return 0;
     }
-    results.emplace(out_dir, name, resume);
+    // Rank 0 writes DIR; another rank of an MPI job writes into a scratch directory it removes.
+    results.emplace(mpi::is_root() ? std::filesystem::path(out_dir) : rank_scratch_dir(name), name, resume);
     out.emplace(results->staging_path());
   } catch (const SceneError& e) {
     std::cerr << name << ": scene error: " << e.what() << '\n';
-    return 2;
+    refused = 2;
   } catch (const OutputError& e) {
     std::cerr << name << ": output error: " << e.what() << '\n';
-    return 2;
+    refused = 2;
   }
+  if (mpi::all_max(refused) != 0) return 2;  // (DIR is rank 0's alone: the other ranks learn of its refusal here)
 
   if (resume && !results->resumed())
     std::cerr << name << ": --resume: no interrupted run in " << results->staging_path().string()
@@ -599,9 +611,10 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
   install_signal_handlers(name, *results);
   omp_set_num_threads(threads);
   Context ctx(*scene, *out, threads);
-  ctx.resume = results->resumed();
+  ctx.resume = mpi::all_max(results->resumed()) != 0;  // (rank 0's staging directory decides)
   ctx.experiment = name;
-  ctx.resume_command = resume_command(argc, argv);
+  ctx.resume_command = (mpi::size() > 1 ? "mpirun -np " + std::to_string(mpi::size()) + " " : std::string()) +
+                       resume_command(argc, argv);  // (any -np resumes)
   try {
     std::vector<std::string> ran;
     nlohmann::ordered_json study_wall = nlohmann::ordered_json::object();
@@ -653,6 +666,9 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
       run["study_list"].push_back({{"name", st.name}, {"makes", st.makes}, {"files", st.files},
                                    {"ran", std::find(ran.begin(), ran.end(), st.name) != ran.end()}});
     run["threads"] = threads;
+    run["ranks"] = mpi::size();
+    const double busy = mpi::busy_seconds();
+    run["rank_busy_s"] = mpi::all_gather(std::span<const double>(&busy, 1));  // each rank's time in checkpointed tasks
     run["start_utc"] = utc_iso8601(start);
     run["end_utc"] = utc_iso8601(std::chrono::system_clock::now());
     run["wall_s"] = wall;
@@ -660,12 +676,15 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
     run["files"] = out->written();
     out->write("run.json", run.dump(2) + "\n");
     remove_checkpoints(out->path());
-    results->commit();
+    if (mpi::is_root()) results->commit();
+    else results->discard();
   } catch (const Interrupted& e) {
+    if (!mpi::is_root()) results->discard();
     std::cerr << name << ": stopped: " << e.what() << " (kept in " << results->staging_path().string()
               << "; " << results->final_path().string() << " is unchanged)\n";
     return 3;
   } catch (const SceneError& e) {  // bad input found once the run has begun (e.g. a corrupt checkpoint)
+    if (!mpi::is_root()) results->discard();
     std::cerr << name << ": bad input: " << e.what() << " (kept in " << results->staging_path().string() << "; "
               << results->final_path().string() << " is unchanged)\n";
     return 2;

@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# An MPI job gives the bytes of one process (issue 17): BIN with ARGS run as one process (2 threads)
+# and under `mpirun -np NP` (1 thread per rank, more ranks than cores allowed) write the same CSV
+# files and summary.json, timings aside. With --resume-np M the MPI run is first stopped after one
+# round (checkpoint.stop_after = 1, exit 3) and then resumed with M ranks.
+#   check_mpi.sh BIN WORK NP [--resume-np M] -- ARGS...
+set -euo pipefail
+bin=$1 work=$2 np=$3
+shift 3
+resume_np=""
+if [[ ${1:-} == --resume-np ]]; then resume_np=$2; shift 2; fi
+[[ ${1:-} == -- ]] && shift
+# Open MPI refuses to run as root unless told; CI runs as root.
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+mpi=(mpirun --oversubscribe --bind-to none)
+rm -rf "$work" && mkdir -p "$work"
+"$bin" "$@" --threads 2 --out "$work/one" 2> "$work/one.stderr"
+if [[ -n $resume_np ]]; then
+  set +e
+  "${mpi[@]}" -np "$np" "$bin" "$@" --threads 1 --set checkpoint.stop_after=1 --out "$work/mpi" 2> "$work/stop.stderr"
+  code=$?
+  set -e
+  [[ $code -eq 3 ]] || { echo "FAIL: the stopped MPI run exits $code, not 3"; cat "$work/stop.stderr"; exit 1; }
+  ls "$work/mpi.partial/"*.checkpoint.json > /dev/null || { echo "FAIL: no checkpoint in $work/mpi.partial"; exit 1; }
+  "${mpi[@]}" -np "$resume_np" "$bin" "$@" --threads 1 --resume --out "$work/mpi" 2> "$work/mpi.stderr"
+  label="stopped with $np ranks, resumed with $resume_np"
+else
+  "${mpi[@]}" -np "$np" "$bin" "$@" --threads 1 --out "$work/mpi" 2> "$work/mpi.stderr"
+  label="$np ranks"
+fi
+[[ ! -e "$work/mpi.partial" ]] || { echo "FAIL: $work/mpi.partial left"; exit 1; }
+grep -q "\"ranks\": ${resume_np:-$np}" "$work/mpi/run.json" || { echo "FAIL: run.json does not count ${resume_np:-$np} ranks"; exit 1; }
+files=0
+for f in "$work/one/"*.csv; do
+  name=$(basename "$f")
+  [[ $name == timing* ]] && continue
+  cmp -s "$f" "$work/mpi/$name" || { echo "FAIL: $name differs ($label)"; exit 1; }
+  files=$((files + 1))
+done
+python3 - "$work/one/summary.json" "$work/mpi/summary.json" <<'PY' || { echo "FAIL: summary.json differs ($label)"; exit 1; }
+import json, sys
+a, b = (json.load(open(p)) for p in sys.argv[1:3])
+for s in (a, b):
+    s.pop("timing", None)
+sys.exit(0 if a == b else 1)
+PY
+echo "$files CSV files and summary.json identical: one process (2 threads) and $label (1 thread each)"
