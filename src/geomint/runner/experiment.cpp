@@ -398,60 +398,48 @@ void check_plan(const Study& st, const StudyPlan& p, const std::vector<std::stri
                      fmt_bytes(available) + " available" + from + "; make the grid, ensemble or record smaller");
 }
 
-// A study's plan as shown: whether it has one, whether its wall time is estimated, and that time.
-struct ShownPlan {
-  bool has, estimated;
-  double wall_s;
-};
-ShownPlan shown_plan(const Study& st, const StudyPlan& p, int threads) {
-  const bool has = static_cast<bool>(st.plan);
-  return {has, has && p.ns_per_step > 0, p.steps * p.ns_per_step * 1e-9 / threads};
-}
-
-void print_plan(std::ostream& os, const std::vector<const Study*>& studies, const std::vector<StudyPlan>& plans,
-                int threads) {
-  char line[256];
-  const auto row = [&](const std::string& a, const std::string& b, const std::string& c, const std::string& d,
-                       const std::string& e) {
-    std::snprintf(line, sizeof line, "%-18s %12s %12s %10s %14s", a.c_str(), b.c_str(), c.c_str(), d.c_str(), e.c_str());
-    os << line;
-  };
-  row("study", "steps", "force evals", "memory", "wall time");
-  os << "   (estimated, " << threads << " threads)\n";
-  double total = 0;
-  bool all = true;
-  for (std::size_t i = 0; i < studies.size(); ++i) {
-    const StudyPlan& p = plans[i];
-    const auto [has, estimated, wall] = shown_plan(*studies[i], p, threads);
-    total += estimated ? wall : 0, all = all && estimated;
-    row(studies[i]->name, has ? fmt_count(p.steps) : "-", has ? fmt_count(p.force_evals) : "-",
-        has ? fmt_bytes(p.memory_bytes) : "-", estimated ? fmt_seconds(wall) : "no estimate");
-    os << "   " << studies[i]->makes << (p.note.empty() ? "" : "; " + p.note) << '\n';
-  }
-  row("total", "", "", "", fmt_seconds(total));
-  os << (all ? "" : "   (studies without an estimate not counted)") << '\n';
-}
-
-// The same as JSON (--plan --json): estimated wall times in seconds, null where there is no estimate.
+// The plan as JSON (--plan --json): counts null for a study without a plan, estimated wall times in
+// seconds, null where there is no estimate.
 nlohmann::ordered_json plan_json(const std::vector<const Study*>& studies, const std::vector<StudyPlan>& plans, int threads) {
   nlohmann::ordered_json j = {{"threads", threads}, {"studies", nlohmann::ordered_json::array()}};
   double total = 0;
   bool all = true;
   for (std::size_t i = 0; i < studies.size(); ++i) {
     const StudyPlan& p = plans[i];
-    const auto [has, estimated, wall] = shown_plan(*studies[i], p, threads);
+    const bool has = static_cast<bool>(studies[i]->plan), estimated = has && p.ns_per_step > 0;
+    const double wall = p.steps * p.ns_per_step * 1e-9 / threads;
     total += estimated ? wall : 0, all = all && estimated;
-    nlohmann::ordered_json st = {{"study", studies[i]->name}, {"makes", studies[i]->makes}};
-    st["steps"] = has ? nlohmann::ordered_json(p.steps) : nlohmann::ordered_json();
-    st["force_evals"] = has ? nlohmann::ordered_json(p.force_evals) : nlohmann::ordered_json();
-    st["memory_bytes"] = has ? nlohmann::ordered_json(p.memory_bytes) : nlohmann::ordered_json();
-    st["wall_s"] = estimated ? nlohmann::ordered_json(wall) : nlohmann::ordered_json();
-    st["note"] = p.note;
-    j["studies"].push_back(st);
+    const auto value = [](bool known, double v) { return known ? nlohmann::ordered_json(v) : nlohmann::ordered_json(); };
+    j["studies"].push_back({{"study", studies[i]->name}, {"makes", studies[i]->makes}, {"steps", value(has, p.steps)},
+                            {"force_evals", value(has, p.force_evals)}, {"memory_bytes", value(has, p.memory_bytes)},
+                            {"wall_s", value(estimated, wall)}, {"note", p.note}});
   }
   j["wall_s"] = total;
   j["all_estimated"] = all;
   return j;
+}
+
+// The same plan as a table (--plan).
+void print_plan(std::ostream& os, const nlohmann::ordered_json& plan) {
+  char line[256];
+  const auto row = [&](const std::string& a, const std::string& b, const std::string& c, const std::string& d,
+                       const std::string& e) {
+    std::snprintf(line, sizeof line, "%-18s %12s %12s %10s %14s", a.c_str(), b.c_str(), c.c_str(), d.c_str(), e.c_str());
+    os << line;
+  };
+  const auto shown = [](const nlohmann::ordered_json& v, std::string (*fmt)(double), const char* none) {
+    return v.is_null() ? std::string(none) : fmt(v.get<double>());
+  };
+  row("study", "steps", "force evals", "memory", "wall time");
+  os << "   (estimated, " << plan["threads"].get<int>() << " threads)\n";
+  for (const auto& st : plan["studies"]) {
+    row(st["study"], shown(st["steps"], fmt_count, "-"), shown(st["force_evals"], fmt_count, "-"),
+        shown(st["memory_bytes"], fmt_bytes, "-"), shown(st["wall_s"], fmt_seconds, "no estimate"));
+    const std::string note = st["note"];
+    os << "   " << st["makes"].get<std::string>() << (note.empty() ? "" : "; " + note) << '\n';
+  }
+  row("total", "", "", "", fmt_seconds(plan["wall_s"].get<double>()));
+  os << (plan["all_estimated"].get<bool>() ? "" : "   (studies without an estimate not counted)") << '\n';
 }
 
 }  // namespace
@@ -587,10 +575,11 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
     }
     scene->restrict_reads({});
     if (plan_only) {
+      const nlohmann::ordered_json plan = plan_json(studies, plans, threads);
       if (as_json)
-        std::cout << plan_json(studies, plans, threads).dump(2) << '\n';
+        std::cout << plan.dump(2) << '\n';
       else
-        print_plan(std::cout, studies, plans, threads);
+        print_plan(std::cout, plan);
       return 0;
     }
     // Rank 0 writes DIR; another rank of an MPI job writes into a scratch directory it removes.
