@@ -39,7 +39,7 @@ namespace geomint {
 struct CheckpointSpec {
   std::string name;               // the files' stem: the study's name, or "<study>.<part>" for a study's second loop
   std::vector<std::string> keys;  // the scene keys (dotted; sections or values) the tasks depend on
-  std::size_t round = 0;          // tasks per round (0: n/32, at least the thread count)
+  std::size_t round = 0;          // tasks per round (0: n/32, at least threads x MPI ranks)
 };
 
 // A task's record as doubles. A study passes its own codec (encode, decode) for a struct; decode
