@@ -9,15 +9,19 @@ tree with work in progress:
     git worktree add ../geomint-mutation && cd ../geomint-mutation
     tests/mutation/run_mutants.py --build build-mutation
 
-It takes about an hour on two cores (a rebuild and a ctest run per mutant), so it is run on
-demand, not by `make test`. Before the mutants, the unmodified tree must build and pass. The
-report (stdout and --report FILE, JSON) gives each mutant's result and the failing tests, the
-kill rate, and the mutants that change a published value (`affects`) but survived; the exit
-status is 1 if there is any such mutant, 0 otherwise.
+A rebuild and a ctest run per mutant take a few hours on two cores, so it is run on demand, not
+by `make test`. Before the mutants, the unmodified tree must build and pass; its test times
+split the suite in two: the tests under --slow seconds run first, the slower ones only for a
+mutant the quick ones did not kill. The report (stdout and --report FILE, JSON, rewritten after
+every mutant) gives each mutant's result and the failing tests, the kill rate, and the mutants
+that change a published value (`affects`) but survived; the exit status is 1 if there is any
+such mutant, 0 otherwise. With --resume, the mutants already in the report (of the same commit)
+are not run again.
 """
 import argparse
 import json
 import os
+import re
 import shutil
 import signal
 import subprocess
@@ -27,8 +31,9 @@ import tomllib
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
-# The `*.figures` tests render plots and assert no number, the `faults.*` tests refusals and kills: leave them out.
-DEFAULT_EXCLUDE = r"\.figures$|^faults\."
+# The `*.figures` tests render plots and assert no number, the `faults.*` tests refusals and kills, the
+# `mpi.*` tests compare a binary with itself on other rank counts: none can see a wrong formula.
+DEFAULT_EXCLUDE = r"\.figures$|^faults\.|^mpi\."
 
 
 def load_mutants(path):
@@ -57,13 +62,15 @@ def build(args, log):
     return run(["cmake", "--build", str(args.build), "-j", str(args.jobs)], log) == 0
 
 
-def failed_tests(args, log, stop_on_failure=True):
-    """Runs ctest; returns the names of the failing tests ([] if all pass). A mutant is killed by its
-    first failing test: with `stop_on_failure` ctest stops there (the names are those that failed by then)."""
+def failed_tests(args, log, stop_on_failure=True, phase=(None, None)):
+    """Runs ctest on the tests of `phase` (-R pattern or every test, and a further -E pattern);
+    returns the names of the failing tests ([] if all pass). A mutant is killed by its first
+    failing test: with `stop_on_failure` ctest stops there (the names are those that failed by then)."""
+    select, exclude = phase
     cmd = ["ctest", "--test-dir", str(args.build), "-j", str(args.jobs), "--timeout", str(args.timeout),
-           "-E", args.exclude] + (["--stop-on-failure"] if stop_on_failure else [])
-    if args.tests:
-        cmd += ["-R", args.tests]
+           "-E", args.exclude + (f"|{exclude}" if exclude else "")] + (["--stop-on-failure"] if stop_on_failure else [])
+    if select or args.tests:
+        cmd += ["-R", select or args.tests]
     code = run(cmd, log)
     failed = []
     for line in Path(log).read_text().splitlines():
@@ -74,6 +81,32 @@ def failed_tests(args, log, stop_on_failure=True):
     if code != 0 and not failed:
         failed = ["(ctest failed)"]
     return failed
+
+
+def test_phases(args):
+    """(ctest -R, extra ctest -E) per phase: the tests that took under --slow seconds in the
+    baseline run (and any it did not time), then the others; one phase with --tests."""
+    cost_file = args.build / "Testing" / "Temporary" / "CTestCostData.txt"
+    slow = sorted(parts[0] for parts in map(str.split, cost_file.read_text().splitlines())
+                  if len(parts) == 3 and float(parts[2]) >= args.slow)
+    if not slow or args.tests:
+        return [(args.tests, None)]
+    slow_pattern = "^(" + "|".join(re.escape(name) for name in slow) + ")$"
+    return [(None, slow_pattern), (slow_pattern, None)]
+
+
+def commit_of_tree():
+    out = subprocess.run(["git", "rev-parse", "HEAD"], cwd=ROOT, capture_output=True, text=True)
+    return out.stdout.strip() if out.returncode == 0 else None
+
+
+def summarize(results, commit):
+    valid = [r for r in results if r["result"] != "does not compile"]
+    killed = [r for r in valid if r["result"] == "killed"]
+    return {"commit": commit, "mutants": len(results), "compiled": len(valid), "killed": len(killed),
+            "kill_rate": len(killed) / len(valid) if valid else None,
+            "published_survivors": [r["id"] for r in valid if r["result"] == "survived" and r["affects"]],
+            "results": results}
 
 
 def configure(args):
@@ -94,7 +127,10 @@ def main():
     ap.add_argument("--tests", help="ctest -R regex (default: every test)")
     ap.add_argument("--exclude", default=DEFAULT_EXCLUDE, help="ctest -E regex")
     ap.add_argument("--timeout", type=int, default=600, help="seconds per test (a hang counts as a kill)")
-    ap.add_argument("--report", type=Path, help="write the results as JSON")
+    ap.add_argument("--slow", type=float, default=15.0,
+                    help="tests that took at least this many seconds in the baseline run last")
+    ap.add_argument("--report", type=Path, help="write the results as JSON (after every mutant)")
+    ap.add_argument("--resume", action="store_true", help="keep the results of --report, run the other mutants")
     ap.add_argument("--list", action="store_true", help="check and list the mutants, run nothing")
     args = ap.parse_args()
     args.build = args.build if args.build.is_absolute() else ROOT / args.build
@@ -112,6 +148,18 @@ def main():
         print(f"{len(mutants)} mutants")
         return 0
 
+    commit = commit_of_tree()
+    results = []
+    if args.resume:
+        if not args.report or not args.report.exists():
+            sys.exit("--resume needs an existing --report FILE")
+        previous = json.loads(args.report.read_text())
+        if previous.get("commit") != commit:
+            sys.exit(f"{args.report} is of commit {previous.get('commit')}, this tree is {commit}: run afresh")
+        ids = {m["id"] for m in mutants}
+        results = [r for r in previous["results"] if r["id"] in ids]
+    done = {r["id"] for r in results}
+
     logs = args.build / "mutation-logs"
     configure(args)
     logs.mkdir(parents=True, exist_ok=True)
@@ -121,9 +169,11 @@ def main():
     base_failed = failed_tests(args, logs / "baseline-ctest.log", stop_on_failure=False)
     if base_failed:
         sys.exit(f"the unmodified tree fails tests ({', '.join(base_failed)}): nothing can be measured")
+    phases = test_phases(args)
 
-    results = []
     for i, m in enumerate(mutants, 1):
+        if m["id"] in done:
+            continue
         path = ROOT / m["file"]
         original = path.read_bytes()
         start = time.monotonic()
@@ -139,7 +189,11 @@ def main():
             if not build(args, logs / f"{m['id']}-build.log"):
                 result, failed = "does not compile", []
             else:
-                failed = failed_tests(args, logs / f"{m['id']}-ctest.log")
+                failed = []
+                for k, phase in enumerate(phases):
+                    failed = failed_tests(args, logs / f"{m['id']}-ctest{k}.log", phase=phase)
+                    if failed:
+                        break
                 result = "killed" if failed else "survived"
         except KeyboardInterrupt:
             interrupted = True
@@ -153,15 +207,14 @@ def main():
                         "failed_tests": failed, "seconds": round(time.monotonic() - start, 1)})
         shown = ", ".join(failed[:3]) + (f" (+{len(failed) - 3})" if len(failed) > 3 else "")
         print(f"[{i}/{len(mutants)}] {m['id']:32} {result:16} {shown}", flush=True)
+        if args.report:
+            args.report.write_text(json.dumps(summarize(results, commit), indent=2) + "\n")
     # Leave the build matching the unmodified tree.
     build(args, logs / "final-build.log")
 
+    summary = summarize(results, commit)
     valid = [r for r in results if r["result"] != "does not compile"]
     killed = [r for r in valid if r["result"] == "killed"]
-    published_survivors = [r for r in valid if r["result"] == "survived" and r["affects"]]
-    summary = {"mutants": len(results), "compiled": len(valid), "killed": len(killed),
-               "kill_rate": len(killed) / len(valid) if valid else None,
-               "published_survivors": [r["id"] for r in published_survivors], "results": results}
     rate = f"{summary['kill_rate']:.0%}" if valid else "n/a"
     print(f"\nkilled {len(killed)} of {len(valid)} mutants that compile ({rate}); "
           f"{len(results) - len(valid)} do not compile")
@@ -170,7 +223,7 @@ def main():
             print(f"  survived: {r['id']} ({r['affects'] or 'changes no published value'})")
     if args.report:
         args.report.write_text(json.dumps(summary, indent=2) + "\n")
-    return 1 if published_survivors else 0
+    return 1 if summary["published_survivors"] else 0
 
 
 if __name__ == "__main__":
