@@ -148,6 +148,11 @@ def main():
         print(f"{len(mutants)} mutants")
         return 0
 
+    # A run killed outright (SIGKILL) cannot restore its mutated file: never mutate a mutant.
+    dirty = subprocess.run(["git", "status", "--porcelain", "--"] + sorted({m["file"] for m in mutants}),
+                           cwd=ROOT, capture_output=True, text=True).stdout.strip()
+    if dirty:
+        sys.exit(f"files to mutate differ from the commit (a killed run?):\n{dirty}\nrestore them with git checkout")
     commit = commit_of_tree()
     results = []
     if args.resume:
