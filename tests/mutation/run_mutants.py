@@ -36,7 +36,15 @@ ROOT = Path(__file__).resolve().parents[2]
 DEFAULT_EXCLUDE = r"\.figures$|^faults\.|^mpi\."
 
 
-def load_mutants(path):
+def refuse_modified_files(mutants):
+    """A run killed outright (SIGKILL) cannot restore its mutated file: never mutate a mutant."""
+    dirty = subprocess.run(["git", "status", "--porcelain", "--"] + sorted({m["file"] for m in mutants}),
+                           cwd=ROOT, capture_output=True, text=True).stdout.strip()
+    if dirty:
+        sys.exit(f"files to mutate differ from the commit (a killed run?):\n{dirty}\nrestore them with git checkout")
+
+
+def load_mutants(path, will_mutate):
     mutants = tomllib.loads(path.read_text())["mutant"]
     ids = [m["id"] for m in mutants]
     if len(ids) != len(set(ids)):
@@ -45,6 +53,9 @@ def load_mutants(path):
         for key in ("id", "file", "old", "new", "affects"):
             if key not in m:
                 sys.exit(f"{path}: mutant {m.get('id', '?')} has no '{key}'")
+    if will_mutate:
+        refuse_modified_files(mutants)
+    for m in mutants:
         text = (ROOT / m["file"]).read_text()
         if text.count(m["old"]) != 1:
             sys.exit(f"mutant {m['id']}: `old` occurs {text.count(m['old'])} times in {m['file']} (must be once)")
@@ -135,7 +146,7 @@ def main():
     args = ap.parse_args()
     args.build = args.build if args.build.is_absolute() else ROOT / args.build
 
-    mutants = load_mutants(args.mutants)
+    mutants = load_mutants(args.mutants, will_mutate=not args.list)
     if args.only:
         wanted = set(args.only.split(","))
         unknown = wanted - {m["id"] for m in mutants}
@@ -148,11 +159,6 @@ def main():
         print(f"{len(mutants)} mutants")
         return 0
 
-    # A run killed outright (SIGKILL) cannot restore its mutated file: never mutate a mutant.
-    dirty = subprocess.run(["git", "status", "--porcelain", "--"] + sorted({m["file"] for m in mutants}),
-                           cwd=ROOT, capture_output=True, text=True).stdout.strip()
-    if dirty:
-        sys.exit(f"files to mutate differ from the commit (a killed run?):\n{dirty}\nrestore them with git checkout")
     commit = commit_of_tree()
     results = []
     if args.resume:
