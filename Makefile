@@ -52,10 +52,13 @@ experiment: build $(DEPS_STAMP)/figures.stamp
 # <name> or <name>-<scene>. Its results are remade when the binary, a scene file of the experiment
 # (the scene, its bases) or its published.toml is newer than results/<id>/run.json (written last,
 # after the CSVs); each figure when its script, figures/common.gp or the run is newer than it.
-PAPER_SCENES := $(filter-out %/published.toml,$(foreach n,$(EXPERIMENTS),$(filter-out experiments/$(n)/quick%,$(wildcard experiments/$(n)/*.toml))))
+# A cluster scene (a line "# scale: cluster", e.g. experiments/energy_map/fine.toml) is not a paper
+# scene: it is run with mpirun (README: Running on a cluster), not by make figures.
+CLUSTER_SCENES := $(shell grep -l '^\# scale: cluster' experiments/*/*.toml)
+PAPER_SCENES := $(filter-out %/published.toml $(CLUSTER_SCENES),$(foreach n,$(EXPERIMENTS),$(filter-out experiments/$(n)/quick%,$(wildcard experiments/$(n)/*.toml))))
 id_of = $(call scene_id,$(word 2,$(subst /, ,$(1))),$(basename $(notdir $(1))))
 define SCENE_RULES
-$(RESULTS)/$(3)/run.json: $(BUILD)/bin/$(1) $(2) $(filter-out experiments/$(1)/quick%,$(wildcard experiments/$(1)/*.toml))
+$(RESULTS)/$(3)/run.json: $(BUILD)/bin/$(1) $(2) $(filter-out experiments/$(1)/quick% $(CLUSTER_SCENES),$(wildcard experiments/$(1)/*.toml))
 	@echo "== $(3)"
 	@start=$$$$(date +%s%N); $(BUILD)/bin/$(1) --scene $(2) --out $(RESULTS)/$(3) && \
 	  awk -v ns=$$$$(( $$$$(date +%s%N) - start )) 'BEGIN { printf "== $(3): %.1f s\n", ns / 1e9 }'

@@ -29,6 +29,7 @@
 #include "geomint/methods/registry.hpp"
 #include "geomint/observables/order_fit.hpp"
 #include "geomint/runner/checkpoint.hpp"
+#include "geomint/runner/distributed_map.hpp"
 #include "geomint/runner/experiment.hpp"
 #include "geomint/analysis/work_precision.hpp"
 #include "geomint/runner/timing.hpp"
@@ -279,7 +280,7 @@ StudyPlan plan_map(const Scene& s) {
   // and map_grid.csv (about 160 and 60 characters)
   const double bytes = padded * (2 * sizeof(double) + sizeof(Point)) + n.points * (sizeof(EnergyMapRow) + 220.0);
   const double steps = 2 * padded * n.steps;  // one run per coordinate system and grid point (padding lanes die at once)
-  return {steps, steps, bytes, kKernelNsPerStep, std::string("batched kernel; ") + kNsNote};
+  return {steps, steps, bytes, kKernelNsPerStep, std::string("batched kernel; ") + kNsNote, 2 * n.batches};  // (batches of both maps)
 }
 
 StudyPlan plan_first_integrals(const Scene& s) {
@@ -411,18 +412,18 @@ void run_first_integrals(Context& ctx) {
   const FreeParticlePolar free_polar{1.0, {}};
   const auto hs = s.reals("first_integrals.h");
   const auto starts = s.real_rows("first_integrals.initial");
-  Csv fi({"h", "px_change_per_step"});
-  std::vector<double> change;
-  for (double h : hs) {
-    double worst = 0;  // max over the given states of |p_x^{j+1} - p_x^j| after one polar step
+  // Per step h: the max over the given states of |p_x^{j+1} - p_x^j| after one polar step.
+  const std::vector<double> change = distributed_map(hs.size(), [&](std::size_t k) {
+    double worst = 0;
     for (const auto& row : starts) {
       const auto z = make_state<2>(Vec<2>(row[0], row[1]), Vec<2>(row[2], row[3]));
-      const auto next = cartesian_from_polar(symplectic_euler_pq(free_polar, polar_from_cartesian(z), h));
+      const auto next = cartesian_from_polar(symplectic_euler_pq(free_polar, polar_from_cartesian(z), hs[k]));
       worst = std::max(worst, std::abs(next.p[0] - z.p[0]));
     }
-    fi.row(h, worst);
-    change.push_back(worst);
-  }
+    return worst;
+  });
+  Csv fi({"h", "px_change_per_step"});
+  for (std::size_t k = 0; k < hs.size(); ++k) fi.row(hs[k], change[k]);
   ctx.write("first_integrals.csv", fi);
   const OrderFit px_fit = fit_order(hs, change, roundoff_floor());
 
@@ -589,8 +590,8 @@ void run_cost(Context& ctx) {
   };
   const Coordinates systems[] = {Coordinates::cartesian, Coordinates::polar};
   const std::size_t ns = starts.size(), nd = dts.size();
-  // The energy errors (50): one untimed run per system, step and start (in parallel; deterministic).
-  const auto eps = parallel_map(2 * nd * ns, [&](std::size_t task) {
+  // The energy errors (50): one untimed run per system, step and start (split across threads and ranks).
+  const auto eps = distributed_map(2 * nd * ns, [&](std::size_t task) {
     const std::size_t c = task / (nd * ns), d = task / ns % nd, i = task % ns;
     return energy_map_scalar(systems[c], params(dts[d]), starts[i][0], starts[i][1]);
   });

@@ -27,10 +27,10 @@
 #include "geomint/observables/error_norms.hpp"
 #include "geomint/observables/order_fit.hpp"
 #include "geomint/reference/odeint_reference.hpp"
+#include "geomint/runner/distributed_map.hpp"
 #include "geomint/runner/experiment.hpp"
 #include "geomint/runner/timing.hpp"
 #include "geomint/runner/timing_report.hpp"
-#include "geomint/sweep/parallel_map.hpp"
 #include "geomint/systems/counting.hpp"
 #include "geomint/systems/exponential_decay.hpp"
 #include "geomint/systems/gompertz.hpp"
@@ -127,6 +127,7 @@ void check_finite(const State& z, const std::string& method, std::int64_t j, dou
 struct EnergyRun {
   double max_err = 0, rms_err = 0;  // of H(q_j, p_j) - H(q_0, p_0), j = 0..N
   std::int64_t force_evals = 0;
+  auto fields() { return std::tie(max_err, rms_err, force_evals); }  // (a record of runner/distributed_map.hpp)
 };
 
 // One convergence run of a method to t = N h, counting force evaluations.
@@ -382,8 +383,9 @@ void run_convergence(Context& ctx) {
   struct Row {
     std::vector<EnergyRun> osc;  // one per method
     double ee_decay, ee_gompertz;
+    auto fields() { return std::tie(osc, ee_decay, ee_gompertz); }
   };
-  const auto rows = parallel_map(hs.size(), [&](std::size_t i) {
+  const auto rows = distributed_map(hs.size(), [&](std::size_t i) {
     const double h = hs[i];
     const std::int64_t n = steps_to(t_end, h);
     return Row{oscillator_runs(methods, z0, h, k, n), euler_max_err(decay, s.real("decay.y0"), h, n),
@@ -458,7 +460,7 @@ void run_timing(Context& ctx) {
     return t;
   };
   const auto timing_hs = s.reals("timing.h");
-  const auto timing_runs = parallel_map(timing_hs.size(), [&](std::size_t i) {
+  const auto timing_runs = distributed_map(timing_hs.size(), [&](std::size_t i) {
     return oscillator_runs(methods, z0, timing_hs[i], k, steps_to(t_end, timing_hs[i]));
   });
   Csv cost({"method", "h", "steps", "wall_s", "ns_per_step", "force_evals", "energy_err_max", "wall_spread"});

@@ -18,6 +18,7 @@
 #include <numbers>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "geomint/analysis/linear_stability.hpp"
@@ -40,7 +41,7 @@
 #include "geomint/runner/timing.hpp"
 #include "geomint/runner/timing_report.hpp"
 #include "geomint/runner/checkpoint.hpp"
-#include "geomint/sweep/parallel_map.hpp"
+#include "geomint/runner/distributed_map.hpp"
 #include "geomint/systems/counting.hpp"
 #include "geomint/systems/elastic_pendulum.hpp"
 #include "geomint/systems/harmonic_oscillator.hpp"
@@ -453,8 +454,9 @@ void run_long_run(Context& ctx) {
   struct Long {
     std::vector<double> plain, comp, H;       // window maxima
     double slope_plain, slope_comp, slope_H;  // per period
+    auto fields() { return std::tie(plain, comp, H, slope_plain, slope_comp, slope_H); }
   };
-  const auto longs = parallel_map(long_h.size(), [&](std::size_t i) {
+  const auto longs = distributed_map(long_h.size(), [&](std::size_t i) {
     const double h = long_h[i];
     const std::int64_t n = std::llround(s.real("long_run.periods") * T / h);
     const Mat<2> Phi = lobatto_matrix(osc, h);
@@ -655,8 +657,9 @@ void run_nonlinear(Context& ctx) {
   struct Row {
     double pendulum_err, pendulum_iterations, elastic_err, elastic_iterations;
     std::vector<double> compared;  // the pendulum error of each of nonlinear.methods
+    auto fields() { return std::tie(pendulum_err, pendulum_iterations, elastic_err, elastic_iterations, compared); }
   };
-  const auto rows = parallel_map(nh.size(), [&](std::size_t i) {
+  const auto rows = distributed_map(nh.size(), [&](std::size_t i) {
     const double h = nh[i];
     const std::int64_t n = steps_to(t_end, h);
     int it = 0;
@@ -817,15 +820,7 @@ void run_long_run_cost(Context& ctx) {
   struct Measured {
     std::int64_t evals = 0;
     double energy = 0, phase = 0;
-  };
-  struct MeasuredCodec {  // evals (exact in a double below 2^53), energy, phase
-    void encode(const Measured& r, std::vector<double>& out) const {
-      out.insert(out.end(), {static_cast<double>(r.evals), r.energy, r.phase});
-    }
-    Measured decode(std::span<const double> v) const {
-      if (v.size() != 3) throw std::invalid_argument("a record of " + std::to_string(v.size()) + " values, not 3");
-      return {static_cast<std::int64_t>(v[0]), v[1], v[2]};
-    }
+    auto fields() { return std::tie(evals, energy, phase); }
   };
   const std::size_t nh = hs.size();
   const std::vector<std::string> keys = {"oscillator", "long_run.periods", "long_run_cost.methods", "long_run_cost.h"};
@@ -840,7 +835,7 @@ void run_long_run_cost(Context& ctx) {
     });
     r.phase = phase_distance(zN, osc.exact(z0, static_cast<double>(n) * h));
     return r;
-  }, MeasuredCodec{});
+  });
   // Wall time of the same runs without observation, serial (runner/timing.hpp).
   Csv cost({"method", "h", "steps", "wall_s", "ns_per_step", "force_evals", "phase_err", "energy_err", "wall_spread"});
   SpreadTally spreads;

@@ -20,6 +20,7 @@
 #include <optional>
 #include <numbers>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include <boost/numeric/odeint.hpp>
@@ -38,6 +39,7 @@
 #include "geomint/runner/experiment.hpp"
 #include "geomint/runner/timing.hpp"
 #include "geomint/runner/checkpoint.hpp"
+#include "geomint/runner/distributed_map.hpp"
 #include "geomint/sweep/parallel_map.hpp"
 #include "geomint/systems/nonholonomic_golden.hpp"
 #include "geomint/systems/nonholonomic_modified_series.hpp"
@@ -180,6 +182,7 @@ std::vector<Point4> reference_samples(const NonholonomicParticle& sys, const Poi
 struct Trajectory {
   std::vector<Point4> z;        // z_0 .. z_n
   std::int64_t iterations = 0;  // Newton iterations, summed over the steps
+  auto fields() { return std::tie(z, iterations); }  // (a record of runner/distributed_map.hpp)
 };
 
 Trajectory run_phi(Discretization d, const NonholonomicParticle& sys, double h, int ell, const Point4& z0,
@@ -196,6 +199,7 @@ Trajectory run_phi(Discretization d, const NonholonomicParticle& sys, double h, 
 struct CloudRun {
   std::vector<std::vector<Point4>> snapshots;
   std::int64_t iterations = 0, steps = 0;
+  auto fields() { return std::tie(snapshots, iterations, steps); }
 };
 
 CloudRun transpose(const std::vector<Trajectory>& per_point) {
@@ -417,7 +421,7 @@ void run_symplecticity(Context& ctx, const NonholonomicParticle& sys, const Poin
     return variational_flow(sys, z0, k == 0 ? ParticleFlow::conformal : ParticleFlow::hamiltonian, h, n, rtol, atol);
   });
   const double E = sys.H(as_state(z0a));
-  const auto psi = parallel_map(methods.size(), [&](std::size_t k) {
+  const auto psi = distributed_map(methods.size(), [&](std::size_t k) {
     std::vector<double> defect{0.0};
     Mat<4> J = Mat<4>::Identity();
     Z z = as_state(z0a);
@@ -477,7 +481,7 @@ void run_shape(Context& ctx) {
   const auto cloud = scaled_cloud(unit, z0, s.real("shape.radius"));
   const double dt = s.real("shape.snapshot_dt");
   const std::int64_t snaps = s.integer("shape.snapshots");
-  const auto paths = parallel_map(cloud.size(), [&](std::size_t i) { return reference_samples(sys, cloud[i], dt, snaps, rtol, atol); });
+  const auto paths = distributed_map(cloud.size(), [&](std::size_t i) { return reference_samples(sys, cloud[i], dt, snaps, rtol, atol); });
   Csv pts({"t", "x", "y", "px", "py"}), areas({"t", "area_x_px", "area_y_py", "area_sum"});
   json sums = json::array();
   for (std::int64_t j = 0; j <= snaps; ++j) {
@@ -513,19 +517,6 @@ void run_shape(Context& ctx) {
 
 // ---- Figs 5.2 and 5.4: hull volumes of the 600-cell cloud under Phi^(ell) and the reference ----
 
-// A reference path as doubles (its points one after the other), for a checkpoint.
-struct PathCodec {
-  void encode(const std::vector<Point4>& path, std::vector<double>& out) const {
-    for (const Point4& z : path) out.insert(out.end(), z.begin(), z.end());
-  }
-  std::vector<Point4> decode(std::span<const double> v) const {
-    if (v.size() % 4 != 0) throw std::invalid_argument("a record of " + std::to_string(v.size()) + " values, not points of 4");
-    std::vector<Point4> path(v.size() / 4);
-    for (std::size_t j = 0; j < path.size(); ++j) std::copy_n(v.begin() + static_cast<std::ptrdiff_t>(4 * j), 4, path[j].begin());
-    return path;
-  }
-};
-
 // The scene keys the reference paths of the volumes study depend on (their checkpoints).
 const std::vector<std::string> kReferencePathKeys = {"potential", "cloud.center", "cloud.radius", "h",
                                                      "t_end",     "ptp_window",   "reference"};
@@ -536,12 +527,12 @@ std::vector<double> reference_volumes(Context& ctx, const std::string& name, con
                                       const std::vector<Point4>& cloud, std::int64_t n) {
   const auto paths = checkpointed_map<std::vector<Point4>>(
       ctx, {name, kReferencePathKeys}, cloud.size(),
-      [&](std::size_t i) { return reference_samples(p.sys, cloud[i], p.h, n, p.rtol, p.atol); }, PathCodec{});
+      [&](std::size_t i) { return reference_samples(p.sys, cloud[i], p.h, n, p.rtol, p.atol); });
   std::vector<Trajectory> per_point;
   for (const auto& z : paths) per_point.push_back(Trajectory{z, 0});
   const CloudRun ref = transpose(per_point);
   const ModifiedSeries plain(Discretization::M, p.sys, p.h);  // only its ell = 0 density 1/N is used
-  return parallel_map(ref.snapshots.size(), [&](std::size_t j) { return hull_volumes(ref.snapshots[j], plain, {0})[0]; });
+  return distributed_map(ref.snapshots.size(), [&](std::size_t j) { return hull_volumes(ref.snapshots[j], plain, {0})[0]; });
 }
 
 // Figs 5.2, 5.4 for one cloud: the hull volumes under the reference flow and under Phi^(ell) for each
@@ -570,7 +561,7 @@ void cloud_volumes(Context& ctx, const PhiStudy& p, const std::vector<Point4>& c
 
   for (int ell : ells(s, "cloud.ells")) {
     ctx.progress("Figs 5.2, 5.4: Phi^(" + std::to_string(ell) + "), " + std::to_string(cloud.size()) + " points");
-    const auto runs = parallel_map(p.methods.size(), [&](std::size_t k) { return cloud_phi(p.methods[k], p.sys, p.h, ell, cloud, n); });
+    const auto runs = distributed_map(p.methods.size(), [&](std::size_t k) { return cloud_phi(p.methods[k], p.sys, p.h, ell, cloud, n); });
     std::vector<std::string> cols{"t", "reference_mu"};
     for (Discretization d : p.methods)
       for (int m : all_measures) cols.push_back(std::string(discretization_name(d)) + "_" + measure_name(m));
@@ -578,7 +569,7 @@ void cloud_volumes(Context& ctx, const PhiStudy& p, const std::vector<Point4>& c
     std::vector<std::vector<std::vector<double>>> vols(p.methods.size());  // [method][measure][step]
     for (std::size_t k = 0; k < p.methods.size(); ++k) {
       const ModifiedSeries ms(p.methods[k], p.sys, p.h);
-      const auto per_step = parallel_map(runs[k].snapshots.size(), [&](std::size_t j) { return hull_volumes(runs[k].snapshots[j], ms, all_measures); });
+      const auto per_step = distributed_map(runs[k].snapshots.size(), [&](std::size_t j) { return hull_volumes(runs[k].snapshots[j], ms, all_measures); });
       vols[k].assign(all_measures.size(), std::vector<double>(per_step.size()));
       for (std::size_t j = 0; j < per_step.size(); ++j)
         for (std::size_t m = 0; m < all_measures.size(); ++m) vols[k][m][j] = per_step[j][m];
@@ -666,7 +657,7 @@ void run_energies(Context& ctx) {
   put(ctx, "reproduced", "H0", H0);
   json H_end, err_end_of;
   for (int ell : {4, 0}) {
-    const auto runs = parallel_map(methods.size(), [&](std::size_t k) { return run_phi(methods[k], sys, h, ell, z0, n); });
+    const auto runs = distributed_map(methods.size(), [&](std::size_t k) { return run_phi(methods[k], sys, h, ell, z0, n); });
     std::vector<std::string> cols{"t", "reference_H"};
     for (Discretization d : methods)
       for (const char* q : {"H", "K_E", "K_mod", "E4", "err"}) cols.push_back(std::string(discretization_name(d)) + "_" + q);
@@ -718,7 +709,7 @@ void run_long_run(Context& ctx) {
   ctx.progress("long run");
   const std::int64_t n = steps_in(s.real("long_run.t_end"), h);
   const std::size_t M = methods.size();
-  const auto runs = parallel_map(2 * M, [&](std::size_t k) { return run_phi(methods[k % M], sys, h, k < M ? 0 : 4, z0, n); });
+  const auto runs = distributed_map(2 * M, [&](std::size_t k) { return run_phi(methods[k % M], sys, h, k < M ? 0 : 4, z0, n); });
   std::vector<std::string> cols{"t"};
   for (int ell : {0, 4})
     for (Discretization d : methods) cols.push_back(std::string(discretization_name(d)) + "_H_phi" + std::to_string(ell));
@@ -771,15 +762,7 @@ void run_order_study(Context& ctx) {
   struct Result {
     double ptp;
     std::int64_t iterations, steps;
-  };
-  struct ResultCodec {  // ptp, iterations, steps (counts exact in a double below 2^53)
-    void encode(const Result& r, std::vector<double>& out) const {
-      out.insert(out.end(), {r.ptp, static_cast<double>(r.iterations), static_cast<double>(r.steps)});
-    }
-    Result decode(std::span<const double> v) const {
-      if (v.size() != 3) throw std::invalid_argument("a record of " + std::to_string(v.size()) + " values, not 3");
-      return {v[0], static_cast<std::int64_t>(v[1]), static_cast<std::int64_t>(v[2])};
-    }
+    auto fields() { return std::tie(ptp, iterations, steps); }
   };
   const std::vector<std::string> keys = {"potential", "cloud.center", "methods", "order_study", "ptp_window"};
   const auto results = checkpointed_map<Result>(ctx, {"order_study", keys}, tasks.size(), [&](std::size_t t) {
@@ -794,7 +777,7 @@ void run_order_study(Context& ctx) {
     for (const auto& snap : run.snapshots) v.push_back(hull_volumes(snap, ms, {ell})[0]);
     return Result{relative_peak_to_peak(v, static_cast<std::size_t>(steps_in(s.real("ptp_window"), hh)) + 1), run.iterations,
                   run.steps};
-  }, ResultCodec{});
+  });
   Csv csv({"method", "ell", "h", "ptp"});
   double noise = 0;
   for (std::size_t t = 0; t < tasks.size(); ++t) {
@@ -1071,7 +1054,9 @@ StudyPlan plan_order_study(const Scene& s) {
   const double ells_n = static_cast<double>(s.reals("order_study.ells").size()), h_min = *std::min_element(hs.begin(), hs.end());
   double steps = M * 120 * steps_of(T, h_min / 2);  // the round-off probes
   for (double h : hs) steps += M * ells_n * 120 * steps_of(T, h);
-  return make_plan(steps, 2 * (steps_of(T, h_min / 2) + 1) * 121 * kPointBytes, 8100, "the snapshots of two runs at once");
+  StudyPlan p = make_plan(steps, 2 * (steps_of(T, h_min / 2) + 1) * 121 * kPointBytes, 8100, "the snapshots of two runs at once");
+  p.tasks = M * (ells_n * static_cast<double>(hs.size()) + 1);  // (a cloud run each)
+  return p;
 }
 
 StudyPlan plan_cost(const Scene& s) {

@@ -25,10 +25,10 @@
 #include "geomint/observables/error_norms.hpp"
 #include "geomint/observables/order_fit.hpp"
 #include "geomint/reference/odeint_reference.hpp"
+#include "geomint/runner/distributed_map.hpp"
 #include "geomint/runner/experiment.hpp"
 #include "geomint/runner/timing.hpp"
 #include "geomint/runner/timing_report.hpp"
-#include "geomint/sweep/parallel_map.hpp"
 #include "geomint/systems/counting.hpp"
 #include "geomint/systems/elastic_pendulum.hpp"
 
@@ -49,6 +49,7 @@ struct Errors {
   double energy_rms = 0, energy_max = 0;  // of H(z_j) - H(z_0), j = 0..N: eq. (50) and the max
   double phase = 0;                       // |z_N - z(t_N)|_2 against the reference
   std::int64_t force_evals = 0;           // with postprocessing at every step
+  auto fields() { return std::tie(energy_rms, energy_max, phase, force_evals); }  // (a record of runner/distributed_map.hpp)
 };
 
 // What the convergence study records (the scene's `observables`).
@@ -214,8 +215,9 @@ void convergence_with(Context& ctx, const Sys& sys) {
   struct Ref {
     State z;
     double self_check;
+    auto fields() { return std::tie(z.q[0], z.q[1], z.p[0], z.p[1], self_check); }
   };
-  const auto refs = parallel_map(obs.phase ? initial.size() : 0, [&](std::size_t i) {
+  const auto refs = distributed_map(obs.phase ? initial.size() : 0, [&](std::size_t i) {
     const State z0 = state_of(initial[i]);
     const State a = reference_solution(sys, z0, t_end, rtol, atol);
     const State b = reference_solution(sys, z0, t_end, rtol / 100, atol / 100);
@@ -233,7 +235,7 @@ void convergence_with(Context& ctx, const Sys& sys) {
   // Convergence: one task per (initial condition, h), all methods in it.
   ctx.progress("Fig. 4: convergence");
   const std::size_t nh = hs.size();
-  const auto runs = parallel_map(initial.size() * nh, [&](std::size_t task) {
+  const auto runs = distributed_map(initial.size() * nh, [&](std::size_t task) {
     const std::size_t i = task / nh;
     const double h = hs[task % nh];
     std::vector<Errors> out;
@@ -370,8 +372,9 @@ void timing_with(Context& ctx, const Sys& sys) {
   struct Count {
     std::int64_t evals = 0;
     double phase = 0;
+    auto fields() { return std::tie(evals, phase); }
   };
-  const auto counts = parallel_map(methods.size() * nh, [&](std::size_t task) {
+  const auto counts = distributed_map(methods.size() * nh, [&](std::size_t task) {
     Count c;
     const Counting<Sys> counted{sys, &c.evals};
     const double h = hs[task % nh];

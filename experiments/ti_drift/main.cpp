@@ -21,6 +21,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "geomint/analysis/growth_episodes.hpp"
@@ -44,7 +45,7 @@
 #include "geomint/runner/published.hpp"
 #include "geomint/runner/timing.hpp"
 #include "geomint/runner/checkpoint.hpp"
-#include "geomint/sweep/parallel_map.hpp"
+#include "geomint/runner/distributed_map.hpp"
 #include "geomint/systems/counting.hpp"
 #include "geomint/systems/hamiltonian_field.hpp"
 #include "geomint/systems/harmonic_oscillator.hpp"
@@ -837,7 +838,7 @@ void run_lj(Context& ctx) {
   // The step-size scan: max |H - H0| over t <= lj.scan_t, diverged beyond lj.blowup or when not finite.
   const auto hs = s.reals("lj.h_scan");
   const auto scan_size = static_cast<std::size_t>(s.integer("lj.scan_size"));
-  const auto scan = parallel_map(hs.size() * scan_size, [&](std::size_t task) {
+  const auto scan = distributed_map(hs.size() * scan_size, [&](std::size_t task) {
     const double hh = hs[task / scan_size];
     const Z18 start = lj_start(task % scan_size);
     const double Hs = lj.H(start);
@@ -858,7 +859,7 @@ void run_lj(Context& ctx) {
   Vec<18> grid_q;
   for (int k = 0; k < 9; ++k) grid_q.segment<2>(2 * k) = grid(k);
   const double grid_stiffness = max_hessian_eigenvalue(lj, grid_q);
-  const auto along = parallel_map(scan_size, [&](std::size_t i) {
+  const auto along = distributed_map(scan_size, [&](std::size_t i) {
     double largest = 0;
     integrate(simplified_ti_method(lj, false), lj_start(i), hl, steps_to(s.real("lj.scan_t"), hl),
               [&](std::int64_t j, const Z18& z) {
@@ -898,16 +899,7 @@ void run_lj(Context& ctx) {
   const auto tl0 = std::chrono::steady_clock::now();  // (on --resume: the part run since)
   struct Series {
     std::vector<double> E, H, Hhat;
-  };
-  struct SeriesCodec {  // E, H, Hhat one after the other (of equal length)
-    void encode(const Series& r, std::vector<double>& out) const {
-      for (const auto* v : {&r.E, &r.H, &r.Hhat}) out.insert(out.end(), v->begin(), v->end());
-    }
-    Series decode(std::span<const double> v) const {
-      if (v.size() % 3 != 0) throw std::invalid_argument("a record of " + std::to_string(v.size()) + " values, not 3 series");
-      const auto k = static_cast<std::ptrdiff_t>(v.size() / 3);
-      return {{v.begin(), v.begin() + k}, {v.begin() + k, v.begin() + 2 * k}, {v.begin() + 2 * k, v.end()}};
-    }
+    auto fields() { return std::tie(E, H, Hhat); }
   };
   const std::vector<std::string> series_keys = {"samples", "lj.h", "lj.t_end", "lj.size", "lj.seed", "lj.perturbation"};
   const auto lj_series = checkpointed_map<Series>(ctx, {"lj", series_keys}, Ml, [&](std::size_t i) {
@@ -921,7 +913,7 @@ void run_lj(Context& ctx) {
       r.Hhat.push_back(lj.H(ti_process(lj, z, hl, takahashi_imada_alpha)) - Hs);
     });
     return r;
-  }, SeriesCodec{});
+  });
   const double wall6 = std::chrono::duration<double>(std::chrono::steady_clock::now() - tl0).count();
   for (std::size_t i = 0; i < Ml; ++i)  // diverged as the scan counts it (|H - H0| beyond lj.blowup), or not finite
     for (std::size_t k = 0; k < lj_series[i].E.size(); ++k)
@@ -1023,7 +1015,7 @@ void run_lj_steps(Context& ctx) {
   const auto hs = s.reals("lj_steps.h");
   const auto M = static_cast<std::size_t>(s.integer("lj_steps.size"));
   const double T = s.real("lj_steps.t_end");
-  const auto err = parallel_map(hs.size() * M, [&](std::size_t task) {
+  const auto err = distributed_map(hs.size() * M, [&](std::size_t task) {
     const double h = hs[task / M];
     const Z18 start = lj_start_of(s, task % M);
     const double E0 = simplified_ti_modified_energy(lj, start, h);
@@ -1443,7 +1435,7 @@ StudyPlan plan_ensemble(const Scene& s) {
   const double rows = kept_samples(n, static_cast<double>(s.integer("samples")));
   // M trajectories and the rerun of the one with the largest error (Fig. 5); the series of all M, and the CSVs
   return {(M + 1) * n, (M + 1) * n * static_cast<double>(evals_of("simplified_takahashi_imada")),
-          M * rows * 8 + rows * 200 + M * std::min(rows, 201.0) * 60, kNsPerStepHH, kNsNote};
+          M * rows * 8 + rows * 200 + M * std::min(rows, 201.0) * 60, kNsPerStepHH, kNsNote, M};
 }
 
 StudyPlan plan_lj(const Scene& s) {
@@ -1456,6 +1448,7 @@ StudyPlan plan_lj(const Scene& s) {
   p.memory_bytes = M * kept_samples(n, static_cast<double>(s.integer("samples"))) * 3 * 8;  // E, H, H^ of each trajectory
   p.ns_per_step = kNsPerStepLJ;
   p.note = kNsNote;
+  p.tasks = M;  // the ensemble's trajectories (the scan before it: a small part)
   return p;
 }
 
@@ -1467,6 +1460,7 @@ StudyPlan plan_lj_steps(const Scene& s) {
   p.memory_bytes = M * static_cast<double>(s.reals("lj_steps.h").size()) * 8;
   p.ns_per_step = kNsPerStepLJ;
   p.note = kNsNote;
+  p.tasks = M * static_cast<double>(s.reals("lj_steps.h").size());
   return p;
 }
 

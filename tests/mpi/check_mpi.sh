@@ -2,22 +2,35 @@
 # An MPI job gives the bytes of one process (issue 17): BIN with ARGS run as one process (2 threads)
 # and under `mpirun -np NP` (1 thread per rank, more ranks than cores allowed) write the same CSV
 # files and summary.json, timings aside. With --resume-np M the MPI run is first stopped after one
-# round (checkpoint.stop_after = 1, exit 3) and then resumed with M ranks.
-#   check_mpi.sh BIN WORK NP [--resume-np M] -- ARGS...
+# round (checkpoint.stop_after = 1, exit 3) and then resumed with M ranks; with --usr1 as well, it is
+# stopped instead by SIGUSR1 sent to mpirun once the first checkpoint is written (what a batch
+# job's time-limit warning does: scripts/slurm_job.sh).
+#   check_mpi.sh BIN WORK NP [--resume-np M [--usr1]] -- ARGS...
 set -euo pipefail
 bin=$1 work=$2 np=$3
 shift 3
 resume_np=""
+usr1=""
 if [[ ${1:-} == --resume-np ]]; then resume_np=$2; shift 2; fi
+if [[ ${1:-} == --usr1 ]]; then usr1=1; shift; fi
 [[ ${1:-} == -- ]] && shift
-# Open MPI refuses to run as root unless told; CI runs as root.
-export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
-mpi=(mpirun --oversubscribe --bind-to none)
+# Open MPI refuses to run as root unless told; CI runs as root. The mpirun line is the project's
+# (scripts/mpirun.sh, also the Slurm job's), with more ranks than cores allowed.
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 GEOMINT_MPI_OVERSUBSCRIBE=1
+mpi=("$(dirname "$0")/../../scripts/mpirun.sh")
 rm -rf "$work" && mkdir -p "$work"
 "$bin" "$@" --threads 2 --out "$work/one" 2> "$work/one.stderr"
 if [[ -n $resume_np ]]; then
   set +e
-  "${mpi[@]}" -np "$np" "$bin" "$@" --threads 1 --set checkpoint.stop_after=1 --out "$work/mpi" 2> "$work/stop.stderr"
+  if [[ -n $usr1 ]]; then
+    "${mpi[@]}" -np "$np" "$bin" "$@" --threads 1 --set checkpoint.interval=0 --out "$work/mpi" 2> "$work/stop.stderr" &
+    pid=$!
+    until compgen -G "$work/mpi.partial/*.checkpoint.json" > /dev/null || ! kill -0 "$pid" 2> /dev/null; do sleep 0.05; done
+    kill -USR1 "$pid" 2> /dev/null
+    wait "$pid"
+  else
+    "${mpi[@]}" -np "$np" "$bin" "$@" --threads 1 --set checkpoint.stop_after=1 --out "$work/mpi" 2> "$work/stop.stderr"
+  fi
   code=$?
   set -e
   [[ $code -eq 3 ]] || { echo "FAIL: the stopped MPI run exits $code, not 3"; cat "$work/stop.stderr"; exit 1; }

@@ -45,7 +45,8 @@ def main() -> int:
     for exp_dir in sorted((source / "experiments").glob("*/main.cpp")):
         exp = exp_dir.parent.name
         variants = [p.stem for p in exp_dir.parent.glob("*.toml")
-                    if p.stem not in (exp, "published", "quick") and not p.stem.startswith("quick-")]
+                    if p.stem not in (exp, "published", "quick") and not p.stem.startswith("quick-")
+                    and "\n# scale: cluster" not in "\n" + p.read_text(encoding="utf-8")]  # (not a paper scene)
         for run in [exp] + [f"{exp}-{v}" for v in variants]:
             if (all_results / run / "summary.json").exists():
                 shutil.copytree(all_results / run, results / run)

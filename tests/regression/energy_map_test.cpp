@@ -346,6 +346,31 @@ TEST(EnergyMap, PlanOfThePaperSceneCountsEveryStudy) {
   EXPECT_FALSE(fs::exists(out));
 }
 
+// --plan --ranks N: the map's batches of both coordinate systems split across N ranks (ceil(tasks / N) each), run
+// ceil(share / T) deep on T threads; a study without tasks (first_integrals) is not sped up by ranks. --ranks
+// without --plan is refused.
+TEST(EnergyMap, PlanSplitsTheMapAcrossRanks) {
+  const auto plan = [](const std::string& args) {
+    const BinaryOutcome r = run_binary("energy_map", "--plan --json " + args);
+    EXPECT_EQ(r.code, 0) << r.err;
+    std::map<std::string, nlohmann::json> studies;
+    const nlohmann::json parsed = nlohmann::json::parse(r.out);
+    for (const auto& st : parsed["studies"]) studies[st["study"].get<std::string>()] = st;
+    return studies;
+  };
+  auto one = plan("--threads 1"), many = plan("--ranks 3 --threads 2");
+  const double tasks = one["map"]["tasks"].get<double>();
+  EXPECT_EQ(tasks, 2.0 * std::ceil(201.0 * 201.0 / 64.0));
+  EXPECT_EQ(one["map"]["tasks_per_rank"].get<double>(), tasks);
+  EXPECT_EQ(many["map"]["tasks_per_rank"].get<double>(), std::ceil(tasks / 3));
+  EXPECT_NEAR(many["map"]["wall_s"].get<double>(),
+              one["map"]["wall_s"].get<double>() / tasks * std::ceil(std::ceil(tasks / 3) / 2), 1e-9 * one["map"]["wall_s"].get<double>());
+  EXPECT_TRUE(many["first_integrals"]["tasks"].is_null());
+  EXPECT_NEAR(many["first_integrals"]["wall_s"].get<double>(), one["first_integrals"]["wall_s"].get<double>() / 2,
+              1e-9 * one["first_integrals"]["wall_s"].get<double>());
+  EXPECT_EQ(run_binary("energy_map", "--quick --ranks 2").code, 2);
+}
+
 // --resume with a checkpoint that counts more batches than the map has (it used to segfault), a header that is not
 // JSON, or a record log shorter than its header counts: exit 2, one line naming the file (and the field).
 TEST(EnergyMap, ResumeRefusesADamagedCheckpoint) {

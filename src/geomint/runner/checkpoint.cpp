@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <chrono>
 #include <cstring>
 #include <fstream>
 
@@ -166,11 +167,18 @@ CheckpointLog::Records CheckpointLog::load_here(bool resume) {
   return records;
 }
 
+namespace {
+double g_write_seconds = 0;
+}  // namespace
+
+double checkpoint_write_seconds() { return g_write_seconds; }
+
 void CheckpointLog::append(std::span<const double> values, std::span<const std::size_t> lengths) {
   if (!mpi::is_root()) {  // rank 0 alone writes; the others keep count
     tasks_done_ += lengths.size();
     return;
   }
+  const auto t0 = std::chrono::steady_clock::now();
   std::vector<char> raw(lengths.size() * 8 + values.size() * 8);
   std::size_t at = 0, v = 0;
   for (const std::size_t length : lengths) {
@@ -186,36 +194,7 @@ void CheckpointLog::append(std::span<const double> values, std::span<const std::
   json h = identity_;
   h["tasks_done"] = tasks_done_, h["log_bytes"] = log_bytes_;
   write_file_atomic(header_, h.dump(1) + "\n");
-}
-
-void throw_everywhere(int owner, std::exception_ptr error) {
-  enum Kind { other, scene, numerical, output, interrupted };
-  std::string message = "(no message)";
-  double kind = other;
-  if (mpi::rank() == owner) try {
-      std::rethrow_exception(error);
-    } catch (const SceneError& e) {
-      kind = scene, message = e.what();
-    } catch (const NumericalFailure& e) {
-      kind = numerical, message = e.what();
-    } catch (const OutputError& e) {
-      kind = output, message = e.what();
-    } catch (const Interrupted& e) {
-      kind = interrupted, message = e.what();
-    } catch (const std::exception& e) {
-      message = e.what();
-    } catch (...) {
-    }
-  std::vector<double> k{kind};
-  mpi::broadcast(k, owner), mpi::broadcast(message, owner);
-  if (mpi::rank() == owner) std::rethrow_exception(error);
-  switch (static_cast<int>(k[0])) {
-    case scene: throw SceneError(message);
-    case numerical: throw NumericalFailure(message);
-    case output: throw OutputError(message);
-    case interrupted: throw Interrupted(message);
-    default: throw std::runtime_error(message);
-  }
+  g_write_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
 void remove_checkpoints(const fs::path& dir) {

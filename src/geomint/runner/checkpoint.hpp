@@ -30,6 +30,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "geomint/runner/distributed_map.hpp"
 #include "geomint/runner/experiment.hpp"
 #include "geomint/sweep/mpi.hpp"
 #include "geomint/sweep/parallel_map.hpp"
@@ -40,26 +41,6 @@ struct CheckpointSpec {
   std::string name;               // the files' stem: the study's name, or "<study>.<part>" for a study's second loop
   std::vector<std::string> keys;  // the scene keys (dotted; sections or values) the tasks depend on
   std::size_t round = 0;          // tasks per round (0: n/32, at least threads x MPI ranks)
-};
-
-// A task's record as doubles. A study passes its own codec (encode, decode) for a struct; decode
-// gets the doubles encode wrote and throws std::invalid_argument for a record of the wrong length.
-template <class R>
-struct RecordCodec;
-
-template <>
-struct RecordCodec<double> {
-  void encode(double x, std::vector<double>& out) const { out.push_back(x); }
-  double decode(std::span<const double> v) const {
-    if (v.size() != 1) throw std::invalid_argument("a record of " + std::to_string(v.size()) + " values, not 1");
-    return v[0];
-  }
-};
-
-template <>
-struct RecordCodec<std::vector<double>> {
-  void encode(const std::vector<double>& x, std::vector<double>& out) const { out.insert(out.end(), x.begin(), x.end()); }
-  std::vector<double> decode(std::span<const double> v) const { return {v.begin(), v.end()}; }
 };
 
 // The header and log of one checkpointed map (the part that does not depend on the record type).
@@ -98,67 +79,8 @@ class CheckpointLog {
   std::uint64_t log_bytes_ = 0;
 };
 
-// The exception `error` of rank `owner` (null on the others), thrown on every rank of an MPI job: its
-// kind (SceneError, NumericalFailure, OutputError, Interrupted; another: std::runtime_error) and
-// message sent from the owner, so that every rank ends the same way.
-[[noreturn]] void throw_everywhere(int owner, std::exception_ptr error);
-
-// out[i] = f(first + i), i < count. In one process by parallel_map; in an MPI job task first + i runs
-// on rank i mod size (a cyclic split: the costly tasks of a round are spread), and every rank
-// receives every record (encoded by the codec: exact), so that the results are the same bytes on
-// every rank and for any number of ranks. A task that throws: the exception of the lowest such task,
-// on every rank (as parallel_map does in one process).
-template <class R, class F, class Codec>
-std::vector<R> map_round(std::size_t first, std::size_t count, const F& f, const Codec& codec) {
-  const auto t0 = std::chrono::steady_clock::now();
-  const auto busy = [&] { mpi::count_busy(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count()); };
-  if (mpi::size() == 1) {
-    auto out = parallel_map(count, [&](std::size_t i) { return f(first + i); });
-    busy();
-    return out;
-  }
-  const auto r = static_cast<std::size_t>(mpi::rank()), p = static_cast<std::size_t>(mpi::size());
-  const auto share = [&](std::size_t q) { return count > q ? (count - q + p - 1) / p : 0; };  // tasks of rank q
-  std::vector<char> threw(share(r), 0);
-  std::vector<double> mine;  // per task: its record's length, then the record
-  std::exception_ptr error;
-  std::int64_t failed = INT64_MAX;
-  try {
-    const auto results = parallel_map(share(r), [&](std::size_t k) {
-      try {
-        return f(first + r + k * p);
-      } catch (...) {
-        threw[k] = 1;
-        throw;
-      }
-    });
-    for (const R& x : results) {
-      const std::size_t at = mine.size();
-      mine.push_back(0), codec.encode(x, mine);
-      mine[at] = static_cast<double>(mine.size() - at - 1);
-    }
-  } catch (...) {
-    error = std::current_exception();
-    const auto k = static_cast<std::size_t>(std::find(threw.begin(), threw.end(), 1) - threw.begin());
-    failed = static_cast<std::int64_t>(r + k * p);
-  }
-  busy();
-  if (const std::int64_t lowest = mpi::all_min(failed); lowest != INT64_MAX)
-    throw_everywhere(static_cast<int>(static_cast<std::size_t>(lowest) % p), error);
-  const std::vector<double> all = mpi::all_gather(mine);
-  std::vector<std::optional<R>> slots(count);
-  std::size_t at = 0;
-  for (std::size_t q = 0; q < p; ++q)
-    for (std::size_t k = 0; k < share(q); ++k) {
-      const auto length = static_cast<std::size_t>(all[at]);
-      slots[q + k * p].emplace(codec.decode(std::span<const double>(all.data() + at + 1, length)));
-      at += 1 + length;
-    }
-  std::vector<R> out;
-  out.reserve(count);
-  for (auto& s : slots) out.push_back(std::move(*s));
-  return out;
-}
+// The wall time this process spent writing checkpoints (appends and headers, synced), for run.json.
+double checkpoint_write_seconds();
 
 // Removes every checkpoint (*.checkpoint.json, *.checkpoint.log) in `dir`: the runner, before it commits.
 void remove_checkpoints(const std::filesystem::path& dir);
@@ -174,8 +96,8 @@ inline constexpr std::chrono::seconds kCheckpointInterval{10};
 // tasks not yet saved are appended to the log. A record with a value that is not finite is not
 // saved (nor any after it): a resumed run recomputes it and the study's own check reports it. On a
 // stop, Interrupted names where it stopped and the command that resumes. With ctx.resume the
-// tasks the checkpoint holds are read back instead of computed. The rounds are the one place where
-// tasks are handed out: a distributed version splits each round here.
+// tasks the checkpoint holds are read back instead of computed. Each round is a distributed_map:
+// under MPI its tasks are split across the ranks.
 template <class R, class F, class Codec = RecordCodec<R>>
 std::vector<R> checkpointed_map(Context& ctx, const CheckpointSpec& spec, std::size_t n, const F& f,
                                 const Codec& codec = {}) {
@@ -228,7 +150,7 @@ std::vector<R> checkpointed_map(Context& ctx, const CheckpointSpec& spec, std::s
                         "); continue with: " + ctx.resume_command);
     if (done == n) break;
     const std::size_t first = done, count = std::min(round, n - done);
-    auto results = map_round<R>(first, count, f, codec);
+    auto results = distributed_map(count, [&](std::size_t i) { return f(first + i); }, codec);
     for (std::size_t i = 0; i < count; ++i) slots[first + i].emplace(std::move(results[i]));
     done += count;
     ctx.progress(log.name(), static_cast<double>(done), static_cast<double>(n), "tasks");

@@ -115,7 +115,7 @@ std::atomic<int> g_stop_points{0};
 char g_stop_message[512], g_exit_message[512];  // composed before any signal can arrive
 
 extern "C" void on_signal(int sig) {
-  if (g_stop_points.load() > 0 && !g_stop) {
+  if (sig == SIGUSR1 || (g_stop_points.load() > 0 && !g_stop)) {
     g_stop = 1;
     [[maybe_unused]] auto n = ::write(STDERR_FILENO, g_stop_message, std::strlen(g_stop_message));
     return;
@@ -131,11 +131,13 @@ void install_signal_handlers(const std::string& name, const ResultsDir& results)
                 "signal stops at once)\n", name.c_str());
   std::snprintf(g_exit_message, sizeof g_exit_message, "\n%s: interrupted: stopped; %s is unchanged\n", name.c_str(),
                 results.final_path().c_str());
+  if (!mpi::is_root()) g_stop_message[0] = g_exit_message[0] = '\0';  // (rank 0 speaks for the job)
   struct sigaction sa {};
   sa.sa_handler = on_signal;
   sigemptyset(&sa.sa_mask);
   sigaction(SIGINT, &sa, nullptr);
   sigaction(SIGTERM, &sa, nullptr);
+  sigaction(SIGUSR1, &sa, nullptr);
 }
 
 }  // namespace
@@ -398,20 +400,28 @@ void check_plan(const Study& st, const StudyPlan& p, const std::vector<std::stri
                      fmt_bytes(available) + " available" + from + "; make the grid, ensemble or record smaller");
 }
 
-// The plan as JSON (--plan --json): counts null for a study without a plan, estimated wall times in
-// seconds, null where there is no estimate.
-nlohmann::ordered_json plan_json(const std::vector<const Study*>& studies, const std::vector<StudyPlan>& plans, int threads) {
-  nlohmann::ordered_json j = {{"threads", threads}, {"studies", nlohmann::ordered_json::array()}};
+// The plan as JSON (--plan --json) for `ranks` MPI ranks of `threads` threads: counts null for a
+// study without a plan, estimated wall times in seconds, null where there is no estimate. A study of
+// n tasks gives each rank ceil(n / ranks) of them (distributed_map's cyclic split), run ceil(share /
+// threads) deep on its threads: wall = (steps / n) ns_per_step ceil(share / threads). A study without
+// tasks runs on every rank alike: steps ns_per_step / threads. Every rank holds every result: the
+// memory is per rank.
+nlohmann::ordered_json plan_json(const std::vector<const Study*>& studies, const std::vector<StudyPlan>& plans, int ranks,
+                                 int threads) {
+  nlohmann::ordered_json j = {{"ranks", ranks}, {"threads", threads}, {"studies", nlohmann::ordered_json::array()}};
   double total = 0;
   bool all = true;
   for (std::size_t i = 0; i < studies.size(); ++i) {
     const StudyPlan& p = plans[i];
-    const bool has = static_cast<bool>(studies[i]->plan), estimated = has && p.ns_per_step > 0;
-    const double wall = p.steps * p.ns_per_step * 1e-9 / threads;
+    const bool has = static_cast<bool>(studies[i]->plan), estimated = has && p.ns_per_step > 0, split = has && p.tasks > 0;
+    const double share = split ? std::ceil(p.tasks / ranks) : 0;
+    const double wall = split ? p.steps / p.tasks * p.ns_per_step * 1e-9 * std::ceil(share / threads)
+                              : p.steps * p.ns_per_step * 1e-9 / threads;
     total += estimated ? wall : 0, all = all && estimated;
     const auto value = [](bool known, double v) { return known ? nlohmann::ordered_json(v) : nlohmann::ordered_json(); };
     j["studies"].push_back({{"study", studies[i]->name}, {"makes", studies[i]->makes}, {"steps", value(has, p.steps)},
                             {"force_evals", value(has, p.force_evals)}, {"memory_bytes", value(has, p.memory_bytes)},
+                            {"tasks", value(split, p.tasks)}, {"tasks_per_rank", value(split, share)},
                             {"wall_s", value(estimated, wall)}, {"note", p.note}});
   }
   j["wall_s"] = total;
@@ -423,22 +433,26 @@ nlohmann::ordered_json plan_json(const std::vector<const Study*>& studies, const
 void print_plan(std::ostream& os, const nlohmann::ordered_json& plan) {
   char line[256];
   const auto row = [&](const std::string& a, const std::string& b, const std::string& c, const std::string& d,
-                       const std::string& e) {
-    std::snprintf(line, sizeof line, "%-18s %12s %12s %10s %14s", a.c_str(), b.c_str(), c.c_str(), d.c_str(), e.c_str());
+                       const std::string& e, const std::string& f) {
+    std::snprintf(line, sizeof line, "%-18s %12s %12s %10s %12s %14s", a.c_str(), b.c_str(), c.c_str(), d.c_str(),
+                  e.c_str(), f.c_str());
     os << line;
   };
   const auto shown = [](const nlohmann::ordered_json& v, std::string (*fmt)(double), const char* none) {
     return v.is_null() ? std::string(none) : fmt(v.get<double>());
   };
-  row("study", "steps", "force evals", "memory", "wall time");
-  os << "   (estimated, " << plan["threads"].get<int>() << " threads)\n";
+  const int ranks = plan["ranks"].get<int>();
+  row("study", "steps", "force evals", "memory", "tasks/rank", "wall time");
+  os << "   (estimated, " << (ranks > 1 ? std::to_string(ranks) + " ranks x " : std::string()) << plan["threads"].get<int>()
+     << " threads)\n";
   for (const auto& st : plan["studies"]) {
     row(st["study"], shown(st["steps"], fmt_count, "-"), shown(st["force_evals"], fmt_count, "-"),
-        shown(st["memory_bytes"], fmt_bytes, "-"), shown(st["wall_s"], fmt_seconds, "no estimate"));
+        shown(st["memory_bytes"], fmt_bytes, "-"), shown(st["tasks_per_rank"], fmt_count, "-"),
+        shown(st["wall_s"], fmt_seconds, "no estimate"));
     const std::string note = st["note"];
     os << "   " << st["makes"].get<std::string>() << (note.empty() ? "" : "; " + note) << '\n';
   }
-  row("total", "", "", "", fmt_seconds(plan["wall_s"].get<double>()));
+  row("total", "", "", "", "", fmt_seconds(plan["wall_s"].get<double>()));
   os << (plan["all_estimated"].get<bool>() ? "" : "   (studies without an estimate not counted)") << '\n';
 }
 
@@ -502,8 +516,13 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
   app.add_option("--set", overrides, "Override a scene key: --set key=value (repeatable)");
   bool plan_only = false;
   app.add_flag("--plan", plan_only,
-               "Validate, print what each study would run (steps, force evaluations, memory, estimated wall time) "
-               "and exit without running");
+               "Validate, print what each study would run (steps, force evaluations, memory, tasks per MPI rank, "
+               "estimated wall time) and exit without running");
+  int plan_ranks = 0;
+  auto* ranks_opt = app.add_option("--ranks", plan_ranks,
+                                   "With --plan: the estimate for this many MPI ranks of --threads threads each "
+                                   "(default: the ranks of this job; 1 without mpirun)")
+                        ->check(CLI::Range(1, 1 << 24));
   bool resume = false;
   app.add_flag("--resume", resume,
                "Continue an interrupted run from the checkpoint in --out (experiments that write checkpoints)");
@@ -518,6 +537,10 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
   }
   if (as_json && !list_keys && !plan_only) {
     std::cerr << name << ": --json goes with --list-keys or --plan (see --help)\n";
+    return 2;
+  }
+  if (ranks_opt->count() > 0 && !plan_only) {
+    std::cerr << name << ": --ranks goes with --plan (an MPI job's ranks are mpirun's -np; see --help)\n";
     return 2;
   }
   if (list_studies) {
@@ -575,7 +598,7 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
     }
     scene->restrict_reads({});
     if (plan_only) {
-      const nlohmann::ordered_json plan = plan_json(studies, plans, threads);
+      const nlohmann::ordered_json plan = plan_json(studies, plans, plan_ranks > 0 ? plan_ranks : mpi::size(), threads);
       if (as_json)
         std::cout << plan.dump(2) << '\n';
       else
@@ -657,7 +680,10 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
     run["threads"] = threads;
     run["ranks"] = mpi::size();
     const double busy = mpi::busy_seconds();
-    run["rank_busy_s"] = mpi::all_gather(std::span<const double>(&busy, 1));  // each rank's time in checkpointed tasks
+    const double exchange = mpi::exchange_seconds();
+    run["rank_busy_s"] = mpi::all_gather(std::span<const double>(&busy, 1));  // each rank's time in distributed tasks
+    run["rank_exchange_s"] = mpi::all_gather(std::span<const double>(&exchange, 1));  // and in exchanging their results
+    run["checkpoint_write_s"] = checkpoint_write_seconds();
     run["start_utc"] = utc_iso8601(start);
     run["end_utc"] = utc_iso8601(std::chrono::system_clock::now());
     run["wall_s"] = wall;

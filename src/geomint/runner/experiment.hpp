@@ -60,7 +60,9 @@ std::string progress_line(std::string_view what, double done, double total, std:
 // SIGINT and SIGTERM. While a StopPoint exists, the first signal only sets stop_requested(): the
 // study stops at its next checkpoint (Interrupted, exit 3); a second one ends the process. With no
 // StopPoint, a signal ends the process at once (the results directory stays as it was: the run
-// writes into its staging directory). Either way a line on stderr says what happens.
+// writes into its staging directory). SIGUSR1 (which mpirun passes on to every rank, and a batch
+// job's time-limit warning: scripts/slurm_job.sh) only ever sets stop_requested(): the run stops at
+// the next checkpoint, or finishes if none comes. Either way a line on stderr says what happens.
 bool stop_requested();
 struct StopPoint {
   StopPoint();
@@ -87,6 +89,8 @@ struct StudyPlan {
   double memory_bytes = 0;  // the largest memory the study holds at once
   double ns_per_step = 0;   // estimated time per step and thread (0: no estimate)
   std::string note;         // what the estimate rests on
+  double tasks = 0;         // independent tasks of about equal cost, split across MPI ranks and threads
+                            // (distributed_map, checkpointed_map); 0: the study runs alike on every rank
 };
 
 struct Study {

@@ -21,6 +21,7 @@
 #include <array>
 #include <cstdint>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace geomint {
@@ -37,6 +38,7 @@ struct EnergyMapParams {
 struct EnergyMapPoint {
   double eps;           // eq. (50); NaN when diverged
   std::int64_t diverge_step;  // -1: did not diverge
+  auto fields() { return std::tie(eps, diverge_step); }  // (a record of runner/distributed_map.hpp)
 };
 
 inline constexpr int kEnergyMapBatch = 64;

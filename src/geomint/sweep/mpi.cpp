@@ -12,11 +12,13 @@
 namespace geomint::mpi {
 
 namespace {
-double g_busy = 0;
+double g_busy = 0, g_exchange = 0;
 }  // namespace
 
 void count_busy(double seconds) { g_busy += seconds; }
 double busy_seconds() { return g_busy; }
+void count_exchange(double seconds) { g_exchange += seconds; }
+double exchange_seconds() { return g_exchange; }
 
 #ifdef GEOMINT_HAVE_MPI
 

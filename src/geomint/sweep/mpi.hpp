@@ -1,7 +1,7 @@
 #pragma once
 // The processes of an MPI job (Open MPI; issue 17). Every rank runs the whole experiment: the
-// scene, its validation and every study. The tasks of checkpointed_map (runner/checkpoint.hpp)
-// are split across the ranks round by round, and every rank receives every result, so that what
+// scene, its validation and every study. The tasks of distributed_map (runner/distributed_map.hpp)
+// are split across the ranks (checkpointed_map: round by round), and every rank receives every result, so that what
 // follows a map is computed from the same numbers everywhere. Rank 0 alone writes files and
 // speaks on stdout and stderr. Built without MPI (-DGEOMINT_MPI=OFF), or run without mpirun,
 // there is one process, rank 0 of 1, and every function here is trivial.
@@ -28,10 +28,15 @@ int size();
 inline bool is_root() { return rank() == 0; }
 bool built_with_mpi();
 
-// The wall time this process spent computing the tasks of its share (checkpointed_map's rounds), for
+// The wall time this process spent computing the tasks of its share of distributed maps, for
 // run.json's rank_busy_s: how evenly the work was split.
 void count_busy(double seconds);
 double busy_seconds();
+// The wall time this process spent exchanging the results of distributed maps (waiting for the other
+// ranks, gathering, decoding), for run.json's rank_exchange_s: on the rank that finished last it is
+// the cost of the exchange itself, on the others also the wait for it.
+void count_exchange(double seconds);
+double exchange_seconds();
 
 // Every rank's `mine`, concatenated in rank order, on every rank (MPI_Allgatherv).
 std::vector<double> all_gather(std::span<const double> mine);
