@@ -6,7 +6,8 @@
 #   make build                    configure (Release) and build into build/
 #   make test                     build, then ctest (unit, regression, stability, figures)
 #   make figures                  run every experiment's paper scene, render figures/out/* (only what changed)
-#   make paper                    figures + tables from summary.json + paper/main.pdf
+#   make scaling                  strong scaling under MPI and the cluster projection (bench/mpi_scaling.py)
+#   make paper                    figures + scaling + tables from summary.json + paper/main.pdf
 #   make experiment NAME=x [SCENE=v] ARGS='--study S --set key=value'   one experiment (+ the figures of what ran)
 #   make bench                    throughput benchmarks (Google Benchmark)
 #   make clean                    remove build/, results/, figures/out/, paper outputs
@@ -18,7 +19,7 @@ CMAKE_ARGS ?=
 EXPERIMENTS := $(notdir $(patsubst %/,%,$(dir $(wildcard experiments/*/main.cpp))))
 DEPS_STAMP := .deps
 
-.PHONY: all deps build test figures figure-files paper experiment bench clean
+.PHONY: all deps build test figures figure-files scaling paper experiment bench clean
 all: build
 
 $(DEPS_STAMP)/%.stamp: scripts/install-deps.sh
@@ -77,7 +78,13 @@ figure-files: $(ALL_FIGURES)
 
 # The report: the generated parts from the runs and from a run of the hard-case tests, with the quick runs they wait on (scripts/report.py
 # computes nothing), LaTeX, then a check of the PDF's text (no undefined reference, missing value, NaN; the contents and ledger in front).
-paper: figures $(DEPS_STAMP)/paper.stamp
+# Strong scaling of the energy map under MPI and the projection of the cluster scene (the cost chapter).
+$(RESULTS)/mpi_scaling/summary.json: $(BUILD)/bin/energy_map bench/mpi_scaling.py experiments/energy_map/energy_map.toml experiments/energy_map/fine.toml
+	python3 bench/mpi_scaling.py $(BUILD) $(RESULTS)/mpi_scaling
+scaling: build
+	@$(MAKE) --no-print-directory $(RESULTS)/mpi_scaling/summary.json
+
+paper: figures scaling $(DEPS_STAMP)/paper.stamp
 	@mkdir -p paper/generated
 	$(BUILD)/bin/geomint-methods --json > paper/generated/methods.json
 	ctest --test-dir $(BUILD) --show-only=json-v1 > paper/generated/tests.json

@@ -5,29 +5,29 @@
 
 Runs the map study of the paper scene (the 201 x 201 grid, t_max shortened to T: the same work per
 trajectory-step, a fifth of the time) with 1 and 2 ranks of 1 and 2 threads, back to back in one
-invocation (scripts/mpirun.sh, the project's mpirun line), so that the times compare as ratios.
-It checks that every run wrote the same map.csv, and writes OUT/summary.json: per configuration
-the map's wall time, each rank's busy time (its share of the batches) and exchange time (waiting
-for, gathering and decoding the other ranks' results), rank 0's checkpoint writes, the speed-up
-against 1 rank x 1 thread; then, from these measurements, the projected wall time of the cluster
-scene experiments/energy_map/fine.toml on 64 and 1024 cores:
+invocation (scripts/mpirun.sh, the project's mpirun line), so that the times compare as ratios,
+and checks that every run wrote the same map.csv. Then the cluster scene
+experiments/energy_map/fine.toml with 2 ranks for 2 steps (t_max = 2 dt): every exchange and
+checkpoint of the fine map at its full size (the same batches, rounds and records), almost no
+computation. OUT/summary.json gives per run the map's wall time, each rank's busy time (its share
+of the batches) and exchange time (waiting for, gathering and decoding the other ranks' results),
+rank 0's checkpoint writes and the speed-up against 1 rank x 1 thread; and the projected wall
+time of the fine scene on N ranks x 4 threads, 64 and 1024 cores:
 
-    wall(P) = S c / P / e + R x + W
+    wall = rounds x ceil(ceil(round / N) / 4) x t_batch / e + X + W
 
-S: the fine scene's trajectory-steps (its --plan); c: the measured time per trajectory-step and
-core (1 rank x 1 thread); e: the parallel efficiency measured with 2 ranks x 1 thread (busy time
-only: what the split itself costs); R x: its rounds times the measured exchange time per gathered
-byte (the fastest exchange of the 2-rank run, i.e. without waiting) times the bytes it gathers per
-round and rank; W: the checkpoint writes, at the measured time per byte. The exchange here goes
-through shared memory; on a cluster's network it is slower, so the summary also gives the
-exchange term at 100 times the measured cost per byte. OUT/run.json records the machine and the
-commands. Timings are measurements of this machine, never asserted.
+with the rounds of checkpointed_map (runner/checkpoint.hpp: default_round, repeated here), t_batch
+= 64 trajectories x J steps x c, c the measured time per trajectory-step and core (1 rank x 1
+thread), e the efficiency of 2 ranks x 1 thread (busy time only: what the split itself costs), X
+and W the exchange (the rank that waited least) and checkpoint writes measured at the fine map's
+size. The exchange went through shared memory here; on a cluster network it is slower, roughly
+in proportion to the bytes each rank receives, which the summary gives. OUT/run.json records the
+machine and the commands. Timings are measurements of this machine, never asserted.
 """
 import argparse
 import json
 import math
 import os
-import platform
 import shutil
 import subprocess
 import sys
@@ -40,15 +40,19 @@ BATCH = 64  # kEnergyMapBatch: trajectories per task
 RECORD_DOUBLES = 1 + 2 * BATCH  # a batch's record in the exchange: its length, then (eps, diverge_step) per point
 
 
-def run_map(build, out, ranks, threads, t_max, log):
-    args = [str(build / "bin" / "energy_map"), "--study", "map", "--set", f"t_max={t_max}",
-            "--threads", str(threads), "--out", str(out)]
+def run_map(build, out, ranks, threads, t_max, log, scene="experiments/energy_map/energy_map.toml"):
+    args = [str(build / "bin" / "energy_map"), "--scene", str(ROOT / scene), "--study", "map",
+            "--set", f"t_max={t_max}", "--threads", str(threads), "--out", str(out)]
     cmd = ([str(ROOT / "scripts" / "mpirun.sh"), "-np", str(ranks)] + args) if ranks > 1 else args
     env = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1",
                GEOMINT_MPI_OVERSUBSCRIBE="1")
     with open(log, "w") as err:
         subprocess.run(cmd, cwd=ROOT, env=env, stdout=subprocess.DEVNULL, stderr=err, check=True)
     return cmd, json.loads((out / "run.json").read_text())
+
+
+def default_round(n, workers):  # runner/checkpoint.hpp: default_round
+    return max(1, (n + 31) // 32, min(4 * workers, (n + 7) // 8))
 
 
 def plan_steps(build, scene):
@@ -85,45 +89,52 @@ def main():
         r["efficiency"] = r["speedup"] / r["cores"]
 
     # The measured constants.
-    quick = plan_steps(args.build, "experiments/energy_map/energy_map.toml")
-    steps_here = quick["steps"] * args.t_max / 50000.0  # (the paper scene's plan is for t_max = 50 000)
-    batches_here = quick["tasks"]
+    paper = plan_steps(args.build, "experiments/energy_map/energy_map.toml")
+    steps_here = paper["steps"] * args.t_max / 50000.0  # (the paper scene's plan is for t_max = 50 000)
     c = base / steps_here  # s per trajectory-step and core, 1 rank x 1 thread
     two = next(r for r in runs if (r["ranks"], r["threads"]) == (2, 1))
     e = (base / 2) / max(two["rank_busy_s"])  # the split's own efficiency (busy time of the slower rank)
-    rounds_here = 2 * 32  # checkpointed_map: 32 rounds per coordinate system (round = batches / 32)
-    exchanged_here = batches_here * RECORD_DOUBLES * 8  # bytes every rank receives over the map
-    x_per_byte = min(two["rank_exchange_s"]) / exchanged_here
-    write_per_byte = runs[0]["checkpoint_write_s"] / exchanged_here  # rank 0 writes each record once
 
+    print("mpi_scaling: the fine map's exchanges and checkpoints, 2 ranks x 1 thread, 2 steps", file=sys.stderr, flush=True)
+    cmd, fine_run = run_map(args.build, work / "fine", 2, 1, 0.4, work / "fine.stderr", "experiments/energy_map/fine.toml")
+    commands.append(" ".join(cmd))
+    X, W = min(fine_run["rank_exchange_s"]), fine_run["checkpoint_write_s"]
     fine = plan_steps(args.build, "experiments/energy_map/fine.toml")
-    fine_bytes = fine["tasks"] * RECORD_DOUBLES * 8
+    per_map = int(fine["tasks"]) // 2
+    t_batch = fine["steps"] / fine["tasks"] * c
     projection = []
-    for cores in (64, 1024):
-        compute = fine["steps"] * c / cores / e
-        exchange = fine_bytes * x_per_byte
-        projection.append({"cores": cores, "wall_s": compute + exchange + fine_bytes * write_per_byte,
-                           "compute_s": compute, "exchange_s": exchange, "exchange_s_at_100x": 100 * exchange,
-                           "checkpoint_write_s": fine_bytes * write_per_byte,
-                           "core_hours": cores * (compute + exchange) / 3600})
+    for ranks, threads in ((16, 4), (256, 4)):
+        r = default_round(per_map, ranks * threads)
+        depth = 0
+        for first in range(0, per_map, r):  # the rounds of one map: each rank's share, ceil(share / T) deep
+            depth += math.ceil(math.ceil(min(r, per_map - first) / ranks) / threads)
+        compute = 2 * depth * t_batch / e
+        projection.append({"ranks": ranks, "threads": threads, "cores": ranks * threads, "round": r,
+                           "wall_s": compute + X + W, "compute_s": compute, "exchange_s": X, "checkpoint_write_s": W,
+                           "overhead_s": X + W,
+                           "busy_fraction": fine["steps"] * c / (ranks * threads) / (2 * depth * t_batch),
+                           "core_hours": ranks * threads * (compute + X + W) / 3600})
     summary = {
         "experiment": "mpi_scaling",
+        "machine_cores": os.cpu_count(),
         "map": {"scene": "experiments/energy_map/energy_map.toml", "t_max": args.t_max, "trajectory_steps": steps_here,
-                "batches": batches_here, "rounds": rounds_here, "exchanged_bytes": exchanged_here},
+                "batches": paper["tasks"]},
         "runs": runs,
         "measured": {"ns_per_trajectory_step_core": c * 1e9, "split_efficiency_2_ranks": e,
-                     "exchange_ns_per_byte": x_per_byte * 1e9, "checkpoint_write_ns_per_byte": write_per_byte * 1e9,
-                     "imbalance_2_ranks": max(two["rank_busy_s"]) / (sum(two["rank_busy_s"]) / 2) - 1},
+                     "imbalance_2_ranks": max(two["rank_busy_s"]) / (sum(two["rank_busy_s"]) / 2) - 1,
+                     "fine_exchange_s": X, "fine_checkpoint_write_s": W,
+                     "fine_exchange_rank_s": fine_run["rank_exchange_s"]},
         "fine": {"scene": "experiments/energy_map/fine.toml", "trajectory_steps": fine["steps"], "batches": fine["tasks"],
-                 "exchanged_bytes": fine_bytes, "core_hours_1_core": fine["steps"] * c / 3600,
+                 "received_bytes_per_rank": fine["tasks"] * RECORD_DOUBLES * 8,
+                 "core_hours_1_core": fine["steps"] * c / 3600, "plan_memory_bytes_per_rank": fine["memory_bytes"],
                  "projection": projection},
     }
     args.out.mkdir(parents=True, exist_ok=True)
     (args.out / "summary.json").write_text(json.dumps(summary, indent=2) + "\n")
-    cpu = next((l.split(":", 1)[1].strip() for l in Path("/proc/cpuinfo").read_text().splitlines()
-                if l.startswith("model name")), platform.processor())
-    (args.out / "run.json").write_text(json.dumps({"commands": commands, "cpu": cpu, "cores": os.cpu_count(),
-                                                   "date_utc": time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime())},
+    first = json.loads((work / "1x1" / "run.json").read_text())  # the binary and machine of every run here
+    (args.out / "run.json").write_text(json.dumps({"build": first["build"], "machine": first["machine"],
+                                                   "threads": "1 and 2", "ranks": "1 and 2", "commands": commands,
+                                                   "end_utc": time.strftime("%Y-%m-%dT%H:%M:%SZ", time.gmtime())},
                                                   indent=2) + "\n")
     shutil.rmtree(work)
     for r in runs:

@@ -347,3 +347,13 @@ TEST(DistributedMap, OneProcessIsTheParallelMap) {
   EXPECT_THROW(distributed_map(4, [](std::size_t i) { return i == 2 ? throw std::runtime_error("task 2") : 1.0; }),
                std::runtime_error);
 }
+
+// A round: n/32 tasks, but at least 4 per worker while 8 rounds remain (the fine map on 1024 cores: 4096 batches,
+// not 1252, of which 256 ranks x 4 threads would run 5 per rank, 2 deep on 4 threads: 61 % busy).
+TEST(Checkpoint, DefaultRoundKeepsEveryWorkerBusy) {
+  EXPECT_EQ(default_round(632, 2), 20u);       // the paper map on one machine: n/32
+  EXPECT_EQ(default_round(40051, 1024), 4096u);
+  EXPECT_EQ(default_round(40051, 65536), 5007u);  // at most n/8: 8 rounds to stop at
+  EXPECT_EQ(default_round(9, 2), 2u);
+  EXPECT_EQ(default_round(0, 4), 1u);
+}

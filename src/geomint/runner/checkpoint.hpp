@@ -40,7 +40,7 @@ namespace geomint {
 struct CheckpointSpec {
   std::string name;               // the files' stem: the study's name, or "<study>.<part>" for a study's second loop
   std::vector<std::string> keys;  // the scene keys (dotted; sections or values) the tasks depend on
-  std::size_t round = 0;          // tasks per round (0: n/32, at least threads x MPI ranks)
+  std::size_t round = 0;          // tasks per round (0: default_round)
 };
 
 // The header and log of one checkpointed map (the part that does not depend on the record type).
@@ -79,6 +79,13 @@ class CheckpointLog {
   std::uint64_t log_bytes_ = 0;
 };
 
+// The tasks of a round of checkpointed_map for n tasks on `workers` threads (all ranks together):
+// n/32 (a stop point every 3 % of the work), but at least 4 per worker as long as that leaves 8
+// rounds, so that the uneven end of a round (tasks are whole) idles few workers of a large job.
+inline std::size_t default_round(std::size_t n, std::size_t workers) {
+  return std::max<std::size_t>({1, (n + 31) / 32, std::min(4 * workers, (n + 7) / 8)});
+}
+
 // The wall time this process spent writing checkpoints (appends and headers, synced), for run.json.
 double checkpoint_write_seconds();
 
@@ -116,9 +123,7 @@ std::vector<R> checkpointed_map(Context& ctx, const CheckpointSpec& spec, std::s
   const std::int64_t stop_after = ctx.scene.has("checkpoint.stop_after") ? ctx.scene.integer("checkpoint.stop_after") : 0;
   const std::chrono::duration<double> interval(
       ctx.scene.has("checkpoint.interval") ? ctx.scene.real("checkpoint.interval") : kCheckpointInterval.count());
-  const std::size_t round = spec.round > 0 ? spec.round
-                                            : std::max<std::size_t>({1, (n + 31) / 32,
-                                                                     static_cast<std::size_t>(ctx.threads * mpi::size())});
+  const std::size_t round = spec.round > 0 ? spec.round : default_round(n, static_cast<std::size_t>(ctx.threads * mpi::size()));
   std::vector<double> values;
   std::vector<std::size_t> lengths;
   bool blocked = false;  // a record that is not finite: nothing from it on is saved
