@@ -9,10 +9,11 @@ tree with work in progress:
     git worktree add ../geomint-mutation && cd ../geomint-mutation
     tests/mutation/run_mutants.py --build build-mutation
 
-A rebuild and a ctest run per mutant take a few hours on two cores, so it is run on demand, not
+A rebuild and a ctest run per mutant come to a few hours on two cores, so it is run on demand, not
 by `make test`. Before the mutants, the unmodified tree must build and pass; its test times
-split the suite in two: the tests under --slow seconds run first, the slower ones only for a
-mutant the quick ones did not kill. The report (stdout and --report FILE, JSON, rewritten after
+order the suite: the library's test executables are built and run first (a fraction of the
+build), then the whole tree is built and its tests under --slow seconds run, and the slower ones
+only for a mutant none of these killed. The report (stdout and --report FILE, JSON, rewritten after
 every mutant) gives each mutant's result and the failing tests, the kill rate, and the mutants
 that change a published value (`affects`) but survived; the exit status is 1 if there is any
 such mutant, 0 otherwise. With --resume, the mutants already in the report (of the same commit)
@@ -69,19 +70,30 @@ def run(cmd, log, timeout=None):
         return subprocess.run(cmd, cwd=ROOT, stdout=out, stderr=subprocess.STDOUT, timeout=timeout).returncode
 
 
-def build(args, log):
-    return run(["cmake", "--build", str(args.build), "-j", str(args.jobs)], log) == 0
+# The library's own tests: their executables build in a fraction of the whole tree, and they catch
+# most wrong formulas. A mutant is tried on them first; the rest of the tree is built only for a
+# mutant they do not kill.
+LIBRARY_TESTS = ["geomint_unit_tests", "geomint_stability_tests", "geomint_verification_tests"]
+LIBRARY_LABELS = "^(unit|stability|verification)$"
+NOT_LIBRARY = r"^(readme|mutation|derive_nonholonomic)\."  # (scripts that run the experiments or sympy)
 
 
-def failed_tests(args, log, stop_on_failure=True, phase=(None, None)):
-    """Runs ctest on the tests of `phase` (-R pattern or every test, and a further -E pattern);
-    returns the names of the failing tests ([] if all pass). A mutant is killed by its first
-    failing test: with `stop_on_failure` ctest stops there (the names are those that failed by then)."""
+def build(args, log, targets=None):
+    return run(["cmake", "--build", str(args.build), "-j", str(args.jobs)] +
+               (["--target"] + targets if targets else []), log) == 0
+
+
+def failed_tests(args, log, stop_on_failure=True, phase=(None, None), label=None):
+    """Runs ctest on the tests of `phase` (-R pattern or every test, and a further -E pattern) and
+    `label` (-L); returns the names of the failing tests ([] if all pass). A mutant is killed by its
+    first failing test: with `stop_on_failure` ctest stops there (the names are those that failed by then)."""
     select, exclude = phase
     cmd = ["ctest", "--test-dir", str(args.build), "-j", str(args.jobs), "--timeout", str(args.timeout),
            "-E", args.exclude + (f"|{exclude}" if exclude else "")] + (["--stop-on-failure"] if stop_on_failure else [])
     if select or args.tests:
         cmd += ["-R", select or args.tests]
+    if label:
+        cmd += ["-L", label]
     code = run(cmd, log)
     failed = []
     for line in Path(log).read_text().splitlines():
@@ -197,15 +209,19 @@ def main():
         old_handler = signal.signal(signal.SIGTERM, restore_and_stop)
         try:
             path.write_text(original.decode().replace(m["old"], m["new"], 1))
-            if not build(args, logs / f"{m['id']}-build.log"):
-                result, failed = "does not compile", []
+            failed = []
+            if not build(args, logs / f"{m['id']}-build-library.log", LIBRARY_TESTS):
+                compiled = False
             else:
-                failed = []
-                for k, phase in enumerate(phases):
+                if not args.tests:
+                    failed = failed_tests(args, logs / f"{m['id']}-ctest-library.log", phase=(None, NOT_LIBRARY),
+                                          label=LIBRARY_LABELS)
+                compiled = failed or build(args, logs / f"{m['id']}-build.log")
+                for k, phase in enumerate(phases if compiled and not failed else []):
                     failed = failed_tests(args, logs / f"{m['id']}-ctest{k}.log", phase=phase)
                     if failed:
                         break
-                result = "killed" if failed else "survived"
+            result = "does not compile" if not compiled else "killed" if failed else "survived"
         except KeyboardInterrupt:
             interrupted = True
         finally:
