@@ -33,7 +33,6 @@
 #include "geomint/runner/distributed_map.hpp"
 #include "geomint/runner/experiment.hpp"
 #include "geomint/sweep/mpi.hpp"
-#include "geomint/sweep/parallel_map.hpp"
 
 namespace geomint {
 
@@ -96,10 +95,10 @@ void remove_checkpoints(const std::filesystem::path& dir);
 // key, kCheckpointInterval) has passed since the last one, at the end, and before every stop.
 inline constexpr std::chrono::seconds kCheckpointInterval{10};
 
-// out[i] = f(i) for i < n, computed in rounds with parallel_map (results stored by index, so they
+// out[i] = f(i) for i < n, computed in rounds of distributed_map (results stored by index, so they
 // do not depend on the thread count; reductions come after, in the study). After a round, if
 // checkpoint.interval has passed since the last save, the map is done, or a stop is requested
-// (SIGINT/SIGTERM, stop_requested(); or the scene's checkpoint.stop_after rounds), the finished
+// (SIGINT/SIGTERM/SIGUSR1, stop_requested(); or the scene's checkpoint.stop_after rounds), the finished
 // tasks not yet saved are appended to the log. A record with a value that is not finite is not
 // saved (nor any after it): a resumed run recomputes it and the study's own check reports it. On a
 // stop, Interrupted names where it stopped and the command that resumes. With ctx.resume the
