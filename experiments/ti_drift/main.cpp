@@ -46,6 +46,7 @@
 #include "geomint/runner/timing.hpp"
 #include "geomint/runner/checkpoint.hpp"
 #include "geomint/runner/distributed_map.hpp"
+#include "geomint/sweep/ensemble_kernels.hpp"
 #include "geomint/systems/counting.hpp"
 #include "geomint/systems/hamiltonian_field.hpp"
 #include "geomint/systems/harmonic_oscillator.hpp"
@@ -534,14 +535,17 @@ void ensemble_with(Context& ctx, const HH& hhk) {
   std::vector<Z2> starts(M);
   for (std::size_t i = 0; i < M; ++i) starts[i] = ensemble_start(s, hhk, i);
   const auto t0 = std::chrono::steady_clock::now();  // (on --resume: the part run since)
-  const auto series = checkpointed_map<std::vector<double>>(ctx, {"ensemble", kEnsembleKeys}, M, [&](std::size_t i) {
-    std::vector<double> e;
-    const double E0 = simplified_ti_modified_energy(hhk, starts[i], h);
-    integrate(simplified_ti_method(hhk, false), starts[i], h, n4, [&](std::int64_t j, const Z2& z) {
-      if (j % every4 == 0) e.push_back(simplified_ti_modified_energy(hhk, z, h) - E0);
-    });
-    return e;
-  });
+  const auto lanes = simplified_ti_lanes_kernels<HH>().front().steps;  // (bit for bit the scalar method)
+  const auto series = concatenate(checkpointed_map<std::vector<std::vector<double>>>(
+      ctx, {"ensemble", kEnsembleKeys}, lane_batches(M), [&](std::size_t b) {
+        const LaneBatch batch = lane_batch(b, M);
+        std::vector<std::vector<double>> e(batch.count);
+        std::vector<double> E0;
+        for (std::size_t i = 0; i < batch.count; ++i) E0.push_back(simplified_ti_modified_energy(hhk, starts[batch.first + i], h));
+        simplified_ti_lanes(hhk, lanes, std::span<const Z2>(starts).subspan(batch.first, batch.count), h, n4, every4,
+                            [&](int i, std::int64_t, const Z2& z) { e[i].push_back(simplified_ti_modified_energy(hhk, z, h) - E0[i]); });
+        return e;
+      }));
   const double wall4 = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   for (std::size_t i = 0; i < M; ++i)
     for (std::size_t k = 0; k < series[i].size(); ++k)
@@ -902,18 +906,21 @@ void run_lj(Context& ctx) {
     auto fields() { return std::tie(E, H, Hhat); }
   };
   const std::vector<std::string> series_keys = {"samples", "lj.h", "lj.t_end", "lj.size", "lj.seed", "lj.perturbation"};
-  const auto lj_series = checkpointed_map<Series>(ctx, {"lj", series_keys}, Ml, [&](std::size_t i) {
-    Series r;
-    const Z18 start = lj_start(i);
-    const double E0 = simplified_ti_modified_energy(lj, start, hl), Hs = lj.H(start);
-    integrate(simplified_ti_method(lj, false), start, hl, nl, [&](std::int64_t j, const Z18& z) {
-      if (j % every_l) return;
-      r.E.push_back(simplified_ti_modified_energy(lj, z, hl) - E0);
-      r.H.push_back(lj.H(z) - Hs);
-      r.Hhat.push_back(lj.H(ti_process(lj, z, hl, takahashi_imada_alpha)) - Hs);
+  const auto lanes = simplified_ti_lanes_kernels<LJ>().front().steps;  // (bit for bit the scalar method)
+  const auto lj_series = concatenate(checkpointed_map<std::vector<Series>>(ctx, {"lj", series_keys}, lane_batches(Ml), [&](std::size_t b) {
+    const LaneBatch batch = lane_batch(b, Ml);
+    std::vector<Z18> starts;
+    std::vector<double> E0, Hs;
+    for (std::size_t i = batch.first; i < batch.first + batch.count; ++i)
+      starts.push_back(lj_start(i)), E0.push_back(simplified_ti_modified_energy(lj, starts.back(), hl)), Hs.push_back(lj.H(starts.back()));
+    std::vector<Series> r(batch.count);
+    simplified_ti_lanes(lj, lanes, std::span<const Z18>(starts), hl, nl, every_l, [&](int i, std::int64_t, const Z18& z) {
+      r[i].E.push_back(simplified_ti_modified_energy(lj, z, hl) - E0[i]);
+      r[i].H.push_back(lj.H(z) - Hs[i]);
+      r[i].Hhat.push_back(lj.H(ti_process(lj, z, hl, takahashi_imada_alpha)) - Hs[i]);
     });
     return r;
-  });
+  }));
   const double wall6 = std::chrono::duration<double>(std::chrono::steady_clock::now() - tl0).count();
   for (std::size_t i = 0; i < Ml; ++i)  // diverged as the scan counts it (|H - H0| beyond lj.blowup), or not finite
     for (std::size_t k = 0; k < lj_series[i].E.size(); ++k)
@@ -1015,12 +1022,20 @@ void run_lj_steps(Context& ctx) {
   const auto hs = s.reals("lj_steps.h");
   const auto M = static_cast<std::size_t>(s.integer("lj_steps.size"));
   const double T = s.real("lj_steps.t_end");
-  const auto err = distributed_map(hs.size() * M, [&](std::size_t task) {
-    const double h = hs[task / M];
-    const Z18 start = lj_start_of(s, task % M);
-    const double E0 = simplified_ti_modified_energy(lj, start, h);
-    return simplified_ti_modified_energy(lj, integrate(simplified_ti_method(lj, false), start, h, steps_to(T, h)), h) - E0;
-  });
+  const auto lanes = simplified_ti_lanes_kernels<LJ>().front().steps;  // (bit for bit the scalar method)
+  const std::size_t nb = lane_batches(M);  // per step h
+  const auto err = concatenate(distributed_map(hs.size() * nb, [&](std::size_t task) {
+    const double h = hs[task / nb];
+    const LaneBatch batch = lane_batch(task % nb, M);
+    std::vector<Z18> starts;
+    for (std::size_t i = batch.first; i < batch.first + batch.count; ++i) starts.push_back(lj_start_of(s, i));
+    const std::int64_t n = steps_to(T, h);
+    const auto last = simplified_ti_lanes(lj, lanes, std::span<const Z18>(starts), h, n, n, [](int, std::int64_t, const Z18&) {});
+    std::vector<double> e;
+    for (std::size_t i = 0; i < batch.count; ++i)
+      e.push_back(simplified_ti_modified_energy(lj, last[i], h) - simplified_ti_modified_energy(lj, starts[i], h));
+    return e;
+  }));
   for (std::size_t task = 0; task < err.size(); ++task)
     if (!std::isfinite(err[task]))
       throw NumericalFailure("simplified_takahashi_imada at h = " + format_double(hs[task / M]) +
@@ -1216,6 +1231,29 @@ void run_symplecticity(Context& ctx) {
 // ---- Cost: ns per step of each named method's kernel (no processing, as Figs 2-6
 // use them) on Henon-Heiles k, from the ensemble's first start ----
 
+// The ensembles' lane kernels (sweep/ensemble_kernels.hpp) against the scalar method, simplified Takahashi-Imada
+// unprocessed: ns per trajectory-step of the trajectories from `starts` (one batch), n steps, single thread.
+template <class Sys>
+json lanes_timing(const Sys& sys, const std::vector<typename Sys::State>& starts, double h, std::int64_t n, int repeats) {
+  using Z = typename Sys::State;
+  const double steps = static_cast<double>(starts.size()) * static_cast<double>(n);
+  const auto method = simplified_ti_method(sys, false);
+  const RunTime scalar = time_runs(repeats, [&] {
+    for (const Z& z : starts) do_not_optimize(integrate_inlined(method, z, h, n));
+  });
+  json out = {{"trajectories", starts.size()}, {"steps", n}, {"scalar_ns_per_step", 1e9 * scalar.seconds() / steps},
+              {"scalar_spread", scalar.spread()}};
+  for (const auto& k : simplified_ti_lanes_kernels<Sys>()) {
+    const RunTime t = time_runs(repeats, [&] {
+      do_not_optimize(simplified_ti_lanes(sys, k.steps, std::span<const Z>(starts), h, n, n, [](int, std::int64_t, const Z&) {}));
+    });
+    out["kernels"][k.name] = {{"ns_per_step", 1e9 * t.seconds() / steps}, {"spread", t.spread()},
+                              {"speedup_vs_scalar", scalar.seconds() / t.seconds()}};
+    if (!out.contains("isa")) out["isa"] = k.name, out["speedup_vs_scalar"] = scalar.seconds() / t.seconds();  // the one the ensembles use
+  }
+  return out;
+}
+
 template <class HH>
 void timing_with(Context& ctx, const HH& hhk) {
   const Scene& s = ctx.scene;
@@ -1240,6 +1278,17 @@ void timing_with(Context& ctx, const HH& hhk) {
        {"method", "minimum of " + std::to_string(repeats) + " timed runs (after a warm-up; each run repeats the " +
                       std::to_string(n) + " steps until it lasts at least 10 ms), single thread, every call inlined; "
                       "spread = (max - min) / min; fig4_wall_s, fig6_wall_s: the ensembles on --threads threads, one run"}});
+  // The ensembles of Figs 4 and 6 in SIMD lanes against the scalar method: their first kEnsembleLanes starts.
+  std::vector<Z2> hh_starts;
+  std::vector<Z18> lj_starts;
+  for (std::size_t i = 0; i < kEnsembleLanes; ++i) hh_starts.push_back(ensemble_start(s, hhk, i)), lj_starts.push_back(lj_start_of(s, i));
+  put(ctx, "timing",
+      {{"lanes", {{"fig4", lanes_timing(hhk, hh_starts, h, n, repeats)},
+                  {"fig6", lanes_timing(LJ{}, lj_starts, s.real("lj.h"), s.integer("timing.lj_steps"), repeats)},
+                  {"method", "ns per trajectory-step of " + std::to_string(kEnsembleLanes) + " trajectories (the first starts of "
+                             "Figs 4 and 6), simplified Takahashi-Imada unprocessed: scalar, one trajectory after another "
+                             "(integrate, every call inlined), against each lane kernel this CPU runs (all lanes at once, the "
+                             "same bits); single thread, the timing method above"}}}});
   if (ns_per_step.contains("sv")) {  // per step, relative to Stormer-Verlet
     json relative;
     for (const auto& [label, ns] : ns_per_step.items()) relative[label] = double(ns) / double(ns_per_step["sv"]);
@@ -1562,6 +1611,7 @@ Schema schema() {
       .texts("timing.methods", method_choices<HenonHeiles>(), 1,
              "methods timed (their kernels, on the Fig. 4 system; registry names or labels)")
       .integer("timing.steps", at_least(1), "steps of each timed run")
+      .integer("timing.lj_steps", at_least(1), "steps of each timed run of the Lennard-Jones lanes (Fig. 6 cluster, lj.h)")
       .integer("timing.repeats", at_least(1),
                "timed runs per method and step, each of at least 10 ms (the minimum is the estimate, the spread reported)");
   return s;
@@ -1597,7 +1647,7 @@ int main(int argc, char** argv) {
        },
        run_symplecticity, plan_symplecticity},
       {"timing", "cost: ns per step of each method", {},
-       {"timing", "h", "hh", "hh3.q2", "hh3.p2", "ensemble.seed", "ensemble.perturbation"},
+       {"timing", "h", "hh", "hh3.q2", "hh3.p2", "ensemble.seed", "ensemble.perturbation", "lj.h", "lj.seed", "lj.perturbation"},
        [](const Scene& s) {
          with_ensemble_system(s, [&](const auto& hh) {
            check_methods(s, "timing.methods", hh);

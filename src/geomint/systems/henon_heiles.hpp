@@ -8,9 +8,10 @@
 
 namespace geomint {
 
-// x^n for a small integer n >= 0 (std::pow is slow in the inner loop).
-inline double int_pow(double x, int n) {
-  double r = 1.0;
+// x^n for a small integer n >= 0 (std::pow is slow in the inner loop); T = double or a vector of lanes.
+template <class T>
+T int_pow(const T& x, int n) {
+  T r = 1.0;
   for (int i = 0; i < n; ++i) r *= x;
   return r;
 }
@@ -26,9 +27,20 @@ struct HenonHeilesT : UnitMassSeparable<2> {
     if constexpr (Coupling) return 0.5 * q.squaredNorm() + c * q[0] * q[0] * q[1] - int_pow(q[1], k) / k;
     return 0.5 * q.squaredNorm() - int_pow(q[1], k) / k;
   }
+  // g = grad U(q) (the one implementation: U_q for one state, and the ensemble kernels of
+  // sweep/ensemble_kernels.hpp for lanes of states, T a vector of doubles).
+  template <class T>
+  void gradient(const T* q, T* g) const {
+    if constexpr (Coupling) {
+      g[0] = q[0] + 2 * c * q[0] * q[1], g[1] = q[1] + c * q[0] * q[0] - int_pow(q[1], k - 1);
+    } else {
+      g[0] = q[0], g[1] = q[1] - int_pow(q[1], k - 1);
+    }
+  }
   Vec<2> U_q(const Vec<2>& q) const {
-    if constexpr (Coupling) return Vec<2>(q[0] + 2 * c * q[0] * q[1], q[1] + c * q[0] * q[0] - int_pow(q[1], k - 1));
-    return Vec<2>(q[0], q[1] - int_pow(q[1], k - 1));
+    Vec<2> g;
+    gradient(q.data(), g.data());
+    return g;
   }
   Mat<2> U_qq(const Vec<2>& q) const {
     Mat<2> J;

@@ -45,13 +45,29 @@ struct LennardJones {
     for_pairs(q, [&](int, int, const Vec<2>& d) { s += G(d.squaredNorm())[0]; });
     return s;
   }
+  // g = grad U(q) (the one implementation: U_q for one state, and the ensemble kernels of
+  // sweep/ensemble_kernels.hpp for lanes of states, T a vector of doubles; the same operations in
+  // the same order, so every lane is bit for bit U_q).
+  template <class T>
+  void gradient(const T* q, T* g) const {
+    for (int k = 0; k < D; ++k) g[k] = T(0.0);
+#pragma GCC unroll 16
+    for (int i = 0; i < N; ++i) {
+      T gx = g[2 * i], gy = g[2 * i + 1];  // (the sum for particle i in registers, in the same order)
+#pragma GCC unroll 16
+      for (int j = i + 1; j < N; ++j) {
+        const T dx = q[2 * i] - q[2 * j], dy = q[2 * i + 1] - q[2 * j + 1];
+        const T iu = 1.0 / (dx * dx + dy * dy), iu4 = iu * iu * iu * iu;
+        const T c = 2 * eps * (6 * iu4 - 6 * iu4 * iu * iu * iu);  // 2 G'(u), G' = eps (-6 u^-7 + 6 u^-4)
+        const T wx = c * dx, wy = c * dy;
+        gx += wx, gy += wy, g[2 * j] -= wx, g[2 * j + 1] -= wy;
+      }
+      g[2 * i] = gx, g[2 * i + 1] = gy;
+    }
+  }
   Vec<D> U_q(const Vec<D>& q) const {
-    Vec<D> g = Vec<D>::Zero();
-    for_pairs(q, [&](int i, int j, const Vec<2>& d) {
-      const double iu = 1.0 / d.squaredNorm(), iu4 = iu * iu * iu * iu;
-      const Vec<2> w = (2 * eps * (6 * iu4 - 6 * iu4 * iu * iu * iu)) * d;  // 2 G'(u) d, G' = eps (-6 u^-7 + 6 u^-4)
-      g.template segment<2>(2 * i) += w, g.template segment<2>(2 * j) -= w;
-    });
+    Vec<D> g;
+    gradient(q.data(), g.data());
     return g;
   }
   Vec<D> U_qq_times(const Vec<D>& q, const Vec<D>& a) const {

@@ -1,0 +1,110 @@
+#pragma once
+// Ensembles in SIMD lanes: the simplified Takahashi-Imada method (004 (1.6)), unprocessed, as the
+// kick-drift-kick kernel of integrators/takahashi_imada.hpp, on kEnsembleLanes trajectories at once
+// (004 Fig. 4 on Henon-Heiles, Fig. 6 on the Lennard-Jones cluster, and the step studies of Fig. 6).
+//
+// A lane kernel keeps the states of its trajectories in structure-of-arrays form (KickLanes: q, p and
+// the cached force F, component-major) and runs n steps with every operation on all lanes at once. The
+// force is the system's own gradient(), instantiated for a vector of lanes instead of a double, and the
+// step does the operations of kick_drift_kick and simplified_ti_force in their order: the build has no
+// FMA contraction (CMakeLists.txt), so each lane is bit for bit the scalar method
+// (tests/unit/ensemble_kernels_test.cpp). One translation unit per instruction set (SSE2, AVX2,
+// AVX-512), chosen at run time by CPU detection, as for the energy map.
+#include <algorithm>
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "geomint/core/integrate.hpp"
+#include "geomint/core/state.hpp"
+#include "geomint/integrators/stormer_verlet.hpp"
+#include "geomint/integrators/takahashi_imada.hpp"
+#include "geomint/systems/henon_heiles.hpp"
+#include "geomint/systems/lennard_jones.hpp"
+
+namespace geomint {
+
+inline constexpr int kEnsembleLanes = 8;
+
+// Kick-drift-kick states of kEnsembleLanes trajectories: q[k][lane], p[k][lane], F[k][lane].
+template <int D>
+struct KickLanes {
+  alignas(64) double q[D][kEnsembleLanes], p[D][kEnsembleLanes], F[D][kEnsembleLanes];
+
+  void set(int lane, const KickState<D>& s) {
+    for (int k = 0; k < D; ++k) q[k][lane] = s.z.q[k], p[k][lane] = s.z.p[k], F[k][lane] = s.F[k];
+  }
+  KickState<D> get(int lane) const {
+    KickState<D> s;
+    for (int k = 0; k < D; ++k) s.z.q[k] = q[k][lane], s.z.p[k] = p[k][lane], s.F[k] = F[k][lane];
+    return s;
+  }
+};
+
+// n steps of (1.6) at step h on every lane of s.
+template <class Sys>
+using LanesSteps = void (*)(const Sys& sys, double h, double alpha, KickLanes<Sys::State::dof>& s, std::int64_t n);
+
+template <class Sys>
+struct LanesKernel {
+  std::string isa;   // "avx512", "avx2", "sse2"
+  std::string name;  // "AVX-512", "AVX2", "SSE2"
+  LanesSteps<Sys> steps;
+};
+
+// The kernels this CPU can run, best first (for LennardJones<9>, HenonHeilesT<true> and <false>).
+template <class Sys>
+std::vector<LanesKernel<Sys>> simplified_ti_lanes_kernels();
+
+// Integrates the trajectories from `starts` (at most kEnsembleLanes; a shorter batch fills its other
+// lanes with the first start) by (1.6), unprocessed, at step h for n steps with the kernel `steps`,
+// and calls observe(i, j, z) for trajectory i at every step j <= n that is a multiple of `every`
+// (j = 0 included), as integrate(simplified_ti_method(sys, false), ...) would for the same z.
+// Returns the states at step n.
+template <class Sys, class Observe>
+std::vector<typename Sys::State> simplified_ti_lanes(const Sys& sys, LanesSteps<Sys> steps,
+                                                    std::span<const typename Sys::State> starts, double h,
+                                                    std::int64_t n, std::int64_t every, Observe&& observe) {
+  constexpr int D = Sys::State::dof;
+  const auto method = simplified_ti_method(sys, false);
+  const int used = static_cast<int>(std::min<std::size_t>(starts.size(), kEnsembleLanes));
+  KickLanes<D> lanes;
+  for (int i = 0; i < kEnsembleLanes; ++i) lanes.set(i, method.pre(starts[i < used ? i : 0], h));
+  const auto observe_all = [&](std::int64_t j) {
+    for (int i = 0; i < used; ++i) observe(i, j, lanes.get(i).z);
+  };
+  observe_all(0);
+  for (std::int64_t j = 0; j < n;) {
+    const std::int64_t next = std::min(n, (j / every + 1) * every);
+    steps(sys, h, takahashi_imada_alpha, lanes, next - j);
+    j = next;
+    if (j % every == 0) observe_all(j);
+  }
+  std::vector<typename Sys::State> out;
+  for (int i = 0; i < used; ++i) out.push_back(lanes.get(i).z);
+  return out;
+}
+
+// The trajectories 0..M-1 of an ensemble in batches of kEnsembleLanes (the tasks of its sweep):
+// batch b holds trajectories first..first + count.
+struct LaneBatch {
+  std::size_t first, count;
+};
+inline std::size_t lane_batches(std::size_t M) { return (M + kEnsembleLanes - 1) / kEnsembleLanes; }
+inline LaneBatch lane_batch(std::size_t b, std::size_t M) {
+  const std::size_t first = b * kEnsembleLanes;
+  return {first, std::min<std::size_t>(kEnsembleLanes, M - first)};
+}
+
+// The records of the batches, in trajectory order.
+template <class R>
+std::vector<R> concatenate(std::vector<std::vector<R>>&& batches) {
+  std::vector<R> out;
+  for (auto& b : batches)
+    for (auto& r : b) out.push_back(std::move(r));
+  return out;
+}
+
+}  // namespace geomint
