@@ -19,7 +19,7 @@ CMAKE_ARGS ?=
 EXPERIMENTS := $(notdir $(patsubst %/,%,$(dir $(wildcard experiments/*/main.cpp))))
 DEPS_STAMP := .deps
 
-.PHONY: all deps build test figures figure-files scaling paper experiment bench clean
+.PHONY: all deps build test figures figure-runs figure-files scaling paper experiment bench clean
 all: build
 
 $(DEPS_STAMP)/%.stamp: scripts/install-deps.sh
@@ -67,12 +67,18 @@ FIGURES_$(3) := $(patsubst figures/%.gp,figures/out/%.pdf,$(wildcard figures/$(3
 $$(FIGURES_$(3)): figures/out/%.pdf: figures/%.gp figures/common.gp $(RESULTS)/$(3)/run.json
 	@tests/figures/render_figures.sh $(RESULTS)/$(3) figures/out $$<
 ALL_FIGURES += $$(FIGURES_$(3)) $(RESULTS)/$(3)/run.json
+ALL_RUNS += $(RESULTS)/$(3)/run.json
 endef
 $(foreach sc,$(PAPER_SCENES),$(eval $(call SCENE_RULES,$(word 2,$(subst /, ,$(sc))),$(sc),$(call id_of,$(sc)))))
 $(BUILD)/bin/%: ;   # made by `build`, before figure-files is asked for
 
+# The runs one after another (each uses every core, and times itself), then the figures rendered
+# in parallel; at the end each experiment's wall time (its run.json) and that of the whole make figures.
 figures: build $(DEPS_STAMP)/figures.stamp
-	@$(MAKE) --no-print-directory figure-files
+	@start=$$(date +%s.%N); $(MAKE) --no-print-directory figure-runs && $(MAKE) --no-print-directory -j $(JOBS) figure-files && \
+	  python3 scripts/figure_times.py $(RESULTS) $$start $(foreach sc,$(PAPER_SCENES),$(call id_of,$(sc)))
+
+figure-runs: $(ALL_RUNS)
 
 figure-files: $(ALL_FIGURES)
 
