@@ -1433,10 +1433,14 @@ void check_lj_steps(const Scene& s) {
   }
 }
 
-// ns per step and thread measured on this machine (the paper scene's summary.json, timing): the Henon-Heiles ensemble
-// (fig4_ns_per_step_thread, 24.3) and the Lennard-Jones ensemble with its processing (fig6_ns_per_step_thread, 348).
-constexpr double kNsPerStepHH = 24.3, kNsPerStepLJ = 348.0;
-const char* const kNsNote = "ns per step: measured (paper scene, summary.json timing.fig4/fig6_ns_per_step_thread)";
+// ns per (trajectory-)step and thread, measured (the paper scene's summary.json, timing): one Henon-Heiles
+// trajectory (24.3, the scalar method, before the ensembles ran in lanes); the ensembles in SIMD lanes on a 2-core
+// AVX2 machine (fig4_ns_per_step_thread 6.8, Henon-Heiles; fig6_ns_per_step_thread 158, Lennard-Jones with its
+// processing every sample).
+constexpr double kNsPerStepHH = 24.3, kNsPerStepLanesHH = 6.8, kNsPerStepLanesLJ = 158.0;
+const char* const kNsNote = "ns per step: measured (paper scene, summary.json timing.fig4_ns_per_step_thread before the lanes)";
+const char* const kNsLanesNote = "ns per trajectory-step: measured (paper scene, summary.json timing.fig4/fig6_ns_per_step_thread, "
+                                 "the ensembles in SIMD lanes; 2-core AVX2 machine)";
 
 std::int64_t evals_of(const std::string& m) { return evals_per_step(m); }
 
@@ -1484,7 +1488,8 @@ StudyPlan plan_ensemble(const Scene& s) {
   const double rows = kept_samples(n, static_cast<double>(s.integer("samples")));
   // M trajectories and the rerun of the one with the largest error (Fig. 5); the series of all M, and the CSVs
   return {(M + 1) * n, (M + 1) * n * static_cast<double>(evals_of("simplified_takahashi_imada")),
-          M * rows * 8 + rows * 200 + M * std::min(rows, 201.0) * 60, kNsPerStepHH, kNsNote, M};
+          M * rows * 8 + rows * 200 + M * std::min(rows, 201.0) * 60, kNsPerStepLanesHH, kNsLanesNote,
+          static_cast<double>(lane_batches(static_cast<std::size_t>(M)))};  // (tasks: batches of lanes)
 }
 
 StudyPlan plan_lj(const Scene& s) {
@@ -1495,9 +1500,9 @@ StudyPlan plan_lj(const Scene& s) {
   p.steps += scan_size * scan_t / hl + M * n;
   p.force_evals = p.steps * static_cast<double>(evals_of("simplified_takahashi_imada"));
   p.memory_bytes = M * kept_samples(n, static_cast<double>(s.integer("samples"))) * 3 * 8;  // E, H, H^ of each trajectory
-  p.ns_per_step = kNsPerStepLJ;
-  p.note = kNsNote;
-  p.tasks = M;  // the ensemble's trajectories (the scan before it: a small part)
+  p.ns_per_step = kNsPerStepLanesLJ;
+  p.note = kNsLanesNote;
+  p.tasks = static_cast<double>(lane_batches(static_cast<std::size_t>(M)));  // the ensemble's batches of lanes (the scan before it: a small part)
   return p;
 }
 
@@ -1507,9 +1512,9 @@ StudyPlan plan_lj_steps(const Scene& s) {
   for (double h : s.reals("lj_steps.h")) p.steps += M * s.real("lj_steps.t_end") / h;
   p.force_evals = p.steps * static_cast<double>(evals_of("simplified_takahashi_imada"));
   p.memory_bytes = M * static_cast<double>(s.reals("lj_steps.h").size()) * 8;
-  p.ns_per_step = kNsPerStepLJ;
-  p.note = kNsNote;
-  p.tasks = M * static_cast<double>(s.reals("lj_steps.h").size());
+  p.ns_per_step = kNsPerStepLanesLJ;
+  p.note = kNsLanesNote;
+  p.tasks = static_cast<double>(lane_batches(static_cast<std::size_t>(M)) * s.reals("lj_steps.h").size());
   return p;
 }
 
