@@ -282,9 +282,9 @@ TEST(TiDrift, PlanOfThePaperSceneCountsEveryStudy) {
 }
 
 // Checkpoints (runner/checkpoint.hpp): the Fig. 4 ensemble and the Lennard-Jones ensemble of Fig. 6, stopped after one
-// round of trajectories and resumed (on 1 thread), give the files of a run straight through.
+// round of trajectories (a batch of lanes) and resumed (on 1 thread), give the files of a run straight through.
 TEST(TiDrift, ResumedEnsembleGivesTheSameFiles) {
-  expect_resume_identical("ti_drift", "--quick --study ensemble --set ensemble.size=8 --set t_end=100000", 1, "ensemble");
+  expect_resume_identical("ti_drift", "--quick --study ensemble --set ensemble.size=16 --set t_end=100000", 1, "ensemble");  // (two batches of lanes)
 }
 TEST(TiDrift, ResumedLennardJonesEnsembleGivesTheSameFiles) {
   expect_resume_identical("ti_drift", "--quick --study lj --set lj.t_end=100", 1, "lj");
