@@ -10,8 +10,8 @@
 # NUMPY_REPEAT runs of NUMPY_N trajectories x 20000 steps) under Debian's
 # /usr/bin/python3, then prints per implementation and coordinate system: ns per
 # trajectory-step on one core, the ratio to the best batch kernel, and the
-# fraction of the hardware ceiling (per-step lower bounds measured on this machine type)
-# (ceiling / measured; ~0.35 ns Cartesian, ~0.8 ns polar), and the eps of the
+# fraction of the hardware ceiling (the AVX-512 kernels' multiplies and FMAs on the two pipes of the
+# results' machine type at 4.1 GHz: 0.37 ns Cartesian, 0.66 ns polar; bench/README.md), and the eps of the
 # check points from every implementation. Build first:
 #   cmake --build build --target geomint_energy_map_bench
 # QUICK=1 shortens everything (a smoke run, ~6 s; numpy keeps 4096 trajectories,
@@ -46,7 +46,7 @@ echo "== numpy: $HERE/peers/energy_map_numpy.py (${NUMPY_N} trajectories, median
 "$PY" - "$TMP/cpp.json" "$TMP/cpp.err" "$TMP/numpy.json" <<'EOF'
 import json, sys
 
-CEILING = {"cartesian": 0.35, "polar": 0.8}  # ns per trajectory-step: sqrt + divide (Cartesian), vector sin + cos per step (polar; the kernels evaluate them once per block)
+CEILING = {"cartesian": 0.37, "polar": 0.66}  # ns per trajectory-step of the AVX-512 kernels on Zen 5 at 4.1 GHz: multiplies/FMAs on two pipes (bench/README.md)
 cpp = json.load(open(sys.argv[1]))
 numpy = json.load(open(sys.argv[3]))
 
