@@ -12,7 +12,6 @@
 // AVX-512), chosen at run time by CPU detection, as for the energy map.
 #include <algorithm>
 #include <cstdint>
-#include <functional>
 #include <span>
 #include <string>
 #include <vector>
