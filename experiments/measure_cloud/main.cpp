@@ -220,19 +220,32 @@ CloudRun cloud_phi(Discretization d, const NonholonomicParticle& sys, double h, 
   return transpose(per_point);
 }
 
-// Volume of conv(cloud) for each density 1/N^(ell)_mod, ell in `measures` (0: mu itself, 1/N).
-std::vector<double> hull_volumes(const std::vector<Point4>& points, const ModifiedSeries& ms,
-                                 const std::vector<int>& measures) {
-  std::vector<HullFacet> facets;
+// hull_facets(points, known); a cloud that left the domain of the hull (not finite, degenerate) is a
+// NumericalFailure. `known`: the facets of another image of the same cloud, checked and taken
+// without Qhull when they bound this one (bounds_hull).
+std::vector<HullFacet> cloud_hull(const std::vector<Point4>& points, const std::vector<HullFacet>& known = {}) {
   try {
-    facets = hull_facets(points);
-  } catch (const std::domain_error& e) {  // a cloud that left the domain of the hull (not finite, degenerate)
+    return hull_facets(points, known);
+  } catch (const std::domain_error& e) {
     throw NumericalFailure(std::string("hull volume: ") + e.what());
   }
+}
+
+// Volume of conv(points), bounded by `facets`, for each density 1/N^(ell)_mod, ell in `measures` (0: mu itself, 1/N).
+std::vector<double> hull_volumes(const std::vector<Point4>& points, const std::vector<HullFacet>& facets,
+                                 const ModifiedSeries& ms, const std::vector<int>& measures) {
   std::vector<double> v;
   for (int m : measures)
     v.push_back(hull_integral(points, facets, points.front(), [&](const Point4& z) { return 1.0 / ms.N(m, as_state(z)); }));
   return v;
+}
+
+// hull_volumes of each snapshot of a run, its hulls checked against that of the first snapshot.
+std::vector<std::vector<double>> snapshot_volumes(const CloudRun& run, const ModifiedSeries& ms, const std::vector<int>& measures) {
+  const std::vector<HullFacet> first = cloud_hull(run.snapshots.front());
+  return distributed_map(run.snapshots.size(), [&](std::size_t j) {
+    return hull_volumes(run.snapshots[j], cloud_hull(run.snapshots[j], first), ms, measures);
+  });
 }
 
 // The centre z0 and the vertices of a 600-cell of circumradius `radius` around it (the centre
@@ -532,7 +545,9 @@ std::vector<double> reference_volumes(Context& ctx, const std::string& name, con
   for (const auto& z : paths) per_point.push_back(Trajectory{z, 0});
   const CloudRun ref = transpose(per_point);
   const ModifiedSeries plain(Discretization::M, p.sys, p.h);  // only its ell = 0 density 1/N is used
-  return distributed_map(ref.snapshots.size(), [&](std::size_t j) { return hull_volumes(ref.snapshots[j], plain, {0})[0]; });
+  std::vector<double> v;
+  for (const auto& per_step : snapshot_volumes(ref, plain, {0})) v.push_back(per_step[0]);
+  return v;
 }
 
 // Figs 5.2, 5.4 for one cloud: the hull volumes under the reference flow and under Phi^(ell) for each
@@ -569,7 +584,7 @@ void cloud_volumes(Context& ctx, const PhiStudy& p, const std::vector<Point4>& c
     std::vector<std::vector<std::vector<double>>> vols(p.methods.size());  // [method][measure][step]
     for (std::size_t k = 0; k < p.methods.size(); ++k) {
       const ModifiedSeries ms(p.methods[k], p.sys, p.h);
-      const auto per_step = distributed_map(runs[k].snapshots.size(), [&](std::size_t j) { return hull_volumes(runs[k].snapshots[j], ms, all_measures); });
+      const auto per_step = snapshot_volumes(runs[k], ms, all_measures);
       vols[k].assign(all_measures.size(), std::vector<double>(per_step.size()));
       for (std::size_t j = 0; j < per_step.size(); ++j)
         for (std::size_t m = 0; m < all_measures.size(); ++m) vols[k][m][j] = per_step[j][m];
@@ -774,7 +789,11 @@ void run_order_study(Context& ctx) {
     const CloudRun run = cloud_phi(methods[T.k], sys, hh, ell, cloud, n);
     const ModifiedSeries ms(methods[T.k], sys, hh);
     std::vector<double> v;
-    for (const auto& snap : run.snapshots) v.push_back(hull_volumes(snap, ms, {ell})[0]);
+    std::vector<HullFacet> facets;  // those of the previous snapshot, checked before they are taken
+    for (const auto& snap : run.snapshots) {
+      facets = cloud_hull(snap, facets);
+      v.push_back(hull_volumes(snap, facets, ms, {ell})[0]);
+    }
     return Result{relative_peak_to_peak(v, static_cast<std::size_t>(steps_in(s.real("ptp_window"), hh)) + 1), run.iterations,
                   run.steps};
   });

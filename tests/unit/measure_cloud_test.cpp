@@ -179,6 +179,62 @@ TEST(MeasureCloud, HullVolumeOfTheSixHundredCell) {
             1e-12);
 }
 
+// The hulls of a run are taken from the previous snapshot when bounds_hull says they still bound
+// the cloud: it must say so exactly when Qhull would return the same facets.
+TEST(MeasureCloud, KnownFacetsAreTakenOnlyWhenTheyBoundTheHull) {
+  const double r = 1e-5;
+  std::vector<Point4> unit{{0, 0, 0, 0}};
+  for (const auto& p : six_hundred_cell_vertices()) unit.push_back(p);
+  const auto cloud = scaled_cloud(unit, {0, 0, 1, 1}, r);
+  const auto known = hull_facets(cloud);
+  EXPECT_TRUE(std::is_sorted(known.begin(), known.end()));
+  for (const HullFacet& f : known) EXPECT_TRUE(std::is_sorted(f.begin(), f.end()));
+  EXPECT_TRUE(bounds_hull(cloud, known));
+  // a sheared and slightly bent image of the cloud (as a step of a flow makes it): the same hull
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> uni(-1, 1);
+  double A[4][4];
+  for (auto& row : A)
+    for (double& a : row) a = uni(rng);
+  for (int k = 0; k < 4; ++k) A[k][k] += 3;
+  auto image = cloud;
+  for (Point4& p : image) {
+    Point4 d{};
+    for (int k = 0; k < 4; ++k) d[k] = p[k] - cloud.front()[k];
+    for (int k = 0; k < 4; ++k) {
+      p[k] = cloud.front()[k] + 1e-2 * d[k] * d[0] / r;  // bent: a term of second order in the offset
+      for (int c = 0; c < 4; ++c) p[k] += A[k][c] * d[c];
+    }
+  }
+  EXPECT_TRUE(bounds_hull(image, known));
+  EXPECT_EQ(hull_facets(image), known);
+  EXPECT_EQ(hull_facets(image, known), known);
+  // a vertex pulled halfway to the centre is no hull vertex any more: Qhull is asked, and its
+  // answer is a different set of facets
+  auto dented = image;
+  for (int k = 0; k < 4; ++k) dented[7][k] = 0.5 * (dented[7][k] + dented[0][k]);
+  EXPECT_FALSE(bounds_hull(dented, known));
+  EXPECT_EQ(hull_facets(dented, known), hull_facets(dented));
+  EXPECT_NE(hull_facets(dented), known);
+  // pushed out: the facets around it no longer bound the cloud
+  auto bumped = image;
+  for (int k = 0; k < 4; ++k) bumped[7][k] += 0.5 * (bumped[7][k] - bumped[0][k]);
+  EXPECT_FALSE(bounds_hull(bumped, known));
+  EXPECT_EQ(hull_facets(bumped, known), hull_facets(bumped));
+  // a coordinate that is not finite, and facets of another number of points
+  auto broken = image;
+  broken[3][2] = std::nan("");
+  EXPECT_FALSE(bounds_hull(broken, known));
+  EXPECT_FALSE(bounds_hull(std::vector<Point4>(image.begin(), image.begin() + 60), known));
+  EXPECT_FALSE(bounds_hull(image, {}));
+  // the authors' cloud lacks a vertex: the hull has a facet with the 12 co-hyperplanar vertices of an
+  // icosahedron, triangulated by Qhull in one of many ways, and is never taken without Qhull
+  std::vector<Point4> authors_unit{{0, 0, 0, 0}};
+  for (const auto& p : authors_six_hundred_cell_vertices()) authors_unit.push_back(p);
+  const auto authors = scaled_cloud(authors_unit, {0, 0, 1, 1}, r);
+  EXPECT_FALSE(bounds_hull(authors, hull_facets(authors)));
+}
+
 // The loader of the code of 003 skips the first vertex of its file, (0, 0, 1, 0): 119 vertices, the
 // others in the same order, and a cloud that is no longer centrally symmetric.
 TEST(MeasureCloud, AuthorsCloudLacksOneVertex) {

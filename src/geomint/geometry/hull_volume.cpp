@@ -75,7 +75,63 @@ std::vector<HullFacet> hull_facets(const std::vector<Point4>& points) {
                             std::to_string(exitcode) + ": " + first + ")");
   }
   if (facets.empty()) throw std::runtime_error("Qhull returned a facet that is not a tetrahedron");
+  for (HullFacet& f : facets) std::sort(f.begin(), f.end());
+  std::sort(facets.begin(), facets.end());
   return facets;
+}
+
+bool bounds_hull(const std::vector<Point4>& points, const std::vector<HullFacet>& facets) {
+  const std::size_t n = points.size();
+  if (facets.empty()) return false;
+  // coordinates relative to the centroid (the origin from here on), as in hull_facets; one array per coordinate
+  Point4 c{};
+  for (const Point4& p : points)
+    for (int k = 0; k < 4; ++k) c[k] += p[k] / static_cast<double>(n);
+  std::array<std::vector<double>, 4> z;
+  double width = 0;
+  for (int k = 0; k < 4; ++k) {
+    z[k].resize(n);
+    for (std::size_t i = 0; i < n; ++i) {
+      z[k][i] = points[i][k] - c[k];
+      if (!std::isfinite(z[k][i])) return false;
+      width = std::max(width, std::abs(z[k][i]));
+    }
+  }
+  const double margin = 1e-9 * width;
+  for (const HullFacet& f : facets) {
+    for (int v : f)
+      if (v < 0 || static_cast<std::size_t>(v) >= n) return false;
+    // the hyperplane {x : u.x = w} through the facet: u from the cofactors of the edges from vertex f[0]
+    double e[3][4];
+    for (int r = 0; r < 3; ++r)
+      for (int k = 0; k < 4; ++k) e[r][k] = z[k][f[r + 1]] - z[k][f[0]];
+    const auto det3 = [&](int a, int b, int d) {
+      return e[0][a] * (e[1][b] * e[2][d] - e[1][d] * e[2][b]) - e[0][b] * (e[1][a] * e[2][d] - e[1][d] * e[2][a]) +
+             e[0][d] * (e[1][a] * e[2][b] - e[1][b] * e[2][a]);
+    };
+    std::array<double, 4> u{det3(1, 2, 3), -det3(0, 2, 3), det3(0, 1, 3), -det3(0, 1, 2)};
+    double w = 0, norm = 0;
+    for (int k = 0; k < 4; ++k) w += u[k] * z[k][f[0]], norm += u[k] * u[k];
+    norm = std::sqrt(norm);
+    if (!(norm > 0)) return false;
+    const double s = (w > 0 ? 1 : -1) / norm;  // |u| = 1, the centroid on the side u.x < w
+    for (int k = 0; k < 4; ++k) u[k] *= s;
+    w *= s;
+    if (!(w > margin)) return false;
+    // the distance inside the hyperplane, w - u.z_i: round-off for the facet's own four vertices,
+    // more than the margin for every other point
+    const auto inside = [&](std::size_t i) { return w - (u[0] * z[0][i] + u[1] * z[1][i] + u[2] * z[2][i] + u[3] * z[3][i]); };
+    for (int v : f)
+      if (!(std::abs(inside(static_cast<std::size_t>(v))) <= margin)) return false;
+    int near = 0;
+    for (std::size_t i = 0; i < n; ++i) near += !(inside(i) > margin);
+    if (near != 4) return false;
+  }
+  return true;
+}
+
+std::vector<HullFacet> hull_facets(const std::vector<Point4>& points, const std::vector<HullFacet>& known) {
+  return bounds_hull(points, known) ? known : hull_facets(points);
 }
 
 }  // namespace geomint

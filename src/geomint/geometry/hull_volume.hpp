@@ -13,10 +13,23 @@ namespace geomint {
 
 using HullFacet = std::array<int, 4>;  // indices into the point list
 
-// The boundary of conv(points) as tetrahedra (Qhull, reentrant API, option Qt).
+// The boundary of conv(points) as tetrahedra (Qhull, reentrant API, option Qt), in a canonical
+// order: each facet's indices increasing, the facets in lexicographic order, so that a sum over
+// them does not depend on the order in which Qhull built the hull.
 // Throws std::domain_error for a cloud Qhull cannot take (a coordinate not finite or beyond 1e100 from the centroid,
 // fewer than 5 points, all equal) or on which it fails (with the first line of its message).
 std::vector<HullFacet> hull_facets(const std::vector<Point4>& points);
+
+// True when `facets`, the hull_facets of a cloud of as many points (e.g. an earlier image of this
+// one under a flow), are the boundary of conv(points): the centroid and every point not on a
+// facet lie inside the facet's hyperplane by more than 1e-9 of the cloud's width. Then each facet
+// is a facet of conv(points), and a closed triangulated 3-sphere made of facets of a simplicial
+// hull is all of its boundary, so hull_facets(points) == facets. False for a cloud with a
+// coordinate that is not finite and for any near-degenerate one (coplanar points, a flat facet).
+bool bounds_hull(const std::vector<Point4>& points, const std::vector<HullFacet>& facets);
+
+// hull_facets(points), without Qhull when bounds_hull(points, known) (same value either way).
+std::vector<HullFacet> hull_facets(const std::vector<Point4>& points, const std::vector<HullFacet>& known);
 
 // int_{conv(points)} rho over the simplices conv(apex, facet), apex inside the hull: the
 // degree-2 rule |T|/5 sum_i rho(xi_i), xi_i with barycentric weight alpha on vertex i and
