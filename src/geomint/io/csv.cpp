@@ -1,16 +1,16 @@
 #include "geomint/io/csv.hpp"
 
 #include <cmath>
-#include <cstdio>
+#include <charconv>
 #include <stdexcept>
 
 namespace geomint {
 
 std::string format_double(double v) {
   if (std::isnan(v)) return "nan";  // not "-nan": one spelling for an undefined value
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.17g", v);
-  return buf;
+  char buf[32];  // printf's "%.17g", which std::to_chars with a precision is specified to equal, much faster
+  const auto end = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::general, 17).ptr;
+  return std::string(buf, end);
 }
 
 Csv::Csv(std::vector<std::string> columns) : width_(columns.size()) {
