@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
-# compare_threads.sh BIN WORKDIR [SCENE]: run BIN's quick scene (or SCENE)
-# with 1 and with 2 threads and require every CSV except timing*.csv (wall
+# compare_threads.sh BIN WORKDIR [SCENE [ARGS...]]: run BIN's quick scene (or SCENE,
+# with the further options ARGS) with 1 and with 2 threads and require every CSV except timing*.csv (wall
 # times), and figure_values.gp (the numbers of the run but its timings), to be
 # byte-identical.
 set -euo pipefail
 bin=$1 work=$2
 scene=(--quick)
-[ $# -ge 3 ] && scene=(--scene "$3")
+[ $# -ge 3 ] && scene=(--scene "$3" "${@:4}")
 rm -rf "$work" && mkdir -p "$work"
 "$bin" "${scene[@]}" --threads 1 --out "$work/t1" >/dev/null
 "$bin" "${scene[@]}" --threads 2 --out "$work/t2" >/dev/null
