@@ -362,13 +362,14 @@ def modified_equation(method, U, M, log):
 # ---------------------------------------------------------------------------
 # Step 2: modified Lagrangian by action matching, and the EL consistency check.
 # ---------------------------------------------------------------------------
+@functools.lru_cache(maxsize=None)
 def inverse_midpoint_coefficients(M):
     """a_k with (hD/2)/sinh(hD/2) = sum_k a_k (hD)^(2k): the inverse of the midpoint-rule
     expansion (1/h) int_{t-h/2}^{t+h/2} f = sinh(hD/2)/(hD/2) f = f + h^2/24 f'' + ...."""
     t = sympy.Symbol("t")
     ser = sympy.series((t / 2) / sympy.sinh(t / 2), t, 0, M + 1).removeO()
-    return [QQ(int(sympy.fraction(c)[0]), int(sympy.fraction(c)[1]))
-            for c in (sympy.Rational(ser.coeff(t, 2 * k)) for k in range(M // 2 + 1))]
+    return tuple(QQ(int(sympy.fraction(c)[0]), int(sympy.fraction(c)[1]))
+                 for c in (sympy.Rational(ser.coeff(t, 2 * k)) for k in range(M // 2 + 1)))
 
 
 def modified_lagrangian(method, U, F, M):

@@ -10,7 +10,8 @@ set -euo pipefail
 
 build=(g++ cmake make pkg-config git libeigen3-dev libboost-dev libtomlplusplus-dev
        libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev libsleef-dev libqhull-dev
-       libopenmpi-dev openmpi-bin gnuplot-nox fonts-dejavu-core poppler-utils python3 python3-sympy)
+       libopenmpi-dev openmpi-bin gnuplot-nox fonts-dejavu-core poppler-utils python3 python3-sympy
+       python3-gmpy2)
 figures=("${build[@]}" python3-numpy python3-matplotlib)
 paper=("${figures[@]}" latexmk texlive-latex-base texlive-latex-recommended
        texlive-latex-extra texlive-fonts-recommended)
