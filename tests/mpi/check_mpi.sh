@@ -4,13 +4,16 @@
 # files and summary.json, timings aside. With --resume-np M the MPI run is first stopped after one
 # round (checkpoint.stop_after = 1, exit 3) and then resumed with M ranks; with --usr1 as well, it is
 # stopped instead by SIGUSR1 sent to mpirun once the first checkpoint is written (what a batch
-# job's time-limit warning does: scripts/slurm_job.sh).
-#   check_mpi.sh BIN WORK NP [--resume-np M [--usr1]] -- ARGS...
+# job's time-limit warning does: scripts/slurm_job.sh). With --reference DIR the one-process run is
+# not made again: DIR holds what BIN with ARGS wrote with 2 threads (the quick run's results).
+#   check_mpi.sh BIN WORK NP [--reference DIR] [--resume-np M [--usr1]] -- ARGS...
 set -euo pipefail
 bin=$1 work=$2 np=$3
 shift 3
+reference=""
 resume_np=""
 usr1=""
+if [[ ${1:-} == --reference ]]; then reference=$2; shift 2; fi
 if [[ ${1:-} == --resume-np ]]; then resume_np=$2; shift 2; fi
 if [[ ${1:-} == --usr1 ]]; then usr1=1; shift; fi
 [[ ${1:-} == -- ]] && shift
@@ -19,7 +22,11 @@ if [[ ${1:-} == --usr1 ]]; then usr1=1; shift; fi
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 GEOMINT_MPI_OVERSUBSCRIBE=1
 mpi=("$(dirname "$0")/../../scripts/mpirun.sh")
 rm -rf "$work" && mkdir -p "$work"
-"$bin" "$@" --threads 2 --out "$work/one" 2> "$work/one.stderr"
+one=${reference:-$work/one}
+if [[ -z $reference ]]; then
+  "$bin" "$@" --threads 2 --out "$one" 2> "$work/one.stderr"
+fi
+[[ -f $one/summary.json ]] || { echo "FAIL: no one-process results in $one"; exit 1; }
 if [[ -n $resume_np ]]; then
   set +e
   if [[ -n $usr1 ]]; then
@@ -44,13 +51,13 @@ fi
 [[ ! -e "$work/mpi.partial" ]] || { echo "FAIL: $work/mpi.partial left"; exit 1; }
 grep -q "\"ranks\": ${resume_np:-$np}" "$work/mpi/run.json" || { echo "FAIL: run.json does not count ${resume_np:-$np} ranks"; exit 1; }
 files=0
-for f in "$work/one/"*.csv; do
+for f in "$one/"*.csv; do
   name=$(basename "$f")
   [[ $name == timing* ]] && continue
   cmp -s "$f" "$work/mpi/$name" || { echo "FAIL: $name differs ($label)"; exit 1; }
   files=$((files + 1))
 done
-python3 - "$work/one/summary.json" "$work/mpi/summary.json" <<'PY' || { echo "FAIL: summary.json differs ($label)"; exit 1; }
+python3 - "$one/summary.json" "$work/mpi/summary.json" <<'PY' || { echo "FAIL: summary.json differs ($label)"; exit 1; }
 import json, sys
 a, b = (json.load(open(p)) for p in sys.argv[1:3])
 for s in (a, b):
