@@ -1,8 +1,8 @@
 #!/usr/bin/env python3
-"""check_studies.py BIN SCENE FULL_DIR WORK_DIR
+"""check_studies.py BIN SCENE FULL_DIR WORK_DIR [ARGS...]
 
 Each study of a scene runs alone: for every study S that the full run of SCENE
-(its outputs in FULL_DIR) ran, `BIN --scene SCENE --study S` must
+with the options ARGS (its outputs in FULL_DIR) ran, `BIN --scene SCENE ARGS --study S` must
   - exit 0,
   - write exactly the CSV files S declares (`BIN --list-studies`; every
     declared name or pattern matched, nothing else) besides summary.json, run.json and
@@ -19,10 +19,11 @@ import sys
 
 
 def main() -> int:
-    if len(sys.argv) != 5:
+    if len(sys.argv) < 5:
         print(__doc__, file=sys.stderr)
         return 2
     binary, scene, full, work = sys.argv[1], sys.argv[2], pathlib.Path(sys.argv[3]), pathlib.Path(sys.argv[4])
+    args = sys.argv[5:]
     listing = subprocess.run([binary, "--list-studies"], check=True, capture_output=True, text=True).stdout
     declared = {}
     for line in listing.splitlines():
@@ -33,7 +34,7 @@ def main() -> int:
     for study in ran:
         out = work / study
         shutil.rmtree(out, ignore_errors=True)
-        result = subprocess.run([binary, "--scene", scene, "--study", study, "--threads", "2", "--out", str(out)],
+        result = subprocess.run([binary, "--scene", scene, *args, "--study", study, "--threads", "2", "--out", str(out)],
                                 capture_output=True, text=True)
         if result.returncode != 0:
             failures.append(f"{study}: exit {result.returncode}: {result.stderr.strip()}")
