@@ -28,16 +28,21 @@ Z0 = sprintf("(%s, %s, %s, %s)", scene_num('cloud.center.0'), scene_num('cloud.c
              scene_num('cloud.center.2'), scene_num('cloud.center.3'))
 NSNAP = int(NSNAP)
 
-# snapshot k at t = k Δt: grey level from black (k = 0) to light grey (k = NSNAP)
+# snapshot k at t = k Δt, the rows k NPTS .. (k + 1) NPTS - 1 of shape.csv (checked below): grey level
+# from black (k = 0) to light grey (k = NSNAP)
 TK(k) = k * DT
-at(k) = abs(column("t") - TK(k)) < 1e-9 * (1 + TK(k))
+at(k) = abs(column("t") - TK(k)) < 1e-9 * (1 + TK(k))   # a row of snapshot k (shape_areas.csv)
 GREY(k) = (g = k == 0 ? 0 : int(255 * (0.25 + 0.5 * (k - 1) / (NSNAP > 1 ? NSNAP - 1 : 1))), sprintf("#%02x%02x%02x", g, g, g))
+stats SH using "t" nooutput
+if (STATS_records != (NSNAP + 1) * NPTS) { exit error sprintf("shape.csv: %d rows, expected %d", STATS_records, (NSNAP + 1) * NPTS) }
 do for [k = 0:NSNAP] {
-    stats SH using (at(k) ? 1 : 0) nooutput
-    if (STATS_sum != NPTS) { exit error sprintf("shape.csv: %d points at t = %g, expected %d", STATS_sum, TK(k), NPTS) }
-    do for [c in "x px y py"] {       # centroid of the projection: where the snapshot's time is written
-        stats SH using (at(k) ? column(c) : NaN) nooutput
-        eval sprintf("C%s_%d = STATS_mean", c, k)
+    stats SH every ::(k * NPTS)::((k + 1) * NPTS - 1) using "t" nooutput
+    if (STATS_records != NPTS || abs(STATS_min - TK(k)) > 1e-9 * (1 + TK(k)) || abs(STATS_max - TK(k)) > 1e-9 * (1 + TK(k))) {
+        exit error sprintf("shape.csv: rows %d to %d are not all at t = %g", k * NPTS, (k + 1) * NPTS - 1, TK(k))
+    }
+    do for [c in "x y"] {            # centroid of the projection: where the snapshot's time is written
+        stats SH every ::(k * NPTS)::((k + 1) * NPTS - 1) using c:"p".c nooutput
+        eval sprintf("C%s_%d = STATS_mean_x; Cp%s_%d = STATS_mean_y", c, k, c, k)
     }
     stats SA using (at(k) ? column("area_x_px") : NaN) nooutput
     eval sprintf("AX_%d = STATS_min", k)
@@ -69,7 +74,7 @@ do for [fmt in FORMATS] {
     set xlabel "x" offset 0, 0.3
     set ylabel "p_x" offset 1, 0
     do for [k = 0:NSNAP] { eval TLABEL(k, "x", "px") }
-    plot for [k = NSNAP:0:-1] SH using (at(k) ? column("x") : NaN):"px" with points pt 5 ps PS lc rgb GREY(k) notitle
+    plot for [k = NSNAP:0:-1] SH every ::(k * NPTS)::((k + 1) * NPTS - 1) using "x":"px" with points pt 5 ps PS lc rgb GREY(k) notitle
 
     # ---- (b) (y, p_y) ----
     set lmargin at screen 0.39; set rmargin at screen 0.66
@@ -77,7 +82,7 @@ do for [fmt in FORMATS] {
     set xlabel "y"
     set ylabel "p_y"
     do for [k = 0:NSNAP] { eval TLABEL(k, "y", "py") }
-    plot for [k = NSNAP:0:-1] SH using (at(k) ? column("y") : NaN):"py" with points pt 5 ps PS lc rgb GREY(k) notitle
+    plot for [k = NSNAP:0:-1] SH every ::(k * NPTS)::((k + 1) * NPTS - 1) using "y":"py" with points pt 5 ps PS lc rgb GREY(k) notitle
 
     # ---- (c) symplecticity defect against t ----
     do for [k = 0:NSNAP] { unset label 10 + k }
