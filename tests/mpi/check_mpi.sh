@@ -5,7 +5,7 @@
 # round (checkpoint.stop_after = 1, exit 3) and then resumed with M ranks; with --usr1 as well, it is
 # stopped instead by SIGUSR1 sent to mpirun once the first checkpoint is written (what a batch
 # job's time-limit warning does: scripts/slurm_job.sh). With --reference DIR the one-process run is
-# not made again: DIR holds what BIN with ARGS wrote with 2 threads (the quick run's results).
+# not made again: DIR holds what BIN with ARGS wrote with 2 threads (the scene's reference run).
 #   check_mpi.sh BIN WORK NP [--reference DIR] [--resume-np M [--usr1]] -- ARGS...
 set -euo pipefail
 bin=$1 work=$2 np=$3

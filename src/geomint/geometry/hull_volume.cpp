@@ -13,22 +13,39 @@ extern "C" {
 
 namespace geomint {
 
-std::vector<HullFacet> hull_facets(const std::vector<Point4>& points) {
-  // Qhull works on coordinates relative to the centroid: the clouds are tiny
-  // (radius down to 1e-5) and far from the origin.
+namespace {
+
+// The cloud relative to its centroid, the coordinates the hull is computed and checked in (the
+// clouds are tiny, radius down to 1e-5, and far from the origin); width: the largest |coordinate|.
+struct Centred {
+  std::vector<Point4> z;
+  double width = 0;
+  bool finite = true;
+};
+
+Centred centred(const std::vector<Point4>& points) {
   const int n = static_cast<int>(points.size());
   Point4 c{};
   for (const Point4& p : points)
     for (int k = 0; k < 4; ++k) c[k] += p[k] / n;
-  std::vector<coordT> coords(4 * points.size());
-  double width = 0;
-  bool finite = true;
-  for (int i = 0; i < n; ++i)
+  Centred out{std::vector<Point4>(points.size())};
+  for (std::size_t i = 0; i < points.size(); ++i)
     for (int k = 0; k < 4; ++k) {
-      coords[4 * i + k] = points[i][k] - c[k];
-      finite = finite && std::isfinite(coords[4 * i + k]);
-      width = std::max(width, std::abs(coords[4 * i + k]));
+      out.z[i][k] = points[i][k] - c[k];
+      out.finite = out.finite && std::isfinite(out.z[i][k]);
+      out.width = std::max(out.width, std::abs(out.z[i][k]));
     }
+  return out;
+}
+
+}  // namespace
+
+std::vector<HullFacet> hull_facets(const std::vector<Point4>& points) {
+  const int n = static_cast<int>(points.size());
+  const auto [z, width, finite] = centred(points);
+  std::vector<coordT> coords(4 * points.size());
+  for (int i = 0; i < n; ++i)
+    for (int k = 0; k < 4; ++k) coords[4 * i + k] = z[i][k];
   // Qhull squares coordinates and has no defence against NaN or Inf: refuse what it cannot take.
   if (!finite || width > 1e100)
     throw std::domain_error("convex hull of " + std::to_string(n) + " points: a coordinate is not finite or beyond 1e100");
@@ -83,20 +100,8 @@ std::vector<HullFacet> hull_facets(const std::vector<Point4>& points) {
 bool bounds_hull(const std::vector<Point4>& points, const std::vector<HullFacet>& facets) {
   const std::size_t n = points.size();
   if (facets.empty()) return false;
-  // coordinates relative to the centroid (the origin from here on), as in hull_facets; one array per coordinate
-  Point4 c{};
-  for (const Point4& p : points)
-    for (int k = 0; k < 4; ++k) c[k] += p[k] / static_cast<double>(n);
-  std::array<std::vector<double>, 4> z;
-  double width = 0;
-  for (int k = 0; k < 4; ++k) {
-    z[k].resize(n);
-    for (std::size_t i = 0; i < n; ++i) {
-      z[k][i] = points[i][k] - c[k];
-      if (!std::isfinite(z[k][i])) return false;
-      width = std::max(width, std::abs(z[k][i]));
-    }
-  }
+  const auto [z, width, finite] = centred(points);  // the centroid is the origin from here on
+  if (!finite) return false;
   const double margin = 1e-9 * width;
   for (const HullFacet& f : facets) {
     for (int v : f)
@@ -104,14 +109,14 @@ bool bounds_hull(const std::vector<Point4>& points, const std::vector<HullFacet>
     // the hyperplane {x : u.x = w} through the facet: u from the cofactors of the edges from vertex f[0]
     double e[3][4];
     for (int r = 0; r < 3; ++r)
-      for (int k = 0; k < 4; ++k) e[r][k] = z[k][f[r + 1]] - z[k][f[0]];
+      for (int k = 0; k < 4; ++k) e[r][k] = z[f[r + 1]][k] - z[f[0]][k];
     const auto det3 = [&](int a, int b, int d) {
       return e[0][a] * (e[1][b] * e[2][d] - e[1][d] * e[2][b]) - e[0][b] * (e[1][a] * e[2][d] - e[1][d] * e[2][a]) +
              e[0][d] * (e[1][a] * e[2][b] - e[1][b] * e[2][a]);
     };
     std::array<double, 4> u{det3(1, 2, 3), -det3(0, 2, 3), det3(0, 1, 3), -det3(0, 1, 2)};
     double w = 0, norm = 0;
-    for (int k = 0; k < 4; ++k) w += u[k] * z[k][f[0]], norm += u[k] * u[k];
+    for (int k = 0; k < 4; ++k) w += u[k] * z[f[0]][k], norm += u[k] * u[k];
     norm = std::sqrt(norm);
     if (!(norm > 0)) return false;
     const double s = (w > 0 ? 1 : -1) / norm;  // |u| = 1, the centroid on the side u.x < w
@@ -120,7 +125,7 @@ bool bounds_hull(const std::vector<Point4>& points, const std::vector<HullFacet>
     if (!(w > margin)) return false;
     // the distance inside the hyperplane, w - u.z_i: round-off for the facet's own four vertices,
     // more than the margin for every other point
-    const auto inside = [&](std::size_t i) { return w - (u[0] * z[0][i] + u[1] * z[1][i] + u[2] * z[2][i] + u[3] * z[3][i]); };
+    const auto inside = [&](std::size_t i) { return w - (u[0] * z[i][0] + u[1] * z[i][1] + u[2] * z[i][2] + u[3] * z[i][3]); };
     for (int v : f)
       if (!(std::abs(inside(static_cast<std::size_t>(v))) <= margin)) return false;
     int near = 0;
