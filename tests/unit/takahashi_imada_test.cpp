@@ -2,8 +2,11 @@
 // chi_h (004 Sect. 1, and the note on its closed forms for the oscillator).
 #include <gtest/gtest.h>
 
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <numbers>
+#include <random>
 #include <type_traits>
 #include <vector>
 
@@ -308,6 +311,28 @@ TEST(LennardJones, DerivativesAgainstFiniteDifferences) {
   const auto U4 = [&](const Vec<18>& x) { return lj.U4(x, a); };
   const double fd5 = (along(U4, e / 10) - along(U4, -e / 10)) / (e / 5);
   EXPECT_NEAR(lj.U5(q, a), fd5, 1e-4 * (1 + std::abs(fd5)));
+}
+
+TEST(LennardJones, HessianIsTheColumnsOfTheHessianVectorProductBitForBit) {
+  // U_qq visits each pair once; its columns must be U_qq_times(q, e_k) to the bit, also on the exact
+  // grid (aligned particles: exact zeros in d and signed zeros in the terms) and for a distant pair.
+  const LennardJones<9> lj;
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> u(-0.3, 0.3);
+  for (int trial = 0; trial < 20; ++trial) {
+    Vec<18> q;
+    for (int i = 0; i < 9; ++i)
+      q[2 * i] = 1 + i % 3 + (trial == 0 ? 0.0 : u(rng)), q[2 * i + 1] = 1 + i / 3 + (trial == 0 ? 0.0 : u(rng));
+    if (trial == 1) q.segment<2>(16) << 40.0, -25.0;
+    const Mat<18> J = lj.U_qq(q);
+    for (int k = 0; k < 18; ++k) {
+      const Vec<18> column = lj.U_qq_times(q, Vec<18>::Unit(k));
+      for (int r = 0; r < 18; ++r) {
+        EXPECT_EQ(std::bit_cast<std::uint64_t>(J(r, k)), std::bit_cast<std::uint64_t>(column[r]))
+            << "trial " << trial << " entry (" << r << ", " << k << ")";
+      }
+    }
+  }
 }
 
 TEST(HenonHeiles, ZeroCouplingIsCompiledOutAndOneIsThePaperPotential) {

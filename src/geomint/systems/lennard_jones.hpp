@@ -70,19 +70,31 @@ struct LennardJones {
     gradient(q.data(), g.data());
     return g;
   }
+  // U'' a of one pair: 4 G'' (d.A) d + 2 G' A, A = a_i - a_j (+ for particle i, - for j).
+  static Vec<2> hessian_pair(const std::array<double, 6>& g, const Vec<2>& d, const Vec<2>& A) {
+    return 4 * g[2] * d.dot(A) * d + 2 * g[1] * A;
+  }
   Vec<D> U_qq_times(const Vec<D>& q, const Vec<D>& a) const {
     Vec<D> out = Vec<D>::Zero();
     for_pairs(q, [&](int i, int j, const Vec<2>& d) {
-      const auto g = G(d.squaredNorm());
-      const Vec<2> A = pair(a, i, j);
-      const Vec<2> w = 4 * g[2] * d.dot(A) * d + 2 * g[1] * A;
+      const Vec<2> w = hessian_pair(G(d.squaredNorm()), d, pair(a, i, j));
       out.template segment<2>(2 * i) += w, out.template segment<2>(2 * j) -= w;
     });
     return out;
   }
-  Mat<D> U_qq(const Vec<D>& q) const {  // column by column (processing maps only; rarely called)
-    Mat<D> J;
-    for (int k = 0; k < D; ++k) J.col(k) = U_qq_times(q, Vec<D>::Unit(k));
+  // Column k is U_qq_times(q, e_k) bit for bit: a pair (i, j) changes only the columns of particles i
+  // and j (for the others A = 0 and w = +-0; a sum that starts at +0 is never -0, so adding +-0 leaves
+  // it as it is), so each pair is visited once and each entry takes its terms in the same order.
+  // (Unlike the column sums, a non-finite G of one pair reaches only that pair's columns.)
+  Mat<D> U_qq(const Vec<D>& q) const {
+    Mat<D> J = Mat<D>::Zero();
+    for_pairs(q, [&](int i, int j, const Vec<2>& d) {
+      const auto g = G(d.squaredNorm());
+      for (const int k : {2 * i, 2 * i + 1, 2 * j, 2 * j + 1}) {
+        const Vec<2> w = hessian_pair(g, d, pair(Vec<D>::Unit(k), i, j));
+        J.template block<2, 1>(2 * i, k) += w, J.template block<2, 1>(2 * j, k) -= w;
+      }
+    });
     return J;
   }
   double U4(const Vec<D>& q, const Vec<D>& a) const {
