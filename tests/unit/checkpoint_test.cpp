@@ -175,6 +175,23 @@ TEST(Checkpoint, MissingHeaderStartsOver) {
   EXPECT_EQ(f.calls, static_cast<int>(kTasks));
 }
 
+// The runner removes the checkpoints of a finished run before it commits; a kill in the middle must
+// not leave a header counting the bytes of a log already removed (a --resume would refuse it).
+// Here every log fails to be removed (a directory that is not empty): all headers must be gone first.
+TEST(Checkpoint, RemovalTakesEveryHeaderBeforeAnyLog) {
+  const fs::path dir = fs::temp_directory_path() / ("geomint_checkpoint_removal_" + std::to_string(::getpid()));
+  fs::remove_all(dir);
+  for (int k = 0; k < 16; ++k) {  // 16 pairs: in any directory order, some header would follow a log
+    const std::string stem = "study" + std::to_string(k);
+    fs::create_directories(dir / (stem + ".checkpoint.log") / "x");
+    std::ofstream(dir / (stem + ".checkpoint.json")) << "{}";
+  }
+  EXPECT_THROW(remove_checkpoints(dir), fs::filesystem_error);
+  for (const auto& e : fs::directory_iterator(dir))
+    EXPECT_FALSE(e.path().filename().string().ends_with(".checkpoint.json")) << e.path();
+  fs::remove_all(dir);
+}
+
 TEST(Checkpoint, LogLongerThanCountedIsCutBack) {  // a run stopped in the middle of an append
   stop_after_one_round();
   const fs::path log = Fixture(0, 1.0, false).log();

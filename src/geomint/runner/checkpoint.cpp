@@ -198,10 +198,11 @@ void CheckpointLog::append(std::span<const double> values, std::span<const std::
 }
 
 void remove_checkpoints(const fs::path& dir) {
-  for (const auto& e : fs::directory_iterator(dir)) {
-    const std::string f = e.path().filename().string();
-    if (f.ends_with(kHeaderSuffix) || f.ends_with(kLogSuffix)) fs::remove(e.path());
-  }
+  // Every header before any log: a run killed in between leaves logs without a header (nothing to
+  // resume, start over), never a header that counts bytes of a log already gone (refused, exit 2).
+  for (const char* suffix : {kHeaderSuffix, kLogSuffix})
+    for (const auto& e : fs::directory_iterator(dir))
+      if (e.path().filename().string().ends_with(suffix)) fs::remove(e.path());
 }
 
 }  // namespace geomint

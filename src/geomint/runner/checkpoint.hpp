@@ -88,7 +88,8 @@ inline std::size_t default_round(std::size_t n, std::size_t workers) {
 // The wall time this process spent writing checkpoints (appends and headers, synced), for run.json.
 double checkpoint_write_seconds();
 
-// Removes every checkpoint (*.checkpoint.json, *.checkpoint.log) in `dir`: the runner, before it commits.
+// Removes every checkpoint in `dir`, the headers (*.checkpoint.json) before the logs (*.checkpoint.log):
+// the runner, before it commits.
 void remove_checkpoints(const std::filesystem::path& dir);
 
 // A checkpoint is written after a round when the scene's checkpoint.interval (seconds; without the
