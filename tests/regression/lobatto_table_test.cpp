@@ -198,3 +198,23 @@ TEST(LobattoTable, PlanOfThePaperSceneHasFiniteStepCounts) {
 TEST(LobattoTable, ResumedLongRunCostGivesTheSameResults) {
   expect_resume_identical("lobatto_table", "--quick --study long_run_cost", 1, "long_run_cost");
 }
+
+// A resumed run reruns its studies: a run stopped after table1 (of another amplitude) and resumed with
+// long_run_cost alone commits the files run.json lists, not the stopped run's table1.csv beside them.
+TEST(LobattoTable, ResumedRunHoldsOnlyItsOwnFiles) {
+  namespace fs = std::filesystem;
+  const fs::path out = results_dir("lobatto_table-resume-fewer");
+  fs::remove_all(out), fs::remove_all(out.string() + ".partial");
+  const BinaryOutcome stopped = run_binary("lobatto_table", "--quick --study table1 --study long_run_cost --set "
+                                           "oscillator.amplitude=0.5 --set checkpoint.stop_after=1 --out " + out.string());
+  ASSERT_EQ(stopped.code, 3) << stopped.err;
+  ASSERT_TRUE(fs::exists(out.string() + ".partial/table1.csv"));
+  const BinaryOutcome resumed = run_binary("lobatto_table", "--quick --study long_run_cost --resume --out " + out.string());
+  ASSERT_EQ(resumed.code, 0) << resumed.err;
+  const auto run = nlohmann::json::parse(file_text(out / "run.json"));
+  std::vector<std::string> listed = run["files"].get<std::vector<std::string>>(), held;
+  listed.push_back("run.json");
+  for (const auto& e : fs::directory_iterator(out)) held.push_back(e.path().filename().string());
+  std::sort(listed.begin(), listed.end()), std::sort(held.begin(), held.end());
+  EXPECT_EQ(held, listed);
+}

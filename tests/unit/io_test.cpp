@@ -2,6 +2,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -116,7 +117,7 @@ void finished_run(const fs::path& dir, const std::string& experiment, const std:
   OutputDir out(results.staging_path());
   for (const auto& f : files) out.write(f, f + "\n");
   out.write("run.json", "{\"experiment\": \"" + experiment + "\"}\n");
-  results.commit();
+  results.commit(out.written());
 }
 
 }  // namespace
@@ -182,6 +183,30 @@ TEST(ResultsDir, ResumeKeepsTheInterruptedRunAndDropsItsTemporaries) {
   EXPECT_FALSE(fresh.resumed());
   EXPECT_FALSE(fs::exists(fresh.staging_path() / "checkpoint.json"));
   EXPECT_FALSE(ResultsDir(t.root / "new", "exp", true).resumed());  // nothing to resume
+}
+
+// A resumed run reruns its studies: what the interrupted run wrote and this one did not (a study it
+// does not run, perhaps of other scene values) must not reach DIR beside this run's run.json.
+TEST(ResultsDir, CommitKeepsExactlyTheFilesOfThisRun) {
+  Scratch t;
+  const fs::path dir = t.root / "res";
+  {
+    ResultsDir stopped(dir, "exp", false);
+    OutputDir out(stopped.staging_path());
+    out.write("table1.csv", "of the stopped run\n"), out.write("long.checkpoint.json", "{}\n");
+    fs::create_directories(stopped.staging_path() / "sub");
+    std::ofstream(stopped.staging_path() / ".long.checkpoint.json.tmp-12345") << "half";
+  }
+  ResultsDir resumed(dir, "exp", true);
+  ASSERT_TRUE(resumed.resumed());
+  OutputDir out(resumed.staging_path());
+  out.write("long.csv", "long\n"), out.write("run.json", "{\"experiment\": \"exp\"}\n");
+  resumed.commit(out.written());
+  std::vector<std::string> in_dir;
+  for (const auto& e : fs::directory_iterator(dir)) in_dir.push_back(e.path().filename().string());
+  std::sort(in_dir.begin(), in_dir.end());
+  EXPECT_EQ(in_dir, (std::vector<std::string>{"long.csv", "run.json"}));
+  EXPECT_FALSE(fs::exists(t.root / "res.partial"));
 }
 
 TEST(ParallelMap, ResultsByIndexAndLowestIndexErrorWins) {

@@ -124,9 +124,14 @@ ResultsDir::ResultsDir(const fs::path& dir, const std::string& experiment, bool 
   write_file_atomic(staging_ / kStagingMarker, experiment + "\n");
 }
 
-void ResultsDir::commit() {
-  remove_temporaries(staging_);
-  fs::remove(staging_ / kStagingMarker);
+void ResultsDir::commit(const std::vector<std::string>& files) {
+  std::vector<fs::path> other;  // (collected first: nothing is removed while the directory is read)
+  for (const auto& e : fs::directory_iterator(staging_)) {
+    const std::string f = e.path().filename().string();
+    if (f != kStagingMarker && std::find(files.begin(), files.end(), f) == files.end()) other.push_back(e.path());
+  }
+  for (const auto& p : other) fs::remove_all(p);
+  fs::remove(staging_ / kStagingMarker);  // last: until here a kill leaves a staging directory --resume knows
   std::error_code ec;
   if (!fs::exists(final_, ec)) {
     if (std::rename(staging_.c_str(), final_.c_str()) != 0)

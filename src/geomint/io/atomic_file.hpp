@@ -45,7 +45,10 @@ class ResultsDir {
   const std::filesystem::path& final_path() const { return final_; }
   const std::filesystem::path& staging_path() const { return staging_; }
   bool resumed() const { return resumed_; }  // the staging directory of an earlier run was kept
-  void commit();   // DIR := the staging directory (leftover temporaries removed)
+  // DIR := the staging directory, holding exactly `files` (the run's OutputDir::written()): anything
+  // else a resumed run's staging directory still holds (the files of studies this run did not
+  // run, perhaps of other scene values; a killed writer's temporaries) is removed first.
+  void commit(const std::vector<std::string>& files);
   void discard();  // removes the staging directory (DIR is untouched)
 
  private:

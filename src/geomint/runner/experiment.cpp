@@ -691,7 +691,7 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
     run["files"] = out->written();
     out->write("run.json", run.dump(2) + "\n");
     remove_checkpoints(out->path());
-    if (mpi::is_root()) results->commit();
+    if (mpi::is_root()) results->commit(out->written());
     else results->discard();
   } catch (const Interrupted& e) {
     if (!mpi::is_root()) results->discard();
