@@ -492,6 +492,8 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
   const auto start = std::chrono::system_clock::now();
   const auto t0 = std::chrono::steady_clock::now();
   const std::string name = spec.name;
+  for (const Study& st : spec.studies)
+    if (st.keys) st.keys(spec.schema);
   spec.schema.texts(kStudiesKey, study_names(spec), 0,
                     "the studies this scene runs (default: every study whose section the scene has)");
 

@@ -101,12 +101,13 @@ struct Study {
   std::function<void(const Scene&)> validate;  // checks across keys; calls scene.reject(...)
   std::function<void(Context&)> run;
   std::function<StudyPlan(const Scene&)> plan = {};  // --plan and the count checks (none: not estimated)
+  std::function<void(Schema&)> keys = {};  // declares the scene keys only this study reads (shared ones: ExperimentSpec)
 };
 
 struct ExperimentSpec {
   std::string name;
   std::string description;
-  Schema schema;
+  Schema schema;  // the keys several studies read; each study adds its own (Study::keys)
   std::vector<Study> studies;  // in the order they run
 };
 

@@ -1,0 +1,121 @@
+// 000 Fig 9: the error in H against h of symplectic Euler with and without (82) (orders 1 and 2),
+// and of explicit Euler on (14) and (17); one task per step size.
+#include <algorithm>
+#include <vector>
+
+#include "euler_compensation.hpp"
+#include "geomint/core/integrate.hpp"
+#include "geomint/integrators/explicit_euler.hpp"
+#include "geomint/methods/registry.hpp"
+#include "geomint/observables/error_norms.hpp"
+#include "geomint/observables/order_fit.hpp"
+#include "geomint/runner/distributed_map.hpp"
+#include "geomint/systems/exponential_decay.hpp"
+#include "geomint/systems/gompertz.hpp"
+
+namespace geomint::euler_compensation {
+namespace {
+
+// Max over t_j in [0, N h] of the global error of explicit Euler on a scalar ODE.
+template <class Sys>
+double euler_max_err(const Sys& sys, double y0, double h, std::int64_t n) {
+  ErrorSeries e;
+  integrate(one_step_method([&](double y, double dt) { return explicit_euler(sys, y, dt); }), y0, h, n,
+            [&](std::int64_t j, double y) { e.add(y - sys.exact(y0, static_cast<double>(j) * h)); });
+  return e.max_abs();
+}
+
+void run_convergence(Context& ctx) {
+  const Scene& s = ctx.scene;
+  ctx.progress("Fig 9: convergence");
+  const ExponentialDecay decay{s.real("decay.alpha")};
+  const Gompertz gompertz{s.real("gompertz.a"), s.real("gompertz.b")};
+  const double gy0 = s.real("gompertz.y0");
+  const State z0 = initial_state(s);
+  const double H0 = Oscillator{}.H(z0);
+  const auto hs = s.reals("convergence.h");
+  const double t_end = s.real("convergence.t_end"), k = s.real("oscillator.k");
+  const auto methods = s.texts("convergence.methods");
+  struct Row {
+    std::vector<EnergyRun> osc;  // one per method
+    double ee_decay, ee_gompertz;
+    auto fields() { return std::tie(osc, ee_decay, ee_gompertz); }
+  };
+  const auto rows = distributed_map(hs.size(), [&](std::size_t i) {
+    const double h = hs[i];
+    const std::int64_t n = steps_to(t_end, h);
+    return Row{oscillator_runs(methods, z0, h, k, n), euler_max_err(decay, s.real("decay.y0"), h, n),
+               euler_max_err(gompertz, gy0, h, n)};
+  });
+  // Columns: h, steps, then per method (by label) the max and the eq. (50) errors and the force evaluations.
+  std::vector<std::string> columns{"h", "steps"};
+  for (const char* suffix : {"_max", "_rms", "_evals"})
+    for (const auto& m : methods) columns.push_back(label_of(m) + suffix);
+  columns.insert(columns.end(), {"ee_decay_max", "ee_gompertz_max"});
+  Csv conv(columns);
+  std::vector<std::vector<double>> max_err(methods.size()), rms_err(methods.size());
+  std::vector<double> ee_decay, ee_gompertz;
+  for (std::size_t i = 0; i < hs.size(); ++i) {
+    const auto& runs = rows[i].osc;
+    conv << hs[i] << steps_to(t_end, hs[i]);
+    for (const auto& r : runs) conv << r.max_err;
+    for (const auto& r : runs) conv << r.rms_err;
+    for (const auto& r : runs) conv << r.force_evals;
+    conv.row(rows[i].ee_decay, rows[i].ee_gompertz);
+    for (std::size_t m = 0; m < methods.size(); ++m)
+      max_err[m].push_back(runs[m].max_err), rms_err[m].push_back(runs[m].rms_err);
+    ee_decay.push_back(rows[i].ee_decay), ee_gompertz.push_back(rows[i].ee_gompertz);
+  }
+  ctx.write("fig9_convergence.csv", conv);
+
+  // Orders: least squares on log-log over the points above round-off.
+  const double floor = roundoff_floor(std::max(H0, 1.0));
+  Csv order_csv({"name", "order", "log10_c", "r2", "points", "h_min", "h_max"});
+  json orders, fits;
+  const auto fit = [&](const std::string& name, const std::vector<double>& err, double fit_floor) {
+    const OrderFit f = fit_order(hs, err, fit_floor);
+    orders[name] = f.order;
+    fits[name] = to_json(f);
+    order_csv.row(name, f.order, f.log10_c, f.r2, f.points, f.h_min, f.h_max);
+  };
+  fit("ee_decay", ee_decay, roundoff_floor(s.real("decay.y0")));
+  fit("ee_gompertz", ee_gompertz, roundoff_floor(gompertz.equilibrium()));
+  for (std::size_t m = 0; m < methods.size(); ++m) fit(label_of(methods[m]) + "_energy", max_err[m], floor);
+  for (std::size_t m = 0; m < methods.size(); ++m) fit(label_of(methods[m]) + "_energy_rms", rms_err[m], floor);
+  ctx.write("orders.csv", order_csv);
+  ctx.summary["orders"] = orders;
+  ctx.summary["fits"] = fits;
+  ctx.summary["norms"] = {
+      {"energy", "max over t_j = j h in [0, convergence.t_end] of |H(q_j, p_j) - H(q_0, p_0)|; *_rms: eq. (50)"},
+      {"ee", "max over t_j in [0, convergence.t_end] of |y_j - y(t_j)|"},
+      {"compensated_max_rel_err", "max over the steps of Figs 2/3 of |Psi^{-1}(ybar_j) - y(t_j)| / |y(t_j)|"},
+      {"compensated_max_rel_err_odeint", "the same with y(t_j) from odeint's Bulirsch-Stoer at rtol = atol = 1e-14"},
+      {"odeint_max_rel_err", "max over the steps of Figs 2/3 of |y_odeint(t_j) - y(t_j)| / |y(t_j)|"}};
+  ctx.summary["h_range"]["convergence"] = h_range(hs);
+}
+
+StudyPlan plan_convergence(const Scene& s) {
+  const double methods = static_cast<double>(s.texts("convergence.methods").size());
+  const double steps = (methods + 2) * steps_to_t_end(s, "convergence.h");  // and Euler on (14), (17)
+  return {steps, steps * kEvalsPerStep, static_cast<double>(s.reals("convergence.h").size()) * (4 + 3 * methods) * kCellBytes,
+          kOscillatorNs, kOscillatorNsNote};
+}
+
+void keys(Schema& s) {
+  s.texts("convergence.methods", oscillator_method_choices(), 1,
+          "methods of Fig 9 on the oscillator (registry names or labels); compensated_symplectic_euler uses "
+          "oscillator.k")
+      .reals("convergence.h", positive(), 3, "steps of the convergence study (Fig 9); each divides t_end");
+}
+
+}  // namespace
+
+Study convergence_study() {
+  return {"convergence", "000 Fig 9", {"fig9_convergence.csv", "orders.csv"},
+          {"convergence", "oscillator.q0", "oscillator.p0", "oscillator.k", "decay.alpha", "decay.y0", "gompertz.a",
+           "gompertz.b", "gompertz.y0"},
+          [](const Scene& s) { check_steps(s, "convergence.h", "convergence.methods"); }, run_convergence,
+          plan_convergence, keys};
+}
+
+}  // namespace geomint::euler_compensation

@@ -1,0 +1,48 @@
+// 000 Fig 2: explicit Euler on y' = -alpha y (14), in y and in ybar = Psi(y) of (15); and the field
+// (16) as printed, checked against (15).
+#include "geomint/systems/exponential_decay.hpp"
+#include "scalar_figure.hpp"
+
+namespace geomint::euler_compensation {
+namespace {
+
+void check_decay(const Scene& s) {
+  for (const char* key : {"decay.alpha", "decay.printed_alpha"})
+    if (s.real("decay.h") * s.real(key) > method_info("explicit_euler").real_bound)
+      s.reject("decay.h", std::string("explicit Euler on y' = -alpha y is unstable for h > 2/alpha = ") +
+                              format_double(2.0 / s.real(key)) + " (alpha = " + key + ")");
+}
+
+void run_decay(Context& ctx) {
+  const Scene& s = ctx.scene;
+  ctx.progress("Fig 2: explicit Euler in y and ybar");
+  const ExponentialDecay decay{s.real("decay.alpha")};
+  write_scalar_figure(ctx, "fig2_decay", "decay", decay, DecayCompensation{decay.alpha}, s.real("decay.y0"),
+                      s.real("decay.h"), s.integer("decay.steps"));
+  // (16) as printed, ybar' = -alpha, in place of the field of (15), at decay.printed_alpha (at the
+  // alpha = 1 of Fig 2 the two coincide): the error of Euler in ybar mapped back by (15).
+  const ExponentialDecay check{s.real("decay.printed_alpha")};
+  ctx.summary["reproduced"]["decay_printed_field_max_rel_err"] =
+      scalar_figure(check, DecayCompensation{check.alpha}, DecayFieldAsPrinted16{check.alpha}, s.real("decay.y0"),
+                    s.real("decay.h"), s.integer("decay.steps"))
+          .compensated_max_rel_err;
+}
+
+void keys(Schema& s) {
+  s.real("decay.h", positive(), "step of explicit Euler (Fig 2); h alpha <= 2 (stability)")
+      .integer("decay.steps", at_least(1), "number of steps shown in Fig 2")
+      .real("decay.printed_alpha", positive(),
+            "alpha at which the transformed field (16) as printed, ybar' = -alpha, is checked against (15) "
+            "(they coincide at alpha = 1); h alpha <= 2");
+}
+
+StudyPlan plan_decay(const Scene& s) { return plan_scalar(static_cast<double>(s.integer("decay.steps")), 2); }
+
+}  // namespace
+
+Study decay_study() {
+  return {"decay", "000 Fig 2", {"fig2_decay.csv", "fig2_decay_exact.csv"}, {"decay"}, check_decay, run_decay,
+          plan_decay, keys};
+}
+
+}  // namespace geomint::euler_compensation

@@ -1,0 +1,41 @@
+// 000 Fig 3: explicit Euler on the Gompertz equation (17), in y and in ybar of (18).
+#include <cmath>
+
+#include "geomint/systems/gompertz.hpp"
+#include "scalar_figure.hpp"
+
+namespace geomint::euler_compensation {
+namespace {
+
+void check_gompertz(const Scene& s) {
+  if (s.real("gompertz.h") * s.real("gompertz.b") > method_info("explicit_euler").real_bound)
+    s.reject("gompertz.h", "explicit Euler is unstable at the Gompertz equilibrium for h > 2/b = " +
+                               format_double(2.0 / s.real("gompertz.b")));
+  if (std::log(s.real("gompertz.y0")) >= s.real("gompertz.a") / s.real("gompertz.b"))
+    s.reject("gompertz.y0", "the transformation (18) needs 0 < y0 < e^{a/b}");
+}
+
+void run_gompertz(Context& ctx) {
+  const Scene& s = ctx.scene;
+  ctx.progress("Fig 3: explicit Euler in y and ybar");
+  const Gompertz gompertz{s.real("gompertz.a"), s.real("gompertz.b")};
+  const double y0 = s.real("gompertz.y0");
+  write_scalar_figure(ctx, "fig3_gompertz", "gompertz", gompertz, GompertzCompensation{gompertz.a, gompertz.b, y0},
+                      y0, s.real("gompertz.h"), s.integer("gompertz.steps"));
+}
+
+void keys(Schema& s) {
+  s.real("gompertz.h", positive(), "step of explicit Euler (Fig 3); h b <= 2 (stability at equilibrium)")
+      .integer("gompertz.steps", at_least(1), "number of steps shown in Fig 3");
+}
+
+StudyPlan plan_gompertz(const Scene& s) { return plan_scalar(static_cast<double>(s.integer("gompertz.steps")), 1); }
+
+}  // namespace
+
+Study gompertz_study() {
+  return {"gompertz", "000 Fig 3", {"fig3_gompertz.csv", "fig3_gompertz_exact.csv"}, {"gompertz"}, check_gompertz,
+          run_gompertz, plan_gompertz, keys};
+}
+
+}  // namespace geomint::euler_compensation
