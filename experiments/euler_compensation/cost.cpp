@@ -19,44 +19,6 @@
 namespace geomint::euler_compensation {
 namespace {
 
-// The first wall time at which the work-precision curves of two methods cross (both interpolated
-// linearly in log-log between their measured runs), and the error there; nullopt if they do not
-// cross where both are measured. Between the merged break points the difference of the log errors
-// is linear in log(wall), so a crossing is found exactly.
-struct Crossing {
-  double wall_s, err;
-};
-std::optional<Crossing> crossover(const std::vector<CostRun>& a, const std::vector<CostRun>& b) {
-  const auto by_wall = [](const CostRun& x, const CostRun& y) { return x.wall_s < y.wall_s; };
-  const double lo = std::max(std::min_element(a.begin(), a.end(), by_wall)->wall_s,
-                             std::min_element(b.begin(), b.end(), by_wall)->wall_s);
-  const double hi = std::min(std::max_element(a.begin(), a.end(), by_wall)->wall_s,
-                             std::max_element(b.begin(), b.end(), by_wall)->wall_s);
-  if (!(lo < hi)) return std::nullopt;
-  std::vector<double> walls{lo, hi};
-  for (const auto* runs : {&a, &b})
-    for (const CostRun& r : *runs)
-      if (lo <= r.wall_s && r.wall_s <= hi) walls.push_back(r.wall_s);
-  std::sort(walls.begin(), walls.end());
-  walls.erase(std::unique(walls.begin(), walls.end()), walls.end());
-  std::optional<std::tuple<double, double, double>> prev;  // (wall, log err_a - log err_b, log err_a)
-  for (double w : walls) {
-    const auto ea = error_at_wall(a, w), eb = error_at_wall(b, w);
-    if (!ea || !eb) continue;
-    const double la = std::log(*ea), d = la - std::log(*eb);
-    if (prev) {
-      const auto [w0, d0, la0] = *prev;
-      if (d0 == 0) return Crossing{w0, std::exp(la0)};
-      if (d0 * d < 0 || d == 0) {
-        const double wc = std::exp(std::log(w0) + d0 / (d0 - d) * (std::log(w) - std::log(w0)));
-        return Crossing{wc, *error_at_wall(a, wc)};
-      }
-    }
-    prev = std::make_tuple(w, d, la);
-  }
-  return std::nullopt;
-}
-
 void run_timing(Context& ctx) {
   const Scene& s = ctx.scene;
   ctx.progress("cost: timing");

@@ -46,4 +46,13 @@ inline double eigenvector_condition(const Mat<2>& M) {
   return s[0] / s[1];
 }
 
+// The boundary of a stable interval: `stable(lo)` holds and `stable(hi)` does not; 60 halvings of
+// [lo, hi] (below the spacing of doubles for any bracket of width < 2^8 times the bound) return the
+// last point found stable.
+template <class Stable>
+double stability_boundary(Stable&& stable, double lo, double hi) {
+  for (int it = 0; it < 60; ++it) (stable(0.5 * (lo + hi)) ? lo : hi) = 0.5 * (lo + hi);
+  return lo;
+}
+
 }  // namespace geomint

@@ -1,0 +1,53 @@
+// The library's analysis helpers that experiments share: the stability-bound bisection
+// (analysis/linear_stability.hpp) and the crossing of two work-precision curves (analysis/work_precision.hpp).
+#include <cmath>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "geomint/analysis/linear_stability.hpp"
+#include "geomint/analysis/work_precision.hpp"
+
+using namespace geomint;
+
+// Stormer-Verlet on q'' = -q: |trace| of its one-step matrix is |2 - (w h)^2|, stable for w h < 2.
+TEST(StabilityBoundary, BisectsStormerVerletToItsBoundOfTwo) {
+  const auto stable = [](double wh) { return std::abs(2 - wh * wh) < 2; };
+  const double b = stability_boundary(stable, 1.0, 3.0);
+  EXPECT_TRUE(stable(b));
+  EXPECT_FALSE(stable(std::nextafter(b, 4.0)) && stable(std::nextafter(std::nextafter(b, 4.0), 4.0)));
+  EXPECT_NEAR(b, 2.0, 4e-16);
+}
+
+TEST(StabilityBoundary, ReturnsTheLastStablePointOfTheBracket) {
+  // Stable below 0.3: 60 halvings of [0, 1] close in on the last double below it (the spacing there is 2^-54).
+  EXPECT_EQ(stability_boundary([](double x) { return x < 0.3; }, 0.0, 1.0), std::nextafter(0.3, 0.0));
+  EXPECT_EQ(stability_boundary([](double x) { return x <= 0.3; }, 0.0, 1.0), 0.3);
+}
+
+// Two power laws err = c w^-p in wall time w: a (order 1) cheap at low accuracy, b (order 2) below it.
+std::vector<CostRun> curve(double c, double p) {
+  std::vector<CostRun> runs;
+  for (double w : {1e-4, 1e-3, 1e-2, 1e-1}) runs.push_back({1 / w, 1 / w, w, 1 / w, c * std::pow(w, -p)});
+  return runs;
+}
+
+TEST(WorkPrecision, CrossoverOfTwoPowerLawsIsWhereTheyAreEqual) {
+  // 1e-4 / w = 1e-6 / w^2 at w = 1e-2, a break point of both curves.
+  const auto at_break = crossover(curve(1e-4, 1), curve(1e-6, 2));
+  ASSERT_TRUE(at_break.has_value());
+  EXPECT_NEAR(at_break->wall_s, 1e-2, 1e-15);
+  EXPECT_NEAR(at_break->err, 1e-2, 1e-15);
+  // 1e-4 / w = 3e-7 / w^2 at w = 3e-3, between break points (exact: both curves are linear in log-log).
+  const auto inside = crossover(curve(1e-4, 1), curve(3e-7, 2));
+  ASSERT_TRUE(inside.has_value());
+  EXPECT_NEAR(inside->wall_s, 3e-3, 1e-15);
+  EXPECT_NEAR(inside->err, 1e-4 / 3e-3, 1e-12);
+}
+
+TEST(WorkPrecision, NoCrossoverWhereTheCurvesDoNotMeetOrDoNotOverlap) {
+  EXPECT_FALSE(crossover(curve(1e-4, 1), curve(1e-9, 1)).has_value());  // parallel, apart
+  std::vector<CostRun> late = curve(1e-6, 2);
+  for (auto& r : late) r.wall_s *= 1e6;  // no common wall-time range
+  EXPECT_FALSE(crossover(curve(1e-4, 1), late).has_value());
+}
