@@ -1,0 +1,323 @@
+// 000 Fig. 4: Stormer-Verlet (26)-(28) against the Rowlands method (30)-(37) on the elastic
+// pendulum (73): energy error (50) and phase-space error at t_max against h, for several initial
+// conditions, of every method the scene names (`methods`), and the orders fitted to them per initial
+// condition and norm. Phase errors against an odeint Bulirsch-Stoer reference at t_end, one per
+// initial condition; one task per (initial condition, h), all methods in it.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <optional>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include "geomint/core/integrate.hpp"
+#include "geomint/core/numerical_failure.hpp"
+#include "geomint/methods/methods.hpp"
+#include "geomint/methods/registry.hpp"
+#include "geomint/observables/error_norms.hpp"
+#include "geomint/observables/order_fit.hpp"
+#include "geomint/reference/odeint_reference.hpp"
+#include "geomint/runner/distributed_map.hpp"
+#include "geomint/systems/counting.hpp"
+#include "rowlands_convergence.hpp"
+
+namespace geomint::rowlands_convergence {
+namespace {
+
+// The label of a method (CSV columns, summary keys) and the prefix of its orders.
+std::string order_name(const std::string& method) {
+  const std::string label = label_of(method);
+  return label == "kernel" ? "kernel_unprocessed" : label;  // (the kernel's orders keep their published key)
+}
+
+struct Errors {
+  double energy_rms = 0, energy_max = 0;  // of H(z_j) - H(z_0), j = 0..N: eq. (50) and the max
+  double phase = 0;                       // |z_N - z(t_N)|_2 against the reference
+  std::int64_t force_evals = 0;           // with postprocessing at every step
+  auto fields() { return std::tie(energy_rms, energy_max, phase, force_evals); }  // (a record of runner/distributed_map.hpp)
+};
+
+// What the convergence study records (the scene's `observables`).
+struct Observables {
+  bool energy = false;  // "energy_error": H along the run (postprocessed at every step)
+  bool phase = false;   // "phase_error": z_N against the reference (only then is a reference computed)
+};
+
+Observables observables_of(const Scene& s) {
+  const auto named = s.texts("observables");
+  const auto has = [&](const char* o) { return std::find(named.begin(), named.end(), o) != named.end(); };
+  return {has("energy_error"), has("phase_error")};
+}
+
+// One run of a method; z_ref is read only for the phase error.
+template <class Sys>
+Errors convergence_run(const std::string& method, const Sys& sys, const State& z0, const State* z_ref, double h,
+                       std::int64_t n, Observables obs) {
+  Errors e;
+  const Counting<Sys> counted{sys, &e.force_evals};
+  const double H0 = sys.H(z0);
+  ErrorSeries energy;
+  const State zN = with_method(method, counted, [&](const auto& m) {
+    if (!obs.energy) return integrate(m, z0, h, n);  // pre once, post once (eq. (23))
+    return integrate(m, z0, h, n, [&](std::int64_t, const State& z) { energy.add(sys.H(z) - H0); });
+  });
+  if (obs.energy) e.energy_rms = energy.rms50(), e.energy_max = energy.max_abs();
+  if (obs.phase) e.phase = phase_distance(zN, *z_ref);
+  return e;
+}
+
+// The ranges of the fitted orders (orders_by_initial) over all initial conditions and norms, of the
+// methods whose kernel is of order 2 (Stormer-Verlet, the Rowlands kernel alone and processed), by
+// their declared order: {"order_2": {min, max}, "order_4": {min, max}}.
+json order_ranges(const std::vector<std::string>& methods, const json& by_initial) {
+  std::map<int, std::pair<double, double>> ranges;
+  for (const auto& m : methods) {
+    if (method_info(m).kernel_order != 2) continue;
+    auto& [lo, hi] = ranges.try_emplace(method_info(m).order, std::numeric_limits<double>::infinity(),
+                                        -std::numeric_limits<double>::infinity()).first->second;
+    for (const auto& o : by_initial)
+      for (const char* suffix : {"_energy", "_energy_max", "_phase"})
+        if (o.contains(order_name(m) + suffix)) {
+          const double v = o[order_name(m) + suffix].get<double>();
+          if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+        }
+  }
+  json out = json::object();
+  for (const auto& [order, range] : ranges)
+    if (range.first <= range.second) out["order_" + std::to_string(order)] = {{"min", range.first}, {"max", range.second}};
+  return out;
+}
+
+// 000 (32)-(33) as printed against the kernel alone: {min, max, h} of the ratio of their errors at the
+// smallest h, over all initial conditions and the recorded norms (to leading order the error is
+// proportional to 1/12 - c: the analysis predicts (1/12 - 1/24) / (1/12) = 1/2); nullopt unless the
+// convergence study runs both. runs[i * hs.size() + j][k]: initial condition i, step hs[j], method k.
+std::optional<json> printed_over_kernel(const std::vector<std::string>& methods,
+                                        const std::vector<std::vector<Errors>>& runs, const std::vector<double>& hs,
+                                        std::size_t n_initial, Observables obs) {
+  const auto index_of = [&](const char* name) {
+    const auto it = std::find_if(methods.begin(), methods.end(), [&](const auto& m) { return label_of(m) == label_of(name); });
+    return it == methods.end() ? std::nullopt : std::optional(static_cast<std::size_t>(it - methods.begin()));
+  };
+  const auto kp = index_of("rowlands_printed"), kk = index_of("rowlands_kernel");
+  if (!kp || !kk) return std::nullopt;
+  const std::size_t j_min = static_cast<std::size_t>(std::min_element(hs.begin(), hs.end()) - hs.begin());
+  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  for (std::size_t i = 0; i < n_initial; ++i) {
+    const Errors &printed = runs[i * hs.size() + j_min][*kp], &kernel = runs[i * hs.size() + j_min][*kk];
+    std::vector<std::pair<double, double>> pairs;
+    if (obs.phase) pairs.emplace_back(printed.phase, kernel.phase);
+    if (obs.energy) pairs.emplace_back(printed.energy_rms, kernel.energy_rms);
+    for (const auto& [a, b] : pairs)
+      if (b != 0 && std::isfinite(a / b)) lo = std::min(lo, a / b), hi = std::max(hi, a / b);
+  }
+  if (!(lo <= hi)) return std::nullopt;
+  return json{{"min", lo}, {"max", hi}, {"h", hs[j_min]}};
+}
+
+// The reference at t_end of an initial condition, and its self-check (odeint Bulirsch-Stoer).
+struct Ref {
+  State z;
+  double self_check;
+  auto fields() { return std::tie(z.q[0], z.q[1], z.p[0], z.p[1], self_check); }
+};
+
+// References, one per initial condition, and their self-check at 100x tighter tolerances (none
+// unless phase errors are recorded; reference.csv); `self_check` becomes the largest of them.
+template <class Sys>
+std::vector<Ref> references(Context& ctx, const Sys& sys, const std::vector<std::vector<double>>& initial,
+                            Observables obs, double t_end, double rtol, double atol, double& self_check) {
+  if (obs.phase) ctx.progress("references (odeint Bulirsch-Stoer)");
+  const auto refs = distributed_map(obs.phase ? initial.size() : 0, [&](std::size_t i) {
+    const State z0 = state_of(initial[i]);
+    const State a = reference_solution(sys, z0, t_end, rtol, atol);
+    const State b = reference_solution(sys, z0, t_end, rtol / 100, atol / 100);
+    return Ref{a, phase_distance(a, b)};
+  });
+  Csv ref_csv({"initial", "x", "y", "px", "py", "self_check"});
+  for (std::size_t i = 0; i < refs.size(); ++i) {
+    ref_csv.row(static_cast<std::int64_t>(i), refs[i].z.q[0], refs[i].z.q[1], refs[i].z.p[0], refs[i].z.p[1],
+                refs[i].self_check);
+    self_check = std::max(self_check, refs[i].self_check);
+  }
+  if (obs.phase) ctx.write("reference.csv", ref_csv);
+  return refs;
+}
+
+// Convergence: one task per (initial condition, h), all methods in it (fig4_convergence.csv).
+// runs[i * hs.size() + j][k]: initial condition i, step hs[j], method k.
+template <class Sys>
+std::vector<std::vector<Errors>> convergence_runs(Context& ctx, const Sys& sys, const std::vector<double>& hs,
+                                                  const std::vector<std::vector<double>>& initial,
+                                                  const std::vector<std::string>& methods, Observables obs,
+                                                  double t_end, const std::vector<Ref>& refs) {
+  ctx.progress("Fig. 4: convergence");
+  const std::size_t nh = hs.size();
+  const auto runs = distributed_map(initial.size() * nh, [&](std::size_t task) {
+    const std::size_t i = task / nh;
+    const double h = hs[task % nh];
+    std::vector<Errors> out;
+    for (const auto& m : methods)
+      out.push_back(convergence_run(m, sys, state_of(initial[i]), obs.phase ? &refs[i].z : nullptr, h,
+                                    steps_to(t_end, h), obs));
+    return out;
+  });
+  std::vector<std::string> columns = {"initial", "h", "steps"};
+  for (const auto& m : methods) {
+    if (obs.energy) columns.insert(columns.end(), {label_of(m) + "_energy_rms", label_of(m) + "_energy_max"});
+    if (obs.phase) columns.push_back(label_of(m) + "_phase");
+    columns.push_back(label_of(m) + "_evals");
+  }
+  Csv conv(columns);
+  for (std::size_t task = 0; task < runs.size(); ++task) {
+    conv << static_cast<std::int64_t>(task / nh) << hs[task % nh] << steps_to(t_end, hs[task % nh]);
+    for (const auto& e : runs[task]) {
+      if (obs.energy) conv << e.energy_rms << e.energy_max;
+      if (obs.phase) conv << e.phase;
+      conv << e.force_evals;
+    }
+    conv.end_row();
+  }
+  ctx.write("fig4_convergence.csv", conv);
+  return runs;
+}
+
+// The fitted orders: per initial condition {name + norm suffix: order}, the fits of initial[0], and
+// the smallest phase error plotted.
+struct Orders {
+  json by_initial, fits;
+  double min_phase;
+};
+
+// Orders, per initial condition (orders.csv); the reference error bounds what can be fitted.
+template <class Sys>
+Orders fit_orders(Context& ctx, const Sys& sys, const std::vector<double>& hs,
+                  const std::vector<std::vector<double>>& initial, const std::vector<std::string>& methods,
+                  Observables obs, const std::vector<std::vector<Errors>>& runs, double self_check) {
+  const std::size_t nh = hs.size();
+  json fits;
+  const double energy_floor = roundoff_floor();
+  const double phase_floor = std::max(100.0 * self_check, energy_floor);
+  Csv order_csv({"initial", "name", "order", "log10_c", "r2", "points", "h_min", "h_max"});
+  json by_initial = json::array();
+  double min_phase = std::numeric_limits<double>::infinity();  // smallest phase error plotted
+  for (std::size_t i = 0; i < initial.size(); ++i) {
+    json o;
+    for (std::size_t k = 0; k < methods.size(); ++k) {
+      const std::string name = order_name(methods[k]);
+      std::vector<double> rms, mx, ph;
+      for (std::size_t j = 0; j < nh; ++j) {
+        const Errors& e = runs[i * nh + j][k];
+        rms.push_back(e.energy_rms), mx.push_back(e.energy_max), ph.push_back(e.phase);
+      }
+      const double H0 = std::abs(sys.H(state_of(initial[i])));
+      std::vector<std::tuple<const char*, const std::vector<double>*, double>> fitted;
+      if (obs.energy)
+        fitted = {{"_energy", &rms, energy_floor * std::max(H0, 1.0)}, {"_energy_max", &mx, energy_floor * std::max(H0, 1.0)}};
+      if (obs.phase) fitted.emplace_back("_phase", &ph, phase_floor);
+      for (const auto& [suffix, err, floor] : fitted) {
+        const OrderFit f = [&] {
+          try {
+            return fit_order(hs, *err, floor, (name + suffix).c_str());
+          } catch (const NumericalFailure& e) {
+            throw NumericalFailure(std::string(e.what()) + " (initial condition " + std::to_string(i) + ", floor " +
+                                     format_double(floor) + ": the errors reach round-off or the reference's accuracy there; add larger h)");
+          }
+        }();
+        o[name + suffix] = f.order;
+        if (i == 0) fits[name + suffix] = to_json(f);
+        order_csv.row(static_cast<std::int64_t>(i), name + suffix, f.order, f.log10_c, f.r2, f.points, f.h_min, f.h_max);
+        if (std::string(suffix) == "_phase")
+          for (double e : *err) min_phase = std::min(min_phase, e);
+      }
+    }
+    by_initial.push_back(o);
+  }
+  ctx.write("orders.csv", order_csv);
+  return {by_initial, fits, min_phase};
+}
+
+// What the study reports in summary.json: the reference's margin, the orders and their ranges, the
+// norms, the methods and the scene.
+void summarize(Context& ctx, const std::vector<double>& hs, std::size_t n_initial,
+               const std::vector<std::string>& methods, Observables obs, const std::vector<std::vector<Errors>>& runs,
+               const Orders& orders, double self_check) {
+  const Scene& s = ctx.scene;
+  const auto& [by_initial, fits, min_phase] = orders;
+  json reproduced;
+  if (obs.phase) {
+    reproduced["reference_self_check"] = self_check;
+    reproduced["reference_margin"] = min_phase / self_check;  // must be >= 100 (checked by the tests)
+  }
+
+  if (!reproduced.empty()) ctx.summary["reproduced"] = reproduced;
+  ctx.summary["orders"] = by_initial[0];
+  ctx.summary["orders_by_initial"] = by_initial;
+  ctx.summary["fits"] = fits;
+  json norms;
+  if (obs.energy) {
+    norms["energy"] = "eq. (50): sqrt(sum_{j=0}^{N} (H(z_j) - H(z_0))^2 / N), z_j postprocessed at every step";
+    norms["energy_max"] = "max over j of |H(z_j) - H(z_0)|";
+  }
+  if (obs.phase) norms["phase"] = "|z_N - z(t_end)|_2 over (x, y, px, py), against the odeint Bulirsch-Stoer reference";
+  ctx.summary["norms"] = norms;
+
+  ctx.summary["methods"]["convergence"] = labels_of(methods);
+  for (const auto& m : methods) ctx.summary["declared_orders"][label_of(m)] = method_info(m).order;  // the registry's
+  scene_summary(ctx);
+  ctx.summary["pendulum"] = {{"y_equilibrium", hanging_equilibrium_y(pendulum_of(s))}};
+  ctx.summary["order_ranges"] = order_ranges(methods, by_initial);
+  if (const auto ratio = printed_over_kernel(methods, runs, hs, n_initial, obs)) ctx.summary["printed_over_kernel"] = *ratio;
+}
+
+template <class Sys>
+void convergence_with(Context& ctx, const Sys& sys) {
+  const Scene& s = ctx.scene;
+  const auto hs = s.reals("h");
+  const auto initial = s.real_rows("initial");
+  const auto methods = s.texts("methods");
+  const Observables obs = observables_of(s);
+  const double t_end = s.real("t_end"), rtol = s.real("reference.rtol"), atol = s.real("reference.atol");
+  double self_check = 0;
+  const auto refs = references(ctx, sys, initial, obs, t_end, rtol, atol, self_check);
+  const auto runs = convergence_runs(ctx, sys, hs, initial, methods, obs, t_end, refs);
+  const Orders orders = fit_orders(ctx, sys, hs, initial, methods, obs, runs, self_check);
+  summarize(ctx, hs, initial.size(), methods, obs, runs, orders, self_check);
+}
+
+void run_convergence(Context& ctx) {
+  with_elastic_pendulum(pendulum_of(ctx.scene), [&](const auto& sys) { convergence_with(ctx, sys); });
+}
+
+StudyPlan plan_convergence(const Scene& s) {
+  const double runs = static_cast<double>(s.real_rows("initial").size() * s.texts("methods").size());
+  const double steps = runs * steps_per_run(s);
+  const double rows = static_cast<double>(s.real_rows("initial").size() * s.reals("h").size());
+  return {steps, steps * kEvalsPerStep, rows * (3 + 4 * static_cast<double>(s.texts("methods").size())) * kCellBytes,
+          kNsPerStep, "odeint reference steps not counted; ns per step: the processed Rowlands method (paper-scene summary timing)"};
+}
+
+void keys(Schema& s) {
+  s.texts("methods", pendulum_method_choices(), 1, "methods of the convergence study (registry names or labels)")
+      .texts("observables", {"energy_error", "phase_error"}, 1,
+             "what the convergence study records: energy_error (eq. (50) and the max over the run), phase_error "
+             "(|z_N - z(t_end)|_2 against the odeint reference, computed only if named)");
+}
+
+}  // namespace
+
+Study convergence_study() {
+  return {"convergence", "000 Fig 4", {"fig4_convergence.csv", "orders.csv", "reference.csv"},
+          {"initial", "t_end", "h", "methods", "observables", "pendulum", "reference"},
+          [](const Scene& s) {
+            check_common(s);
+            check_methods(s, "methods");
+          },
+          run_convergence, plan_convergence, keys};
+}
+
+}  // namespace geomint::rowlands_convergence
