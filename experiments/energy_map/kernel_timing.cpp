@@ -1,0 +1,172 @@
+// The cost of the map of 000 Fig. 6: the batched kernel (from the map of this run, else on a sample of
+// batches) against the straightforward scalar loop, in ns per trajectory-step and core, per coordinate
+// system; and each kernel against its target and the hardware ceiling the scene gives (summary timing).
+#include <algorithm>
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "energy_map.hpp"
+#include "geomint/runner/timing.hpp"
+#include "geomint/runner/timing_report.hpp"
+#include "geomint/sweep/parallel_map.hpp"
+
+namespace geomint::energy_map {
+namespace {
+
+void check_timing(const Scene& s) {
+  check_map(s);
+  for (const char* key : {"timing.ceiling.cartesian", "timing.ceiling.polar"})
+    if (s.reals(key).size() != 2 || !(s.reals(key)[0] <= s.reals(key)[1])) s.reject(key, "must be [low, high] with low <= high");
+}
+
+StudyPlan plan_timing(const Scene& s) {
+  const GridCount n = grid_count(s);
+  const double repeats = static_cast<double>(s.integer("timing.repeats"));
+  // the kernel's sample (only when the map study does not run in the same process: an upper bound), both systems
+  const double kernel = 2 * repeats * std::min(static_cast<double>(s.integer("timing.kernel_batches")), n.batches) *
+                        kEnergyMapBatch * n.steps;
+  const double scalar = 2 * repeats * std::min(static_cast<double>(s.integer("timing.scalar_points")), n.points) *
+                        static_cast<double>(s.integer("timing.scalar_steps"));
+  const double steps = kernel + scalar, bytes = n.batches * kEnergyMapBatch * 2 * sizeof(double);
+  const double ns = steps > 0 ? (kernel * kKernelNsPerStep + scalar * kScalarNsPerStep) / steps : 0;
+  return {steps, steps, bytes, ns,
+          std::string("one call per timed run (runs lengthened to >= 10 ms not counted); the kernel sample only "
+                      "without the map study; ") + kNsNote};
+}
+
+// The batched kernel on the batches batch(0), ..., batch(count - 1) of the grid, in parallel.
+template <class BatchIndex>
+std::vector<std::vector<EnergyMapPoint>> run_batches(EnergyMapKernel kernel, Coordinates c, const MapSetup& g,
+                                                     std::size_t count, BatchIndex batch) {
+  return parallel_map(count, [&](std::size_t b) {
+    std::vector<EnergyMapPoint> out(kEnergyMapBatch);
+    const std::size_t at = batch(b) * kEnergyMapBatch;
+    kernel(c, g.P, &g.x0[at], &g.y0[at], out.data());
+    return out;
+  });
+}
+
+// The scalar loop, one trajectory at a time, single thread: ns per step and the spread, per coordinate system.
+void time_scalar_loop(Context& ctx, const MapSetup& g, int repeats, json& scalar_ns, json& scalar_spread) {
+  const Scene& s = ctx.scene;
+  ctx.progress("cost: scalar reference loop");
+  const auto nsc = static_cast<std::size_t>(
+      std::min<std::int64_t>(s.integer("timing.scalar_points"), static_cast<std::int64_t>(g.npoints)));
+  EnergyMapParams Ps = g.P;
+  Ps.steps = s.integer("timing.scalar_steps");
+  for (const auto c : {Coordinates::cartesian, Coordinates::polar}) {
+    const RunTime t = time_runs(repeats, [&] {
+      for (std::size_t i = 0; i < nsc; ++i) {
+        const std::size_t at = i * (g.npoints / nsc);
+        const auto r = energy_map_scalar(c, Ps, g.x0[at], g.y0[at]);
+        do_not_optimize(r.eps);
+      }
+    });
+    scalar_ns[coordinates_name(c)] = 1e9 * t.seconds() / (static_cast<double>(nsc) * static_cast<double>(Ps.steps));
+    scalar_spread[coordinates_name(c)] = t.spread();
+  }
+}
+
+// Each kernel against its target and the hardware ceiling (the scene's estimates).
+void against_targets(json& timing, const Scene& s, double ns_cart, double ns_polar) {
+  for (const auto c : {Coordinates::cartesian, Coordinates::polar}) {
+    const std::string name = coordinates_name(c);
+    const double ns = c == Coordinates::cartesian ? ns_cart : ns_polar;
+    const auto ceiling = s.reals("timing.ceiling." + name);
+    timing["ceiling_ns"][name] = {{"min", ceiling[0]}, {"max", ceiling[1]}};
+    timing["ceiling_fraction"][name] = {{"min", ceiling[0] / ns}, {"max", ceiling[1] / ns}};
+    timing["target_verdict"][name] = ns <= s.real("timing.target." + name) ? "meets" : "misses";
+  }
+}
+
+// The batched kernel (the map study's wall time, or a sample of batches), the scalar loop, and the kernels
+// against their targets: summary timing.
+void run_timing(Context& ctx, const MapCost& map) {
+  const Scene& s = ctx.scene;
+  const MapSetup g = map_setup(s);
+  const auto kernels = energy_map_kernels();
+  json timing;
+  timing["kernel_isa"] = kernels.front().isa;
+  timing["kernel_max_turn"] = kEnergyMapMaxTurn;  // polar: sin/cos by angle addition up to this turn
+
+  // The kernel: wall time times threads over the trajectory-steps computed.
+  const int repeats = static_cast<int>(s.integer("timing.repeats"));
+  double wall_cart = map.wall_cart, wall_polar = map.wall_polar, steps_cart = map.steps_cart, steps_polar = map.steps_polar;
+  json kernel_spread = nullptr;  // the sample's spread; the map's wall time is one run, not repeated
+  std::string kernel_method = "map: wall time of the batched kernel in the map study of this run, times threads, over "
+                              "the trajectory-steps it computed (the map is one long run, not a repeated measurement: "
+                              "no minimum over repeats and no spread)";
+  if (!map.ran) {
+    ctx.progress("cost: batched kernel on a sample of batches");
+    const auto count = std::min<std::size_t>(static_cast<std::size_t>(s.integer("timing.kernel_batches")), g.nbatches);
+    std::vector<std::size_t> batches(count);
+    std::size_t trajectories = 0;
+    for (std::size_t i = 0; i < count; ++i) {
+      batches[i] = i * g.nbatches / count;
+      trajectories += std::min<std::size_t>(kEnergyMapBatch, g.npoints - batches[i] * kEnergyMapBatch);
+    }
+    kernel_spread = json::object();
+    for (const auto c : {Coordinates::cartesian, Coordinates::polar}) {
+      const RunTime t = time_runs(repeats, [&] {
+        do_not_optimize(run_batches(kernels.front().run, c, g, count, [&](std::size_t b) { return batches[b]; }));
+      });
+      (c == Coordinates::cartesian ? wall_cart : wall_polar) = t.seconds();
+      kernel_spread[coordinates_name(c)] = t.spread();
+    }
+    steps_cart = steps_polar = static_cast<double>(trajectories) * static_cast<double>(g.P.steps);
+    timing["kernel_sample"] = {{"batches", count}, {"trajectories", trajectories},
+                               {"wall_s", {{"cartesian", wall_cart}, {"polar", wall_polar}}}};
+    kernel_method = "sample: the map study did not run in this process; wall time of the batched kernel on "
+                    "timing.kernel_batches batches of the grid (evenly spaced, t_max/dt steps each; runs after "
+                    "an untimed warm-up; the minimum over timing.repeats runs), times threads, over their trajectory-steps";
+  }
+  const double ns_cart = 1e9 * wall_cart * ctx.threads / steps_cart;
+  const double ns_polar = 1e9 * wall_polar * ctx.threads / steps_polar;
+
+  json scalar_ns, scalar_spread;
+  time_scalar_loop(ctx, g, repeats, scalar_ns, scalar_spread);
+  timing["ns_per_step_per_core"] = {{"cartesian", ns_cart}, {"polar", ns_polar}};
+  timing["scalar_ns_per_step"] = scalar_ns;
+  timing["scalar_ns_per_step_spread"] = scalar_spread;
+  timing["kernel_sample_spread"] = kernel_spread;
+  timing["speedup_vs_scalar"] = {{"cartesian", scalar_ns["cartesian"].get<double>() / ns_cart},
+                                 {"polar", scalar_ns["polar"].get<double>() / ns_polar}};
+  timing["map_wall_s"] = map.ran ? json{{"cartesian", wall_cart}, {"polar", wall_polar}} : json(nullptr);
+  timing["method"] = "kernel timed on the " + kernel_method +
+                     "; scalar: the straightforward scalar loop (one trajectory at a time) on timing.scalar_points "
+                     "initial conditions of timing.scalar_steps steps, " + timing_method_text(repeats);
+  timing["kernel_isa_name"] = kernels.front().name;
+  timing["threads"] = ctx.threads;
+  if (map.ran) timing["map_wall_total_s"] = wall_cart + wall_polar;
+  // 2 n_x n_y J: one run per coordinate system and grid point
+  timing["trajectory_steps"] = 2.0 * static_cast<double>(g.npoints) * static_cast<double>(g.P.steps);
+  against_targets(timing, s, ns_cart, ns_polar);
+  ctx.summary["timing"] = timing;
+}
+
+void keys(Schema& s) {
+  s.integer("timing.scalar_points", at_least(1), "initial conditions timed with the scalar reference loop")
+      .integer("timing.scalar_steps", at_least(1), "steps of each scalar timing run")
+      .integer("timing.kernel_batches", at_least(1),
+               "batches of 64 trajectories (evenly spaced over the grid, t_max/dt steps each) on which the batched "
+               "kernel is timed when the map study does not run in the same process")
+      .real("timing.target.cartesian", positive(), "the time per trajectory-step and core set as the goal of the Cartesian kernel [ns]")
+      .real("timing.target.polar", positive(), "the same for the polar kernel [ns]")
+      .reals("timing.ceiling.cartesian", positive(), 2,
+             "[low, high] hardware ceiling of the Cartesian kernel [ns per trajectory-step and core]: an estimate from "
+             "performance measurements (bench/README.md), not measured by the run")
+      .reals("timing.ceiling.polar", positive(), 2, "the same for the polar kernel");
+}
+
+}  // namespace
+
+Study kernel_timing_study(const MapCost& map) {
+  std::vector<std::string> uses = kMapKeys;
+  uses.push_back("timing");
+  return {"timing", "cost: batched kernel against the scalar loop, ns per step", {}, uses, check_timing,
+          [&map](Context& ctx) { run_timing(ctx, map); }, plan_timing, keys};
+}
+
+}  // namespace geomint::energy_map
