@@ -19,6 +19,7 @@
 #include "geomint/methods/registry.hpp"
 #include "geomint/observables/order_fit.hpp"
 #include "geomint/runner/distributed_map.hpp"
+#include "geomint/runner/summary.hpp"
 #include "geomint/runner/timing.hpp"
 #include "geomint/runner/timing_report.hpp"
 #include "geomint/systems/elastic_pendulum.hpp"
@@ -71,7 +72,6 @@ struct StartCosts {
 StartCosts start_costs(const std::vector<std::vector<double>>& starts, const ElasticPendulumParams& pendulum,
                        const std::vector<std::vector<std::vector<CostRun>>>& curves) {
   const std::size_t ns = starts.size();
-  const auto or_null = [](std::optional<double> v) { return v ? json(*v) : json(nullptr); };
   const double u = std::numeric_limits<double>::epsilon();
   json start_list = json::array(), cost_list = json::array();
   int polar_faster = 0, cartesian_faster = 0, compared = 0;
@@ -88,8 +88,7 @@ StartCosts start_costs(const std::vector<std::vector<double>>& starts, const Ela
       std::vector<double> h, e;
       for (const CostRun& run : curves[c][i]) h.push_back(run.h), e.push_back(run.err);
       st["order"][coordinates_name(systems[c])] = fit_order(h, e, roundoff_floor(), "cost").order;
-      st["eps_range"][coordinates_name(systems[c])] = {{"min", *std::min_element(e.begin(), e.end())},
-                                                       {"max", *std::max_element(e.begin(), e.end())}};
+      st["eps_range"][coordinates_name(systems[c])] = range_of(e);
     }
     // The target: the geometric middle of the error range both systems cover at this start.
     const auto range = [&](std::size_t c) {
@@ -177,8 +176,7 @@ void run_cost(Context& ctx) {
   for (const auto& st : start_list) reference_error = std::max(reference_error, st["reference_error"].get<double>());
   ctx.summary["work_precision"] = {{"starts", start_list}, {"start_count", ns}, {"t_end", t_end},
                                    {"reference_error_max", reference_error},
-                                   {"dt_range", {{"min", *std::min_element(dts.begin(), dts.end())},
-                                                 {"max", *std::max_element(dts.begin(), dts.end())}}},
+                                   {"dt_range", range_of(dts)},
                                    {"error", "eq. (50) over [0, cost.t_end] against H_0 = H(z_0), per start"}};
   json& timing = ctx.summary["timing"]["work_precision"];
   timing = {{"ns_per_step", ns_per_step},

@@ -10,6 +10,7 @@
 #include "geomint/observables/error_norms.hpp"
 #include "geomint/observables/order_fit.hpp"
 #include "geomint/runner/distributed_map.hpp"
+#include "geomint/runner/summary.hpp"
 #include "geomint/systems/exponential_decay.hpp"
 #include "geomint/systems/gompertz.hpp"
 

@@ -12,6 +12,7 @@
 #include "geomint/analysis/work_precision.hpp"
 #include "geomint/core/integrate.hpp"
 #include "geomint/runner/distributed_map.hpp"
+#include "geomint/runner/summary.hpp"
 #include "geomint/runner/timing.hpp"
 #include "geomint/runner/timing_report.hpp"
 #include "oscillator_method.hpp"
@@ -83,7 +84,6 @@ void run_timing(Context& ctx) {
                                               [](const CostRun& a, const CostRun& b) { return a.wall_s < b.wall_s; });
     w_lo = std::max(w_lo, lo->wall_s), w_hi = std::min(w_hi, hi->wall_s);
   }
-  const auto or_null = [](std::optional<double> v) { return v ? json(*v) : json(nullptr); };
   if (w_lo < w_hi) {
     const double w_star = std::sqrt(w_lo * w_hi);
     json at_wall{{"wall_s", w_star}};

@@ -76,10 +76,6 @@ void check_steps(const Scene& s, const char* key, const char* methods_key) {
   }
 }
 
-json h_range(const std::vector<double>& hs) {
-  return {{"min", *std::min_element(hs.begin(), hs.end())}, {"max", *std::max_element(hs.begin(), hs.end())}, {"count", hs.size()}};
-}
-
 double steps_to_t_end(const Scene& s, const char* key) {
   double steps = 0;
   for (double h : s.reals(key)) steps += s.real("convergence.t_end") / h;

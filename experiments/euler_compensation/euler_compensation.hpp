@@ -54,9 +54,6 @@ void check_oscillator_step(const Scene& s, const char* key, double h);
 // once, every step below its bound (and (82) defined, if named), and each h dividing t_end.
 void check_steps(const Scene& s, const char* key, const char* methods_key);
 
-// The smallest and largest of a scene's list of steps, and their number.
-json h_range(const std::vector<double>& hs);
-
 // ---- --plan: steps in double; ns per step are constants measured on the paper scene
 // (results/euler_compensation, summary timing.ns_per_step: symplectic Euler with (82), the most
 // expensive, for the oscillator; study wall time over its steps for Figs 2, 3).

@@ -16,6 +16,7 @@
 #include "geomint/observables/error_norms.hpp"
 #include "geomint/reference/odeint_reference.hpp"
 #include "geomint/runner/distributed_map.hpp"
+#include "geomint/runner/summary.hpp"
 #include "geomint/runner/timing.hpp"
 #include "geomint/runner/timing_report.hpp"
 #include "geomint/systems/counting.hpp"
@@ -31,7 +32,6 @@ namespace {
 // measured step sizes do not reach it (log-log interpolation, never extrapolated).
 json cost_summary(const std::vector<std::string>& methods, const std::vector<std::vector<CostRun>>& all,
                   const std::vector<double>& targets, double budget) {
-  const auto or_null = [](std::optional<double> v) { return v ? json(*v) : json(nullptr); };
   json out;
   for (std::size_t k = 0; k < methods.size(); ++k) {
     const std::vector<CostRun> runs = by_decreasing_h(all[k]);

@@ -8,6 +8,7 @@
 #include "geomint/methods/methods.hpp"
 #include "geomint/methods/registry.hpp"
 #include "geomint/methods/scene_methods.hpp"
+#include "geomint/runner/summary.hpp"
 #include "geomint/systems/counting.hpp"
 
 namespace geomint::rowlands_convergence {
@@ -28,8 +29,7 @@ json labels_of(const std::vector<std::string>& methods) {
 
 void scene_summary(Context& ctx) {
   const auto hs = ctx.scene.reals("h");
-  ctx.summary["h_range"] = {{"min", *std::min_element(hs.begin(), hs.end())},
-                            {"max", *std::max_element(hs.begin(), hs.end())}, {"count", hs.size()}};
+  ctx.summary["h_range"] = h_range(hs);
   ctx.summary["initial_conditions"] = ctx.scene.real_rows("initial").size();
 }
 

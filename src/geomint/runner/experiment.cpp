@@ -75,6 +75,12 @@ double available_memory_bytes() {
 
 }  // namespace
 
+const Published& Context::published(const std::string& key) const {
+  for (const Published& e : published_entries)
+    if (e.key == key) return e;
+  throw std::logic_error("published.toml of " + experiment + " has no entry " + key);
+}
+
 void Context::progress(std::string_view what) const {
   const double now = seconds_since_start();
   if (!::isatty(STDERR_FILENO) && now - last_line_ < 10) return;
@@ -627,6 +633,7 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
   Context ctx(*scene, *out, threads);
   ctx.resume = mpi::all_max(results->resumed()) != 0;  // (rank 0's staging directory decides)
   ctx.experiment = name;
+  ctx.published_entries = published;
   ctx.resume_command = (mpi::size() > 1 ? "mpirun -np " + std::to_string(mpi::size()) + " " : std::string()) +
                        resume_command(argc, argv);  // (any -np resumes)
   try {

@@ -22,6 +22,7 @@
 #include "geomint/core/numerical_failure.hpp"
 #include "geomint/io/atomic_file.hpp"
 #include "geomint/io/csv.hpp"
+#include "geomint/runner/published.hpp"
 #include "geomint/scene/scene.hpp"
 
 namespace geomint {
@@ -40,6 +41,11 @@ class Context {
   nlohmann::ordered_json summary = nlohmann::ordered_json::object();
 
   void write(const std::string& name, const Csv& csv) { out.write(name, csv.str()); }
+  // The entries of the experiment's published.toml, as the runner read and checked them before any
+  // study ran (it sets them against the summary after the run: runner/published.hpp); and the entry
+  // `key` (std::logic_error if there is none).
+  std::vector<Published> published_entries;
+  const Published& published(const std::string& key) const;
   // Progress on stderr: on a terminal every call, otherwise at most one line every 10 s.
   void progress(std::string_view what) const;
   // The same with `done` of `total` units (e.g. "batches"), the rate since the first call for
