@@ -1,0 +1,68 @@
+// Beyond 003: the drift of H under Phi^(0) against Phi^(4) of each discretization from the centre
+// cloud.center to long_run.t_end, and the distance of both to the reference flow there.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "geomint/observables/error_norms.hpp"
+#include "geomint/runner/distributed_map.hpp"
+#include "measure_cloud.hpp"
+
+namespace geomint::measure_cloud {
+namespace {
+
+// ---- long run: drift of H under Phi^(0) against Phi^(4) ----
+
+void run_long_run(Context& ctx) {
+  const Scene& s = ctx.scene;
+  const auto [sys, z0, rtol, atol, h, methods] = phi_study(ctx);
+  ctx.progress("long run");
+  const std::int64_t n = steps_in(s.real("long_run.t_end"), h);
+  const std::size_t M = methods.size();
+  const auto runs = distributed_map(2 * M, [&](std::size_t k) { return run_phi(methods[k % M], sys, h, k < M ? 0 : 4, z0, n); });
+  std::vector<std::string> cols{"t"};
+  for (int ell : {0, 4})
+    for (Discretization d : methods) cols.push_back(std::string(discretization_name(d)) + "_H_phi" + std::to_string(ell));
+  Csv csv(cols);
+  const double H0 = sys.H(as_state(z0));
+  for (std::size_t j = 0; j <= static_cast<std::size_t>(n); ++j) {
+    csv << static_cast<double>(j) * h;
+    for (const auto& r : runs) csv << sys.H(as_state(r.z[j])) - H0;
+    csv.end_row();
+  }
+  ctx.write("long_run.csv", csv);
+  const auto ref = reference_samples(sys, z0, s.real("long_run.t_end"), 1, rtol, atol).back();
+  json H0_end, H4_end, e0, e4;
+  for (std::size_t k = 0; k < M; ++k) {
+    const char* name = discretization_name(methods[k]);
+    H0_end[name] = sys.H(as_state(runs[k].z.back())) - H0, H4_end[name] = sys.H(as_state(runs[M + k].z.back())) - H0;
+    e0[name] = phase_distance(as_state(runs[k].z.back()), as_state(ref)),
+    e4[name] = phase_distance(as_state(runs[M + k].z.back()), as_state(ref));
+    count_newton(ctx, runs[k].iterations + runs[M + k].iterations, 2 * n);
+  }
+  put_methods(ctx, "long_H_err_phi0", H0_end), put_methods(ctx, "long_H_err_phi4", H4_end);
+  put_methods(ctx, "long_err_phi0", e0), put_methods(ctx, "long_err_phi4", e4);
+}
+
+StudyPlan plan_long_run(const Scene& s) {
+  const double n = steps_of(s.real("long_run.t_end"), s.real("h")), M = static_cast<double>(s.texts("methods").size());
+  return make_plan(2 * M * n, 2 * M * (n + 1) * kPointBytes, 1800);
+}
+
+void keys(Schema& s) {
+  s.real("long_run.t_end", positive(), "end time of the long run of Phi^(0) and Phi^(4)");
+}
+
+}  // namespace
+
+Study long_run_study() {
+  return {"long_run", "H under Phi^(0) and Phi^(4) to long_run.t_end", {"long_run.csv"},
+          {"potential", "cloud.center", "h", "methods", "long_run", "reference"},
+          [](const Scene& s) {
+            check_at_least_one_step(s, "long_run.t_end", {s.real("h")}, "h");
+            check_first_step(s, "h", {s.real("h")});
+          },
+          run_long_run, plan_long_run, keys};
+}
+
+}  // namespace geomint::measure_cloud

@@ -1,0 +1,157 @@
+// Beyond 003: the order of measure preservation (Cor. 4.3 of 003: Phi^(ell) preserves mu^(ell)_mod to
+// O(h^(ell + 2))). Phi^(ell) of each discretization, ell in order_study.ells, on a tiny 600-cell cloud
+// (radius order_study.radius) at each step of order_study.h: the peak-to-peak volume in its own
+// measure mu^(ell)_mod over t <= ptp_window, and the order fitted to it against h above the
+// round-off noise (measured by a probe at half the smallest step); one checkpointed task per run.
+#include <algorithm>
+#include <cstdint>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "geomint/geometry/clouds.hpp"
+#include "geomint/geometry/hull_volume.hpp"
+#include "geomint/geometry/volume_series.hpp"
+#include "geomint/observables/order_fit.hpp"
+#include "geomint/runner/checkpoint.hpp"
+#include "geomint/systems/nonholonomic_modified_series.hpp"
+#include "measure_cloud.hpp"
+
+namespace geomint::measure_cloud {
+namespace {
+
+// ---- order of measure preservation: Phi^(ell) in its own mu^(ell)_mod on tiny clouds ----
+
+void check_order_study(const Scene& s) {
+  check_ells(s, "order_study.ells");
+  check_first_step(s, "order_study.h", s.reals("order_study.h"));
+  if (s.real("order_study.t_end") < s.real("ptp_window")) s.reject("order_study.t_end", "must be at least ptp_window");
+  check_at_least_one_step(s, "order_study.t_end", s.reals("order_study.h"), "max(order_study.h)");
+}
+
+// Task (k, e, i): method k, order es[e], step hs[i]; e == es.size() is the noise probe of
+// method k: Phi^(max order) at half the smallest step, whose true volume error
+// C (h/2)^(max order + 2) is negligible, so that what it shows is round-off.
+struct Task {
+  std::size_t k, e, i;
+};
+
+// The peak-to-peak volume of a task, and its Newton iterations and steps.
+struct Result {
+  double ptp;
+  std::int64_t iterations, steps;
+  auto fields() { return std::tie(ptp, iterations, steps); }
+};
+
+// The orders fitted to the peak-to-peak volumes of each ell over order_study.h (points above `floor`),
+// per method: summary.orders, ranges, fits, and the peak-to-peak at the largest step.
+void fit_orders(Context& ctx, const std::vector<Discretization>& methods, const std::vector<double>& hs,
+                const std::vector<int>& es, const std::vector<Result>& results, double floor) {
+  const std::size_t i_max = static_cast<std::size_t>(std::max_element(hs.begin(), hs.end()) - hs.begin());
+  json fits;
+  for (std::size_t e = 0; e < es.size(); ++e) {
+    const std::string key = "measure_ell" + std::to_string(es[e]);
+    json o, f, points, at_h_max;
+    for (std::size_t k = 0; k < methods.size(); ++k) {
+      std::vector<double> ptp;
+      for (std::size_t i = 0; i < hs.size(); ++i) ptp.push_back(results[k * (es.size() * hs.size() + 1) + e * hs.size() + i].ptp);
+      const char* name = discretization_name(methods[k]);
+      at_h_max[name] = ptp[i_max];
+      try {
+        const OrderFit fit = fit_order(hs, ptp, floor, "order study");
+        o[name] = fit.order, f[name] = to_json(fit), points[name] = fit.points;
+      } catch (const NumericalFailure&) {
+        o[name] = nullptr, points[name] = nullptr;  // fewer than 3 steps above the noise: no order is claimed
+      }
+    }
+    ctx.summary["orders"][key] = o;
+    ctx.summary["ranges"][key] = method_ranges(o);
+    ctx.summary["ranges"]["fit_points_" + key] = method_ranges(points);
+    put_methods(ctx, "order_study_ptp_phi" + std::to_string(es[e]) + "_at_h_max", at_h_max);
+    if (!f.empty()) fits[key] = f;
+  }
+  if (!fits.empty()) ctx.summary["fits"] = fits;
+}
+
+void run_order_study(Context& ctx) {
+  const Scene& s = ctx.scene;
+  const auto [sys, z0] = setup(s);
+  check_modified_series(ctx, sys);
+  const auto methods = scene_methods(s);
+  put_run_facts(ctx, methods);
+  const auto hs = s.reals("order_study.h");
+  const auto es = ells(s, "order_study.ells");
+  const auto cloud = cloud_around(z0, six_hundred_cell_vertices(), s.real("order_study.radius"));
+  std::vector<Task> tasks;
+  for (std::size_t k = 0; k < methods.size(); ++k) {
+    for (std::size_t e = 0; e < es.size(); ++e)
+      for (std::size_t i = 0; i < hs.size(); ++i) tasks.push_back({k, e, i});
+    tasks.push_back({k, es.size(), 0});
+  }
+  const double h_probe = 0.5 * *std::min_element(hs.begin(), hs.end());
+  ctx.progress("order study: " + std::to_string(tasks.size()) + " cloud runs");
+  const std::vector<std::string> keys = {"potential", "cloud.center", "methods", "order_study", "ptp_window"};
+  const auto results = checkpointed_map<Result>(ctx, {"order_study", keys}, tasks.size(), [&](std::size_t t) {
+    const Task& T = tasks[t];
+    const bool probe = T.e == es.size();
+    const double hh = probe ? h_probe : hs[T.i];
+    const int ell = probe ? max_modified_order : es[T.e];
+    const std::int64_t n = steps_in(s.real("order_study.t_end"), hh);
+    const CloudRun run = cloud_phi(methods[T.k], sys, hh, ell, cloud, n);
+    const ModifiedSeries ms(methods[T.k], sys, hh);
+    std::vector<double> v;
+    std::vector<HullFacet> facets;  // those of the previous snapshot, checked before they are taken
+    for (const auto& snap : run.snapshots) {
+      facets = cloud_hull(snap, facets);
+      v.push_back(hull_volumes(snap, facets, ms, {ell})[0]);
+    }
+    return Result{relative_peak_to_peak(v, static_cast<std::size_t>(steps_in(s.real("ptp_window"), hh)) + 1), run.iterations,
+                  run.steps};
+  });
+  Csv csv({"method", "ell", "h", "ptp"});
+  double noise = 0;
+  for (std::size_t t = 0; t < tasks.size(); ++t) {
+    const bool probe = tasks[t].e == es.size();
+    if (probe) noise = std::max(noise, results[t].ptp);
+    csv.row(discretization_name(methods[tasks[t].k]), probe ? max_modified_order : es[tasks[t].e],
+            probe ? h_probe : hs[tasks[t].i], results[t].ptp);
+    count_newton(ctx, results[t].iterations, results[t].steps);
+  }
+  ctx.write("order_study.csv", csv);
+  // Points within a factor 2 of the measured round-off noise are left out of the fits.
+  const double floor = 2 * noise;
+  put(ctx, "reproduced", "order_study_noise", noise);
+  put(ctx, "reproduced", "order_study_noise_floor", floor);
+  put(ctx, "reproduced", "order_study_h_probe", h_probe);
+  put(ctx, "reproduced", "order_study_h",
+      {{"min", *std::min_element(hs.begin(), hs.end())}, {"max", *std::max_element(hs.begin(), hs.end())}});
+  put(ctx, "reproduced", "order_study_h_count", hs.size());
+  fit_orders(ctx, methods, hs, es, results, floor);
+}
+
+StudyPlan plan_order_study(const Scene& s) {
+  const auto hs = s.reals("order_study.h");
+  const double T = s.real("order_study.t_end"), M = static_cast<double>(s.texts("methods").size());
+  const double ells_n = static_cast<double>(s.reals("order_study.ells").size()), h_min = *std::min_element(hs.begin(), hs.end());
+  double steps = M * 120 * steps_of(T, h_min / 2);  // the round-off probes
+  for (double h : hs) steps += M * ells_n * 120 * steps_of(T, h);
+  StudyPlan p = make_plan(steps, 2 * (steps_of(T, h_min / 2) + 1) * 121 * kPointBytes, 8100, "the snapshots of two runs at once");
+  p.tasks = M * (ells_n * static_cast<double>(hs.size()) + 1);  // (a cloud run each)
+  return p;
+}
+
+void keys(Schema& s) {
+  s.real("order_study.radius", {.gt = 0.0, .ge = {}, .lt = {}, .le = kMaxRadius}, "radius of its 600-cell clouds (small enough for no hull artefact)")
+      .real("order_study.t_end", positive(), "its end time")
+      .reals("order_study.ells", at_least(0), 1, "its truncation orders ell");
+}
+
+}  // namespace
+
+Study order_study_study() {
+  return {"order_study", "order of measure preservation (003 Cor. 4.3)", {"order_study.csv"},
+          {"potential", "cloud.center", "methods", "order_study", "ptp_window", "checkpoint"}, check_order_study,
+          run_order_study, plan_order_study, keys};
+}
+
+}  // namespace geomint::measure_cloud

@@ -1,0 +1,186 @@
+// 003 Figs 5.2 and 5.4: measure-weighted convex-hull volumes of the 600-cell cloud (circumradius
+// cloud.radius around cloud.center) under Phi^(ell), ell in cloud.ells (Fig. 5.2: Phi^(4), Fig. 5.4:
+// Phi^(0)), and under the reference flow, in every measure mu^(m)_mod; their peak-to-peak values over
+// t <= ptp_window (Cor. 4.3 of 003: Phi^(ell) preserves mu^(ell)_mod to O(h^(ell + 2))). Beside the
+// full cloud, the authors' cloud of the published figures (119 vertices), and the reference flow on a
+// cloud of a tenth of the radius (the order in r of the hull artefact).
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "geomint/geometry/clouds.hpp"
+#include "geomint/geometry/hull_volume.hpp"
+#include "geomint/geometry/volume_series.hpp"
+#include "geomint/runner/checkpoint.hpp"
+#include "geomint/runner/distributed_map.hpp"
+#include "geomint/systems/nonholonomic_modified_series.hpp"
+#include "measure_cloud.hpp"
+
+namespace geomint::measure_cloud {
+namespace {
+
+void check_volumes(const Scene& s) {
+  check_ells(s, "cloud.ells");
+  check_first_step(s, "h", {s.real("h")});
+  check_at_least_one_step(s, "t_end", {s.real("h")}, "h");
+  if (s.real("ptp_window") > s.real("t_end")) s.reject("ptp_window", "must not exceed t_end");
+}
+
+// hull_volumes of each snapshot of a run, its hulls checked against that of the first snapshot.
+std::vector<std::vector<double>> snapshot_volumes(const CloudRun& run, const ModifiedSeries& ms, const std::vector<int>& measures) {
+  const std::vector<HullFacet> first = cloud_hull(run.snapshots.front());
+  return distributed_map(run.snapshots.size(), [&](std::size_t j) {
+    return hull_volumes(run.snapshots[j], cloud_hull(run.snapshots[j], first), ms, measures);
+  });
+}
+
+std::string measure_name(int m) { return m == 0 ? "mu" : "mu" + std::to_string(m); }
+
+// ---- Figs 5.2 and 5.4: hull volumes of the 600-cell cloud under Phi^(ell) and the reference ----
+
+// The scene keys the reference paths of the volumes study depend on (their checkpoints).
+const std::vector<std::string> kReferencePathKeys = {"potential", "cloud.center", "cloud.radius", "h",
+                                                     "t_end",     "ptp_window",   "reference"};
+
+// Hull volumes in mu of the images of `cloud` under the reference flow at t_j = j h, j = 0..n; the
+// paths kept in the checkpoint `name`.
+std::vector<double> reference_volumes(Context& ctx, const std::string& name, const PhiStudy& p,
+                                      const std::vector<Point4>& cloud, std::int64_t n) {
+  const auto paths = checkpointed_map<std::vector<Point4>>(
+      ctx, {name, kReferencePathKeys}, cloud.size(),
+      [&](std::size_t i) { return reference_samples(p.sys, cloud[i], p.h, n, p.rtol, p.atol); });
+  std::vector<Trajectory> per_point;
+  for (const auto& z : paths) per_point.push_back(Trajectory{z, 0});
+  const CloudRun ref = transpose(per_point);
+  const ModifiedSeries plain(Discretization::M, p.sys, p.h);  // only its ell = 0 density 1/N is used
+  std::vector<double> v;
+  for (const auto& per_step : snapshot_volumes(ref, plain, {0})) v.push_back(per_step[0]);
+  return v;
+}
+
+// Figs 5.2, 5.4 for one cloud: the hull volumes under the reference flow and under Phi^(ell) for each
+// ell of cloud.ells, in every measure mu^(m)_mod, m = 0, 2, .., max_modified_order, to t_end; CSV
+// <prefix>phi<ell>.csv; summary.reproduced.<nest> (the cloud's own object, or reproduced itself for nest
+// ""): the peak-to-peak values over t <= ptp_window, that of each method in its own measure less
+// that of the reference, and the reference's relative volume at the window and at t_end.
+void cloud_volumes(Context& ctx, const PhiStudy& p, const std::vector<Point4>& cloud, const std::string& prefix,
+                   const std::string& nest) {
+  const Scene& s = ctx.scene;
+  std::vector<int> all_measures;
+  for (int m = 0; m <= max_modified_order; m += 2) all_measures.push_back(m);
+  const std::int64_t n = steps_in(s.real("t_end"), p.h);
+  const std::size_t window = static_cast<std::size_t>(steps_in(s.real("ptp_window"), p.h)) + 1;
+  const auto put_here = [&](const std::string& key, json value) {
+    if (nest.empty()) put(ctx, "reproduced", key, std::move(value));
+    else ctx.summary["reproduced"][nest][key] = std::move(value);
+  };
+  ctx.progress("Figs 5.2, 5.4: reference, " + std::to_string(cloud.size()) + " points");
+  const std::vector<double> ref_volumes = reference_volumes(ctx, nest.empty() ? "volumes.reference" : "volumes.reference_" + nest, p, cloud, n);
+  const std::vector<double> ref_relative = relative_volumes(ref_volumes, ref_volumes.size());
+  put_here("cloud_points", cloud.size());
+  put_here("ptp_reference_mu", relative_peak_to_peak(ref_volumes, window));
+  put_here("reference_rel_volume_at_window", ref_relative[window - 1]);
+  put_here("reference_rel_volume_at_t_end", ref_relative.back());
+
+  for (int ell : ells(s, "cloud.ells")) {
+    ctx.progress("Figs 5.2, 5.4: Phi^(" + std::to_string(ell) + "), " + std::to_string(cloud.size()) + " points");
+    const auto runs = distributed_map(p.methods.size(), [&](std::size_t k) { return cloud_phi(p.methods[k], p.sys, p.h, ell, cloud, n); });
+    std::vector<std::string> cols{"t", "reference_mu"};
+    for (Discretization d : p.methods)
+      for (int m : all_measures) cols.push_back(std::string(discretization_name(d)) + "_" + measure_name(m));
+    Csv csv(cols);
+    std::vector<std::vector<std::vector<double>>> vols(p.methods.size());  // [method][measure][step]
+    for (std::size_t k = 0; k < p.methods.size(); ++k) {
+      const ModifiedSeries ms(p.methods[k], p.sys, p.h);
+      const auto per_step = snapshot_volumes(runs[k], ms, all_measures);
+      vols[k].assign(all_measures.size(), std::vector<double>(per_step.size()));
+      for (std::size_t j = 0; j < per_step.size(); ++j)
+        for (std::size_t m = 0; m < all_measures.size(); ++m) vols[k][m][j] = per_step[j][m];
+      count_newton(ctx, runs[k].iterations, runs[k].steps);
+    }
+    for (std::size_t j = 0; j <= static_cast<std::size_t>(n); ++j) {
+      csv << static_cast<double>(j) * p.h << ref_volumes[j];
+      for (std::size_t k = 0; k < p.methods.size(); ++k)
+        for (std::size_t m = 0; m < all_measures.size(); ++m) csv << vols[k][m][j];
+      csv.end_row();
+    }
+    ctx.write(prefix + "phi" + std::to_string(ell) + ".csv", csv);
+    const std::string phi = "ptp_phi" + std::to_string(ell) + "_";
+    for (std::size_t m = 0; m < all_measures.size(); ++m) {
+      json ptp;
+      for (std::size_t k = 0; k < p.methods.size(); ++k) ptp[discretization_name(p.methods[k])] = relative_peak_to_peak(vols[k][m], window);
+      put_methods(ctx, phi + measure_name(all_measures[m]), ptp, nest);
+    }
+    // the amplitude (half the ptp) in mu^(4)_mod, the quantity 003 reads off Fig. 5.2
+    const auto mu4 = std::find(all_measures.begin(), all_measures.end(), 4);
+    if (mu4 != all_measures.end()) {
+      json amp;
+      for (std::size_t k = 0; k < p.methods.size(); ++k)
+        amp[discretization_name(p.methods[k])] =
+            relative_amplitude(vols[k][static_cast<std::size_t>(mu4 - all_measures.begin())], window);
+      put_methods(ctx, "amplitude_phi" + std::to_string(ell) + "_mu4", amp, nest);
+    }
+    // in its own measure mu^(ell)_mod, less the reference's relative volume (the hull artefact both share)
+    const std::size_t own = static_cast<std::size_t>(std::find(all_measures.begin(), all_measures.end(), ell) - all_measures.begin());
+    json corrected;
+    for (std::size_t k = 0; k < p.methods.size(); ++k)
+      corrected[discretization_name(p.methods[k])] = relative_peak_to_peak_minus(vols[k][own], ref_volumes, window);
+    put_methods(ctx, phi + measure_name(ell) + "_minus_reference", corrected, nest);
+  }
+  const json& r = nest.empty() ? ctx.summary["reproduced"] : ctx.summary["reproduced"][nest];
+  if (r.contains("ptp_phi0_mu4") && r.contains("ptp_phi4_mu4"))  // Fig. 5.4 against Fig. 5.2 in mu^(4)_mod
+    put_methods(ctx, "ptp_mu4_phi0_over_phi4", ratio_per_method(r["ptp_phi0_mu4"], r["ptp_phi4_mu4"]), nest);
+}
+
+// The reference flow is run once more on the full cloud of this fraction of cloud.radius: the ratio
+// of the two peak-to-peak values shows the order in r of the hull artefact (r^2: a factor 100).
+constexpr double artefact_radius_fraction = 0.1;
+
+void run_volumes(Context& ctx) {
+  const Scene& s = ctx.scene;
+  const PhiStudy p = phi_study(ctx);
+  const double r = s.real("cloud.radius");
+  const auto cloud = cloud_around(p.z0, six_hundred_cell_vertices(), r);
+  cloud_volumes(ctx, p, cloud, "volumes_", "");
+  const auto facets0 = hull_facets(cloud);
+  put(ctx, "reproduced", "hull_volume_initial_over_r4",
+      hull_integral(cloud, facets0, cloud.front(), [](const Point4&) { return 1.0; }) / std::pow(r, 4));
+  put(ctx, "reproduced", "hull_volume_exact_over_r4", six_hundred_cell_volume(1.0));
+  const auto small = cloud_around(p.z0, six_hundred_cell_vertices(), artefact_radius_fraction * r);
+  const std::vector<double> small_volumes = reference_volumes(ctx, "volumes.reference_small", p, small, steps_in(s.real("ptp_window"), p.h));
+  const double ptp_small = relative_peak_to_peak(small_volumes, small_volumes.size());
+  put(ctx, "reproduced", "artefact_radius_fraction", artefact_radius_fraction);
+  put(ctx, "reproduced", "ptp_reference_mu_small_radius", ptp_small);
+  put(ctx, "reproduced", "ptp_reference_mu_ratio_to_small_radius",
+      ctx.summary["reproduced"]["ptp_reference_mu"].get<double>() / ptp_small);
+  if (s.boolean("cloud.authors_cloud"))  // the cloud of the published figures
+    cloud_volumes(ctx, p, cloud_around(p.z0, authors_six_hundred_cell_vertices(), r), "volumes_authors_", "authors_cloud");
+}
+
+StudyPlan plan_volumes(const Scene& s) {
+  const double n = steps_of(s.real("t_end"), s.real("h")), M = static_cast<double>(s.texts("methods").size());
+  const double runs = M * static_cast<double>(s.reals("cloud.ells").size()) + 1;  // + the reference
+  const double points = 2 * 121.0;  // the full cloud and the authors' (at most)
+  return make_plan(runs * points * n, runs * (n + 1) * 121 * kPointBytes, 9500);
+}
+
+void keys(Schema& s) {
+  s.real("t_end", positive(), "end time of the cloud runs (003 Figs 5.2, 5.4: 30)")
+      .real("cloud.radius", {.gt = 0.0, .ge = {}, .lt = {}, .le = kMaxRadius}, "circumradius of the 600-cell cloud (003: 0.01)")
+      .boolean("cloud.authors_cloud",
+               "also the cloud of the code of 003 (it drops the vertex (0, 0, r, 0): 119 vertices + centre), beside "
+               "the full one: volumes_authors_phi*.csv, reproduced.authors_cloud")
+      .reals("cloud.ells", at_least(0), 1, "truncation orders ell of the methods Phi^(ell) run on the cloud");
+}
+
+}  // namespace
+
+Study volumes_study() {
+  return {"volumes", "003 Figs 5.2, 5.4", {"volumes_phi*.csv", "volumes_authors_phi*.csv"},
+          {"potential", "cloud.center", "h", "methods", "t_end", "ptp_window", "cloud", "checkpoint", "reference"},
+          check_volumes, run_volumes, plan_volumes, keys};
+}
+
+}  // namespace geomint::measure_cloud
