@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "geomint/analysis/work_precision.hpp"
+#include "geomint/runner/summary.hpp"
 #include "geomint/integrators/runge_kutta4.hpp"
 #include "geomint/methods/registry.hpp"
 #include "geomint/observables/error_norms.hpp"
@@ -55,8 +56,6 @@ Trajectory run_rk4(const NonholonomicParticle& sys, double h, const Point4& z0, 
   }
   return t;
 }
-
-json or_null(const std::optional<double>& v) { return v ? json(*v) : json(nullptr); }
 
 // The runs compared at equal cost, in the order of the CSV rows.
 constexpr const char* kCompared[] = {"phi4", "phi0", "rk4"};
