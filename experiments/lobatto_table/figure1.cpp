@@ -1,0 +1,88 @@
+// 001 Fig. 1: the trajectories (q, p) of the drawn methods over one period of the oscillator at the
+// meshes figure1.meshes (001: N = 3, 10 steps per period), the exact curve, and each method's largest
+// errors in q and p.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "geomint/methods/methods.hpp"
+#include "geomint/methods/registry.hpp"
+#include "geomint/methods/scene_methods.hpp"
+#include "lobatto_table.hpp"
+#include "trajectory.hpp"
+
+namespace geomint::lobatto_table {
+namespace {
+
+void check_figure1(const Scene& s) {
+  check_distinct_methods(s, "figure1.methods");
+  check_meshes(s, "figure1.meshes", "figure1.methods", false);
+}
+
+void run_figure1(Context& ctx) {
+  const Scene& s = ctx.scene;
+  ctx.progress("Fig. 1");
+  const auto [osc, A, T, z0] = oscillator(s);
+  const auto methods = s.texts("figure1.methods");
+  std::vector<std::string> columns = {"j", "t"};
+  for (const auto& m : methods) columns.push_back("q_" + label_of(m)), columns.push_back("p_" + label_of(m));
+  json max_error = json::array();  // per mesh and method: max_j |q_j - q(t_j)| and |p_j - p(t_j)|, j = 0..N
+  for (double Nd : s.reals("figure1.meshes")) {
+    const auto N = static_cast<std::int64_t>(Nd);
+    const double h = T / Nd;
+    std::vector<std::vector<Z1>> zs;
+    for (const auto& m : methods) zs.push_back(trajectory(m, osc, z0, h, N));
+    Csv f(columns);
+    for (std::int64_t j = 0; j <= N; ++j) {
+      f << j << static_cast<double>(j) * h;
+      for (const auto& z : zs) f << z[static_cast<std::size_t>(j)].q[0] << z[static_cast<std::size_t>(j)].p[0];
+      f.end_row();
+    }
+    ctx.write("fig1_N" + std::to_string(N) + ".csv", f);
+    json errors = json::object();
+    for (std::size_t k = 0; k < methods.size(); ++k) {
+      double eq = 0, ep = 0;
+      for (std::int64_t j = 0; j <= N; ++j) {
+        const Z1& z = zs[k][static_cast<std::size_t>(j)];
+        const Z1 ex = osc.exact(z0, static_cast<double>(j) * h);
+        eq = std::max(eq, std::abs(z.q[0] - ex.q[0])), ep = std::max(ep, std::abs(z.p[0] - ex.p[0]));
+      }
+      errors[label_of(methods[k])] = {{"q", eq}, {"p", ep}};
+    }
+    max_error.push_back(errors);
+  }
+  Csv fe({"t", "q", "p"});
+  for (int i = 0; i <= 400; ++i) {
+    const Z1 e = osc.exact(z0, T * i / 400.0);
+    fe.row(T * i / 400.0, e.q[0], e.p[0]);
+  }
+  ctx.write("fig1_exact.csv", fe);
+  ctx.summary["methods"]["figure1"] = labels(methods);
+  // the amplitude of the exact p = -m w A sin(w t), and the largest errors of the drawn methods
+  ctx.summary["figure1"] = {{"p_amplitude", osc.m * osc.w * A}, {"max_error", max_error}};
+}
+
+StudyPlan plan_figure1(const Scene& s) {
+  const double methods = static_cast<double>(s.texts("figure1.methods").size());
+  double steps = 0, largest = 0;
+  for (double n : s.reals("figure1.meshes")) steps += methods * n, largest = std::max(largest, n);
+  return {steps, steps * kOscillatorEvals, (largest + 1) * (methods * kStateBytes + (2 + 2 * methods) * kCellBytes),
+          kOscillatorNs, "ns per step: Lobatto on the oscillator (paper-scene summary timing.long_run_cost)"};
+}
+
+void keys(Schema& s) {
+  s.reals("figure1.meshes", at_least(1), 1, "steps per period of Fig. 1 (001: 3, 10)")
+      .texts("figure1.methods", methods_for<HarmonicOscillator>(), 1,
+             "methods drawn in Fig. 1 (001: lobatto, simpson, implicit_midpoint)");
+}
+
+}  // namespace
+
+Study figure1_study() {
+  return {"figure1", "001 Fig 1", {"fig1_N*.csv", "fig1_exact.csv"}, {"figure1", "oscillator"}, check_figure1,
+          run_figure1, plan_figure1, keys};
+}
+
+}  // namespace geomint::lobatto_table

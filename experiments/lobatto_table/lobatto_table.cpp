@@ -1,0 +1,102 @@
+// lobatto_table: what its studies share (lobatto_table.hpp).
+#include "lobatto_table.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <numbers>
+
+#include "geomint/analysis/linear_stability.hpp"
+#include "geomint/methods/methods.hpp"
+#include "geomint/methods/registry.hpp"
+#include "geomint/methods/scene_methods.hpp"
+#include "geomint/runner/published.hpp"
+
+namespace geomint::lobatto_table {
+
+double discrete_energy(const Mat<2>& Phi, const Z1& z) {
+  return 0.5 * (Phi(1, 0) * z.p[0] * z.p[0] - Phi(0, 1) * z.q[0] * z.q[0]);
+}
+
+Mat<2> pq_matrix(const std::string& method, const HarmonicOscillator& osc, double h) {
+  return with_kernel(method, osc, [&](const auto& m) { return in_pq_order(one_step_matrix(m, h)); });
+}
+
+Mat<2> lobatto_matrix(const HarmonicOscillator& osc, double h) { return pq_matrix("lobatto", osc, h); }
+
+void merge(Context& ctx, const char* section, const json& values) {
+  for (const auto& [k, v] : values.items()) ctx.summary[section][k] = v;
+}
+
+json labels(const std::vector<std::string>& methods) {
+  json l = json::array();
+  for (const auto& m : methods) l.push_back(label_of(m));
+  return l;
+}
+
+json range_of(const std::vector<double>& v) {
+  const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+  return {{"min", *lo}, {"max", *hi}};
+}
+
+json optional_json(const std::optional<double>& v) { return v ? json(*v) : json(nullptr); }
+
+void check_lobatto(const Scene& s, const char* key, double hw, const std::string& what) {
+  check_oscillatory_bound(s, key, key, "lobatto", hw, what + "; 001 eq. (10)", "sqrt(42 - 6 sqrt(29))");
+}
+
+void check_meshes(const Scene& s, const char* key, const char* methods_key, bool lobatto) {
+  for (double n : s.reals(key)) {
+    if (n != std::floor(n)) s.reject(key, "every entry must be a whole number of steps per period");
+    const double hw = 2 * std::numbers::pi / n;
+    const std::string what = "h omega = 2 pi / N at N = " + format_double(n);
+    if (lobatto) check_lobatto(s, key, hw, what);
+    for (const auto& m : s.texts(methods_key)) check_oscillatory_bound(s, key, methods_key, m, hw, what);
+  }
+}
+
+void check_pendulum_steps(const Scene& s, const char* methods_key, const std::string& method) {
+  for (double h : s.reals("nonlinear.h"))
+    check_oscillatory_bound(s, "nonlinear.h", methods_key, method, h * kNonlinearOmega, "h = " + format_double(h) + ", frequency 1");
+}
+
+void check_nonlinear_steps(const Scene& s) {
+  const double t_end = s.real("nonlinear.t_end");
+  for (double h : s.reals("nonlinear.h")) {
+    const double n = t_end / h;
+    if (!(n <= max_exact_count)) s.reject("nonlinear.h", "at most 2^53 steps to nonlinear.t_end, here h = " + format_double(h));
+    if (std::round(n) < 1 || std::abs(std::round(n) * h - t_end) > 1e-9 * t_end)
+      s.reject("nonlinear.h", "each h must divide nonlinear.t_end = " + format_double(t_end) + ", here h = " + format_double(h));
+  }
+}
+
+Oscillator oscillator(const Scene& s) {
+  const HarmonicOscillator osc{s.real("oscillator.m"), s.real("oscillator.omega")};
+  const double A = s.real("oscillator.amplitude");
+  return {osc, A, 2 * std::numbers::pi / osc.w, make_state(A, 0.0)};
+}
+
+namespace {
+
+const std::vector<Published>& published_entries() {  // read once (the runner has read and checked it already)
+  static const std::vector<Published> entries =
+      read_published(std::filesystem::path(GEOMINT_EXPERIMENT_DIR) / "published.toml");
+  return entries;
+}
+
+}  // namespace
+
+std::optional<json> comparison(const json& summary, const Scene& s, const std::string& summary_key) {
+  for (const Published& e : published_entries()) {
+    if (e.summary != summary_key) continue;
+    auto c = compare_published(e, summary, s.to_json(), {e.study});
+    if (c && c->contains("difference")) return c;
+  }
+  return std::nullopt;
+}
+
+Pendulum pendulum(const Scene& s) { return {NonlinearPendulum{}, make_state(s.real("nonlinear.pendulum_q0"), 0.0)}; }
+
+double period_of(const Scene& s) { return 2 * std::numbers::pi / s.real("oscillator.omega"); }
+
+}  // namespace geomint::lobatto_table

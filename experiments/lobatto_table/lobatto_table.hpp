@@ -1,0 +1,113 @@
+#pragma once
+// lobatto_table: 001 (Dubois & Rojas-Quintero 2025) Table 1, Figs 1, 2 -- the Lobatto variational
+// integrator built from its definition, against the methods the scene names; its stability set; its
+// extension to nonlinear Lagrangians (Newton); and what the accuracy costs.
+// One study per file beside this one (main.cpp lists them); here what several of them share: the
+// oscillator of Table 1 and Figs 1, 2 and its one-step matrix, the nonlinear pendulum, the checks
+// on steps and meshes, summary helpers, the comparison with published.toml and the --plan constants.
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "geomint/core/state.hpp"
+#include "geomint/runner/experiment.hpp"
+#include "geomint/systems/harmonic_oscillator.hpp"
+
+namespace geomint::lobatto_table {
+
+using json = nlohmann::ordered_json;
+using Z1 = PhaseState<1>;
+
+// The studies, in the order they run.
+Study table1_study();         // 001 Table 1                                   table1.cpp
+Study figure1_study();        // 001 Fig 1                                     figure1.cpp
+Study long_run_study();       // 001 Fig 2                                     long_run.cpp
+Study stability_study();      // the stability set beyond 001 eq. (10)         stability.cpp
+Study nonlinear_study();      // nonlinear Lagrangians (Newton)                nonlinear.cpp
+Study timing_study();         // cost on the nonlinear pendulum                cost.cpp
+Study long_run_cost_study();  // cost over the long run of Fig 2               long_run_cost.cpp
+
+// The largest linear frequency of the nonlinear pendulum (U'' = cos q <= 1) and of the elastic
+// pendulum of the paper scene (sqrt(k/m) = 1): the h omega at which the registry's bounds apply.
+constexpr double kNonlinearOmega = 1.0;
+
+// 001 eq. (15) from the computed map: H_d = (Phi_qp p^2 - Phi_pq q^2) / 2, i.e. c/(2 delta) p^2 - b/(2 delta) q^2.
+double discrete_energy(const Mat<2>& Phi, const Z1& z);
+
+// The one-step matrix of (the kernel of) a registered method on the oscillator at step h,
+// in 001's order (p, q) of eq. (13): Phi of the Lobatto scheme, with which (15) and (13) are written.
+Mat<2> pq_matrix(const std::string& method, const HarmonicOscillator& osc, double h);
+
+Mat<2> lobatto_matrix(const HarmonicOscillator& osc, double h);
+
+// Adds `values` to the summary section `section` (other studies may have filled it already).
+void merge(Context& ctx, const char* section, const json& values);
+
+// The labels of registered methods (CSV columns, summary keys), for summary.methods.<study>.
+json labels(const std::vector<std::string>& methods);
+
+// {min, max} of values.
+json range_of(const std::vector<double>& v);
+
+json optional_json(const std::optional<double>& v);
+
+// ---- checks across keys, shared by studies ----
+
+// The Lobatto scheme at h omega = hw (001 eq. (10)).
+void check_lobatto(const Scene& s, const char* key, double hw, const std::string& what);
+
+// Whole numbers of steps per period N at `key`; Lobatto (the subject, if `lobatto`) and the
+// methods of `methods_key` stable at h omega = 2 pi / N.
+void check_meshes(const Scene& s, const char* key, const char* methods_key, bool lobatto);
+
+// `method` (of `methods_key`) stable at every step of nonlinear.h, at the pendulums' linear frequency 1.
+void check_pendulum_steps(const Scene& s, const char* methods_key, const std::string& method);
+
+// Every step of nonlinear.h divides nonlinear.t_end (the runs end at t_end, where the reference is),
+// checked in double before the step count is rounded to an integer.
+void check_nonlinear_steps(const Scene& s);
+
+// ---- the oscillator of Table 1 and Figs 1, 2 ----
+
+struct Oscillator {
+  HarmonicOscillator osc;
+  double A, T;  // amplitude q(0), period 2 pi / omega
+  Z1 z0;        // (q, p) = (A, 0)
+};
+
+Oscillator oscillator(const Scene& s);
+
+// The comparison with what 001 printed (published.toml, as the runner makes it after the run) of the
+// entry whose reproduced value is at `summary_key`, for the text; nullopt if there is none or this
+// scene cannot make it.
+std::optional<json> comparison(const json& summary, const Scene& s, const std::string& summary_key);
+
+// ---- the nonlinear pendulum of the nonlinear and timing studies ----
+
+struct Pendulum {
+  NonlinearPendulum pend;
+  Z1 z0;  // (q, p) = (nonlinear.pendulum_q0, 0)
+};
+
+Pendulum pendulum(const Scene& s);
+
+// ---- What each study would cost (--plan), from the scene before any work ----
+//
+// Steps are counted in double (t_end = 1e300 gives a huge count, refused by the runner, not an overflowed
+// integer). The ns per step are constants measured on the paper scene (results/lobatto_table, 2 threads):
+// summary timing.ns_per_step and timing.long_run_cost.cost.*.ns_per_step, and study wall time over steps for
+// the linear iterations; force evaluations per step are the largest of summary timing.cost.*.evals_per_step.
+
+constexpr double kCellBytes = 24;            // one CSV cell held in memory (text and separator)
+constexpr double kStateBytes = sizeof(Z1);   // one stored (q, p)
+constexpr double kOscillatorEvals = 11;      // force evaluations per step on the oscillator (Lobatto, the most)
+constexpr double kPendulumEvals = 16;        // per step on the nonlinear pendulum (Lobatto's Newton, the most)
+constexpr double kMatrixNs = 25;             // one step of a 2x2 one-step matrix (Fig. 2, stability runs)
+constexpr double kOscillatorNs = 280;        // one Lobatto step through integrate on the oscillator
+constexpr double kPendulumNs = 520;          // one Lobatto step (Newton) on the nonlinear pendulum
+
+double period_of(const Scene& s);
+
+}  // namespace geomint::lobatto_table

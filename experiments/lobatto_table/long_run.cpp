@@ -1,0 +1,131 @@
+// 001 Fig. 2: the discrete energy H_d of (15) and the energy H over long_run.periods periods of the
+// oscillator, iterating the Lobatto one-step matrix (13) with plain and with compensated summation;
+// the window maxima of their errors, their growth rates per period, and the growth in exact
+// arithmetic (the closed-form orbit of (13)-(14)).
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <tuple>
+#include <vector>
+
+#include "geomint/analysis/lobatto_oscillator.hpp"
+#include "geomint/core/compensated_sum.hpp"
+#include "geomint/observables/drift.hpp"
+#include "geomint/runner/distributed_map.hpp"
+#include "lobatto_table.hpp"
+
+namespace geomint::lobatto_table {
+namespace {
+
+void check_long_run(const Scene& s) {
+  for (double h : s.reals("long_run.h"))
+    check_lobatto(s, "long_run.h", h * s.real("oscillator.omega"), "h = " + format_double(h));
+}
+
+// One run of Fig. 2 (a record of runner/distributed_map.hpp).
+struct Long {
+  std::vector<double> plain, comp, H;       // window maxima
+  double slope_plain, slope_comp, slope_H;  // per period
+  auto fields() { return std::tie(plain, comp, H, slope_plain, slope_comp, slope_H); }
+};
+
+// One run at step h: the window maxima of |H_d - H_d(0)| (plain and compensated) and of |H - H(0)|.
+Long long_run(const Scene& s, const Oscillator& o, double h, std::int64_t windows) {
+  const auto& [osc, A, T, z0] = o;
+  const std::int64_t n = std::llround(s.real("long_run.periods") * T / h);
+  const Mat<2> Phi = lobatto_matrix(osc, h);
+  const Mat<2> PhiI = Phi - Mat<2>::Identity();
+  const double Hd0 = discrete_energy(Phi, z0), H0 = osc.H(z0);
+  WindowMaxima wp(std::max<std::int64_t>(1, n / windows)), wc(std::max<std::int64_t>(1, n / windows)),
+      wH(std::max<std::int64_t>(1, n / windows));
+  Vec<2> x(z0.p[0], z0.q[0]), y = x, c = Vec<2>::Zero();
+  for (std::int64_t j = 1; j <= n; ++j) {
+    x = Phi * x;                              // (13)
+    compensated_add(y, c, Vec<2>(PhiI * y));  // (13) as y + (Phi - I) y, compensated
+    wp.add(discrete_energy(Phi, make_state(x[1], x[0])) - Hd0);
+    wc.add(discrete_energy(Phi, make_state(y[1], y[0])) - Hd0);
+    wH.add(osc.H(make_state(x[1], x[0])) - H0);
+  }
+  const double per_window = static_cast<double>(std::max<std::int64_t>(1, n / windows)) * h / T;
+  return Long{wp.maxima(), wc.maxima(), wH.maxima(), wp.slope_per_window() / per_window,
+              wc.slope_per_window() / per_window, wH.slope_per_window() / per_window};
+}
+
+void run_long_run(Context& ctx) {
+  const Scene& s = ctx.scene;
+  ctx.progress("Fig. 2: long runs");
+  const Oscillator o = oscillator(s);
+  const auto& [osc, A, T, z0] = o;
+  const auto long_h = s.reals("long_run.h");
+  const std::int64_t windows = s.integer("long_run.windows");
+  const auto longs = distributed_map(long_h.size(), [&](std::size_t i) { return long_run(s, o, long_h[i], windows); });
+  Csv f2({"h", "period", "Hd_err_plain", "Hd_err_compensated", "H_err"});
+  json growth, growth_comp, growth_H;
+  for (std::size_t i = 0; i < long_h.size(); ++i) {
+    const std::int64_t n = std::llround(s.real("long_run.periods") * T / long_h[i]);
+    const double per_window = static_cast<double>(std::max<std::int64_t>(1, n / windows)) * long_h[i] / T;
+    for (std::size_t k = 0; k < longs[i].plain.size(); ++k)
+      f2.row(long_h[i], static_cast<double>(k + 1) * per_window, longs[i].plain[k], longs[i].comp[k], longs[i].H[k]);
+    growth[format_double(long_h[i])] = longs[i].slope_plain;
+    growth_comp[format_double(long_h[i])] = longs[i].slope_comp;
+    growth_H[format_double(long_h[i])] = longs[i].slope_H;
+  }
+  ctx.write("fig2_energy.csv", f2);
+  // Growth rates: least-squares slope, per period, of the window maxima of |H - H(0)| (Fig. 2's
+  // quantity, compared in published.toml), and of |H_d - H_d(0)| with plain and with compensated
+  // summation (the round-off of the discrete energy (15)).
+  ctx.summary["reproduced"]["energy_growth_rate"] = growth_H;
+  ctx.summary["reproduced"]["energy_growth_rate_Hd"] = growth;
+  ctx.summary["reproduced"]["energy_growth_rate_Hd_compensated"] = growth_comp;
+  // Per step size (by index): the rates again, with the printed one; the largest H_d errors; and the
+  // growth rate of the same window maxima in exact arithmetic (the closed-form orbit of (13)-(14)),
+  // with what the drift of H_d explains of the difference.
+  const auto published = comparison(ctx.summary, s, "reproduced.energy_growth_rate");  // 001 Fig. 2, per h
+  json rates = json::array();
+  for (std::size_t i = 0; i < long_h.size(); ++i) {
+    const double h = long_h[i];
+    const Long& l = longs[i];
+    json r = {{"h", h}, {"steps_per_period", T / h}, {"H_rate", l.slope_H}, {"Hd_rate", l.slope_plain},
+              {"Hd_rate_compensated", l.slope_comp}, {"Hd_err_max", *std::max_element(l.plain.begin(), l.plain.end())},
+              {"Hd_err_max_compensated", *std::max_element(l.comp.begin(), l.comp.end())}};
+    if (published && published->at("published").contains(format_double(h)))
+      r["published_rate"] = published->at("published")[format_double(h)];
+    const auto exact = lobatto_exact_growth(h, osc.m, osc.w, A, s.real("long_run.periods"), windows);
+    const auto orbit = lobatto_exact_orbit(h, osc.m, osc.w, A);
+    if (exact && orbit) {
+      r["exact_rate"] = exact->slope_per_period;
+      r["H_rate_minus_exact"] = l.slope_H - exact->slope_per_period;
+      r["bound"] = exact->bound;  // |K|
+      r["periods_to_peak"] = optional_json(exact->periods_to_peak);
+      // a drift of H_d seen in H: (H_0 / H_d(0)) |Hd_rate|; and the relative drift of H_d per step
+      r["roundoff_in_H"] = orbit->H0 / orbit->Hd0 * std::abs(l.slope_plain);
+      r["Hd_drift_per_step"] = std::abs(l.slope_plain) * h / T / orbit->Hd0;
+    }
+    rates.push_back(r);
+  }
+  ctx.summary["long_run"] = {{"window_periods", s.real("long_run.periods") / static_cast<double>(windows)}, {"rates", rates}};
+}
+
+StudyPlan plan_long_run(const Scene& s) {
+  const double periods = s.real("long_run.periods"), T = period_of(s);
+  const double windows = static_cast<double>(s.integer("long_run.windows"));
+  double steps = 0;
+  for (double h : s.reals("long_run.h")) steps += periods * T / h;
+  const double runs = static_cast<double>(s.reals("long_run.h").size());
+  return {steps, 0, runs * windows * (3 * sizeof(double) + 5 * kCellBytes), kMatrixNs,
+          "iterates the one-step matrix (13), no force evaluations; ns per step: paper-scene study wall time over its steps"};
+}
+
+void keys(Schema& s) {
+  s.reals("long_run.h", positive(), 1, "steps of Fig. 2 (001: 0.1, 0.05, 0.025)")
+      .integer("long_run.windows", at_least(2), "windows for the maxima of the energy error");
+}
+
+}  // namespace
+
+Study long_run_study() {
+  return {"long_run", "001 Fig 2", {"fig2_energy.csv"}, {"long_run", "oscillator"}, check_long_run, run_long_run,
+          plan_long_run, keys};
+}
+
+}  // namespace geomint::lobatto_table

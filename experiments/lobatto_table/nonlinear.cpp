@@ -1,0 +1,154 @@
+// Nonlinear Lagrangians: the Lobatto variational integrator with Newton's method on the nonlinear
+// pendulum L = qdot^2/2 + cos q and on a planar elastic pendulum, against odeint's Bulirsch-Stoer
+// reference at nonlinear.t_end: the fitted orders (6), the Newton iterations per step, the compared
+// methods' errors, and the symplecticity of the one-step maps.
+#include <cmath>
+#include <cstdint>
+#include <string>
+#include <tuple>
+#include <vector>
+
+#include "geomint/core/integrate.hpp"
+#include "geomint/integrators/galerkin_variational.hpp"
+#include "geomint/methods/methods.hpp"
+#include "geomint/methods/registry.hpp"
+#include "geomint/methods/scene_methods.hpp"
+#include "geomint/observables/error_norms.hpp"
+#include "geomint/observables/order_fit.hpp"
+#include "geomint/observables/symplecticity.hpp"
+#include "geomint/reference/odeint_reference.hpp"
+#include "geomint/runner/distributed_map.hpp"
+#include "geomint/systems/elastic_pendulum.hpp"
+#include "lobatto_table.hpp"
+
+namespace geomint::lobatto_table {
+namespace {
+
+// Errors of the nonlinear study below this many times the reference's absolute tolerance are not fitted.
+constexpr double kReferenceFloorFactor = 100;
+
+void check_nonlinear(const Scene& s) {
+  check_distinct_methods(s, "nonlinear.methods");
+  check_nonlinear_steps(s);
+  const auto e = s.real_rows("nonlinear.elastic_initial")[0];
+  if (std::hypot(e[0], e[1]) == 0.0) s.reject("nonlinear.elastic_initial", "the spring force is singular at x = y = 0");
+  for (double h : s.reals("nonlinear.h"))
+    check_lobatto(s, "nonlinear.h", h * kNonlinearOmega, "h = " + format_double(h) + ", frequency 1");
+  for (const auto& m : s.texts("nonlinear.methods")) check_pendulum_steps(s, "nonlinear.methods", m);
+}
+
+// The planar elastic pendulum of the scene (y pointing down, systems/elastic_pendulum.hpp).
+ElasticPendulumWithGravity elastic_pendulum(const Scene& s) {
+  const ElasticPendulumParams p{s.real("nonlinear.elastic.l"), s.real("nonlinear.elastic.m"), s.real("nonlinear.elastic.k"),
+                                s.real("nonlinear.elastic.g")};
+  return {p.m, {SpringTerm{p.k, p.l}, GravityTerm{p.m, p.g}}};
+}
+
+void run_nonlinear(Context& ctx) {
+  const Scene& s = ctx.scene;
+  ctx.progress("nonlinear");
+  const auto nh = s.reals("nonlinear.h");
+  const double t_end = s.real("nonlinear.t_end"), rtol = s.real("reference.rtol"), atol = s.real("reference.atol");
+  const auto methods = s.texts("nonlinear.methods");
+  const auto lob = lobatto_rule();
+  const auto [pend, pz0] = pendulum(s);
+  const auto elastic = elastic_pendulum(s);
+  const auto er = s.real_rows("nonlinear.elastic_initial")[0];
+  const PhaseState<2> ez0 = make_state<2>(Vec<2>(er[0], er[1]), Vec<2>(er[2], er[3]));
+  const Z1 pref = reference_solution(pend, pz0, t_end, rtol, atol);
+  const PhaseState<2> eref = reference_solution(elastic, ez0, t_end, rtol, atol);
+  struct Row {
+    double pendulum_err, pendulum_iterations, elastic_err, elastic_iterations;
+    std::vector<double> compared;  // the pendulum error of each of nonlinear.methods
+    auto fields() { return std::tie(pendulum_err, pendulum_iterations, elastic_err, elastic_iterations, compared); }
+  };
+  const auto rows = distributed_map(nh.size(), [&](std::size_t i) {
+    const double h = nh[i];
+    const std::int64_t n = steps_to(t_end, h);
+    int it = 0;
+    double it_p = 0, it_e = 0;
+    Z1 zp = pz0;
+    PhaseState<2> ze = ez0;
+    for (std::int64_t j = 0; j < n; ++j) {
+      zp = galerkin_step(lob, pend, zp, h, &it), it_p += it;
+      ze = galerkin_step(lob, elastic, ze, h, &it), it_e += it;
+    }
+    Row r{phase_distance(zp, pref), it_p / static_cast<double>(n), phase_distance(ze, eref),
+          it_e / static_cast<double>(n), {}};
+    for (const auto& m : methods)
+      r.compared.push_back(phase_distance(
+          with_method(m, pend, [&](const auto& method) { return integrate(method, pz0, h, n); }), pref));
+    return r;
+  });
+  std::vector<std::string> columns = {"h", "pendulum_err", "pendulum_newton_iterations", "elastic_err",
+                                      "elastic_newton_iterations"};
+  for (const auto& m : methods) columns.push_back(label_of(m) + "_pendulum_err");
+  Csv nl(columns);
+  std::vector<double> e_p, e_e;
+  std::vector<std::vector<double>> e_m(methods.size());
+  for (std::size_t i = 0; i < nh.size(); ++i) {
+    const auto& r = rows[i];
+    bool finite = std::isfinite(r.pendulum_err) && std::isfinite(r.elastic_err);
+    for (double e : r.compared) finite = finite && std::isfinite(e);
+    if (!finite)
+      throw NumericalFailure("study nonlinear: a non-finite error at h = " + format_double(nh[i]) + ", t = " +
+                             format_double(t_end) + " (pendulum, elastic pendulum or one of nonlinear.methods)");
+    nl << nh[i] << r.pendulum_err << r.pendulum_iterations << r.elastic_err << r.elastic_iterations;
+    for (std::size_t k = 0; k < methods.size(); ++k) nl << r.compared[k], e_m[k].push_back(r.compared[k]);
+    nl.end_row();
+    e_p.push_back(r.pendulum_err), e_e.push_back(r.elastic_err);
+  }
+  ctx.write("nonlinear.csv", nl);
+  const double nfloor = kReferenceFloorFactor * atol;
+  json orders = json::object(), fits = json::object();
+  const auto fit = [&](const std::string& key, const std::vector<double>& err) {
+    const OrderFit f = fit_order(nh, err, nfloor, key.c_str());
+    orders[key] = f.order, fits[key] = to_json(f);
+  };
+  fit("lobatto_nonlinear_pendulum", e_p);
+  fit("lobatto_elastic_pendulum", e_e);
+  for (std::size_t k = 0; k < methods.size(); ++k) fit(label_of(methods[k]) + "_nonlinear_pendulum", e_m[k]);
+  merge(ctx, "orders", orders);
+  std::vector<double> it_p, it_e;
+  for (const auto& r : rows) it_p.push_back(r.pendulum_iterations), it_e.push_back(r.elastic_iterations);
+  ctx.summary["methods"]["nonlinear"] = labels(methods);
+  ctx.summary["nonlinear"] = {{"h_range", range_of(nh)},
+                              {"error_floor", nfloor},
+                              {"error_floor_over_atol", kReferenceFloorFactor},
+                              {"newton_iterations", {{"pendulum", range_of(it_p)}, {"elastic", range_of(it_e)}}},
+                              {"fits", fits}};
+  // Symplecticity of the nonlinear one-step maps: max |J^T Omega J - Omega|.
+  ctx.summary["reproduced"]["symplecticity_defect_pendulum"] =
+      symplecticity_defect(galerkin_step_jacobian(lob, pend, pz0, nh.front()));
+  ctx.summary["reproduced"]["symplecticity_defect_elastic"] =
+      symplecticity_defect(galerkin_step_jacobian(lob, elastic, ez0, nh.front()));
+  ctx.summary["norms"]["nonlinear"] = "|z_N - z(t_end)|_2 against the odeint Bulirsch-Stoer reference";
+}
+
+StudyPlan plan_nonlinear(const Scene& s) {
+  const double t_end = s.real("nonlinear.t_end");
+  const double runs = 2.0 + static_cast<double>(s.texts("nonlinear.methods").size());  // both pendulums, compared
+  double steps = 0;
+  for (double h : s.reals("nonlinear.h")) steps += runs * t_end / h;
+  return {steps, steps * kPendulumEvals, static_cast<double>(s.reals("nonlinear.h").size()) * runs * 4 * sizeof(double),
+          kPendulumNs, "odeint reference steps not counted; ns per step: Lobatto on the pendulum (paper-scene summary timing)"};
+}
+
+void keys(Schema& s) {
+  s.real("nonlinear.elastic.l", positive(), "elastic pendulum: relaxed length of the spring")
+      .real("nonlinear.elastic.m", positive(), "elastic pendulum: mass")
+      .real("nonlinear.elastic.k", positive(), "elastic pendulum: spring stiffness")
+      .real("nonlinear.elastic.g", non_negative(), "elastic pendulum: gravity (y pointing down)")
+      .real_rows("nonlinear.elastic_initial", 4, any_finite(), 1, "elastic pendulum [x, y, px, py]")
+      .texts("nonlinear.methods", methods_for<NonlinearPendulum>(), 0,
+             "methods compared with Lobatto on the nonlinear pendulum");
+}
+
+}  // namespace
+
+Study nonlinear_study() {
+  return {"nonlinear", "nonlinear Lagrangians (Newton): order 6, symplecticity", {"nonlinear.csv"},
+          {"nonlinear", "reference"}, check_nonlinear, run_nonlinear, plan_nonlinear, keys};
+}
+
+}  // namespace geomint::lobatto_table

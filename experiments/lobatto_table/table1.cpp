@@ -1,0 +1,165 @@
+// 001 Table 1: one period of the oscillator from q = A, p = 0 at N steps per period (001: 10, 20, 40); the
+// largest absolute errors of the Lobatto scheme in p, q, H and the discrete energy H_d of (15), the q
+// errors of the compared methods and of eq. (12) as printed (iterated as a scheme of its own), the
+// fitted orders, and the comparison with the printed digits.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "geomint/analysis/lobatto_oscillator.hpp"
+#include "geomint/methods/methods.hpp"
+#include "geomint/methods/registry.hpp"
+#include "geomint/methods/scene_methods.hpp"
+#include "geomint/observables/order_fit.hpp"
+#include "lobatto_table.hpp"
+#include "trajectory.hpp"
+
+namespace geomint::lobatto_table {
+namespace {
+
+void check_table1(const Scene& s) {
+  check_distinct_methods(s, "table1.methods");
+  check_meshes(s, "meshes", "table1.methods", true);
+}
+
+// max_{j = 1..N} |q_j - q(t_j)| of the trajectory z_0..z_N.
+double max_q_error(const std::vector<Z1>& zs, const Oscillator& o, double h) {
+  double e = 0;
+  for (std::size_t j = 1; j < zs.size(); ++j)
+    e = std::max(e, std::abs(zs[j].q[0] - o.osc.exact(o.z0, static_cast<double>(j) * h).q[0]));
+  return e;
+}
+
+// z_0..z_N of a linear one-step matrix Phi on (p, q), 001's order of eq. (13).
+std::vector<Z1> iterate_pq(const Mat<2>& Phi, const Z1& z0, std::int64_t N) {
+  std::vector<Z1> zs = {z0};
+  Vec<2> x(z0.p[0], z0.q[0]);
+  for (std::int64_t j = 1; j <= N; ++j) x = Phi * x, zs.push_back(make_state(x[1], x[0]));
+  return zs;
+}
+
+// Does `reproduced` round to the printed value with its `digits` significant digits?
+bool rounds_to_printed(double printed, double reproduced, int digits) {
+  char a[32], b[32];
+  std::snprintf(a, sizeof a, "%.*e", digits - 1, printed);
+  std::snprintf(b, sizeof b, "%.*e", digits - 1, reproduced);
+  return std::string(a) == b;
+}
+
+// Table 1 against the printed values: how many of the errors of p, q and H round to the three printed
+// digits, the largest relative deviation, and the range of the printed H_d errors (round-off, compared apart).
+json printed_table1(const json& summary, const Scene& s) {
+  int compared = 0, rounding = 0;
+  double deviation = 0;
+  std::vector<double> printed_Hd;
+  for (double Nd : s.reals("meshes")) {
+    const std::string n = std::to_string(static_cast<std::int64_t>(Nd));
+    for (const char* prefix : {"p", "q", "H", "Hd"}) {
+      const auto c = comparison(summary, s, std::string("reproduced.") + prefix + "_err_N" + n);
+      if (!c) continue;
+      const double printed = (*c)["published"], reproduced = (*c)["reproduced"];
+      if (std::string(prefix) == "Hd") {
+        printed_Hd.push_back(printed);
+      } else {
+        ++compared, rounding += rounds_to_printed(printed, reproduced, 3);
+        deviation = std::max(deviation, std::abs((*c)["difference"].get<double>()));  // (relative: compare = rel)
+      }
+    }
+  }
+  json out = {{"compared", compared}, {"round_to_printed_digits", rounding}, {"max_relative_deviation", deviation}};
+  if (!printed_Hd.empty()) out["Hd_err_range"] = range_of(printed_Hd);
+  return out;
+}
+
+void run_table1(Context& ctx) {
+  const Scene& s = ctx.scene;
+  ctx.progress("Table 1");
+  const Oscillator o = oscillator(s);
+  const auto& [osc, A, T, z0] = o;
+  const auto methods = s.texts("table1.methods");
+  std::vector<std::string> columns = {"N", "h", "p_err", "q_err", "H_err", "Hd_err"};
+  for (const auto& m : methods) columns.push_back(label_of(m) + "_q_err");
+  Csv t1(columns);
+  std::vector<double> hs, ep, eq, eH, eHd, Hd0s, e12;
+  std::vector<std::vector<double>> em(methods.size());
+  json reproduced = json::object();
+  for (double Nd : s.reals("meshes")) {
+    const auto N = static_cast<std::int64_t>(Nd);
+    const double h = T / Nd;
+    const Mat<2> Phi = lobatto_matrix(osc, h);
+    double p = 0, q = 0, H = 0, Hd = 0;
+    const auto lobatto = trajectory("lobatto", osc, z0, h, N);
+    const double H0 = osc.H(z0), Hd0 = discrete_energy(Phi, z0);
+    for (std::int64_t j = 1; j <= N; ++j) {
+      const Z1& zl = lobatto[static_cast<std::size_t>(j)];
+      const Z1 ex = osc.exact(z0, static_cast<double>(j) * h);
+      p = std::max(p, std::abs(zl.p[0] - ex.p[0])), q = std::max(q, std::abs(zl.q[0] - ex.q[0]));
+      H = std::max(H, std::abs(osc.H(zl) - H0)), Hd = std::max(Hd, std::abs(discrete_energy(Phi, zl) - Hd0));
+    }
+    t1 << N << h << p << q << H << Hd;
+    for (std::size_t k = 0; k < methods.size(); ++k) {
+      const double e = max_q_error(trajectory(methods[k], osc, z0, h, N), o, h);
+      t1 << e;
+      em[k].push_back(e);
+    }
+    t1.end_row();
+    const std::string n = std::to_string(N);
+    reproduced["p_err_N" + n] = p, reproduced["q_err_N" + n] = q;
+    reproduced["H_err_N" + n] = H, reproduced["Hd_err_N" + n] = Hd;
+    hs.push_back(h), ep.push_back(p), eq.push_back(q), eH.push_back(H), eHd.push_back(Hd), Hd0s.push_back(Hd0);
+    // 001 eq. (12) as printed, iterated as a scheme of its own (it is not (13)-(14): see the unit tests)
+    e12.push_back(max_q_error(iterate_pq(lobatto_map_12(h, osc.m, osc.w, Eq12::printed), z0, N), o, h));
+  }
+  ctx.write("table1.csv", t1);
+  const double floor = roundoff_floor();
+  json orders = json::object();
+  orders["lobatto_p"] = fit_order(hs, ep, floor, "lobatto_p").order;
+  orders["lobatto_q"] = fit_order(hs, eq, floor, "lobatto_q").order;
+  orders["lobatto_H"] = fit_order(hs, eH, floor, "lobatto_H").order;
+  for (std::size_t k = 0; k < methods.size(); ++k) {
+    const std::string l = label_of(methods[k]);
+    orders[l] = fit_order(hs, em[k], floor, l.c_str()).order;
+  }
+  orders["lobatto_printed_eq12_q"] = fit_order(hs, e12, floor, "lobatto_printed_eq12_q").order;
+  merge(ctx, "reproduced", reproduced);
+  merge(ctx, "orders", orders);
+  ctx.summary["norms"]["table1"] = "max over the steps j = 1..N of one period of the absolute error (p, q, H, H_d)";
+  // H_d(0) (15) per mesh, the H_d errors relative to it and their range; the compared methods' errors;
+  // the comparison with the printed digits.
+  json relative = json::array();
+  for (std::size_t i = 0; i < eHd.size(); ++i) relative.push_back(eHd[i] / Hd0s[i]);
+  ctx.summary["methods"]["table1"] = labels(methods);
+  json compared = json::object();  // the q errors of the compared methods per mesh, as table1.csv
+  for (std::size_t k = 0; k < methods.size(); ++k) compared[label_of(methods[k])] = em[k];
+  ctx.summary["table1"] = {{"Hd0", Hd0s},
+                           {"Hd_err_relative", relative},
+                           {"Hd_err_range", range_of(eHd)},
+                           {"q_err", compared},
+                           {"printed", printed_table1(ctx.summary, s)}};
+}
+
+StudyPlan plan_table1(const Scene& s) {
+  double steps = 0, largest = 0;
+  const double runs = 2.0 + static_cast<double>(s.texts("table1.methods").size());  // Lobatto, (12), compared
+  for (double n : s.reals("meshes")) steps += runs * n, largest = std::max(largest, n);
+  return {steps, steps * kOscillatorEvals, 2 * (largest + 1) * kStateBytes, kOscillatorNs,
+          "ns per step: Lobatto on the oscillator (paper-scene summary timing.long_run_cost)"};
+}
+
+void keys(Schema& s) {
+  s.reals("meshes", at_least(1), 3, "steps per period N of Table 1 (001: 10, 20, 40)")
+      .texts("table1.methods", methods_for<HarmonicOscillator>(), 0,
+             "methods compared with Lobatto in Table 1 (max error of q; 001: simpson, implicit_midpoint)");
+}
+
+}  // namespace
+
+Study table1_study() {
+  return {"table1", "001 Table 1", {"table1.csv"}, {"meshes", "oscillator", "table1"}, check_table1, run_table1,
+          plan_table1, keys};
+}
+
+}  // namespace geomint::lobatto_table
