@@ -1,0 +1,263 @@
+// 004 Fig. 4: Henon-Heiles k (hh.k, 004: 5), an ensemble of perturbed starts along the simplified method (1.6)
+// (in SIMD lanes, bit for bit the scalar method; checkpointed): the mean and standard deviation of the error of
+// the modified energy E of (3.3) and (4.2), its random walk (sigma^2 against t) and the outliers. Fig. 5, the
+// Poincare cuts and growth episodes of its trajectory with the largest error: ensemble_fig5.hpp.
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "ensemble_fig5.hpp"
+#include "geomint/core/integrate.hpp"
+#include "geomint/observables/ensemble_statistics.hpp"
+#include "geomint/observables/modified_energy.hpp"
+#include "geomint/runner/checkpoint.hpp"
+#include "geomint/sweep/ensemble_kernels.hpp"
+#include "henon_heiles_starts.hpp"
+#include "ti_drift.hpp"
+
+namespace geomint::ti_drift {
+namespace {
+
+// The column k of an ensemble's series, over the trajectories `which`.
+std::vector<double> column(const std::vector<std::vector<double>>& series, const std::vector<std::size_t>& which,
+                           std::size_t k) {
+  std::vector<double> v;
+  for (std::size_t i : which) v.push_back(series[i][k]);
+  return v;
+}
+
+std::vector<std::size_t> all_of(std::size_t M) {
+  std::vector<std::size_t> v(M);
+  for (std::size_t i = 0; i < M; ++i) v[i] = i;
+  return v;
+}
+
+// The scene keys the ensemble's series depend on (its checkpoint).
+const std::vector<std::string> kEnsembleKeys = {"h", "t_end", "samples", "hh", "ensemble.size", "ensemble.seed",
+                                                "ensemble.perturbation", "hh3.q2", "hh3.p2"};
+
+template <class HH>
+Run integrate_ensemble(Context& ctx, const HH& hhk) {
+  const Scene& s = ctx.scene;
+  ctx.progress("Fig. 4: ensemble");
+  const double h = s.real("h"), t_end = s.real("t_end");
+  const std::int64_t samples = s.integer("samples");
+  const auto M = static_cast<std::size_t>(s.integer("ensemble.size"));
+  const std::int64_t n4 = steps_to(t_end, h), every4 = std::max<std::int64_t>(1, n4 / samples);
+  const auto time_of = [&](std::size_t k) { return static_cast<double>(k) * static_cast<double>(every4) * h; };
+  std::vector<Z2> starts(M);
+  for (std::size_t i = 0; i < M; ++i) starts[i] = ensemble_start(s, hhk, i);
+  const auto t0 = std::chrono::steady_clock::now();  // (on --resume: the part run since)
+  const auto lanes = simplified_ti_lanes_kernels<HH>().front().steps;  // (bit for bit the scalar method)
+  auto series = concatenate(checkpointed_map<std::vector<std::vector<double>>>(
+      ctx, {"ensemble", kEnsembleKeys}, lane_batches(M), [&](std::size_t b) {
+        const LaneBatch batch = lane_batch(b, M);
+        std::vector<std::vector<double>> e(batch.count);
+        std::vector<double> E0;
+        for (std::size_t i = 0; i < batch.count; ++i) E0.push_back(simplified_ti_modified_energy(hhk, starts[batch.first + i], h));
+        simplified_ti_lanes(hhk, lanes, std::span<const Z2>(starts).subspan(batch.first, batch.count), h, n4, every4,
+                            [&](int i, std::int64_t, const Z2& z) { e[i].push_back(simplified_ti_modified_energy(hhk, z, h) - E0[i]); });
+        return e;
+      }));
+  const double wall4 = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  for (std::size_t i = 0; i < M; ++i)
+    for (std::size_t k = 0; k < series[i].size(); ++k)
+      if (!std::isfinite(series[i][k]))
+        throw NumericalFailure("simplified_takahashi_imada: E of trajectory " + std::to_string(i) +
+                               " is not finite at step " + std::to_string(static_cast<std::int64_t>(k) * every4) +
+                               ", t = " + format_double(time_of(k)));
+  const std::size_t ns = series[0].size();
+  return {h, t_end, M, n4, every4, std::move(starts), std::move(series), ns, wall4};
+}
+
+// Fig. 4: the mean and standard deviation over the ensemble at each output time (fig4_stats.csv).
+struct Stats {
+  std::vector<double> ts, mus, sigmas;
+};
+
+Stats write_stats(Context& ctx, const Run& run, json& reproduced) {
+  const auto& series = run.series;
+  const std::size_t M = run.M, ns = run.ns;
+  const double t_end = run.t_end;
+  const auto time_of = [&](std::size_t k) { return run.time_of(k); };
+  Csv f4s({"t", "mu", "sigma"});
+  std::vector<double> ts, mus, sigmas;
+  for (std::size_t k = 0; k < ns; ++k) {
+    const auto [mu, sigma] = mean_and_deviation(column(series, all_of(M), k));
+    f4s.row(time_of(k), mu, sigma);
+    ts.push_back(time_of(k)), mus.push_back(mu), sigmas.push_back(sigma);
+  }
+  ctx.write("fig4_stats.csv", f4s);
+  reproduced["hh5_mu_final"] = mus.back(), reproduced["hh5_sigma_final"] = sigmas.back();
+  reproduced["hh5_sigma_exponent"] = power_law_exponent(ts, sigmas, t_end / 10);  // past the bounded part
+  return {ts, mus, sigmas};
+}
+
+// Every trajectory's series (thinned to at most 200 times) and the outliers.
+struct Outliers {
+  std::size_t worst_i;  // the trajectory with the largest error
+  json outliers;
+  std::vector<std::size_t> kept;
+  std::size_t stride;  // of the thinned times
+};
+
+Outliers write_trajectories(Context& ctx, const Run& run, json& reproduced) {
+  const Scene& s = ctx.scene;
+  const auto& series = run.series;
+  const std::size_t M = run.M, ns = run.ns;
+  const auto time_of = [&](std::size_t k) { return run.time_of(k); };
+  Csv f4t({"trajectory", "outlier", "t", "E_err"});
+  std::size_t worst_i = 0;
+  double worst_e = 0;
+  json outliers = json::array();
+  std::vector<std::size_t> kept;
+  const std::size_t stride = std::max<std::size_t>(1, ns / 200);
+  for (std::size_t i = 0; i < M; ++i) {
+    double mx = 0;
+    for (double e : series[i]) mx = std::max(mx, std::abs(e));
+    const bool out = mx > s.real("ensemble.outlier");
+    if (out) outliers.push_back(i);
+    else kept.push_back(i);
+    if (mx > worst_e) worst_e = mx, worst_i = i;
+    for (std::size_t k = 0; k < ns; k += stride)
+      f4t.row(static_cast<std::int64_t>(i), static_cast<std::int64_t>(out), time_of(k), series[i][k]);
+  }
+  ctx.write("fig4_trajectories.csv", f4t);
+  reproduced["hh5_outliers"] = outliers;
+  return {worst_i, outliers, kept, stride};
+}
+
+  // The statistics without the outliers, at the times of fig4_trajectories.csv.
+template <class HH>
+json ensemble_summary(const Scene& s, const HH& hhk, const Run& run, const Stats& st, const Outliers& out) {
+  const std::vector<double>& ts = st.ts;
+  const std::vector<double>& mus = st.mus;
+  const std::vector<double>& sigmas = st.sigmas;
+  const json& outliers = out.outliers;
+  const std::vector<std::size_t>& kept = out.kept;
+  const std::size_t stride = out.stride;
+  const auto& series = run.series;
+  const std::size_t M = run.M, ns = run.ns;
+  const double t_end = run.t_end;
+  const std::int64_t n4 = run.n4;
+  const auto time_of = [&](std::size_t k) { return run.time_of(k); };
+  json ensemble = {{"p1", hh_start(hhk, s.real("hh3.q2"), s.real("hh3.p2"), s.real("hh.H0")).p[0]},  // unperturbed
+                   {"steps", n4},
+                   {"sample_dt", time_of(1)},
+                   {"thinned_dt", time_of(stride)},
+                   {"outliers", outliers.size()},
+                   {"kept", kept.size()}};
+  if (kept.size() >= 2) {
+    std::vector<double> tk, sk;
+    MeanDeviation last;
+    for (std::size_t k = 0; k < ns; k += stride) {
+      last = mean_and_deviation(column(series, kept, k));
+      tk.push_back(time_of(k)), sk.push_back(last.sd);
+    }
+    ensemble["without_outliers"] = {{"mu_final", last.mean}, {"sigma_final", last.sd},
+                                    {"sigma_exponent", power_law_exponent(tk, sk, t_end / 10)}};
+  }
+  // The mean: at the first output time after the start, and over [t_end/10, t_end].
+  std::vector<double> mu_late, sigma2(sigmas.size());
+  for (std::size_t k = 0; k < ns; ++k) {
+    if (ts[k] >= t_end / 10) mu_late.push_back(mus[k]);
+    sigma2[k] = sigmas[k] * sigmas[k];
+  }
+  ensemble["mu_first"] = {{"t", ts.at(1)}, {"mu", mus.at(1)}};
+  ensemble["mu_late"] = spread_of(mu_late);
+  ensemble["mu_final_stderr"] = standard_error_of_mean(sigmas.back(), static_cast<double>(M));
+  ensemble["sigma_rel_stderr"] = standard_error_of_deviation(1.0, static_cast<double>(M));
+  ensemble["sigma_exponent_from_hundredth"] = power_law_exponent(ts, sigmas, t_end / 100);
+  // sigma^2 = c + D t of a random walk: D at t_end, and the slope of sigma^2 over [t_end/10, t_end].
+  ensemble["sigma2_over_t"] = sigma2.back() / ts.back();
+  ensemble["sigma2_slope"] = slope_from(ts, sigma2, t_end / 10);
+  // The same from the printed sigma, at the printed time (published.toml: hh5_sigma_final).
+  const Published& printed = published_entry("hh5_sigma_final");
+  const double printed_sigma = printed.value.get<double>(), printed_t = printed.requires_.at("t_end").get<double>();
+  ensemble["printed_sigma2_over_t"] = printed_sigma * printed_sigma / printed_t;
+  ensemble["sigma2_over_t_minus_printed"] = ensemble["sigma2_over_t"].get<double>() - printed_sigma * printed_sigma / printed_t;
+  // The printed sigma against ours carried to the printed time by the printed law sigma ~ t^gamma (published.toml:
+  // hh5_sigma_exponent), in standard errors of ours (relative 1/sqrt(2(M-1))): a check that the quick scene can make.
+  const double gamma_printed = published_value("hh5_sigma_exponent");
+  const double carried = sigmas.back() * std::pow(printed_t / ts.back(), gamma_printed);
+  ensemble["printed_sigma_check"] = {
+      {"printed", printed_sigma},
+      {"carried_to_printed_t", carried},
+      {"exponent", gamma_printed},
+      {"score", std::abs(carried - printed_sigma) / (carried * standard_error_of_deviation(1.0, static_cast<double>(M)))}};
+  return ensemble;
+}
+
+template <class HH>
+void ensemble_with(Context& ctx, const HH& hhk) {
+  const Run run = integrate_ensemble(ctx, hhk);
+  json reproduced;
+  const Stats stats = write_stats(ctx, run, reproduced);
+  const Outliers out = write_trajectories(ctx, run, reproduced);
+  const json ensemble = ensemble_summary(ctx.scene, hhk, run, stats, out);
+
+  // Fig. 5: Poincare cuts (q1 = 0 upwards, p1 > 0) of the trajectory with the largest error,
+  // on the window where its error grows fastest and on the one where it is flattest.
+  const json poincare = write_fig5(ctx, hhk, run, out.worst_i, reproduced);
+  ctx.summary["ensemble"] = ensemble;
+  ctx.summary["poincare"] = poincare;
+  const double wall4 = run.wall4;
+  const std::size_t M = run.M;
+  const std::int64_t n4 = run.n4;
+  put(ctx, "timing",
+      {{"fig4_wall_s", wall4},
+       {"threads", ctx.threads},
+       {"fig4_steps", static_cast<double>(M) * static_cast<double>(n4)},  // over the ensemble
+       {"fig4_ns_per_step_thread",
+        1e9 * wall4 * ctx.threads / (static_cast<double>(M) * static_cast<double>(n4))}});
+  put_differences(ctx, "ensemble");
+}
+
+void run_ensemble(Context& ctx) {
+  with_ensemble_system(ctx.scene, [&](const auto& hhk) { ensemble_with(ctx, hhk); });
+}
+
+void check_ensemble(const Scene& s) {
+  with_ensemble_system(s, [&](const auto& hh) { check_hh_starts(s, "hh3", hh, s.real("ensemble.perturbation"), true); });
+  const double h = s.real("h"), t_end = s.real("t_end");
+  if (t_end / h < 2) s.reject("t_end", "must be at least two steps h");
+  for (const char* key : {"ensemble.episode_half_width", "ensemble.episode_min_length"})
+    if (s.real(key) > t_end) s.reject(key, "must not exceed t_end = " + format_double(t_end));
+}
+
+StudyPlan plan_ensemble(const Scene& s) {
+  const double n = s.real("t_end") / s.real("h"), M = static_cast<double>(s.integer("ensemble.size"));
+  const double rows = kept_samples(n, static_cast<double>(s.integer("samples")));
+  // M trajectories and the rerun of the one with the largest error (Fig. 5); the series of all M, and the CSVs
+  return {(M + 1) * n, (M + 1) * n * static_cast<double>(evals_per_step("simplified_takahashi_imada")),
+          M * rows * 8 + rows * 200 + M * std::min(rows, 201.0) * 60, kNsPerStepLanesHH, kNsLanesNote,
+          static_cast<double>(lane_batches(static_cast<std::size_t>(M)))};  // (tasks: batches of lanes)
+}
+
+void keys(Schema& s) {
+  s.real("t_end", positive(), "Fig. 4 time span (004: 2.5e6)")
+      .integer("ensemble.size", at_least(2), "Fig. 4 trajectories (004: 100)")
+      .real("ensemble.episode_half_width", positive(),
+            "Fig. 5 episodes: the running slope of the error of E of the trajectory is fitted over +- this time")
+      .real("ensemble.episode_threshold", positive(),
+            "Fig. 5 episodes: a sample belongs to an episode where its running slope differs from their median by more "
+            "than this many robust standard deviations (1.4826 MAD) of the running slopes")
+      .real("ensemble.episode_min_length", positive(), "Fig. 5 episodes: the shortest episode (time units)")
+      .real("ensemble.outlier", positive(), "trajectories whose max |error| exceeds this go to Fig. 4's upper panel (004: 2e-6)");
+}
+
+}  // namespace
+
+Study ensemble_study() {
+  return {"ensemble", "004 Figs 4, 5",
+          {"fig4_stats.csv", "fig4_trajectories.csv", "fig5_poincare.csv", "fig5_episodes.csv", "fig5_episode_cuts.csv"},
+          {"h", "t_end", "samples", "hh", "ensemble", "hh3.q2", "hh3.p2", "checkpoint"},
+          check_ensemble, run_ensemble, plan_ensemble, keys};
+}
+
+}  // namespace geomint::ti_drift

@@ -1,0 +1,291 @@
+#pragma once
+// ti_drift, the ensemble study (ensemble.cpp): 004 Fig. 5, Poincare cuts (q1 = 0 upwards, p1 > 0) of the
+// ensemble's trajectory with the largest error, in the window where its error grows fastest and in the
+// flattest, and the growth episodes of its error against (4.3); and the ensemble as run, which Figs 4 and 5
+// read.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
+#include <map>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "geomint/analysis/growth_episodes.hpp"
+#include "geomint/core/integrate.hpp"
+#include "geomint/integrators/takahashi_imada.hpp"
+#include "geomint/observables/modified_energy.hpp"
+#include "ti_drift.hpp"
+
+namespace geomint::ti_drift {
+
+// The ensemble as run: the error of E of each trajectory at its ns output times, every4 steps apart.
+struct Run {
+  double h, t_end;
+  std::size_t M;
+  std::int64_t n4, every4;
+  std::vector<Z2> starts;
+  std::vector<std::vector<double>> series;  // per trajectory
+  std::size_t ns;
+  double wall4;  // (on --resume: the part run since)
+  double time_of(std::size_t k) const { return static_cast<double>(k) * static_cast<double>(every4) * h; }
+};
+
+constexpr std::size_t kPoincareWindows = 20;  // Fig. 5: the run of the trajectory is cut into this many windows
+
+// The windows of the trajectory's run: the one where its error grows fastest and the flattest.
+struct Windows {
+  std::size_t windows, per, steep, flat, compared;
+  double tw;  // their length in time
+};
+
+inline Windows choose_windows(const Run& run, const std::vector<double>& e) {
+  const double h = run.h;
+  const std::int64_t every4 = run.every4;
+  const std::size_t ns = run.ns;
+  const std::size_t windows = kPoincareWindows, per = std::max<std::size_t>(2, ns / windows);
+  std::size_t steep = 0, flat = 0, compared = 0;
+  double smax = -1, smin = std::numeric_limits<double>::infinity();
+  for (std::size_t w = 0; w < windows && (w + 1) * per <= ns; ++w, ++compared) {
+    std::vector<double> x, y;
+    for (std::size_t k = w * per; k < (w + 1) * per; ++k) x.push_back(static_cast<double>(k)), y.push_back(e[k]);
+    const double sl_w = std::abs(slope(x, y));
+    if (sl_w > smax) smax = sl_w, steep = w;
+    if (sl_w < smin) smin = sl_w, flat = w;
+  }
+  const double tw = static_cast<double>(per) * static_cast<double>(every4) * h;
+  return {windows, per, steep, flat, compared, tw};
+}
+
+// The cuts of a window or an episode: their number, those with p2 < 0, and the sum of their p2.
+struct Cuts {
+  std::size_t count = 0, negative = 0;
+  double p2_sum = 0;
+};
+
+// The growth episodes found, the times of the recorded error, and the rule's parameters.
+struct Episodes {
+  double sample_dt;
+  std::size_t half, min_samples;
+  std::vector<double> t_rec;
+  SlopeNoise slope_sn;
+  std::vector<Episode> episodes;
+  std::vector<int> episode_of;  // the episode of the interval [t_k, t_{k+1}), or -1 (the complement)
+};
+
+// The growth episodes of its recorded error (analysis/growth_episodes.hpp; the scene's ensemble.episode_*).
+// fig5_episodes.csv: at each output time the error, its running slope and its episode.
+inline Episodes find_episodes(Context& ctx, const Run& run, const std::vector<double>& e) {
+  const Scene& s = ctx.scene;
+  const std::size_t ns = run.ns;
+  const auto time_of = [&](std::size_t k) { return run.time_of(k); };
+  const double sample_dt = time_of(1);
+  const auto half = static_cast<std::size_t>(std::max(1.0, std::round(s.real("ensemble.episode_half_width") / sample_dt)));
+  const auto min_samples = static_cast<std::size_t>(std::max(1.0, std::round(s.real("ensemble.episode_min_length") / sample_dt)));
+  std::vector<double> t_rec(ns);
+  for (std::size_t k = 0; k < ns; ++k) t_rec[k] = time_of(k);
+  const std::vector<double> run_slope = running_slope(t_rec, e, half);
+  const SlopeNoise slope_sn = slope_noise(run_slope);
+  const std::vector<Episode> episodes = growth_episodes(run_slope, s.real("ensemble.episode_threshold"), min_samples);
+  std::vector<int> episode_of(ns, -1);  // the episode of the interval [t_k, t_{k+1}), or -1 (the complement)
+  for (std::size_t i = 0; i < episodes.size(); ++i)
+    for (std::size_t k = episodes[i].begin; k < episodes[i].end; ++k) episode_of[k] = static_cast<int>(i);
+  Csv f5e({"t", "E_err", "running_slope", "episode", "sign"});
+  for (std::size_t k = 0; k < ns; ++k)
+    f5e.row(t_rec[k], e[k], run_slope[k], static_cast<std::int64_t>(episode_of[k]),
+            static_cast<std::int64_t>(episode_of[k] >= 0 ? episodes[static_cast<std::size_t>(episode_of[k])].sign : 0));
+  ctx.write("fig5_episodes.csv", f5e);
+  return {sample_dt, half, min_samples, std::move(t_rec), slope_sn, episodes, std::move(episode_of)};
+}
+
+// The crossings of q1 = 0 upwards along the trajectory: in each window (fig5_poincare.csv) and in each
+// episode (fig5_episode_cuts.csv, written last).
+// Per episode (the last entry: the complement): its cuts, and (4.3) integrated along the steps, h sum dE/dt.
+struct Crossings {
+  std::map<std::string, Cuts> cuts;
+  std::vector<Cuts> ep_cuts;
+  std::vector<double> ep_predicted;
+  std::vector<std::int64_t> ep_steps, ep_steps_negative;
+  Csv f5c;
+};
+
+template <class HH>
+Crossings cut_trajectory(Context& ctx, const HH& hhk, const Run& run, std::size_t worst_i, const Windows& win,
+                         const Episodes& found) {
+  const double h = run.h, tw = win.tw;
+  const std::int64_t every4 = run.every4, n4 = run.n4;
+  const std::size_t ns = run.ns, steep = win.steep, flat = win.flat;
+  const auto& starts = run.starts;
+  const std::vector<Episode>& episodes = found.episodes;
+  const std::vector<int>& episode_of = found.episode_of;
+  Csv f5({"window", "t", "q2", "p2"});
+  std::map<std::string, Cuts> cuts;
+  std::vector<Cuts> ep_cuts(episodes.size() + 1);
+  std::vector<double> ep_predicted(episodes.size() + 1, 0.0);
+  std::vector<std::int64_t> ep_steps(episodes.size() + 1, 0), ep_steps_negative(episodes.size() + 1, 0);
+  Csv f5c({"episode", "sign", "t", "q2", "p2"});
+  Z2 prev = starts[worst_i];
+  integrate(simplified_ti_method(hhk, false), starts[worst_i], h, n4, [&](std::int64_t j, const Z2& z) {
+    const double t = static_cast<double>(j) * h;
+    const std::size_t k_prev = j > 0 ? static_cast<std::size_t>((j - 1) / every4) : 0;
+    const int ep = k_prev < ns ? episode_of[k_prev] : -1;
+    const std::size_t slot = ep >= 0 ? static_cast<std::size_t>(ep) : episodes.size();
+    if (j > 0 && k_prev + 1 < ns) {
+      ep_predicted[slot] += h * simplified_ti_drift_rate(hhk, prev, h);
+      ++ep_steps[slot], ep_steps_negative[slot] += prev.p[1] < 0;
+    }
+    if (j > 0 && k_prev + 1 < ns && prev.q[0] < 0 && z.q[0] >= 0 && z.p[0] > 0) {
+      const double a = -prev.q[0] / (z.q[0] - prev.q[0]);
+      const double p2 = prev.p[1] + a * (z.p[1] - prev.p[1]);
+      Cuts& c = ep_cuts[slot];
+      ++c.count, c.negative += p2 < 0, c.p2_sum += p2;
+      if (ep >= 0)
+        f5c.row(static_cast<std::int64_t>(ep), static_cast<std::int64_t>(episodes[static_cast<std::size_t>(ep)].sign), t - (1 - a) * h,
+                prev.q[1] + a * (z.q[1] - prev.q[1]), p2);
+    }
+    for (const auto& [label, w] : {std::pair{"growth", steep}, std::pair{"no_growth", flat}}) {
+      if (j > 0 && t >= static_cast<double>(w) * tw && t < static_cast<double>(w + 1) * tw && prev.q[0] < 0 &&
+          z.q[0] >= 0 && z.p[0] > 0) {
+        const double a = -prev.q[0] / (z.q[0] - prev.q[0]);  // linear interpolation of the crossing
+        const double p2 = prev.p[1] + a * (z.p[1] - prev.p[1]);
+        f5.row(label, t - (1 - a) * h, prev.q[1] + a * (z.q[1] - prev.q[1]), p2);
+        Cuts& c = cuts[label];
+        ++c.count, c.negative += p2 < 0, c.p2_sum += p2;
+      }
+    }
+    prev = z;
+  });
+  ctx.write("fig5_poincare.csv", f5);
+  return {std::move(cuts), std::move(ep_cuts), std::move(ep_predicted), std::move(ep_steps), std::move(ep_steps_negative),
+          std::move(f5c)};
+}
+
+// Each window: its cuts, and the error of E of the trajectory at its ends (output times).
+inline json window_summary(const Run& run, const std::vector<double>& e, const Windows& win, Crossings& x) {
+  const std::size_t ns = run.ns, windows = win.windows, compared = win.compared, per = win.per;
+  const std::size_t steep = win.steep, flat = win.flat;
+  const double tw = win.tw;
+  auto& cuts = x.cuts;
+  json poincare = {{"windows", windows}, {"windows_compared", compared}};
+  for (const auto& [label, w] : {std::pair{"growth", steep}, std::pair{"no_growth", flat}}) {
+    const Cuts& c = cuts[label];
+    const double E_lo = e[w * per], E_hi = e[(w + 1) * per < ns ? (w + 1) * per : ns - 1];
+    poincare[label] = {{"t_start", static_cast<double>(w) * tw},
+                       {"t_end", static_cast<double>(w + 1) * tw},
+                       {"length", tw},
+                       {"cuts", c.count},
+                       {"cuts_per_time", static_cast<double>(c.count) / tw},
+                       {"share_p2_negative", c.count ? static_cast<double>(c.negative) / static_cast<double>(c.count) : 0.0},
+                       {"mean_p2", c.count ? c.p2_sum / static_cast<double>(c.count) : 0.0},
+                       {"E_err_start", E_lo},
+                       {"E_err_end", E_hi},
+                       {"E_err_change", E_hi - E_lo},
+                       {"E_err_slope", (E_hi - E_lo) / tw}};
+    // The printed window (published.toml: poincare_<label>): its length and cuts per unit time.
+    const json& printed_window = published_entry("poincare_" + std::string(label)).value;
+    const double length = printed_window["t_end"].get<double>() - printed_window["t_start"].get<double>();
+    poincare["printed"][label] = {{"length", length}, {"cuts_per_time", printed_window["cuts"].get<double>() / length}};
+  }
+  return poincare;
+}
+
+// The episodes against (4.3): dE/dt = -h^4/2880 U^(5)(p^5) = h^4/120 p2^5 for k = 5 (U_22222 = -24): E rises where
+// the time average of p2^5 over the episode is positive. The change (4.3) predicts, h sum_n dE/dt(p_n, q_n) over the
+// episode's steps, against the recorded change; and the share of the cuts, and of the steps, with p2 < 0.
+inline json episode_summary(const Scene& s, const Run& run, const std::vector<double>& e, const Episodes& found,
+                            const Crossings& x) {
+  const std::size_t ns = run.ns;
+  const double sample_dt = found.sample_dt;
+  const std::size_t half = found.half, min_samples = found.min_samples;
+  const std::vector<double>& t_rec = found.t_rec;
+  const SlopeNoise& slope_sn = found.slope_sn;
+  const std::vector<Episode>& episodes = found.episodes;
+  const std::vector<Cuts>& ep_cuts = x.ep_cuts;
+  const std::vector<double>& ep_predicted = x.ep_predicted;
+  const std::vector<std::int64_t>& ep_steps = x.ep_steps;
+  const std::vector<std::int64_t>& ep_steps_negative = x.ep_steps_negative;
+  const auto share = [](const Cuts& c) { return c.count ? static_cast<double>(c.negative) / static_cast<double>(c.count) : 0.0; };
+  const auto time_share = [&](std::size_t slot) {
+    return ep_steps[slot] ? static_cast<double>(ep_steps_negative[slot]) / static_cast<double>(ep_steps[slot]) : 0.0;
+  };
+  double worst_rel = 0;
+  int cut_sign_positive = 0;  // growths with a majority of cuts at p2 > 0 and declines with a majority at p2 < 0
+  json eps = json::array();
+  Cuts growth_all, decline_all;
+  int agree = 0;
+  double growth_time = 0;
+  std::size_t longest = episodes.size();
+  for (std::size_t i = 0; i < episodes.size(); ++i) {
+    const Episode& ep = episodes[i];
+    const std::size_t last = std::min(ep.end, ns - 1);
+    const double ta = t_rec[ep.begin], tb = t_rec[last], change = e[last] - e[ep.begin];
+    const Cuts& c = ep_cuts[i];
+    (ep.sign > 0 ? growth_all : decline_all).count += c.count;
+    (ep.sign > 0 ? growth_all : decline_all).negative += c.negative;
+    const bool agrees = (ep_predicted[i] > 0) == (change > 0);
+    agree += agrees;
+    cut_sign_positive += c.count > 0 && (ep.sign > 0) == (share(c) < 0.5);
+    worst_rel = std::max(worst_rel, std::abs(ep_predicted[i] / change - 1));
+    if (ep.sign > 0) growth_time += tb - ta;
+    if (ep.sign > 0 && (longest == episodes.size() || tb - ta > t_rec[std::min(episodes[longest].end, ns - 1)] -
+                                                                    t_rec[episodes[longest].begin]))
+      longest = i;
+    eps.push_back({{"t_start", ta},
+                   {"t_end", tb},
+                   {"sign", ep.sign},
+                   {"cuts", c.count},
+                   {"share_p2_negative", share(c)},
+                   {"mean_p2", c.count ? c.p2_sum / static_cast<double>(c.count) : 0.0},
+                   {"share_time_p2_negative", time_share(i)},
+                   {"E_err_change", change},
+                   {"E_change_predicted", ep_predicted[i]},  // h sum of (4.3) over the episode's steps
+                   {"predicted_over_recorded", ep_predicted[i] / change},
+                   {"E_err_slope", change / (tb - ta)},
+                   {"sign_agrees_with_43", agrees}});
+  }
+  const Cuts& rest = ep_cuts[episodes.size()];
+  json ep_summary = {{"rule", {{"half_width", static_cast<double>(half) * sample_dt},
+                               {"half_width_samples", half},
+                               {"threshold", s.real("ensemble.episode_threshold")},
+                               {"min_length", static_cast<double>(min_samples) * sample_dt},
+                               {"slope_median", slope_sn.centre},
+                               {"slope_noise", slope_sn.noise}}},
+                     {"count", episodes.size()},
+                     {"sign_agrees_with_43", agree},                 // episodes whose recorded change has the sign of (4.3)
+                     {"max_rel_difference_from_43", worst_rel},       // max |predicted / recorded - 1| over the episodes
+                     {"cut_majority_on_side_of_change", cut_sign_positive},
+                     {"growth_time", growth_time},
+                     {"list", eps},
+                     {"growth", {{"cuts", growth_all.count}, {"share_p2_negative", share(growth_all)}}},
+                     {"decline", {{"cuts", decline_all.count}, {"share_p2_negative", share(decline_all)}}},
+                     {"complement", {{"cuts", rest.count}, {"share_p2_negative", share(rest)},
+                                     {"share_time_p2_negative", time_share(episodes.size())},
+                                     {"mean_p2", rest.count ? rest.p2_sum / static_cast<double>(rest.count) : 0.0},
+                                     {"E_change_predicted", ep_predicted[episodes.size()]}}}};
+  if (longest < episodes.size()) ep_summary["longest_growth"] = eps[longest];
+  return ep_summary;
+}
+
+// Fig. 5 of the trajectory worst_i of the run (fig5_episodes.csv, fig5_poincare.csv, fig5_episode_cuts.csv,
+// summary.reproduced); returns summary.poincare.
+template <class HH>
+json write_fig5(Context& ctx, const HH& hhk, const Run& run, std::size_t worst_i, json& reproduced) {
+  ctx.progress("Fig. 5: Poincare cuts");
+  const auto& e = run.series[worst_i];
+  const Windows win = choose_windows(run, e);
+  const std::size_t steep = win.steep, flat = win.flat;
+  const double tw = win.tw;
+  const Episodes found = find_episodes(ctx, run, e);
+  Crossings x = cut_trajectory(ctx, hhk, run, worst_i, win, found);
+  reproduced["poincare_trajectory"] = worst_i;
+  reproduced["poincare_windows"] = {{"growth", {static_cast<double>(steep) * tw, static_cast<double>(steep + 1) * tw}},
+                                    {"no_growth", {static_cast<double>(flat) * tw, static_cast<double>(flat + 1) * tw}}};
+  put(ctx, "reproduced", reproduced);
+  json poincare = window_summary(run, e, win, x);
+  poincare["episodes"] = episode_summary(ctx.scene, run, e, found, x);
+  ctx.write("fig5_episode_cuts.csv", x.f5c);
+  return poincare;
+}
+
+}  // namespace geomint::ti_drift

@@ -1,0 +1,87 @@
+#pragma once
+// ti_drift: the Henon-Heiles starts of Figs 3-5, the symplecticity check and the cost studies, the
+// system of Figs 4-5 as the scene names it, and the checks that the starts stay in the bounded well.
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <random>
+#include <string>
+
+#include "geomint/observables/stiffness.hpp"
+#include "geomint/systems/henon_heiles.hpp"
+#include "ti_drift.hpp"
+
+namespace geomint::ti_drift {
+
+// Henon-Heiles start with q1 = 0 and p1 > 0 from H0 (004 Sect. 5).
+template <class HH>
+Z2 hh_start(const HH& hh, double q2, double p2, double H0) {
+  const double p1 = std::sqrt(2 * (H0 - hh.U(Vec<2>(0.0, q2))) - p2 * p2);
+  return make_state<2>(Vec<2>(0.0, q2), Vec<2>(p1, p2));
+}
+
+// Calls f with the Henon-Heiles system of Figs 4-5: exponent hh.k, coupling hh.coupling (compiled out if 0).
+template <class F>
+decltype(auto) with_ensemble_system(const Scene& s, F&& f) {
+  return with_henon_heiles(static_cast<int>(s.integer("hh.k")), s.real("hh.coupling"), f);
+}
+
+// Start i of the Fig. 4 ensemble: (hh3.q2, hh3.p2) perturbed, each trajectory its own stream seeded by (seed, i).
+template <class HH>
+Z2 ensemble_start(const Scene& s, const HH& hhk, std::size_t i) {
+  std::seed_seq seq{static_cast<std::uint64_t>(s.integer("ensemble.seed")), static_cast<std::uint64_t>(i)};
+  std::mt19937_64 rng(seq);
+  std::uniform_real_distribution<double> u(-s.real("ensemble.perturbation"), s.real("ensemble.perturbation"));
+  const double dq = u(rng), dp = u(rng);
+  return hh_start(hhk, s.real("hh3.q2") + dq, s.real("hh3.p2") + dp, s.real("hh.H0"));
+}
+
+// %g of v (the numbers of the messages of check_hh_starts).
+std::string short_num(double v);
+
+// The escape energy of U = (q1^2 + q2^2)/2 + c q1^2 q2 - q2^k/k: the lowest of its saddles, on the axis
+// (q1 = 0, |q2| = 1: U = 1/2 - 1/k) and, for c != 0, at q2 = -1/(2c), q1^2 = (q2^(k-1) - q2)/c where that is
+// positive (1/6 for k = 3, c = 1, the triangle of 004 Fig. 3). Below it the motion from a start inside stays bounded.
+template <class HH>
+double hh_escape_energy(const HH& hh) {
+  double e = 0.5 - 1.0 / hh.k;
+  if (hh.c != 0.0) {
+    const double q2 = -1 / (2 * hh.c), q1sq = (int_pow(q2, hh.k - 1) - q2) / hh.c;
+    if (q1sq > 0) e = std::min(e, hh.U(Vec<2>(std::sqrt(q1sq), q2)));
+  }
+  return e;
+}
+
+// The Henon-Heiles starts q1 = 0, q2 in [q2 - d, q2 + d], p2 in [p2 - d, p2 + d] (d: the ensemble's
+// perturbation, 0 for one start) lie in the bounded well below the escape energy: hh.H0 below it, every q2 between
+// the saddles on the axis (q2 < 1, and q2 > -1 for even k: U(0, .) is monotone on either side of 0 there, so
+// p1^2 = 2 (H0 - U(0, q2)) - p2^2 > 0 at the corners of the box holds on all of it), and the step h below the
+// bound at the frequency of the linearisation at the start, max eig U''(0, q2) (a necessary condition).
+template <class HH>
+void check_hh_starts(const Scene& s, const std::string& section, const HH& hh, double d, bool check_h) {
+  const double H0 = s.real("hh.H0"), q2 = s.real(section + ".q2"), p2 = s.real(section + ".p2");
+  const double escape = hh_escape_energy(hh);
+  if (!(H0 < escape))
+    s.reject("hh.H0", "must be below the escape energy " + format_double(escape) + " of U (k = " + std::to_string(hh.k) +
+                          ", c = " + format_double(hh.c) + ": its lowest saddle); here " + format_double(H0));
+  // the unperturbed start is blamed on its keys, a perturbed one on ensemble.perturbation
+  const auto inside = [&](double a) { return a < 1 && (hh.k % 2 == 1 || a > -1); };
+  const auto exists = [&](double a, double b) { return 2 * (H0 - hh.U(Vec<2>(0.0, a))) - b * b > 0; };
+  if (!inside(q2))
+    s.reject(section + ".q2", "the start must lie between the saddles of U on q1 = 0 (q2 < 1" +
+                                  std::string(hh.k % 2 ? "" : ", q2 > -1") + "); here q2 = " + format_double(q2));
+  if (!exists(q2, p2))
+    s.reject(section + ".p2", "the start q1 = 0, q2 = " + short_num(q2) + ", p2 = " + short_num(p2) + " (k = " +
+                                  std::to_string(hh.k) + ") needs U(0, q2) + p2^2/2 < hh.H0 = " + short_num(H0));
+  for (const double a : {q2 - d, q2 + d})
+    for (const double b : {p2 - d, p2 + d})
+      if (!inside(a) || !exists(a, b))
+        s.reject("ensemble.perturbation", "the perturbed start q1 = 0, q2 = " + short_num(a) + ", p2 = " + short_num(b) +
+                                              " must lie between the saddles of U on q1 = 0 with U(0, q2) + p2^2/2 < "
+                                              "hh.H0 = " + short_num(H0) + "; here " + format_double(d));
+  if (check_h)
+    check_step_bound(s, "h", s.real("h"), std::sqrt(max_hessian_eigenvalue(hh, Vec<2>(0.0, q2))),
+                     "omega^2 = max eig U''(0, " + section + ".q2), Henon-Heiles k = " + std::to_string(hh.k));
+}
+
+}  // namespace geomint::ti_drift

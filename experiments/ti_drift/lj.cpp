@@ -1,0 +1,318 @@
+// 004 Fig. 6: the Lennard-Jones cluster of 9 particles on a perturbed 3 x 3 grid along the simplified method
+// (1.6): a step-size scan for stability (with the stiffness of the cluster), and at lj.h the ensemble's mean
+// and standard deviation of the error of the modified energy E of (3.3) and (4.2), the error of H, and of H
+// at the processed variables (1.5).
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <tuple>
+#include <utility>
+#include <vector>
+
+#include "geomint/core/integrate.hpp"
+#include "geomint/integrators/takahashi_imada.hpp"
+#include "geomint/observables/ensemble_statistics.hpp"
+#include "geomint/observables/modified_energy.hpp"
+#include "geomint/observables/stiffness.hpp"
+#include "geomint/runner/checkpoint.hpp"
+#include "geomint/runner/distributed_map.hpp"
+#include "geomint/sweep/ensemble_kernels.hpp"
+#include "ti_drift.hpp"
+
+namespace geomint::ti_drift {
+namespace {
+
+constexpr std::size_t kLjShown = 50;          // Fig. 6: trajectories drawn (004: 50)
+constexpr std::int64_t kStiffnessEvery = 10;   // Fig. 6: the stiffness along the scan starts, every this many steps of lj.h
+
+// The step-size scan and the stiffness of the cluster, as the summary reports them.
+struct Scan {
+  json scan_summary;           // per step of lj.h_scan
+  std::vector<double> stable;  // the steps at which no run diverged
+  double grid_stiffness, along_lo, along_hi;
+};
+
+// The step-size scan (fig6_scan.csv) and the stiffness of the cluster.
+Scan scan_steps(Context& ctx, const LJ& lj, json& reproduced) {
+  const Scene& s = ctx.scene;
+  // The step-size scan: max |H - H0| over t <= lj.scan_t, diverged beyond lj.blowup or when not finite.
+  const auto hs = s.reals("lj.h_scan");
+  const auto scan_size = static_cast<std::size_t>(s.integer("lj.scan_size"));
+  const auto scan = distributed_map(hs.size() * scan_size, [&](std::size_t task) {
+    const double hh = hs[task / scan_size];
+    const Z18 start = lj_start_of(s, task % scan_size);
+    const double Hs = lj.H(start);
+    double worst = 0;
+    std::int64_t diverged = -1;
+    integrate(simplified_ti_method(lj, false), start, hh, steps_to(s.real("lj.scan_t"), hh),
+                        [&](std::int64_t j, const Z18& z) {
+                          if (diverged >= 0) return;
+                          const double e = std::abs(lj.H(z) - Hs);
+                          if (!(e <= s.real("lj.blowup"))) diverged = j;
+                          else worst = std::max(worst, e);
+                        });
+    return std::pair{worst, diverged};
+  });
+  // The stiffness omega_max^2 (largest eigenvalue of the Hessian): at the grid, at the starts of the
+  // ensemble, and along the scan starts integrated at lj.h to lj.scan_t (its largest value on each).
+  const double hl = s.real("lj.h");
+  Vec<18> grid_q;
+  for (int k = 0; k < 9; ++k) grid_q.segment<2>(2 * k) = lj_grid(k);
+  const double grid_stiffness = max_hessian_eigenvalue(lj, grid_q);
+  const auto along = distributed_map(scan_size, [&](std::size_t i) {
+    double largest = 0;
+    integrate(simplified_ti_method(lj, false), lj_start_of(s, i), hl, steps_to(s.real("lj.scan_t"), hl),
+              [&](std::int64_t j, const Z18& z) {
+                if (j % kStiffnessEvery == 0) largest = std::max(largest, max_hessian_eigenvalue(lj, z.q));
+              });
+    return largest;
+  });
+  const auto [along_lo, along_hi] = std::minmax_element(along.begin(), along.end());
+  Csv sc({"h", "trajectory", "max_H_err", "diverged", "diverge_step"});
+  json stable_h = json::array(), scan_summary = json::array();
+  std::vector<double> stable;
+  for (std::size_t k = 0; k < hs.size(); ++k) {
+    bool all_ok = true;
+    std::vector<double> t_div, ok;
+    for (std::size_t i = 0; i < scan_size; ++i) {
+      const auto& [w, dv] = scan[k * scan_size + i];
+      sc.row(hs[k], static_cast<std::int64_t>(i), w, static_cast<std::int64_t>(dv >= 0), dv);
+      all_ok = all_ok && dv < 0;
+      if (dv >= 0) t_div.push_back(static_cast<double>(dv) * hs[k]);
+      else ok.push_back(w);
+    }
+    if (all_ok) stable_h.push_back(hs[k]), stable.push_back(hs[k]);
+    json row = {{"h", hs[k]},
+                {"runs", scan_size},
+                {"diverged", t_div.size()},
+                {"omega_max_h_at_grid", std::sqrt(grid_stiffness) * hs[k]},
+                {"omega_max_h_along_starts", {{"min", std::sqrt(*along_lo) * hs[k]}, {"max", std::sqrt(*along_hi) * hs[k]}}}};
+    if (!t_div.empty()) row["t_diverged"] = range_of(t_div);
+    if (!ok.empty()) row["max_H_err"] = {{"median", median(ok)}, {"max", *std::max_element(ok.begin(), ok.end())}};
+    scan_summary.push_back(row);
+  }
+  ctx.write("fig6_scan.csv", sc);
+  reproduced["lj_stable_steps"] = stable_h;
+  return {scan_summary, stable, grid_stiffness, *along_lo, *along_hi};
+}
+
+struct Series {
+  std::vector<double> E, H, Hhat;
+  auto fields() { return std::tie(E, H, Hhat); }
+};
+
+// The ensemble at lj.h: E error (3.3)+(4.2), H error, and H at the processed variables (1.5).
+struct Ensemble {
+  double hl;
+  std::size_t Ml;
+  std::int64_t nl, every_l;  // steps, and steps between output times
+  std::vector<Series> lj_series;
+  double wall6;  // (on --resume: the part run since)
+};
+
+Ensemble integrate_ensemble(Context& ctx, const LJ& lj) {
+  const Scene& s = ctx.scene;
+  const std::int64_t samples = s.integer("samples");
+  const double hl = s.real("lj.h");
+  const auto Ml = static_cast<std::size_t>(s.integer("lj.size"));
+  const std::int64_t nl = steps_to(s.real("lj.t_end"), hl), every_l = std::max<std::int64_t>(1, nl / samples);
+  const auto tl0 = std::chrono::steady_clock::now();  // (on --resume: the part run since)
+  const std::vector<std::string> series_keys = {"samples", "lj.h", "lj.t_end", "lj.size", "lj.seed", "lj.perturbation"};
+  const auto lanes = simplified_ti_lanes_kernels<LJ>().front().steps;  // (bit for bit the scalar method)
+  auto lj_series = concatenate(checkpointed_map<std::vector<Series>>(ctx, {"lj", series_keys}, lane_batches(Ml), [&](std::size_t b) {
+    const LaneBatch batch = lane_batch(b, Ml);
+    std::vector<Z18> starts;
+    std::vector<double> E0, Hs;
+    for (std::size_t i = batch.first; i < batch.first + batch.count; ++i)
+      starts.push_back(lj_start_of(s, i)), E0.push_back(simplified_ti_modified_energy(lj, starts.back(), hl)), Hs.push_back(lj.H(starts.back()));
+    std::vector<Series> r(batch.count);
+    simplified_ti_lanes(lj, lanes, std::span<const Z18>(starts), hl, nl, every_l, [&](int i, std::int64_t, const Z18& z) {
+      r[i].E.push_back(simplified_ti_modified_energy(lj, z, hl) - E0[i]);
+      r[i].H.push_back(lj.H(z) - Hs[i]);
+      r[i].Hhat.push_back(lj.H(ti_process(lj, z, hl, takahashi_imada_alpha)) - Hs[i]);
+    });
+    return r;
+  }));
+  const double wall6 = std::chrono::duration<double>(std::chrono::steady_clock::now() - tl0).count();
+  for (std::size_t i = 0; i < Ml; ++i)  // diverged as the scan counts it (|H - H0| beyond lj.blowup), or not finite
+    for (std::size_t k = 0; k < lj_series[i].E.size(); ++k)
+      if (!std::isfinite(lj_series[i].E[k]) || !std::isfinite(lj_series[i].Hhat[k]) ||
+          !(std::abs(lj_series[i].H[k]) <= s.real("lj.blowup")))
+        throw NumericalFailure("simplified_takahashi_imada at lj.h = " + format_double(hl) + ": trajectory " +
+                               std::to_string(i) + " diverged (|H - H0| = " + format_double(std::abs(lj_series[i].H[k])) +
+                               " > lj.blowup) by step " + std::to_string(static_cast<std::int64_t>(k) * every_l) +
+                               ", t = " + format_double(static_cast<double>(k) * static_cast<double>(every_l) * hl));
+  return {hl, Ml, nl, every_l, std::move(lj_series), wall6};
+}
+
+// The ensemble's statistics at each output time (fig6_stats.csv), its first trajectories (fig6_trajectories.csv),
+// and the reproduced values of Fig. 6.
+struct Stats {
+  std::vector<double> ts, H_rms, Hhat_rms, Hhat_change;
+  double mu_f, sigma_f, mu_se, sigma_se;
+};
+
+Stats write_stats(Context& ctx, const Ensemble& en, json& reproduced) {
+  const Scene& s = ctx.scene;
+  const double hl = en.hl;
+  const std::size_t Ml = en.Ml;
+  const std::int64_t every_l = en.every_l;
+  const std::vector<Series>& lj_series = en.lj_series;
+  Csv f6({"t", "mu", "sigma", "H_err_rms", "Hhat_err_rms", "Hhat_change_rms"});
+  std::vector<double> ts, sigmas, H_rms, Hhat_rms, Hhat_change;
+  const std::size_t nsl = lj_series[0].E.size();
+  double mu_f = 0, sigma_f = 0, H_max = 0;
+  for (std::size_t k = 0; k < nsl; ++k) {
+    std::vector<double> E;
+    double hr = 0, hhr = 0, hcr = 0;  // hcr: H(p^_n, q^_n) - H(p^_0, q^_0), what (1.5) makes random-walk
+    for (const auto& r : lj_series) E.push_back(r.E[k]), hr += r.H[k] * r.H[k], hhr += r.Hhat[k] * r.Hhat[k];
+    for (const auto& r : lj_series) hcr += (r.Hhat[k] - r.Hhat[0]) * (r.Hhat[k] - r.Hhat[0]);
+    for (const auto& r : lj_series) H_max = std::max(H_max, std::abs(r.H[k]));
+    const auto [mu, sigma] = mean_and_deviation(E);
+    const double t = static_cast<double>(k) * static_cast<double>(every_l) * hl;
+    const double H_rms_k = std::sqrt(hr / static_cast<double>(Ml)), Hhat_rms_k = std::sqrt(hhr / static_cast<double>(Ml));
+    const double Hhat_change_k = std::sqrt(hcr / static_cast<double>(Ml));
+    f6.row(t, mu, sigma, H_rms_k, Hhat_rms_k, Hhat_change_k);
+    ts.push_back(t), sigmas.push_back(sigma), H_rms.push_back(H_rms_k), Hhat_rms.push_back(Hhat_rms_k);
+    Hhat_change.push_back(Hhat_change_k);
+    mu_f = mu, sigma_f = sigma;
+  }
+  ctx.write("fig6_stats.csv", f6);
+  Csv f6t({"trajectory", "t", "E_err"});
+  const std::size_t stride = std::max<std::size_t>(1, nsl / 200);
+  for (std::size_t i = 0; i < std::min(Ml, kLjShown); ++i)
+    for (std::size_t k = 0; k < nsl; k += stride)
+      f6t.row(static_cast<std::int64_t>(i), static_cast<double>(k) * static_cast<double>(every_l) * hl, lj_series[i].E[k]);
+  ctx.write("fig6_trajectories.csv", f6t);
+  reproduced["lj_h"] = hl;
+  reproduced["lj_mu_final"] = mu_f, reproduced["lj_sigma_final"] = sigma_f;
+  const double mu_se = standard_error_of_mean(sigma_f, static_cast<double>(Ml));
+  const double sigma_se = standard_error_of_deviation(sigma_f, static_cast<double>(Ml));
+  reproduced["lj_mu_final_stderr"] = mu_se;
+  reproduced["lj_sigma_final_stderr"] = sigma_se;
+  reproduced["lj_sigma_exponent"] = power_law_exponent(ts, sigmas, s.real("lj.t_end") / 10);
+  reproduced["lj_H_err_max"] = H_max;
+  return {ts, H_rms, Hhat_rms, Hhat_change, mu_f, sigma_f, mu_se, sigma_se};
+}
+
+// summary.lj: the scan, the stiffness, the errors of H and of H at the processed variables, and the standard
+// scores of the published mean and standard deviation.
+void put_summary(Context& ctx, const LJ& lj, const Scan& scan, const Ensemble& en, const Stats& st) {
+  const Scene& s = ctx.scene;
+  const double hl = en.hl;
+  const std::size_t Ml = en.Ml;
+  const std::int64_t nl = en.nl, every_l = en.every_l;
+  const json& scan_summary = scan.scan_summary;
+  const std::vector<double>& stable = scan.stable;
+  const double grid_stiffness = scan.grid_stiffness;
+  const std::vector<double>& ts = st.ts;
+  const std::vector<double>& H_rms = st.H_rms;
+  const std::vector<double>& Hhat_rms = st.Hhat_rms;
+  const std::vector<double>& Hhat_change = st.Hhat_change;
+  const double mu_f = st.mu_f, sigma_f = st.sigma_f, mu_se = st.mu_se, sigma_se = st.sigma_se;
+  // The ensemble's H errors after the start (t > 0): H at (p_n, q_n) and at the processed variables.
+  std::vector<double> H_later(H_rms.begin() + 1, H_rms.end()), Hhat_later(Hhat_rms.begin() + 1, Hhat_rms.end());
+  const json H_spread = spread_of(H_later), Hhat_spread = spread_of(Hhat_later);
+  double Hhat_variation = 0;
+  for (double b : Hhat_later) Hhat_variation = std::max(Hhat_variation, std::abs(b / Hhat_rms[0] - 1));
+  std::vector<double> start_stiffness;
+  for (std::size_t i = 0; i < Ml; ++i) start_stiffness.push_back(max_hessian_eigenvalue(lj, lj_start_of(s, i).q));
+  ctx.summary["lj"] = {
+      {"particles", LJ::D / 2},
+      {"pairs", LJ::D / 2 * (LJ::D / 2 - 1) / 2},
+      {"steps", nl},
+      {"sample_dt", static_cast<double>(every_l) * hl},
+      {"trajectories_shown", std::min(Ml, kLjShown)},
+      {"scan", scan_summary},
+      {"stable_step_count", stable.size()},
+      {"stiffness", {{"grid", grid_stiffness},
+                     {"starts", range_of(start_stiffness)},
+                     {"along_scan_starts", {{"min", scan.along_lo}, {"max", scan.along_hi}}},
+                     {"sample_dt", static_cast<double>(kStiffnessEvery) * hl}}},
+      {"H_err_rms", H_spread},                       // over the output times t > 0
+      {"Hhat_err_rms", Hhat_spread},
+      {"Hhat_err_rms_start", Hhat_rms[0]},           // the offset H(chi_h(p_0, q_0)) - H_0
+      {"Hhat_err_rms_variation", Hhat_variation},   // max |rms / its start - 1| over t > 0
+      {"H_over_Hhat_err_rms", H_spread["mean"].get<double>() / Hhat_spread["mean"].get<double>()},
+      // H(p^_n, q^_n) - H(p^_0, q^_0): its root mean square at t_end, against sigma of E, and its growth exponent
+      {"Hhat_change_rms_final", Hhat_change.back()},
+      {"Hhat_change_over_sigma_final", Hhat_change.back() / sigma_f},
+      {"Hhat_change_exponent", power_law_exponent(ts, Hhat_change, s.real("lj.t_end") / 10)},
+      // the published mean and standard deviation (published.toml) in standard errors of ours, and ours from zero
+      {"standard_scores", {{"mu_from_printed", std::abs(mu_f - published_value("lj_mu_final")) / mu_se},
+                           {"mu_from_zero", std::abs(mu_f) / mu_se},
+                           {"sigma_from_printed", std::abs(sigma_f - published_value("lj_sigma_final")) / sigma_se}}}};
+  if (!stable.empty()) ctx.summary["lj"]["stable_steps"] = range_of(stable);
+  // the smallest step of the scan: the median of its largest errors of H
+  const auto hs = s.reals("lj.h_scan");
+  const auto smallest = std::min_element(hs.begin(), hs.end()) - hs.begin();
+  if (scan_summary[smallest].contains("max_H_err"))
+    ctx.summary["lj"]["smallest_step"] = {{"h", hs[smallest]}, {"max_H_err_median", scan_summary[smallest]["max_H_err"]["median"]}};
+}
+
+void run_lj(Context& ctx) {
+  ctx.progress("Fig. 6: Lennard-Jones cluster");
+  const LJ lj;
+  json reproduced;
+  const Scan scan = scan_steps(ctx, lj, reproduced);
+  const Ensemble en = integrate_ensemble(ctx, lj);
+  const Stats st = write_stats(ctx, en, reproduced);
+  put(ctx, "reproduced", reproduced);
+  put_summary(ctx, lj, scan, en, st);
+  const double wall6 = en.wall6;
+  const std::size_t Ml = en.Ml;
+  const std::int64_t nl = en.nl;
+  put(ctx, "timing",
+      {{"fig6_wall_s", wall6},
+       {"threads", ctx.threads},
+       {"fig6_steps", static_cast<double>(Ml) * static_cast<double>(nl)},
+       {"fig6_ns_per_step_thread", 1e9 * wall6 * ctx.threads / (static_cast<double>(Ml) * static_cast<double>(nl))}});
+  put_differences(ctx, "lj");
+}
+
+// Fig. 6: lj.h below the bound at the stiffness of the unperturbed grid (omega^2 = 86.8; the perturbed starts and
+// the motion are stiffer: a run that diverges anyway ends with a numerical failure, exit 4).
+void check_lj(const Scene& s) {
+  const LJ lj;
+  Vec<18> grid_q;
+  for (int k = 0; k < 9; ++k) grid_q.segment<2>(2 * k) = lj_grid(k);
+  check_step_bound(s, "lj.h", s.real("lj.h"), std::sqrt(max_hessian_eigenvalue(lj, grid_q)),
+                   "omega^2 = max eig U'' at the 3 x 3 grid of Fig. 6");
+  if (s.real("lj.t_end") / s.real("lj.h") < 2) s.reject("lj.t_end", "must be at least two steps lj.h");
+  for (double h : s.reals("lj.h_scan"))
+    if (s.real("lj.scan_t") / h < 1) s.reject("lj.scan_t", "must be at least one step of every lj.h_scan");
+}
+
+StudyPlan plan_lj(const Scene& s) {
+  const double scan_t = s.real("lj.scan_t"), scan_size = static_cast<double>(s.integer("lj.scan_size"));
+  const double hl = s.real("lj.h"), n = s.real("lj.t_end") / hl, M = static_cast<double>(s.integer("lj.size"));
+  StudyPlan p;
+  for (double h : s.reals("lj.h_scan")) p.steps += scan_size * scan_t / h;
+  p.steps += scan_size * scan_t / hl + M * n;
+  p.force_evals = p.steps * static_cast<double>(evals_per_step("simplified_takahashi_imada"));
+  p.memory_bytes = M * kept_samples(n, static_cast<double>(s.integer("samples"))) * 3 * 8;  // E, H, H^ of each trajectory
+  p.ns_per_step = kNsPerStepLanesLJ;
+  p.note = kNsLanesNote;
+  p.tasks = static_cast<double>(lane_batches(static_cast<std::size_t>(M)));  // the ensemble's batches of lanes (the scan before it: a small part)
+  return p;
+}
+
+void keys(Schema& s) {
+  s.reals("lj.h_scan", positive(), 1, "Fig. 6: steps scanned for stability (004 prints h = 0.2)")
+      .real("lj.scan_t", positive(), "time span of the step-size scan")
+      .integer("lj.scan_size", at_least(1), "trajectories of the scan")
+      .real("lj.t_end", positive(), "Fig. 6 time span (004: 2e4)")
+      .integer("lj.size", at_least(2), "Fig. 6 trajectories (004: 400)")
+      .real("lj.blowup", positive(), "|H - H0| above this marks a scan run diverged");
+}
+
+}  // namespace
+
+Study lj_study() {
+  return {"lj", "004 Fig 6", {"fig6_*.csv"}, {"lj", "samples", "checkpoint"}, check_lj, run_lj, plan_lj, keys};
+}
+
+}  // namespace geomint::ti_drift

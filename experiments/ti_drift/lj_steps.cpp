@@ -1,0 +1,120 @@
+// 004 Fig. 6, the printed step: sigma of the error of the modified energy E against h (a small ensemble of
+// the starts of Fig. 6 over a short span). The random walk of (4.3) gives sigma ~ h^4 t^(1/2); the fitted
+// exponent in h, and the step at which the published sigma at the published time would be reached (carried
+// there by the published t^(1/2)).
+#include <cmath>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <vector>
+
+#include "geomint/core/integrate.hpp"
+#include "geomint/observables/ensemble_statistics.hpp"
+#include "geomint/observables/linear_fit.hpp"
+#include "geomint/observables/modified_energy.hpp"
+#include "geomint/observables/stiffness.hpp"
+#include "geomint/runner/distributed_map.hpp"
+#include "geomint/sweep/ensemble_kernels.hpp"
+#include "ti_drift.hpp"
+
+namespace geomint::ti_drift {
+namespace {
+
+void run_lj_steps(Context& ctx) {
+  const Scene& s = ctx.scene;
+  ctx.progress("Fig. 6: sigma against h");
+  const LJ lj;
+  const auto hs = s.reals("lj_steps.h");
+  const auto M = static_cast<std::size_t>(s.integer("lj_steps.size"));
+  const double T = s.real("lj_steps.t_end");
+  const auto lanes = simplified_ti_lanes_kernels<LJ>().front().steps;  // (bit for bit the scalar method)
+  const std::size_t nb = lane_batches(M);  // per step h
+  const auto err = concatenate(distributed_map(hs.size() * nb, [&](std::size_t task) {
+    const double h = hs[task / nb];
+    const LaneBatch batch = lane_batch(task % nb, M);
+    std::vector<Z18> starts;
+    for (std::size_t i = batch.first; i < batch.first + batch.count; ++i) starts.push_back(lj_start_of(s, i));
+    const std::int64_t n = steps_to(T, h);
+    const auto last = simplified_ti_lanes(lj, lanes, std::span<const Z18>(starts), h, n, n, [](int, std::int64_t, const Z18&) {});
+    std::vector<double> e;
+    for (std::size_t i = 0; i < batch.count; ++i)
+      e.push_back(simplified_ti_modified_energy(lj, last[i], h) - simplified_ti_modified_energy(lj, starts[i], h));
+    return e;
+  }));
+  for (std::size_t task = 0; task < err.size(); ++task)
+    if (!std::isfinite(err[task]))
+      throw NumericalFailure("simplified_takahashi_imada at h = " + format_double(hs[task / M]) +
+                             ": E of trajectory " + std::to_string(task % M) + " is not finite at t = " + format_double(T));
+  Csv out({"h", "mu", "sigma", "sigma_stderr"});
+  std::vector<double> log_h, log_sigma;
+  json per_h = json::array();
+  for (std::size_t k = 0; k < hs.size(); ++k) {
+    const MeanDeviation md = mean_and_deviation(std::span<const double>(err.data() + k * M, M));
+    out.row(hs[k], md.mean, md.sd, standard_error_of_deviation(md.sd, static_cast<double>(M)));
+    log_h.push_back(std::log(hs[k])), log_sigma.push_back(std::log(md.sd));
+    per_h.push_back({{"h", hs[k]}, {"sigma", md.sd}, {"mu", md.mean}});
+  }
+  ctx.write("fig6_steps.csv", out);
+  const LinearFit fit = linear_fit(log_h, log_sigma);
+  // the standard error of the slope from the relative standard error 1/sqrt(2(M-1)) of each sigma (independent starts
+  // per h are not assumed: the same starts are used at every h, so this is a scale, not a confidence bound)
+  double sxx = 0, mean_log_h = 0;
+  for (double x : log_h) mean_log_h += x / static_cast<double>(log_h.size());
+  for (double x : log_h) sxx += (x - mean_log_h) * (x - mean_log_h);
+  const double rel_se = standard_error_of_deviation(1.0, static_cast<double>(M));
+  const double printed_sigma = published_value("lj_sigma_final"), printed_gamma = published_value("lj_sigma_exponent");
+  const double printed_t = published_entry("lj_sigma_final").requires_.at("lj.t_end").get<double>();
+  const double printed_h = published_value("lj_h");
+  const double carry = std::pow(printed_t / T, printed_gamma);  // sigma(printed t) / sigma(T) of the random walk
+  const double implied_h = std::exp((std::log(printed_sigma / carry) - fit.intercept) / fit.slope);
+  ctx.summary["lj_steps"] = {
+      {"t_end", T},
+      {"size", M},
+      {"sigma", per_h},
+      {"exponent", fit.slope},
+      {"exponent_stderr", rel_se / std::sqrt(sxx)},
+      {"printed_sigma", printed_sigma},
+      {"printed_t", printed_t},
+      {"carry_to_printed_t", carry},
+      {"implied_step", implied_h},  // the h at which the fit, carried to the printed t, gives the printed sigma
+      {"implied_step_over_printed", implied_h / printed_h},
+      {"sigma_at_printed_step", std::exp(fit.intercept + fit.slope * std::log(printed_h)) * carry}};
+}
+
+void check_lj_steps(const Scene& s) {
+  const LJ lj;
+  Vec<18> grid_q;
+  for (int k = 0; k < 9; ++k) grid_q.segment<2>(2 * k) = lj_grid(k);
+  const double omega = std::sqrt(max_hessian_eigenvalue(lj, grid_q));
+  for (double h : s.reals("lj_steps.h")) {
+    check_step_bound(s, "lj_steps.h", h, omega, "omega^2 = max eig U'' at the 3 x 3 grid of Fig. 6");
+    if (s.real("lj_steps.t_end") / h < 1) s.reject("lj_steps.t_end", "must be at least one step of every lj_steps.h");
+  }
+}
+
+StudyPlan plan_lj_steps(const Scene& s) {
+  const double M = static_cast<double>(s.integer("lj_steps.size"));
+  StudyPlan p;
+  for (double h : s.reals("lj_steps.h")) p.steps += M * s.real("lj_steps.t_end") / h;
+  p.force_evals = p.steps * static_cast<double>(evals_per_step("simplified_takahashi_imada"));
+  p.memory_bytes = M * static_cast<double>(s.reals("lj_steps.h").size()) * 8;
+  p.ns_per_step = kNsPerStepLanesLJ;
+  p.note = kNsLanesNote;
+  p.tasks = static_cast<double>(lane_batches(static_cast<std::size_t>(M)) * s.reals("lj_steps.h").size());
+  return p;
+}
+
+void keys(Schema& s) {
+  s.reals("lj_steps.h", positive(), 3, "Fig. 6: steps at which sigma of the error of E is measured (its power of h)")
+      .integer("lj_steps.size", at_least(2), "trajectories per step of lj_steps (the starts of Fig. 6: lj.seed)")
+      .real("lj_steps.t_end", positive(), "time at which sigma is measured in lj_steps");
+}
+
+}  // namespace
+
+Study lj_steps_study() {
+  return {"lj_steps", "004 Fig 6: sigma against h (the printed step)", {"fig6_steps.csv"},
+          {"lj_steps", "lj.seed", "lj.perturbation"}, check_lj_steps, run_lj_steps, plan_lj_steps, keys};
+}
+
+}  // namespace geomint::ti_drift

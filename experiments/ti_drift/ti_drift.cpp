@@ -1,0 +1,103 @@
+// ti_drift: what its studies share (ti_drift.hpp, henon_heiles_starts.hpp).
+#include "ti_drift.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <random>
+#include <stdexcept>
+
+#include "geomint/methods/scene_methods.hpp"
+#include "geomint/observables/linear_fit.hpp"
+#include "geomint/runner/timing.hpp"
+#include "geomint/systems/counting.hpp"
+#include "henon_heiles_starts.hpp"
+
+namespace geomint::ti_drift {
+
+double slope(const std::vector<double>& x, const std::vector<double>& y) { return linear_fit(x, y).slope; }
+
+void put(Context& ctx, const char* section, const json& values) {
+  for (const auto& [k, v] : values.items()) ctx.summary[section][k] = v;
+}
+
+json range_of(const std::vector<double>& v) {
+  const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+  return {{"min", *lo}, {"max", *hi}};
+}
+
+json spread_of(const std::vector<double>& v) {
+  json r = range_of(v);
+  double sum = 0;
+  for (double x : v) sum += x;
+  r["mean"] = sum / static_cast<double>(v.size());
+  return r;
+}
+
+namespace {
+
+// The entries of experiments/ti_drift/published.toml (read as the runner reads them): the report sets
+// some reproduced values against the printed ones in ways the runner's comparisons do not (the signed
+// difference of every comparison, standard scores, quantities derived from printed values).
+const std::vector<Published>& published_entries() {
+  static const std::vector<Published> entries =
+      read_published(std::filesystem::path(GEOMINT_EXPERIMENT_DIR) / "published.toml");
+  return entries;
+}
+
+}  // namespace
+
+const Published& published_entry(const std::string& key) {
+  for (const Published& e : published_entries())
+    if (e.key == key) return e;
+  throw std::logic_error("published.toml has no entry " + key);
+}
+
+double published_value(const std::string& key) { return published_entry(key).value.get<double>(); }
+
+void put_differences(Context& ctx, const std::string& study) {
+  for (const Published& e : published_entries()) {
+    const json* r = json_at(ctx.summary, e.summary);
+    if (e.study == study && e.value.is_number() && r && r->is_number())
+      ctx.summary["difference_from_published"][e.key] = r->get<double>() - e.value.get<double>();
+  }
+}
+
+std::string short_num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+std::int64_t evals_per_step(const std::string& method) {
+  std::int64_t n = 0;
+  const Counting<HarmonicOscillator> counted{kOscillator, &n};
+  with_kernel(method, counted, [&](const auto& m) {
+    const auto s = m.pre(make_state(1.0, 0.0), 0.1);
+    n = 0;
+    do_not_optimize(m.kernel(s, 0.1));
+    return 0;
+  });
+  if (n < 1) throw std::logic_error(method + " evaluates no force in a step");
+  return n;
+}
+
+Vec<2> lj_grid(int k) { return Vec<2>(1 + k % 3, 1 + k / 3); }  // (i, j), i, j in {1, 2, 3}
+
+Z18 lj_start_of(const Scene& s, std::size_t i) {
+  std::seed_seq seq{static_cast<std::uint64_t>(s.integer("lj.seed")), static_cast<std::uint64_t>(i)};
+  std::mt19937_64 rng(seq);
+  std::uniform_real_distribution<double> u(-s.real("lj.perturbation"), s.real("lj.perturbation"));
+  Z18 z;
+  for (int k = 0; k < 9; ++k) z.q[2 * k] = lj_grid(k)[0] + u(rng), z.q[2 * k + 1] = lj_grid(k)[1] + u(rng);
+  return z;
+}
+
+void check_step_bound(const Scene& s, const char* step_key, double h, double omega, const std::string& where) {
+  check_oscillatory_bound(s, step_key, step_key, "simplified_takahashi_imada", h * omega, where, "2 sqrt(3)");
+}
+
+double kept_samples(double n, double samples) { return std::floor(n / std::max(1.0, std::floor(n / samples))) + 1; }
+
+}  // namespace geomint::ti_drift

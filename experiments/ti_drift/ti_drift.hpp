@@ -1,0 +1,98 @@
+#pragma once
+// ti_drift: 004 (On energy conservation of the simplified Takahashi-Imada method) Figs 1-6, the
+// symplecticity check and the cost of the methods. One study per file beside this one (main.cpp lists
+// them); here what several of them share: the phase-space types, the summary and published-value
+// helpers, the oscillator of Fig. 1 (whose force evaluations per step every --plan counts), the
+// Lennard-Jones starts of Fig. 6, the step checks and the --plan constants. The Henon-Heiles starts
+// and their checks: henon_heiles_starts.hpp.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "geomint/core/state.hpp"
+#include "geomint/runner/experiment.hpp"
+#include "geomint/runner/published.hpp"
+#include "geomint/systems/harmonic_oscillator.hpp"
+#include "geomint/systems/lennard_jones.hpp"
+
+namespace geomint::ti_drift {
+
+using json = nlohmann::ordered_json;
+using Z1 = PhaseState<1>;
+using Z2 = PhaseState<2>;
+
+// The studies, in the order they run.
+Study oscillator_study();      // 004 Fig 1                                            oscillator.cpp
+Study pendulum_study();        // 004 Fig 2                                            pendulum.cpp
+Study hh3_study();             // 004 Fig 3                                            hh3.cpp
+Study ensemble_study();        // 004 Figs 4, 5                                        ensemble.cpp
+Study lj_study();              // 004 Fig 6                                            lj.cpp
+Study lj_steps_study();        // 004 Fig 6: sigma against h (the printed step)        lj_steps.cpp
+Study work_precision_study();  // cost: error against wall time and force evaluations  cost.cpp
+Study symplecticity_study();   // 004 Sect. 1.3: symplectic against volume-preserving  symplecticity.cpp
+Study timing_study();          // cost: ns per step of each method                     kernel_timing.cpp
+
+// ---- summary.json
+
+// The slope of the least-squares line through (x, y).
+double slope(const std::vector<double>& x, const std::vector<double>& y);
+
+// Adds the entries of `values` to summary[section] (indexing the summary afresh for each).
+void put(Context& ctx, const char* section, const json& values);
+
+// {min, max} of a non-empty list.
+json range_of(const std::vector<double>& v);
+
+// {min, max, mean} of a non-empty list.
+json spread_of(const std::vector<double>& v);
+
+// The entry `key` of experiments/ti_drift/published.toml (ti_drift.cpp: read as the runner reads it), and its
+// value, a number.
+const Published& published_entry(const std::string& key);
+double published_value(const std::string& key);
+
+// summary.difference_from_published.<key> = reproduced - published for every entry of the study with a
+// number on both sides (the runner's comparisons give the difference relative where the comparison is
+// relative, and none where the value is only reported).
+void put_differences(Context& ctx, const std::string& study);
+
+// ---- The systems
+
+// Fig. 1 (and the cost study): the harmonic oscillator, omega = 1.
+inline const HarmonicOscillator kOscillator{1.0, 1.0};
+
+// Force evaluations in one step of a method's kernel (a gradient, a force or a
+// Hessian-vector product counts one: systems/counting.hpp).
+std::int64_t evals_per_step(const std::string& method);
+
+// Fig. 6: the Lennard-Jones cluster.
+using LJ = LennardJones<9>;
+using Z18 = PhaseState<18>;
+
+Vec<2> lj_grid(int k);  // (i, j), i, j in {1, 2, 3}
+
+// Start i of Fig. 6: the grid with each coordinate perturbed uniformly by at most lj.perturbation, p = 0, from the
+// stream seeded by (lj.seed, i).
+Z18 lj_start_of(const Scene& s, std::size_t i);
+
+// ---- Checks before any work, and --plan
+
+// The step of the simplified method (and of the timed kernels) below the oscillatory bound the registry declares,
+// at the highest frequency omega of the motion linearised where the study runs (observables/stiffness.hpp).
+void check_step_bound(const Scene& s, const char* step_key, double h, double omega, const std::string& where);
+
+// The samples a run of n steps keeps: every max(1, floor(n / samples)) steps, from step 0.
+double kept_samples(double n, double samples);
+
+// ns per (trajectory-)step and thread, measured (the paper scene's summary.json, timing): one Henon-Heiles
+// trajectory (24.3, the scalar method, before the ensembles ran in lanes); the ensembles in SIMD lanes on a 2-core
+// AVX2 machine (fig4_ns_per_step_thread 5.6, Henon-Heiles, its registers of lanes stepped together;
+// fig6_ns_per_step_thread 158, Lennard-Jones with its processing every sample).
+constexpr double kNsPerStepHH = 24.3, kNsPerStepLanesHH = 5.6, kNsPerStepLanesLJ = 158.0;
+const char* const kNsNote = "ns per step: measured (paper scene, summary.json timing.fig4_ns_per_step_thread before the lanes)";
+const char* const kNsLanesNote = "ns per trajectory-step: measured (paper scene, summary.json timing.fig4/fig6_ns_per_step_thread, "
+                                 "the ensembles in SIMD lanes; 2-core AVX2 machine)";
+
+}  // namespace geomint::ti_drift
