@@ -54,10 +54,10 @@ json cost_summary(const std::vector<std::string>& timed, const std::map<std::str
     json c = {{"relative_cost", ns_per_step[label].get<double>() / ns_per_step[timed.front()].get<double>()},
               {"evals_per_step", r.back().evals / r.back().steps},
               {"min_err", min_err},
-              {"err_at_equal_wall", optional_json(error_at_wall(r, equal_wall))}};
+              {"err_at_equal_wall", or_null(error_at_wall(r, equal_wall))}};
     for (double t : targets) {
-      c["wall_s_to"][target_key(t)] = optional_json(cost_to_reach(r, t, &CostRun::wall_s));
-      c["evals_to"][target_key(t)] = optional_json(cost_to_reach(r, t, &CostRun::evals));
+      c["wall_s_to"][target_key(t)] = or_null(cost_to_reach(r, t, &CostRun::wall_s));
+      c["evals_to"][target_key(t)] = or_null(cost_to_reach(r, t, &CostRun::evals));
     }
     cost[label] = c;
   }
@@ -97,7 +97,7 @@ void run_timing(Context& ctx) {
     }
   }
   ctx.write("timing.csv", cost);
-  const json timed = labels(s.texts("timing.methods"));
+  const json timed = labels_of(s.texts("timing.methods"));
   const double equal_wall = largest_wall(by_decreasing_h(runs[label_of(s.text("timing.equal_wall"))]));
   ctx.summary["methods"]["timing"] = timed;
   ctx.summary["timing"] = {

@@ -59,7 +59,7 @@ void run_figure1(Context& ctx) {
     fe.row(T * i / 400.0, e.q[0], e.p[0]);
   }
   ctx.write("fig1_exact.csv", fe);
-  ctx.summary["methods"]["figure1"] = labels(methods);
+  ctx.summary["methods"]["figure1"] = labels_of(methods);
   // the amplitude of the exact p = -m w A sin(w t), and the largest errors of the drawn methods
   ctx.summary["figure1"] = {{"p_amplitude", osc.m * osc.w * A}, {"max_error", max_error}};
 }

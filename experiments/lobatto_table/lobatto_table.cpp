@@ -3,14 +3,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <filesystem>
 #include <numbers>
 
 #include "geomint/analysis/linear_stability.hpp"
 #include "geomint/methods/methods.hpp"
 #include "geomint/methods/registry.hpp"
 #include "geomint/methods/scene_methods.hpp"
-#include "geomint/runner/published.hpp"
 
 namespace geomint::lobatto_table {
 
@@ -23,23 +21,6 @@ Mat<2> pq_matrix(const std::string& method, const HarmonicOscillator& osc, doubl
 }
 
 Mat<2> lobatto_matrix(const HarmonicOscillator& osc, double h) { return pq_matrix("lobatto", osc, h); }
-
-void merge(Context& ctx, const char* section, const json& values) {
-  for (const auto& [k, v] : values.items()) ctx.summary[section][k] = v;
-}
-
-json labels(const std::vector<std::string>& methods) {
-  json l = json::array();
-  for (const auto& m : methods) l.push_back(label_of(m));
-  return l;
-}
-
-json range_of(const std::vector<double>& v) {
-  const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
-  return {{"min", *lo}, {"max", *hi}};
-}
-
-json optional_json(const std::optional<double>& v) { return v ? json(*v) : json(nullptr); }
 
 void check_lobatto(const Scene& s, const char* key, double hw, const std::string& what) {
   check_oscillatory_bound(s, key, key, "lobatto", hw, what + "; 001 eq. (10)", "sqrt(42 - 6 sqrt(29))");
@@ -74,25 +55,6 @@ Oscillator oscillator(const Scene& s) {
   const HarmonicOscillator osc{s.real("oscillator.m"), s.real("oscillator.omega")};
   const double A = s.real("oscillator.amplitude");
   return {osc, A, 2 * std::numbers::pi / osc.w, make_state(A, 0.0)};
-}
-
-namespace {
-
-const std::vector<Published>& published_entries() {  // read once (the runner has read and checked it already)
-  static const std::vector<Published> entries =
-      read_published(std::filesystem::path(GEOMINT_EXPERIMENT_DIR) / "published.toml");
-  return entries;
-}
-
-}  // namespace
-
-std::optional<json> comparison(const json& summary, const Scene& s, const std::string& summary_key) {
-  for (const Published& e : published_entries()) {
-    if (e.summary != summary_key) continue;
-    auto c = compare_published(e, summary, s.to_json(), {e.study});
-    if (c && c->contains("difference")) return c;
-  }
-  return std::nullopt;
 }
 
 Pendulum pendulum(const Scene& s) { return {NonlinearPendulum{}, make_state(s.real("nonlinear.pendulum_q0"), 0.0)}; }

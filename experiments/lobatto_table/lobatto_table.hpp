@@ -13,6 +13,7 @@
 
 #include "geomint/core/state.hpp"
 #include "geomint/runner/experiment.hpp"
+#include "geomint/runner/summary.hpp"
 #include "geomint/systems/harmonic_oscillator.hpp"
 
 namespace geomint::lobatto_table {
@@ -42,17 +43,6 @@ Mat<2> pq_matrix(const std::string& method, const HarmonicOscillator& osc, doubl
 
 Mat<2> lobatto_matrix(const HarmonicOscillator& osc, double h);
 
-// Adds `values` to the summary section `section` (other studies may have filled it already).
-void merge(Context& ctx, const char* section, const json& values);
-
-// The labels of registered methods (CSV columns, summary keys), for summary.methods.<study>.
-json labels(const std::vector<std::string>& methods);
-
-// {min, max} of values.
-json range_of(const std::vector<double>& v);
-
-json optional_json(const std::optional<double>& v);
-
 // ---- checks across keys, shared by studies ----
 
 // The Lobatto scheme at h omega = hw (001 eq. (10)).
@@ -78,11 +68,6 @@ struct Oscillator {
 };
 
 Oscillator oscillator(const Scene& s);
-
-// The comparison with what 001 printed (published.toml, as the runner makes it after the run) of the
-// entry whose reproduced value is at `summary_key`, for the text; nullopt if there is none or this
-// scene cannot make it.
-std::optional<json> comparison(const json& summary, const Scene& s, const std::string& summary_key);
 
 // ---- the nonlinear pendulum of the nonlinear and timing studies ----
 

@@ -80,7 +80,7 @@ void run_long_run(Context& ctx) {
   // Per step size (by index): the rates again, with the printed one; the largest H_d errors; and the
   // growth rate of the same window maxima in exact arithmetic (the closed-form orbit of (13)-(14)),
   // with what the drift of H_d explains of the difference.
-  const auto published = comparison(ctx.summary, s, "reproduced.energy_growth_rate");  // 001 Fig. 2, per h
+  const auto published = ctx.comparison(ctx.summary, "reproduced.energy_growth_rate");  // 001 Fig. 2, per h
   json rates = json::array();
   for (std::size_t i = 0; i < long_h.size(); ++i) {
     const double h = long_h[i];
@@ -96,7 +96,7 @@ void run_long_run(Context& ctx) {
       r["exact_rate"] = exact->slope_per_period;
       r["H_rate_minus_exact"] = l.slope_H - exact->slope_per_period;
       r["bound"] = exact->bound;  // |K|
-      r["periods_to_peak"] = optional_json(exact->periods_to_peak);
+      r["periods_to_peak"] = or_null(exact->periods_to_peak);
       // a drift of H_d seen in H: (H_0 / H_d(0)) |Hd_rate|; and the relative drift of H_d per step
       r["roundoff_in_H"] = orbit->H0 / orbit->Hd0 * std::abs(l.slope_plain);
       r["Hd_drift_per_step"] = std::abs(l.slope_plain) * h / T / orbit->Hd0;

@@ -124,12 +124,12 @@ json cost_by_method(const Scene& s, const std::vector<std::string>& methods, Tim
     json cm = {{"ns_per_step", ns[label]}, {"ns_per_step_spread", ns_spread[label]},
                {"relative_cost", ns[label].get<double>() / ns[label_of(methods.front())].get<double>()},
                {"evals_per_step", phase.empty() ? json(nullptr) : json(phase.back().evals / phase.back().steps)},
-               {"phase_err_at_equal_wall", optional_json(error_at_wall(phase, equal_wall))},
-               {"energy_err_at_equal_wall", optional_json(error_at_wall(energy, equal_wall))}};
+               {"phase_err_at_equal_wall", or_null(error_at_wall(phase, equal_wall))},
+               {"energy_err_at_equal_wall", or_null(error_at_wall(energy, equal_wall))}};
     cm["wall_s_to"] = json::array(), cm["evals_to"] = json::array();  // per target of long_run_cost.error_targets
     for (double target : s.reals("long_run_cost.error_targets")) {
-      cm["wall_s_to"].push_back(optional_json(cost_to_reach(phase, target, &CostRun::wall_s)));
-      cm["evals_to"].push_back(optional_json(cost_to_reach(phase, target, &CostRun::evals)));
+      cm["wall_s_to"].push_back(or_null(cost_to_reach(phase, target, &CostRun::wall_s)));
+      cm["evals_to"].push_back(or_null(cost_to_reach(phase, target, &CostRun::evals)));
     }
     c[label] = cm;
   }
@@ -161,7 +161,7 @@ void run_long_run_cost(Context& ctx) {
     for (const CostRun& r : energy_runs[label]) energy_min = std::min(energy_min, r.err), energy_max = std::max(energy_max, r.err);
     errors[label] = {{"phase_min", phase_min}, {"energy_min", energy_min}, {"energy_max", energy_max}};
   }
-  ctx.summary["methods"]["long_run_cost"] = labels(methods);
+  ctx.summary["methods"]["long_run_cost"] = labels_of(methods);
   ctx.summary["long_run_cost"] = {{"t_end", t_N}, {"h_range", range_of(hs)}, {"reference_error", reference_error},
                                   {"errors", errors},
                                   {"norms", "phase: |z_N - z(t_N)|_2 against the closed form; energy: max over the "

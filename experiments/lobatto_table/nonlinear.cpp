@@ -108,10 +108,10 @@ void run_nonlinear(Context& ctx) {
   fit("lobatto_nonlinear_pendulum", e_p);
   fit("lobatto_elastic_pendulum", e_e);
   for (std::size_t k = 0; k < methods.size(); ++k) fit(label_of(methods[k]) + "_nonlinear_pendulum", e_m[k]);
-  merge(ctx, "orders", orders);
+  merge(ctx.summary, "orders", orders);
   std::vector<double> it_p, it_e;
   for (const auto& r : rows) it_p.push_back(r.pendulum_iterations), it_e.push_back(r.elastic_iterations);
-  ctx.summary["methods"]["nonlinear"] = labels(methods);
+  ctx.summary["methods"]["nonlinear"] = labels_of(methods);
   ctx.summary["nonlinear"] = {{"h_range", range_of(nh)},
                               {"error_floor", nfloor},
                               {"error_floor_over_atol", kReferenceFloorFactor},

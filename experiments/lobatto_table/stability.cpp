@@ -107,7 +107,7 @@ void run_stability(Context& ctx) {
     }
     lo = hws[i];
   }
-  for (int it = 0; it < 60; ++it) (stable(radius_at(0.5 * (lo + hi))) ? lo : hi) = 0.5 * (lo + hi);
+  lo = stability_boundary([&](double hw) { return stable(radius_at(hw)); }, lo, hi);
   // Runs of long_run.periods periods at kBoundFactors times the bound: bounded below it, diverged above.
   const auto [runs, run_list] = bound_runs(s, o, lo);
   const json stable_set = stable_intervals(hws, rhos);
@@ -125,7 +125,7 @@ void run_stability(Context& ctx) {
   for (std::size_t i = 1; i < hws.size(); ++i)
     if (std::abs(hws[i] - std::numbers::pi) < std::abs(hws[near_pi] - std::numbers::pi)) near_pi = i;
   const double steps_per_period = 2 * std::numbers::pi / lo;  // N = T/h = 2 pi / (h omega)
-  ctx.summary["methods"]["stability"] = labels(methods);
+  ctx.summary["methods"]["stability"] = labels_of(methods);
   ctx.summary["stability"] = {
       {"grid_step", (hw1 - hw0) / static_cast<double>(npts - 1)},
       {"radius_tolerance", kRadiusTolerance},

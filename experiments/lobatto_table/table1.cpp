@@ -51,14 +51,16 @@ bool rounds_to_printed(double printed, double reproduced, int digits) {
 
 // Table 1 against the printed values: how many of the errors of p, q and H round to the three printed
 // digits, the largest relative deviation, and the range of the printed H_d errors (round-off, compared apart).
-json printed_table1(const json& summary, const Scene& s) {
+json printed_table1(const Context& ctx) {
+  const Scene& s = ctx.scene;
+  const json& summary = ctx.summary;
   int compared = 0, rounding = 0;
   double deviation = 0;
   std::vector<double> printed_Hd;
   for (double Nd : s.reals("meshes")) {
     const std::string n = std::to_string(static_cast<std::int64_t>(Nd));
     for (const char* prefix : {"p", "q", "H", "Hd"}) {
-      const auto c = comparison(summary, s, std::string("reproduced.") + prefix + "_err_N" + n);
+      const auto c = ctx.comparison(summary, std::string("reproduced.") + prefix + "_err_N" + n);
       if (!c) continue;
       const double printed = (*c)["published"], reproduced = (*c)["reproduced"];
       if (std::string(prefix) == "Hd") {
@@ -124,21 +126,21 @@ void run_table1(Context& ctx) {
     orders[l] = fit_order(hs, em[k], floor, l.c_str()).order;
   }
   orders["lobatto_printed_eq12_q"] = fit_order(hs, e12, floor, "lobatto_printed_eq12_q").order;
-  merge(ctx, "reproduced", reproduced);
-  merge(ctx, "orders", orders);
+  merge(ctx.summary, "reproduced", reproduced);
+  merge(ctx.summary, "orders", orders);
   ctx.summary["norms"]["table1"] = "max over the steps j = 1..N of one period of the absolute error (p, q, H, H_d)";
   // H_d(0) (15) per mesh, the H_d errors relative to it and their range; the compared methods' errors;
   // the comparison with the printed digits.
   json relative = json::array();
   for (std::size_t i = 0; i < eHd.size(); ++i) relative.push_back(eHd[i] / Hd0s[i]);
-  ctx.summary["methods"]["table1"] = labels(methods);
+  ctx.summary["methods"]["table1"] = labels_of(methods);
   json compared = json::object();  // the q errors of the compared methods per mesh, as table1.csv
   for (std::size_t k = 0; k < methods.size(); ++k) compared[label_of(methods[k])] = em[k];
   ctx.summary["table1"] = {{"Hd0", Hd0s},
                            {"Hd_err_relative", relative},
                            {"Hd_err_range", range_of(eHd)},
                            {"q_err", compared},
-                           {"printed", printed_table1(ctx.summary, s)}};
+                           {"printed", printed_table1(ctx)}};
 }
 
 StudyPlan plan_table1(const Scene& s) {

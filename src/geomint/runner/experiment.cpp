@@ -81,6 +81,16 @@ const Published& Context::published(const std::string& key) const {
   throw std::logic_error("published.toml of " + experiment + " has no entry " + key);
 }
 
+std::optional<nlohmann::ordered_json> Context::comparison(const nlohmann::ordered_json& partial,
+                                                          const std::string& summary_key) const {
+  for (const Published& e : published_entries) {
+    if (e.summary != summary_key) continue;
+    auto c = compare_published(e, partial, scene.to_json(), {e.study});
+    if (c && c->contains("difference")) return c;
+  }
+  return std::nullopt;
+}
+
 void Context::progress(std::string_view what) const {
   const double now = seconds_since_start();
   if (!::isatty(STDERR_FILENO) && now - last_line_ < 10) return;

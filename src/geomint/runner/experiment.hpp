@@ -12,6 +12,7 @@
 // that set. Only the scene keys the running studies declare are required, and
 // a study may read only those.
 #include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -46,6 +47,11 @@ class Context {
   // `key` (std::logic_error if there is none).
   std::vector<Published> published_entries;
   const Published& published(const std::string& key) const;
+  // The comparison the runner will make (runner/published.hpp) of the entry whose reproduced value is
+  // at `summary_key` of `partial` (the summary, or a study's part of it), for a study's own text;
+  // nullopt if there is none or if this scene cannot make it (no difference).
+  std::optional<nlohmann::ordered_json> comparison(const nlohmann::ordered_json& partial,
+                                                   const std::string& summary_key) const;
   // Progress on stderr: on a terminal every call, otherwise at most one line every 10 s.
   void progress(std::string_view what) const;
   // The same with `done` of `total` units (e.g. "batches"), the rate since the first call for
