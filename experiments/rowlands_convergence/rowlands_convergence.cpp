@@ -21,11 +21,6 @@ ElasticPendulumParams pendulum_of(const Scene& s) {
 
 std::vector<std::string> pendulum_method_choices() { return method_choices<Counting<ElasticPendulumWithGravity>>(); }
 
-json labels_of(const std::vector<std::string>& methods) {
-  json out = json::array();
-  for (const auto& m : methods) out.push_back(label_of(m));
-  return out;
-}
 
 void scene_summary(Context& ctx) {
   const auto hs = ctx.scene.reals("h");

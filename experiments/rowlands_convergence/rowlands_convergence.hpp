@@ -11,6 +11,7 @@
 
 #include "geomint/core/state.hpp"
 #include "geomint/runner/experiment.hpp"
+#include "geomint/runner/summary.hpp"
 #include "geomint/systems/elastic_pendulum.hpp"
 
 namespace geomint::rowlands_convergence {
@@ -30,9 +31,6 @@ ElasticPendulumParams pendulum_of(const Scene& s);
 
 // What `methods` and `timing.methods` may name: the methods that step the pendulum.
 std::vector<std::string> pendulum_method_choices();
-
-// The registry labels of methods (their CSV columns, for the figures).
-json labels_of(const std::vector<std::string>& methods);
 
 // What both studies report about the scene: the step sizes and the initial conditions.
 void scene_summary(Context& ctx);

@@ -75,7 +75,6 @@ void run_work_precision(Context& ctx) {
              {"reference", {{"oscillator", "exact solution"},
                             {"henon_heiles_tol", tol / 100},
                             {"henon_heiles_error", norm2(ref, ref_coarse)}}}};  // estimate: against tol
-  const auto or_null = [](std::optional<double> v) { return v ? json(*v) : json(nullptr); };
   for (const std::string problem : {"oscillator", "henon_heiles"}) {
     std::vector<std::vector<CostRun>> curves;
     json to_reach, evals_to_reach, spread_max;

@@ -134,7 +134,8 @@ Outliers write_trajectories(Context& ctx, const Run& run, json& reproduced) {
 
   // The statistics without the outliers, at the times of fig4_trajectories.csv.
 template <class HH>
-json ensemble_summary(const Scene& s, const HH& hhk, const Run& run, const Stats& st, const Outliers& out) {
+json ensemble_summary(const Context& ctx, const HH& hhk, const Run& run, const Stats& st, const Outliers& out) {
+  const Scene& s = ctx.scene;
   const std::vector<double>& ts = st.ts;
   const std::vector<double>& mus = st.mus;
   const std::vector<double>& sigmas = st.sigmas;
@@ -177,13 +178,13 @@ json ensemble_summary(const Scene& s, const HH& hhk, const Run& run, const Stats
   ensemble["sigma2_over_t"] = sigma2.back() / ts.back();
   ensemble["sigma2_slope"] = slope_from(ts, sigma2, t_end / 10);
   // The same from the printed sigma, at the printed time (published.toml: hh5_sigma_final).
-  const Published& printed = published_entry("hh5_sigma_final");
+  const Published& printed = ctx.published("hh5_sigma_final");
   const double printed_sigma = printed.value.get<double>(), printed_t = printed.requires_.at("t_end").get<double>();
   ensemble["printed_sigma2_over_t"] = printed_sigma * printed_sigma / printed_t;
   ensemble["sigma2_over_t_minus_printed"] = ensemble["sigma2_over_t"].get<double>() - printed_sigma * printed_sigma / printed_t;
   // The printed sigma against ours carried to the printed time by the printed law sigma ~ t^gamma (published.toml:
   // hh5_sigma_exponent), in standard errors of ours (relative 1/sqrt(2(M-1))): a check that the quick scene can make.
-  const double gamma_printed = published_value("hh5_sigma_exponent");
+  const double gamma_printed = ctx.published_value("hh5_sigma_exponent");
   const double carried = sigmas.back() * std::pow(printed_t / ts.back(), gamma_printed);
   ensemble["printed_sigma_check"] = {
       {"printed", printed_sigma},
@@ -199,7 +200,7 @@ void ensemble_with(Context& ctx, const HH& hhk) {
   json reproduced;
   const Stats stats = write_stats(ctx, run, reproduced);
   const Outliers out = write_trajectories(ctx, run, reproduced);
-  const json ensemble = ensemble_summary(ctx.scene, hhk, run, stats, out);
+  const json ensemble = ensemble_summary(ctx, hhk, run, stats, out);
 
   // Fig. 5: Poincare cuts (q1 = 0 upwards, p1 > 0) of the trajectory with the largest error,
   // on the window where its error grows fastest and on the one where it is flattest.
@@ -209,7 +210,7 @@ void ensemble_with(Context& ctx, const HH& hhk) {
   const double wall4 = run.wall4;
   const std::size_t M = run.M;
   const std::int64_t n4 = run.n4;
-  put(ctx, "timing",
+  merge(ctx.summary, "timing",
       {{"fig4_wall_s", wall4},
        {"threads", ctx.threads},
        {"fig4_steps", static_cast<double>(M) * static_cast<double>(n4)},  // over the ensemble

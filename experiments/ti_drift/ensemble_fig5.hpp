@@ -162,7 +162,8 @@ Crossings cut_trajectory(Context& ctx, const HH& hhk, const Run& run, std::size_
 }
 
 // Each window: its cuts, and the error of E of the trajectory at its ends (output times).
-inline json window_summary(const Run& run, const std::vector<double>& e, const Windows& win, Crossings& x) {
+inline json window_summary(const Context& ctx, const Run& run, const std::vector<double>& e, const Windows& win,
+                           Crossings& x) {
   const std::size_t ns = run.ns, windows = win.windows, compared = win.compared, per = win.per;
   const std::size_t steep = win.steep, flat = win.flat;
   const double tw = win.tw;
@@ -183,7 +184,7 @@ inline json window_summary(const Run& run, const std::vector<double>& e, const W
                        {"E_err_change", E_hi - E_lo},
                        {"E_err_slope", (E_hi - E_lo) / tw}};
     // The printed window (published.toml: poincare_<label>): its length and cuts per unit time.
-    const json& printed_window = published_entry("poincare_" + std::string(label)).value;
+    const json& printed_window = ctx.published("poincare_" + std::string(label)).value;
     const double length = printed_window["t_end"].get<double>() - printed_window["t_start"].get<double>();
     poincare["printed"][label] = {{"length", length}, {"cuts_per_time", printed_window["cuts"].get<double>() / length}};
   }
@@ -281,8 +282,8 @@ json write_fig5(Context& ctx, const HH& hhk, const Run& run, std::size_t worst_i
   reproduced["poincare_trajectory"] = worst_i;
   reproduced["poincare_windows"] = {{"growth", {static_cast<double>(steep) * tw, static_cast<double>(steep + 1) * tw}},
                                     {"no_growth", {static_cast<double>(flat) * tw, static_cast<double>(flat + 1) * tw}}};
-  put(ctx, "reproduced", reproduced);
-  json poincare = window_summary(run, e, win, x);
+  merge(ctx.summary, "reproduced", reproduced);
+  json poincare = window_summary(ctx, run, e, win, x);
   poincare["episodes"] = episode_summary(ctx.scene, run, e, found, x);
   ctx.write("fig5_episode_cuts.csv", x.f5c);
   return poincare;

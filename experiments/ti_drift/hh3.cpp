@@ -39,7 +39,7 @@ void run_hh3(Context& ctx) {
   });
   ctx.write("fig3_hh3.csv", f3);
   const double drift = slope(ts, es);
-  put(ctx, "reproduced", {{"hh3_drift_slope", drift}, {"hh3_max_E_err", worst}});
+  merge(ctx.summary, "reproduced", {{"hh3_drift_slope", drift}, {"hh3_max_E_err", worst}});
   const auto [e_lo, e_hi] = std::minmax_element(es.begin(), es.end());
   ctx.summary["hh3"] = {{"p1", start.p[0]},
                         {"steps", n},

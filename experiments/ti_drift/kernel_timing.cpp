@@ -60,7 +60,7 @@ void timing_with(Context& ctx, const HH& hhk) {
     spread[label_of(m)] = t.spread();
     runs[label_of(m)] = to_json(t);
   }
-  put(ctx, "timing",
+  merge(ctx.summary, "timing",
       {{"ns_per_step", ns_per_step},
        {"spread", spread},  // (max - min) / min over the timed runs
        {"runs", runs},
@@ -71,7 +71,7 @@ void timing_with(Context& ctx, const HH& hhk) {
   std::vector<Z2> hh_starts;
   std::vector<Z18> lj_starts;
   for (std::size_t i = 0; i < kEnsembleLanes; ++i) hh_starts.push_back(ensemble_start(s, hhk, i)), lj_starts.push_back(lj_start_of(s, i));
-  put(ctx, "timing",
+  merge(ctx.summary, "timing",
       {{"lanes", {{"fig4", lanes_timing(hhk, hh_starts, h, n, repeats)},
                   {"fig6", lanes_timing(LJ{}, lj_starts, s.real("lj.h"), s.integer("timing.lj_steps"), repeats)},
                   {"method", "ns per trajectory-step of " + std::to_string(kEnsembleLanes) + " trajectories (the first starts of "
@@ -81,7 +81,7 @@ void timing_with(Context& ctx, const HH& hhk) {
   if (ns_per_step.contains("sv")) {  // per step, relative to Stormer-Verlet
     json relative;
     for (const auto& [label, ns] : ns_per_step.items()) relative[label] = double(ns) / double(ns_per_step["sv"]);
-    put(ctx, "timing", {{"relative_to_sv", relative}});
+    merge(ctx.summary, "timing", {{"relative_to_sv", relative}});
   }
 }
 

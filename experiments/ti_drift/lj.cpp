@@ -242,9 +242,9 @@ void put_summary(Context& ctx, const LJ& lj, const Scan& scan, const Ensemble& e
       {"Hhat_change_over_sigma_final", Hhat_change.back() / sigma_f},
       {"Hhat_change_exponent", power_law_exponent(ts, Hhat_change, s.real("lj.t_end") / 10)},
       // the published mean and standard deviation (published.toml) in standard errors of ours, and ours from zero
-      {"standard_scores", {{"mu_from_printed", std::abs(mu_f - published_value("lj_mu_final")) / mu_se},
+      {"standard_scores", {{"mu_from_printed", std::abs(mu_f - ctx.published_value("lj_mu_final")) / mu_se},
                            {"mu_from_zero", std::abs(mu_f) / mu_se},
-                           {"sigma_from_printed", std::abs(sigma_f - published_value("lj_sigma_final")) / sigma_se}}}};
+                           {"sigma_from_printed", std::abs(sigma_f - ctx.published_value("lj_sigma_final")) / sigma_se}}}};
   if (!stable.empty()) ctx.summary["lj"]["stable_steps"] = range_of(stable);
   // the smallest step of the scan: the median of its largest errors of H
   const auto hs = s.reals("lj.h_scan");
@@ -260,12 +260,12 @@ void run_lj(Context& ctx) {
   const Scan scan = scan_steps(ctx, lj, reproduced);
   const Ensemble en = integrate_ensemble(ctx, lj);
   const Stats st = write_stats(ctx, en, reproduced);
-  put(ctx, "reproduced", reproduced);
+  merge(ctx.summary, "reproduced", reproduced);
   put_summary(ctx, lj, scan, en, st);
   const double wall6 = en.wall6;
   const std::size_t Ml = en.Ml;
   const std::int64_t nl = en.nl;
-  put(ctx, "timing",
+  merge(ctx.summary, "timing",
       {{"fig6_wall_s", wall6},
        {"threads", ctx.threads},
        {"fig6_steps", static_cast<double>(Ml) * static_cast<double>(nl)},

@@ -62,9 +62,9 @@ void run_lj_steps(Context& ctx) {
   for (double x : log_h) mean_log_h += x / static_cast<double>(log_h.size());
   for (double x : log_h) sxx += (x - mean_log_h) * (x - mean_log_h);
   const double rel_se = standard_error_of_deviation(1.0, static_cast<double>(M));
-  const double printed_sigma = published_value("lj_sigma_final"), printed_gamma = published_value("lj_sigma_exponent");
-  const double printed_t = published_entry("lj_sigma_final").requires_.at("lj.t_end").get<double>();
-  const double printed_h = published_value("lj_h");
+  const double printed_sigma = ctx.published_value("lj_sigma_final"), printed_gamma = ctx.published_value("lj_sigma_exponent");
+  const double printed_t = ctx.published("lj_sigma_final").requires_.at("lj.t_end").get<double>();
+  const double printed_h = ctx.published_value("lj_h");
   const double carry = std::pow(printed_t / T, printed_gamma);  // sigma(printed t) / sigma(T) of the random walk
   const double implied_h = std::exp((std::log(printed_sigma / carry) - fit.intercept) / fit.slope);
   ctx.summary["lj_steps"] = {

@@ -167,7 +167,7 @@ json fit_orders(Context& ctx, const std::vector<Method>& methods, const Z1& z0) 
     const Pt& last = *std::max_element(m.pts.begin(), m.pts.end(), [](const Pt& a, const Pt& b) { return a.h < b.h; });
     largest[m.label] = {{"omega_h", last.h}, {"max_global_err", last.g}, {"max_rel_H_err", last.e}};
   }
-  put(ctx, "orders", orders);
+  merge(ctx.summary, "orders", orders);
   ctx.summary["equal_work"] = {{"evals_per_step", evals}, {"omega_h_eff_bound", eff_bound}, {"methods", labels}};
 
   const auto omega_h = s.reals("oscillator.omega_h");
@@ -232,9 +232,9 @@ void bisect_ti_bound(Context& ctx, json& o) {
   const auto radius = [&](double wh) {
     return with_kernel("takahashi_imada", kOscillator, [&](const auto& m) { return spectral_radius(one_step_matrix(m, wh)); });
   };
-  double lo = kBisectionLo, hi = kBisectionHi;
-  for (int it = 0; it < 60; ++it) (radius(0.5 * (lo + hi)) <= 1 + kRadiusTolerance ? lo : hi) = 0.5 * (lo + hi);
-  put(ctx, "reproduced", {{"ti_stability_bound", lo}});
+  const double lo =
+      stability_boundary([&](double wh) { return radius(wh) <= 1 + kRadiusTolerance; }, kBisectionLo, kBisectionHi);
+  merge(ctx.summary, "reproduced", {{"ti_stability_bound", lo}});
   const double ti_bound = method_info("takahashi_imada").oscillatory_bound;
   o["stability_bound"] = {{"bisection", {{"lo", kBisectionLo}, {"hi", kBisectionHi}, {"radius_tolerance", kRadiusTolerance}}},
                           {"minus_closed_form", lo - ti_bound},  // the registry's 2 sqrt(3)

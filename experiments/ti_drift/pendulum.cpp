@@ -88,7 +88,7 @@ void run_pendulum(Context& ctx) {
   });
   ctx.write("fig2_pendulum.csv", f2);
   const double rate = slope(ts, es), rate_predicted = predicted / static_cast<double>(kReferenceSteps);
-  put(ctx, "reproduced",
+  merge(ctx.summary, "reproduced",
       {{"unsym_pendulum_drift_rate", rate},                         // at the start's energy
        {"unsym_pendulum_drift_rate_whole", slope(ts_all, es_all)},  // over the whole span (the rate falls with H)
        {"unsym_pendulum_drift_rate_predicted", rate_predicted}});

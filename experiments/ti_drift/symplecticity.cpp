@@ -51,7 +51,7 @@ void run_symplecticity(Context& ctx) {
     reproduced[label_of(m) + "_symplecticity_defect"] = symplecticity_defect(J);
     reproduced[label_of(m) + "_det_minus_one"] = J.determinant() - 1.0;
   }
-  put(ctx, "reproduced", reproduced);
+  merge(ctx.summary, "reproduced", reproduced);
   const json sect33 = sect33_remainders(hh, z, h);
   ctx.summary["sect33"] = sect33;
   ctx.summary["symplecticity"] = {{"p1", z.p[0]}};

@@ -4,7 +4,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <random>
 #include <stdexcept>
 
@@ -18,46 +17,8 @@ namespace geomint::ti_drift {
 
 double slope(const std::vector<double>& x, const std::vector<double>& y) { return linear_fit(x, y).slope; }
 
-void put(Context& ctx, const char* section, const json& values) {
-  for (const auto& [k, v] : values.items()) ctx.summary[section][k] = v;
-}
-
-json range_of(const std::vector<double>& v) {
-  const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
-  return {{"min", *lo}, {"max", *hi}};
-}
-
-json spread_of(const std::vector<double>& v) {
-  json r = range_of(v);
-  double sum = 0;
-  for (double x : v) sum += x;
-  r["mean"] = sum / static_cast<double>(v.size());
-  return r;
-}
-
-namespace {
-
-// The entries of experiments/ti_drift/published.toml (read as the runner reads them): the report sets
-// some reproduced values against the printed ones in ways the runner's comparisons do not (the signed
-// difference of every comparison, standard scores, quantities derived from printed values).
-const std::vector<Published>& published_entries() {
-  static const std::vector<Published> entries =
-      read_published(std::filesystem::path(GEOMINT_EXPERIMENT_DIR) / "published.toml");
-  return entries;
-}
-
-}  // namespace
-
-const Published& published_entry(const std::string& key) {
-  for (const Published& e : published_entries())
-    if (e.key == key) return e;
-  throw std::logic_error("published.toml has no entry " + key);
-}
-
-double published_value(const std::string& key) { return published_entry(key).value.get<double>(); }
-
 void put_differences(Context& ctx, const std::string& study) {
-  for (const Published& e : published_entries()) {
+  for (const Published& e : ctx.published_entries) {
     const json* r = json_at(ctx.summary, e.summary);
     if (e.study == study && e.value.is_number() && r && r->is_number())
       ctx.summary["difference_from_published"][e.key] = r->get<double>() - e.value.get<double>();

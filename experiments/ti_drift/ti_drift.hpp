@@ -13,7 +13,7 @@
 
 #include "geomint/core/state.hpp"
 #include "geomint/runner/experiment.hpp"
-#include "geomint/runner/published.hpp"
+#include "geomint/runner/summary.hpp"
 #include "geomint/systems/harmonic_oscillator.hpp"
 #include "geomint/systems/lennard_jones.hpp"
 
@@ -38,20 +38,6 @@ Study timing_study();          // cost: ns per step of each method              
 
 // The slope of the least-squares line through (x, y).
 double slope(const std::vector<double>& x, const std::vector<double>& y);
-
-// Adds the entries of `values` to summary[section] (indexing the summary afresh for each).
-void put(Context& ctx, const char* section, const json& values);
-
-// {min, max} of a non-empty list.
-json range_of(const std::vector<double>& v);
-
-// {min, max, mean} of a non-empty list.
-json spread_of(const std::vector<double>& v);
-
-// The entry `key` of experiments/ti_drift/published.toml (ti_drift.cpp: read as the runner reads it), and its
-// value, a number.
-const Published& published_entry(const std::string& key);
-double published_value(const std::string& key);
 
 // summary.difference_from_published.<key> = reproduced - published for every entry of the study with a
 // number on both sides (the runner's comparisons give the difference relative where the comparison is

@@ -47,6 +47,7 @@ class Context {
   // `key` (std::logic_error if there is none).
   std::vector<Published> published_entries;
   const Published& published(const std::string& key) const;
+  double published_value(const std::string& key) const { return published(key).value.get<double>(); }  // a number
   // The comparison the runner will make (runner/published.hpp) of the entry whose reproduced value is
   // at `summary_key` of `partial` (the summary, or a study's part of it), for a study's own text;
   // nullopt if there is none or if this scene cannot make it (no difference).
