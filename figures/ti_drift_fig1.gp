@@ -1,5 +1,5 @@
 # Fig. 1 of 004 (the simplified Takahashi–Imada method), Sect. 1.4: the harmonic oscillator
-# H = (p² + ω²q²)/2 with ω = 1 and the start q_0 = 0, p_0 = 1 (fixed in experiments/ti_drift/main.cpp;
+# H = (p² + ω²q²)/2 with ω = 1 and the start q_0 = 0, p_0 = 1 (fixed in experiments/ti_drift/oscillator.cpp;
 # the closed forms hold only for q_0 = 0), against the effective step ω h_eff at equal work: a method
 # with e force evaluations per step (gradient, force or Hessian-vector product) runs at h = e h_eff/2:
 # h = h_eff for the Takahashi–Imada methods (e = 2), h_eff/2 for Störmer–Verlet (e = 1), 3h_eff/2 for
@@ -10,7 +10,7 @@
 # methods coincide. Vertical lines: the stability bounds in ω h_eff (summary values: equal_work, and
 # TI's bisected 2√3). The methods are those of oscillator.csv (the scene's oscillator.methods).
 # Left, dashed/dotted: the least-squares lines whose slopes are summary values's orders, drawn over the
-# points they were fitted on (as in experiments/ti_drift/main.cpp: ω h_eff ≤ 0.5, error above 10^3 ε).
+# points they were fitted on (as in experiments/ti_drift/oscillator.cpp: ω h_eff ≤ 0.5, error above 10^3 ε).
 # Right: the fitted orders in the key only (their lines would hide under the closed forms).
 # Input: oscillator.csv, oscillator_closed_forms.csv; summary values (the methods, orders, stability bounds, force
 # evaluations per step); scene values (oscillator.t_omega).
@@ -22,7 +22,7 @@ CF  = csv('oscillator_closed_forms.csv')
 
 eval need_num('T_OMEGA', scene_real('oscillator.t_omega'))
 eval need_num('TI_BOUND', summary_real('reproduced.ti_stability_bound'))
-FIT_XMAX = 0.5       # the fits of main.cpp: ω h_eff ≤ 0.5 ...
+FIT_XMAX = 0.5       # the fits of oscillator.cpp: ω h_eff ≤ 0.5 ...
 FIT_FLOOR = 1e3 * 2.0**-52   # ... and error above the round-off floor 10^3 ε
 
 # the methods of oscillator.csv (registry labels, summary value equal_work.methods), in the key's order;

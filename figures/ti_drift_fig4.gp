@@ -9,7 +9,7 @@
 #   (b) the other trajectories (thin gray), with the mean μ(t) and μ ± σ(t) over all trajectories
 #       (σ: sample standard deviation) from fig4_stats.csv.
 #   (c) σ(t) in log-log, with the least-squares line whose slope is summary values's
-#       reproduced.hh5_sigma_exponent (fitted on t ≥ t_end/10 as in experiments/ti_drift/main.cpp,
+#       reproduced.hh5_sigma_exponent (fitted on t ≥ t_end/10 as in experiments/ti_drift/ensemble.cpp,
 #       drawn through the centroid of that part) and a √t guide through the same point.
 # The curves of (a) and (b) are drawn as line segments between consecutive samples of one
 # trajectory (one pass over the file, 'with vectors'), so the file is read once per panel.

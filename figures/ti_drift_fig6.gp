@@ -1,7 +1,7 @@
 # Fig. 6 of 004 (the simplified Takahashi–Imada method), Sect. 5.3: the Lennard-Jones cluster,
 # N = 9 particles in the plane, V(r) = 0.4(r^{-12} − 2r^{-6}) over all pairs, started on the grid (i, j),
 # i, j ∈ {1, 2, 3}, each coordinate perturbed uniformly by at most lj.perturbation, p = 0 (fixed in
-# experiments/ti_drift/main.cpp); the simplified method (1.6), α = 1/12, without processing.
+# experiments/ti_drift/lj.cpp); the simplified method (1.6), α = 1/12, without processing.
 #   (a) the step-size scan: max over t ≤ lj.scan_t of |H − H_0| per trajectory and step size h (points;
 #       spread sideways by the trajectory index so that they do not hide each other). A run counts as
 #       diverged once |H − H_0| exceeds lj.blowup (or is not finite): drawn as a triangle in the
@@ -12,7 +12,7 @@
 #   (b) as the paper's Fig. 6: the error of E = Ĥ + ½h^4α^2K (the modified energy, note §3.4) of the
 #       trajectories of fig6_trajectories.csv (thin gray), with the mean μ(t) and μ ± σ(t) over the
 #       whole ensemble (bold); key: μ and σ at t_end with their standard errors, and the published ones.
-#   (c) σ(t), log-log: the least-squares line of log σ on log t over t ≥ t_end/10 (as main.cpp fits
+#   (c) σ(t), log-log: the least-squares line of log σ on log t over t ≥ t_end/10 (as lj.cpp fits
 #       it) with the slope reproduced.lj_sigma_exponent, through the centroid of those points; dotted:
 #       t^γ with the published exponent (1/2, a random walk) through the same centroid.
 #   (d) the RMS over the ensemble of H(p_n, q_n) − H(p_0, q_0) and of H(p̂_n, q̂_n) − H(p̂_0, q̂_0),

@@ -2,7 +2,7 @@
 # of E = Ĥ + ½h^4α^2K at t = lj_steps.t_end, against the step h of the simplified method (1.6), log-log,
 # with one standard error σ/√(2(M−1)) as bars (the same starts at every h, so the bars are a scale, not
 # independent errors). Solid: the least-squares line of log σ on log h (slope summary values's
-# lj_steps.exponent), through the centroid of the points, as main.cpp fits it; dotted: slope 4, the
+# lj_steps.exponent), through the centroid of the points, as lj_steps.cpp fits it; dotted: slope 4, the
 # h^4 t^{1/2} of the random walk of (4.3), through the same centroid. The key gives the step at which the
 # fit, carried to the published time by t^{1/2}, reaches the published σ (lj_steps.implied_step).
 # Input: fig6_steps.csv; summary values (lj_steps.*); scene values (lj_steps.*).
