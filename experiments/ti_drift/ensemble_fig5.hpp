@@ -8,11 +8,13 @@
 #include <cstdint>
 #include <limits>
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "geomint/analysis/growth_episodes.hpp"
+#include "geomint/analysis/poincare.hpp"
 #include "geomint/core/integrate.hpp"
 #include "geomint/integrators/takahashi_imada.hpp"
 #include "geomint/observables/modified_energy.hpp"
@@ -135,23 +137,19 @@ Crossings cut_trajectory(Context& ctx, const HH& hhk, const Run& run, std::size_
       ep_predicted[slot] += h * simplified_ti_drift_rate(hhk, prev, h);
       ++ep_steps[slot], ep_steps_negative[slot] += prev.p[1] < 0;
     }
-    if (j > 0 && k_prev + 1 < ns && prev.q[0] < 0 && z.q[0] >= 0 && z.p[0] > 0) {
-      const double a = -prev.q[0] / (z.q[0] - prev.q[0]);
-      const double p2 = prev.p[1] + a * (z.p[1] - prev.p[1]);
+    const std::optional<SectionCut> cut = j > 0 ? upward_cut(prev, z) : std::nullopt;  // q1 = 0 upwards, p1 > 0
+    if (cut && k_prev + 1 < ns) {
       Cuts& c = ep_cuts[slot];
-      ++c.count, c.negative += p2 < 0, c.p2_sum += p2;
+      ++c.count, c.negative += cut->p2 < 0, c.p2_sum += cut->p2;
       if (ep >= 0)
-        f5c.row(static_cast<std::int64_t>(ep), static_cast<std::int64_t>(episodes[static_cast<std::size_t>(ep)].sign), t - (1 - a) * h,
-                prev.q[1] + a * (z.q[1] - prev.q[1]), p2);
+        f5c.row(static_cast<std::int64_t>(ep), static_cast<std::int64_t>(episodes[static_cast<std::size_t>(ep)].sign),
+                t - (1 - cut->a) * h, cut->q2, cut->p2);
     }
     for (const auto& [label, w] : {std::pair{"growth", steep}, std::pair{"no_growth", flat}}) {
-      if (j > 0 && t >= static_cast<double>(w) * tw && t < static_cast<double>(w + 1) * tw && prev.q[0] < 0 &&
-          z.q[0] >= 0 && z.p[0] > 0) {
-        const double a = -prev.q[0] / (z.q[0] - prev.q[0]);  // linear interpolation of the crossing
-        const double p2 = prev.p[1] + a * (z.p[1] - prev.p[1]);
-        f5.row(label, t - (1 - a) * h, prev.q[1] + a * (z.q[1] - prev.q[1]), p2);
+      if (cut && t >= static_cast<double>(w) * tw && t < static_cast<double>(w + 1) * tw) {
+        f5.row(label, t - (1 - cut->a) * h, cut->q2, cut->p2);
         Cuts& c = cuts[label];
-        ++c.count, c.negative += p2 < 0, c.p2_sum += p2;
+        ++c.count, c.negative += cut->p2 < 0, c.p2_sum += cut->p2;
       }
     }
     prev = z;

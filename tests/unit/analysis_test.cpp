@@ -1,11 +1,13 @@
 // The library's analysis helpers that experiments share: the stability-bound bisection
-// (analysis/linear_stability.hpp) and the crossing of two work-precision curves (analysis/work_precision.hpp).
+// (analysis/linear_stability.hpp), Poincare cuts (analysis/poincare.hpp) and the crossing of two
+// work-precision curves (analysis/work_precision.hpp).
 #include <cmath>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "geomint/analysis/linear_stability.hpp"
+#include "geomint/analysis/poincare.hpp"
 #include "geomint/analysis/work_precision.hpp"
 
 using namespace geomint;
@@ -50,4 +52,23 @@ TEST(WorkPrecision, NoCrossoverWhereTheCurvesDoNotMeetOrDoNotOverlap) {
   std::vector<CostRun> late = curve(1e-6, 2);
   for (auto& r : late) r.wall_s *= 1e6;  // no common wall-time range
   EXPECT_FALSE(crossover(curve(1e-4, 1), late).has_value());
+}
+
+// The section q1 = 0 upwards: a step from q1 = -1 to q1 = 3 crosses at a quarter of the step.
+TEST(PoincareSection, UpwardCutInterpolatesTheStepLinearly) {
+  const auto z = [](double q1, double q2, double p1, double p2) {
+    PhaseState<2> s;
+    s.q << q1, q2;
+    s.p << p1, p2;
+    return s;
+  };
+  const auto cut = upward_cut(z(-1, 2, 1, -4), z(3, 6, 1, 4));
+  ASSERT_TRUE(cut.has_value());
+  EXPECT_EQ(cut->a, 0.25);
+  EXPECT_EQ(cut->q2, 3.0);
+  EXPECT_EQ(cut->p2, -2.0);
+  EXPECT_FALSE(upward_cut(z(3, 0, -1, 0), z(-1, 0, -1, 0)).has_value());  // downwards
+  EXPECT_FALSE(upward_cut(z(-1, 0, -1, 0), z(3, 0, -1, 0)).has_value());  // upwards in q1 but p1 < 0 at the end
+  EXPECT_FALSE(upward_cut(z(1, 0, 1, 0), z(3, 0, 1, 0)).has_value());     // no crossing
+  EXPECT_TRUE(upward_cut(z(-1, 0, 1, 0), z(0, 0, 1, 0)).has_value());     // ends on the section
 }
