@@ -47,6 +47,18 @@ TEST(WorkPrecision, CrossoverOfTwoPowerLawsIsWhereTheyAreEqual) {
   EXPECT_NEAR(inside->err, 1e-4 / 3e-3, 1e-12);
 }
 
+TEST(WorkPrecision, CrossoverIsFoundInTheSegmentWhereTheCurvesChangeOrder) {
+  // a falls by 10 per decade of wall time; b stays at 10, then drops: they cross between 1e-3 and 1e-2 s,
+  // where log(a/b) goes from log(0.01) to log(10): at w = 1e-3 * 10^(2/3), error 0.1 / 10^(2/3).
+  std::vector<CostRun> a = curve(1e-4, 1), b = a;
+  const double b_err[] = {10, 10, 1e-3, 1e-4};
+  for (std::size_t i = 0; i < b.size(); ++i) b[i].err = b_err[i];
+  const auto c = crossover(a, b);
+  ASSERT_TRUE(c.has_value());
+  EXPECT_NEAR(c->wall_s, 1e-3 * std::pow(10.0, 2.0 / 3), 1e-15);
+  EXPECT_NEAR(c->err, 0.1 / std::pow(10.0, 2.0 / 3), 1e-13);
+}
+
 TEST(WorkPrecision, NoCrossoverWhereTheCurvesDoNotMeetOrDoNotOverlap) {
   EXPECT_FALSE(crossover(curve(1e-4, 1), curve(1e-9, 1)).has_value());  // parallel, apart
   std::vector<CostRun> late = curve(1e-6, 2);
