@@ -15,7 +15,6 @@
 #include "geomint/runner/summary.hpp"
 #include "geomint/runner/timing.hpp"
 #include "geomint/runner/timing_report.hpp"
-#include "oscillator_method.hpp"
 
 namespace geomint::euler_compensation {
 namespace {
@@ -23,16 +22,13 @@ namespace {
 void run_timing(Context& ctx) {
   const Scene& s = ctx.scene;
   ctx.progress("cost: timing");
-  const Oscillator osc;
   const State z0 = initial_state(s);
   const double t_end = s.real("convergence.t_end"), k = s.real("oscillator.k");
   const int repeats = static_cast<int>(s.integer("timing.repeats"));
   const auto methods = s.texts("timing.methods");
   SpreadTally spreads;
   const auto timed = [&](const std::string& method, double h, std::int64_t n) {
-    const RunTime t = with_oscillator_method(method, osc, k, [&](const auto& m) {
-      return time_runs(repeats, [&] { do_not_optimize(integrate_inlined(m, z0, h, n)); });
-    });
+    const RunTime t = oscillator_method_time(method, k, z0, h, n, repeats);
     spreads.add(t);
     return t;
   };

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "geomint/runner/experiment.hpp"
+#include "geomint/runner/timing.hpp"
 #include "geomint/systems/harmonic_oscillator.hpp"
 
 namespace geomint::euler_compensation {
@@ -41,6 +42,9 @@ struct EnergyRun {
 };
 
 // One convergence run of each method to t = N h, counting force evaluations.
+// The wall time of n steps of a method of Figs 8-9 from z0 (runner/timing.hpp).
+RunTime oscillator_method_time(const std::string& method, double k, const State& z0, double h, std::int64_t n,
+                               int repeats);
 std::vector<EnergyRun> oscillator_runs(const std::vector<std::string>& methods, const State& z0, double h, double k,
                                        std::int64_t n);
 

@@ -11,7 +11,7 @@
 
 #include "geomint/analysis/work_precision.hpp"
 #include "geomint/core/integrate.hpp"
-#include "geomint/methods/methods.hpp"
+#include "geomint/methods/by_name.hpp"
 #include "geomint/methods/registry.hpp"
 #include "geomint/methods/scene_methods.hpp"
 #include "geomint/observables/error_norms.hpp"
@@ -81,13 +81,9 @@ void run_timing(Context& ctx) {
     for (double h : nh) {
       const std::int64_t n = steps_to(t_end, h);
       std::int64_t evals = 0;
-      const double err = phase_distance(with_method(m, Counting<NonlinearPendulum>{pend, &evals}, [&](const auto& method) {
-                                          return integrate(method, pz0, h, n);
-                                        }),
-                                        pref);
-      const RunTime t = with_method(m, pend, [&](const auto& method) {
-        return time_runs(repeats, [&] { do_not_optimize(integrate(method, pz0, h, n)); });
-      });
+      const double err =
+          phase_distance(MethodsOn<Counting<NonlinearPendulum>>::integrate(m, {pend, &evals}, pz0, h, n), pref);
+      const RunTime t = MethodsOn<NonlinearPendulum>::time(m, pend, std::span(&pz0, 1), h, n, repeats);
       spreads.add(t);
       const double wall = t.seconds();
       cost << label << h << n << wall << 1e9 * wall / static_cast<double>(n) << evals << err << t.spread();
@@ -122,11 +118,11 @@ StudyPlan plan_timing(const Scene& s) {
 }
 
 void keys(Schema& s) {
-  s.texts("timing.methods", methods_for<NonlinearPendulum>(), 1,
+  s.texts("timing.methods", MethodsOn<NonlinearPendulum>::names(), 1,
           "methods timed on the nonlinear pendulum at the steps nonlinear.h, against its reference")
       .reals("timing.error_targets", positive(), 1,
              "errors whose cost (wall time, force evaluations) each method's runs are asked for")
-      .text("timing.equal_wall", methods_for<NonlinearPendulum>(),
+      .text("timing.equal_wall", MethodsOn<NonlinearPendulum>::names(),
             "the method of timing.methods whose most expensive run sets the wall time of the comparison at equal cost");
 }
 

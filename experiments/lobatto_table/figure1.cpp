@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "geomint/methods/methods.hpp"
+#include "geomint/methods/by_name.hpp"
 #include "geomint/methods/registry.hpp"
 #include "geomint/methods/scene_methods.hpp"
 #include "lobatto_table.hpp"
@@ -74,7 +74,7 @@ StudyPlan plan_figure1(const Scene& s) {
 
 void keys(Schema& s) {
   s.reals("figure1.meshes", at_least(1), 1, "steps per period of Fig. 1 (001: 3, 10)")
-      .texts("figure1.methods", methods_for<HarmonicOscillator>(), 1,
+      .texts("figure1.methods", MethodsOn<HarmonicOscillator>::names(), 1,
              "methods drawn in Fig. 1 (001: lobatto, simpson, implicit_midpoint)");
 }
 

@@ -6,7 +6,7 @@
 #include <numbers>
 
 #include "geomint/analysis/linear_stability.hpp"
-#include "geomint/methods/methods.hpp"
+#include "geomint/methods/by_name.hpp"
 #include "geomint/methods/registry.hpp"
 #include "geomint/methods/scene_methods.hpp"
 
@@ -17,7 +17,7 @@ double discrete_energy(const Mat<2>& Phi, const Z1& z) {
 }
 
 Mat<2> pq_matrix(const std::string& method, const HarmonicOscillator& osc, double h) {
-  return with_kernel(method, osc, [&](const auto& m) { return in_pq_order(one_step_matrix(m, h)); });
+  return in_pq_order(one_step_matrix(one_step_by_name(method, osc, Bind::kernel), h));
 }
 
 Mat<2> lobatto_matrix(const HarmonicOscillator& osc, double h) { return pq_matrix("lobatto", osc, h); }

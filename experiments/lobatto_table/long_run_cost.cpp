@@ -14,7 +14,7 @@
 
 #include "geomint/analysis/work_precision.hpp"
 #include "geomint/core/integrate.hpp"
-#include "geomint/methods/methods.hpp"
+#include "geomint/methods/by_name.hpp"
 #include "geomint/methods/registry.hpp"
 #include "geomint/methods/scene_methods.hpp"
 #include "geomint/observables/error_norms.hpp"
@@ -61,9 +61,9 @@ std::vector<Measured> measure(Context& ctx, const Oscillator& o, const std::vect
     const std::int64_t n = steps_of(periods, T, h);
     const double H0 = osc.H(z0);
     const Counting<HarmonicOscillator> counted{osc, &r.evals};
-    const Z1 zN = with_method(methods[task / nh], counted, [&](const auto& m) {
-      return integrate(m, z0, h, n, [&](std::int64_t, const Z1& z) { r.energy = std::max(r.energy, std::abs(osc.H(z) - H0)); });
-    });
+    const Z1 zN = MethodsOn<Counting<HarmonicOscillator>>::integrate(
+        methods[task / nh], counted, z0, h, n,
+        [&](std::int64_t, const Z1& z) { r.energy = std::max(r.energy, std::abs(osc.H(z) - H0)); });
     r.phase = phase_distance(zN, osc.exact(z0, static_cast<double>(n) * h));
     return r;
   });
@@ -95,9 +95,7 @@ Timed time_and_write(Context& ctx, const Oscillator& o, const std::vector<std::s
     // on a segment of long_run_cost.timing_steps steps (at most the run), and the run's wall time is
     // its n steps at that rate.
     const std::int64_t n_timed = std::min<std::int64_t>(n, s.integer("long_run_cost.timing_steps"));
-    const RunTime t = with_method(m, osc, [&](const auto& method) {
-      return time_runs(repeats, [&] { do_not_optimize(integrate(method, z0, h, n_timed)); });
-    });
+    const RunTime t = MethodsOn<HarmonicOscillator>::time(m, osc, std::span(&z0, 1), h, n_timed, repeats);
     spreads.add(t);
     const Measured& r = measured[task];
     const double per_step = t.seconds() / static_cast<double>(n_timed), wall = per_step * static_cast<double>(n);
@@ -196,7 +194,7 @@ StudyPlan plan_long_run_cost(const Scene& s) {
 }
 
 void keys(Schema& s) {
-  s.texts("long_run_cost.methods", methods_for<HarmonicOscillator>(), 1,
+  s.texts("long_run_cost.methods", MethodsOn<HarmonicOscillator>::names(), 1,
           "methods whose cost is measured on the oscillator of Fig. 2 over long_run.periods periods (001: lobatto, "
           "simpson, implicit_midpoint)")
       .reals("long_run_cost.h", positive(), 3, "steps of the long-run work-precision study")

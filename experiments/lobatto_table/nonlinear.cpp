@@ -10,7 +10,7 @@
 
 #include "geomint/core/integrate.hpp"
 #include "geomint/integrators/galerkin_variational.hpp"
-#include "geomint/methods/methods.hpp"
+#include "geomint/methods/by_name.hpp"
 #include "geomint/methods/registry.hpp"
 #include "geomint/methods/scene_methods.hpp"
 #include "geomint/observables/error_norms.hpp"
@@ -77,7 +77,7 @@ void run_nonlinear(Context& ctx) {
           it_e / static_cast<double>(n), {}};
     for (const auto& m : methods)
       r.compared.push_back(phase_distance(
-          with_method(m, pend, [&](const auto& method) { return integrate(method, pz0, h, n); }), pref));
+          MethodsOn<NonlinearPendulum>::integrate(m, pend, pz0, h, n), pref));
     return r;
   });
   std::vector<std::string> columns = {"h", "pendulum_err", "pendulum_newton_iterations", "elastic_err",
@@ -140,7 +140,7 @@ void keys(Schema& s) {
       .real("nonlinear.elastic.k", positive(), "elastic pendulum: spring stiffness")
       .real("nonlinear.elastic.g", non_negative(), "elastic pendulum: gravity (y pointing down)")
       .real_rows("nonlinear.elastic_initial", 4, any_finite(), 1, "elastic pendulum [x, y, px, py]")
-      .texts("nonlinear.methods", methods_for<NonlinearPendulum>(), 0,
+      .texts("nonlinear.methods", MethodsOn<NonlinearPendulum>::names(), 0,
              "methods compared with Lobatto on the nonlinear pendulum");
 }
 

@@ -12,7 +12,7 @@
 
 #include "geomint/analysis/linear_stability.hpp"
 #include "geomint/analysis/lobatto_oscillator.hpp"
-#include "geomint/methods/methods.hpp"
+#include "geomint/methods/by_name.hpp"
 #include "geomint/methods/registry.hpp"
 #include "geomint/methods/scene_methods.hpp"
 #include "lobatto_table.hpp"
@@ -154,7 +154,7 @@ void keys(Schema& s) {
   s.real("stability.hw_min", positive(), "scan of the spectral radius over h omega")
       .real("stability.hw_max", positive(), "")
       .integer("stability.points", at_least(2), "")
-      .texts("stability.methods", methods_for<HarmonicOscillator>(), 0,
+      .texts("stability.methods", MethodsOn<HarmonicOscillator>::names(), 0,
              "methods whose kernel's spectral radius is scanned with Lobatto's");
 }
 

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "geomint/analysis/lobatto_oscillator.hpp"
-#include "geomint/methods/methods.hpp"
+#include "geomint/methods/by_name.hpp"
 #include "geomint/methods/registry.hpp"
 #include "geomint/methods/scene_methods.hpp"
 #include "geomint/observables/order_fit.hpp"
@@ -153,7 +153,7 @@ StudyPlan plan_table1(const Scene& s) {
 
 void keys(Schema& s) {
   s.reals("meshes", at_least(1), 3, "steps per period N of Table 1 (001: 10, 20, 40)")
-      .texts("table1.methods", methods_for<HarmonicOscillator>(), 0,
+      .texts("table1.methods", MethodsOn<HarmonicOscillator>::names(), 0,
              "methods compared with Lobatto in Table 1 (max error of q; 001: simpson, implicit_midpoint)");
 }
 

@@ -1,12 +1,11 @@
 #pragma once
-// The trajectory of a registered method by name (the registry's dispatch, methods/methods.hpp), for
-// the studies that draw or tabulate whole trajectories: Table 1 and Fig. 1.
+// The trajectory of a registered method by name (methods/by_name.hpp), for the studies that draw or
+// tabulate whole trajectories: Table 1 and Fig. 1.
 #include <cstdint>
 #include <string>
 #include <vector>
 
-#include "geomint/core/integrate.hpp"
-#include "geomint/methods/methods.hpp"
+#include "geomint/methods/by_name.hpp"
 #include "lobatto_table.hpp"
 
 namespace geomint::lobatto_table {
@@ -15,9 +14,7 @@ namespace geomint::lobatto_table {
 template <class Sys>
 std::vector<Z1> trajectory(const std::string& method, const Sys& sys, const Z1& z0, double h, std::int64_t n) {
   std::vector<Z1> zs;
-  with_method(method, sys, [&](const auto& m) {
-    integrate(m, z0, h, n, [&](std::int64_t, const Z1& z) { zs.push_back(z); });
-  });
+  MethodsOn<Sys>::integrate(method, sys, z0, h, n, [&](std::int64_t, const Z1& z) { zs.push_back(z); });
   return zs;
 }
 

@@ -16,7 +16,7 @@
 
 #include "geomint/core/integrate.hpp"
 #include "geomint/core/numerical_failure.hpp"
-#include "geomint/methods/methods.hpp"
+#include "geomint/methods/by_name.hpp"
 #include "geomint/methods/registry.hpp"
 #include "geomint/observables/error_norms.hpp"
 #include "geomint/observables/order_fit.hpp"
@@ -61,10 +61,9 @@ Errors convergence_run(const std::string& method, const Sys& sys, const State& z
   const Counting<Sys> counted{sys, &e.force_evals};
   const double H0 = sys.H(z0);
   ErrorSeries energy;
-  const State zN = with_method(method, counted, [&](const auto& m) {
-    if (!obs.energy) return integrate(m, z0, h, n);  // pre once, post once (eq. (23))
-    return integrate(m, z0, h, n, [&](std::int64_t, const State& z) { energy.add(sys.H(z) - H0); });
-  });
+  const State zN = obs.energy ? MethodsOn<Counting<Sys>>::integrate(method, counted, z0, h, n,
+                                                                      [&](std::int64_t, const State& z) { energy.add(sys.H(z) - H0); })
+                               : MethodsOn<Counting<Sys>>::integrate(method, counted, z0, h, n);  // pre once, post once (eq. (23))
   if (obs.energy) e.energy_rms = energy.rms50(), e.energy_max = energy.max_abs();
   if (obs.phase) e.phase = phase_distance(zN, *z_ref);
   return e;

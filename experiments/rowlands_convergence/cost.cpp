@@ -1,22 +1,20 @@
-// What the accuracy of 000 Fig. 4's methods costs, against odeint's own steppers (study `timing`):
-// wall time (runner/timing.hpp) of each method from initial[0] to t_end (pre once, post once, eq.
-// (23)); force evaluations and phase errors (against the reference at initial[0]) from separate
-// counting runs. Per method: the wall time and force evaluations to reach each target error.
-#include <algorithm>
+// What the accuracy of 000 Fig. 4's methods costs, against odeint's own steppers (study `cost`, formerly
+// `timing`): one work-precision set (analysis/work_precision_set.hpp), "phase": per method and step h
+// of Fig. 4, the l2 phase-space error at t_end from initial[0] against the reference, from a counting
+// run that also counts the force evaluations, and the wall time of the run (pre once, post once, eq.
+// (23); runner/timing.hpp).
 #include <cstdint>
-#include <optional>
 #include <string>
 #include <tuple>
 #include <vector>
 
-#include "geomint/analysis/work_precision.hpp"
+#include "geomint/analysis/work_precision_set.hpp"
 #include "geomint/core/integrate.hpp"
-#include "geomint/methods/methods.hpp"
+#include "geomint/methods/by_name.hpp"
 #include "geomint/methods/registry.hpp"
 #include "geomint/observables/error_norms.hpp"
 #include "geomint/reference/odeint_reference.hpp"
 #include "geomint/runner/distributed_map.hpp"
-#include "geomint/runner/summary.hpp"
 #include "geomint/runner/timing.hpp"
 #include "geomint/runner/timing_report.hpp"
 #include "geomint/systems/counting.hpp"
@@ -25,33 +23,8 @@
 namespace geomint::rowlands_convergence {
 namespace {
 
-// What each method's accuracy costs (summary.json timing.cost.<label>): at the smallest h, the force
-// evaluations per step; its smallest error; its error at the wall time of the most expensive run of
-// the first method (`budget`, at which the methods are compared); and for every target error the wall time
-// and the force evaluations at which its error first reaches it, or null (reaches: false) where the
-// measured step sizes do not reach it (log-log interpolation, never extrapolated).
-json cost_summary(const std::vector<std::string>& methods, const std::vector<std::vector<CostRun>>& all,
-                  const std::vector<double>& targets, double budget) {
-  json out;
-  for (std::size_t k = 0; k < methods.size(); ++k) {
-    const std::vector<CostRun> runs = by_decreasing_h(all[k]);
-    if (runs.empty()) continue;
-    json c{{"evals_per_step", runs.back().evals / runs.back().steps},
-           {"min_err", std::min_element(runs.begin(), runs.end(), [](const auto& a, const auto& b) { return a.err < b.err; })->err},
-           {"err_at_equal_wall", or_null(error_at_wall(runs, budget))},
-           {"wall_to", json::array()}, {"evals_to", json::array()}, {"reaches", json::array()}};
-    for (double t : targets) {
-      c["wall_to"].push_back(or_null(cost_to_reach(runs, t, &CostRun::wall_s)));
-      c["evals_to"].push_back(or_null(cost_to_reach(runs, t, &CostRun::evals)));
-      c["reaches"].push_back(cost_to_reach(runs, t, &CostRun::evals).has_value());
-    }
-    out[label_of(methods[k])] = c;
-  }
-  return out;
-}
-
 template <class Sys>
-void timing_with(Context& ctx, const Sys& sys) {
+void cost_with(Context& ctx, const Sys& sys) {
   const Scene& s = ctx.scene;
   const auto hs = s.reals("h");
   const std::size_t nh = hs.size();
@@ -62,7 +35,7 @@ void timing_with(Context& ctx, const Sys& sys) {
   ctx.progress("cost: reference (odeint Bulirsch-Stoer)");
   const State z_ref = reference_solution(sys, z0, t_end, s.real("reference.rtol"), s.real("reference.atol"));
 
-  ctx.progress("cost: timing");
+  ctx.progress("cost: counting runs");
   struct Count {
     std::int64_t evals = 0;
     double phase = 0;
@@ -70,54 +43,39 @@ void timing_with(Context& ctx, const Sys& sys) {
   };
   const auto counts = distributed_map(methods.size() * nh, [&](std::size_t task) {
     Count c;
-    const Counting<Sys> counted{sys, &c.evals};
     const double h = hs[task % nh];
-    const std::int64_t n = steps_to(t_end, h);
-    const State zN = with_method(methods[task / nh], counted, [&](const auto& m) { return integrate(m, z0, h, n); });
+    const State zN = MethodsOn<Counting<Sys>>::integrate(methods[task / nh], {sys, &c.evals}, z0, h, steps_to(t_end, h));
     c.phase = phase_distance(zN, z_ref);
     return c;
   });
-  Csv cost({"method", "h", "steps", "wall_s", "ns_per_step", "force_evals", "phase_err", "wall_spread"});
-  json ns_per_step, ns_spread, timing;
-  SpreadTally spreads;
-  std::vector<std::vector<CostRun>> runs(methods.size());  // per method, its runs of `h`
-  const double h_ns = *std::min_element(hs.begin(), hs.end());
+  ctx.progress("cost: timed runs");
+  WorkPrecisionSet phase("l2 phase-space error at t_end from initial[0]");
   for (std::size_t task = 0; task < counts.size(); ++task) {
-    const std::string label = label_of(methods[task / nh]);
     const double h = hs[task % nh];
     const std::int64_t n = steps_to(t_end, h);
-    const RunTime t = with_method(methods[task / nh], sys, [&](const auto& m) {  // (the dispatch outside the clock)
-      return time_runs(repeats, [&] { do_not_optimize(integrate_inlined(m, z0, h, n)); });
-    });
-    spreads.add(t);
-    const double wall = t.seconds();
-    cost.row(label, h, n, wall, 1e9 * wall / static_cast<double>(n), counts[task].evals, counts[task].phase, t.spread());
-    runs[task / nh].push_back({h, static_cast<double>(n), wall, static_cast<double>(counts[task].evals), counts[task].phase});
-    if (h == h_ns) ns_per_step[label] = 1e9 * wall / static_cast<double>(n), ns_spread[label] = t.spread();
+    const RunTime t = MethodsOn<Sys>::time(methods[task / nh], sys, std::span(&z0, 1), h, n, repeats);  // (the dispatch outside the clock)
+    phase.add({label_of(methods[task / nh]), h, static_cast<double>(n), t, static_cast<double>(counts[task].evals),
+               counts[task].phase});
   }
-  ctx.write("timing.csv", cost);
-  timing["ns_per_step"] = ns_per_step;
-  timing["ns_per_step_spread"] = ns_spread;
-  timing["spread"] = spreads.to_json();  // of every timed run of the study
-  if (ns_per_step.contains("sv") && ns_per_step.contains("rowlands"))
-    timing["ns_per_step_ratio_rowlands_over_sv"] = ns_per_step["rowlands"].get<double>() / ns_per_step["sv"].get<double>();
-  timing["method"] = timing_method_text(repeats) + "; from initial[0] to t_end (pre- and postprocessing once, every "
-                     "call inlined); ns_per_step at the smallest h";
-  const double budget = largest_wall(by_decreasing_h(runs[0]));  // the most expensive run of the first method
-  timing["cost"] = cost_summary(methods, runs, s.reals("timing.error_targets"), budget);
-  timing["equal_wall_s"] = budget;
-  for (const auto& m : methods)
-    timing["relative_cost"][label_of(m)] = ns_per_step[label_of(m)].get<double>() / ns_per_step[label_of(methods[0])].get<double>();
-  ctx.summary["timing"] = timing;
-  ctx.summary["methods"]["timing"] = labels_of(methods);
+  ctx.write("cost_phase.csv", phase.csv());
+  json cost = {{"phase", phase.summary(s.reals("timing.error_targets"))},
+               {"method", timing_method_text(repeats) + "; from initial[0] to t_end (pre- and postprocessing once, every "
+                                                        "call inlined); ns_per_step at the smallest h"}};
+  const json by = cost["phase"]["by_method"];  // (a copy: cost grows below)
+  const std::string first = label_of(methods[0]);
+  for (const auto& m : methods)  // ns per step relative to the first method of timing.methods
+    cost["relative_ns_per_step"][label_of(m)] = by[label_of(m)]["ns_per_step"].get<double>() / by[first]["ns_per_step"].get<double>();
+  if (by.contains("sv") && by.contains("rowlands"))
+    cost["ns_per_step_ratio_rowlands_over_sv"] = by["rowlands"]["ns_per_step"].get<double>() / by["sv"]["ns_per_step"].get<double>();
+  ctx.summary["cost"] = cost;
   scene_summary(ctx);
 }
 
-void run_timing(Context& ctx) {
-  with_elastic_pendulum(pendulum_of(ctx.scene), [&](const auto& sys) { timing_with(ctx, sys); });
+void run_cost(Context& ctx) {
+  with_elastic_pendulum(pendulum_of(ctx.scene), [&](const auto& sys) { cost_with(ctx, sys); });
 }
 
-StudyPlan plan_timing(const Scene& s) {
+StudyPlan plan_cost(const Scene& s) {
   const double methods = static_cast<double>(s.texts("timing.methods").size());
   const double repeats = static_cast<double>(s.integer("timing.repeats"));
   const double counted = methods * steps_per_run(s);
@@ -136,13 +94,13 @@ void keys(Schema& s) {
 }  // namespace
 
 Study cost_study() {
-  return {"timing", "cost: error against wall time and force evaluations, against odeint's steppers", {"timing.csv"},
+  return {"cost", "cost: error against wall time and force evaluations, against odeint's steppers", {"cost_phase.csv"},
           {"timing", "initial", "t_end", "h", "pendulum", "reference"},
           [](const Scene& s) {
             check_common(s);
             check_methods(s, "timing.methods");
           },
-          run_timing, plan_timing, keys};
+          run_cost, plan_cost, keys, {"timing"}};
 }
 
 }  // namespace geomint::rowlands_convergence

@@ -6,7 +6,7 @@
 //   Fig 4  energy error (50) and phase-space error at t_max against h, for
 //          several initial conditions; fitted orders (study `convergence`)    convergence.cpp
 // plus what the accuracy costs, against odeint's own steppers: error against
-//          wall time and force evaluations (study `timing`)                   cost.cpp
+//          wall time and force evaluations (study `cost`)                     cost.cpp
 // Here: the studies, and the scene keys that both of them read.
 #include "rowlands_convergence.hpp"
 

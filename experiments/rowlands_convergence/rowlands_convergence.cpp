@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "geomint/core/integrate.hpp"
-#include "geomint/methods/methods.hpp"
+#include "geomint/methods/by_name.hpp"
 #include "geomint/methods/registry.hpp"
 #include "geomint/methods/scene_methods.hpp"
 #include "geomint/runner/summary.hpp"
@@ -19,7 +19,7 @@ ElasticPendulumParams pendulum_of(const Scene& s) {
   return {s.real("pendulum.l"), s.real("pendulum.m"), s.real("pendulum.k"), s.real("pendulum.g")};
 }
 
-std::vector<std::string> pendulum_method_choices() { return method_choices<Counting<ElasticPendulumWithGravity>>(); }
+std::vector<std::string> pendulum_method_choices() { return MethodsOn<Counting<ElasticPendulumWithGravity>>::choices(); }
 
 
 void scene_summary(Context& ctx) {
@@ -30,7 +30,7 @@ void scene_summary(Context& ctx) {
 
 void check_methods(const Scene& s, const char* key) {
   const ElasticPendulumParams p = pendulum_of(s);
-  with_elastic_pendulum(p, [&](const auto& sys) { check_methods(s, key, sys); });
+  with_elastic_pendulum(p, [&](const auto& sys) { MethodsOn<std::decay_t<decltype(sys)>>::check(s, key, sys); });
   const double omega = std::sqrt(p.k / p.m);
   for (const auto& m : s.texts(key))
     for (double h : s.reals("h"))

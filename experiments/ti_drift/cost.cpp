@@ -13,7 +13,7 @@
 
 #include "geomint/analysis/work_precision.hpp"
 #include "geomint/core/integrate.hpp"
-#include "geomint/methods/methods.hpp"
+#include "geomint/methods/by_name.hpp"
 #include "geomint/methods/registry.hpp"
 #include "geomint/methods/scene_methods.hpp"
 #include "geomint/reference/odeint_reference.hpp"
@@ -42,11 +42,9 @@ std::vector<WpRow> wp_runs(const Scene& s, const std::string& method, const Sys&
     const std::int64_t n = steps_to(T, h);
     std::int64_t evals = 0;
     const Counting<Sys> counted{sys, &evals};
-    with_method(method, counted, [&](const auto& m) { return integrate(m, z0, h, n); });
-    const auto [err, rt] = with_method(method, sys, [&](const auto& m) {
-      const RunTime t = time_runs(repeats, [&] { do_not_optimize(integrate_inlined(m, z0, h, n)); });
-      return std::pair{error(integrate(m, z0, h, n)), t};
-    });
+    MethodsOn<Counting<Sys>>::integrate(method, counted, z0, h, n);
+    const RunTime rt = MethodsOn<Sys>::time(method, sys, std::span(&z0, 1), h, n, repeats);
+    const double err = error(MethodsOn<Sys>::integrate(method, sys, z0, h, n));
     if (!std::isfinite(err))
       throw NumericalFailure(method + " at h = " + format_double(h) + ": the error at t = " +
                              format_double(T) + " is not finite");
@@ -131,8 +129,8 @@ void run_work_precision(Context& ctx) {
 }
 
 void check_work_precision(const Scene& s) {
-  check_methods(s, "work_precision.methods", Counting<HenonHeiles>{HenonHeiles{{}, 3}, nullptr});
-  check_methods(s, "work_precision.methods", Counting<HarmonicOscillator>{kOscillator, nullptr});
+  MethodsOn<Counting<HenonHeiles>>::check(s, "work_precision.methods", {HenonHeiles{{}, 3}, nullptr});
+  MethodsOn<Counting<HarmonicOscillator>>::check(s, "work_precision.methods", {kOscillator, nullptr});
   check_hh_starts(s, "hh3", HenonHeiles{{}, 3}, 0.0, false);
   for (const auto& m : s.texts("work_precision.methods"))
     for (double h : s.reals("work_precision.h")) {
@@ -157,7 +155,7 @@ StudyPlan plan_work_precision(const Scene& s) {
 }
 
 void keys(Schema& s) {
-  s.texts("work_precision.methods", method_choices<Counting<HenonHeiles>>(), 2,
+  s.texts("work_precision.methods", MethodsOn<Counting<HenonHeiles>>::choices(), 2,
           "methods of the work-precision study (processed where they have processing; registry names or labels)")
       .reals("work_precision.h", positive(), 3, "steps of the work-precision runs (every method)")
       .real("work_precision.t_end", positive(), "the global error of a work-precision run is taken at this time")

@@ -8,6 +8,7 @@
 
 #include "geomint/core/integrate.hpp"
 #include "geomint/integrators/takahashi_imada.hpp"
+#include "geomint/methods/by_name.hpp"
 #include "geomint/methods/registry.hpp"
 #include "geomint/methods/scene_methods.hpp"
 #include "geomint/runner/timing.hpp"
@@ -53,9 +54,7 @@ void timing_with(Context& ctx, const HH& hhk) {
   const int repeats = static_cast<int>(s.integer("timing.repeats"));
   json ns_per_step, runs, spread;
   for (const auto& m : s.texts("timing.methods")) {
-    const RunTime t = with_kernel(m, hhk, [&](const auto& kernel) {
-      return time_runs(repeats, [&] { do_not_optimize(integrate_inlined(kernel, z, h, n)); });
-    });
+    const RunTime t = MethodsOn<HH>::time(m, hhk, std::span(&z, 1), h, n, repeats, Bind::kernel);
     ns_per_step[label_of(m)] = 1e9 * t.seconds() / static_cast<double>(n);
     spread[label_of(m)] = t.spread();
     runs[label_of(m)] = to_json(t);
@@ -101,7 +100,7 @@ StudyPlan plan_timing(const Scene& s) {
 }
 
 void keys(Schema& s) {
-  s.texts("timing.methods", method_choices<HenonHeiles>(), 1,
+  s.texts("timing.methods", MethodsOn<HenonHeiles>::choices(), 1,
           "methods timed (their kernels, on the Fig. 4 system; registry names or labels)")
       .integer("timing.steps", at_least(1), "steps of each timed run")
       .integer("timing.lj_steps", at_least(1), "steps of each timed run of the Lennard-Jones lanes (Fig. 6 cluster, lj.h)");
@@ -115,7 +114,7 @@ Study timing_study() {
            "lj.perturbation"},
           [](const Scene& s) {
             with_ensemble_system(s, [&](const auto& hh) {
-              check_methods(s, "timing.methods", hh);
+              MethodsOn<std::decay_t<decltype(hh)>>::check(s, "timing.methods", hh);
               check_hh_starts(s, "hh3", hh, s.real("ensemble.perturbation"), true);
             });
           },

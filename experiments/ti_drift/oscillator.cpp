@@ -13,6 +13,7 @@
 #include "geomint/analysis/linear_stability.hpp"
 #include "geomint/core/integrate.hpp"
 #include "geomint/integrators/takahashi_imada.hpp"
+#include "geomint/methods/by_name.hpp"
 #include "geomint/methods/registry.hpp"
 #include "geomint/methods/scene_methods.hpp"
 #include "geomint/observables/ensemble_statistics.hpp"
@@ -30,7 +31,7 @@ constexpr double kFitMaxOmegaH = 0.5;  // Fig. 1: the orders are fitted over ome
 double step_at_equal_work(double h_eff, std::int64_t evals) { return h_eff * static_cast<double>(evals) / 2; }
 
 void check_oscillator(const Scene& s) {
-  check_methods(s, "oscillator.methods", Counting<HarmonicOscillator>{kOscillator, nullptr});
+  MethodsOn<Counting<HarmonicOscillator>>::check(s, "oscillator.methods", {kOscillator, nullptr});
   const auto omega_h = s.reals("oscillator.omega_h");
   std::vector<int> runs(omega_h.size(), 0);
   for (const auto& m : s.texts("oscillator.methods")) {
@@ -65,15 +66,14 @@ double closed_form(const std::string& method, double wh) {
 // processing): the scaled global error against the exact solution and the relative error of H.
 std::pair<double, double> oscillator_errors(const std::string& method, const Z1& z0, double h, double t_omega) {
   const HarmonicOscillator& osc = kOscillator;
-  return with_method(method, osc, [&](const auto& m) {
-    double gm = 0, em = 0;
-    integrate(m, z0, h, std::llround(std::floor(t_omega / h)), [&](std::int64_t j, const Z1& z) {
-      const Z1 ex = osc.exact(z0, static_cast<double>(j) * h);
-      gm = std::max(gm, std::hypot(z.p[0] - ex.p[0], z.q[0] - ex.q[0]));  // (|e_p|^2 + w^2 |e_q|^2)^(1/2)
-      em = std::max(em, std::abs(osc.H(z) - osc.H(z0)) / osc.H(z0));
-    });
-    return std::pair{gm, em};
+  double gm = 0, em = 0;
+  MethodsOn<HarmonicOscillator>::integrate(method, osc, z0, h, std::llround(std::floor(t_omega / h)),
+                                           [&](std::int64_t j, const Z1& z) {
+    const Z1 ex = osc.exact(z0, static_cast<double>(j) * h);
+    gm = std::max(gm, std::hypot(z.p[0] - ex.p[0], z.q[0] - ex.q[0]));  // (|e_p|^2 + w^2 |e_q|^2)^(1/2)
+    em = std::max(em, std::abs(osc.H(z) - osc.H(z0)) / osc.H(z0));
   });
+  return std::pair{gm, em};
 }
 
 // The exponent of the growth of max_{m <= n} |z_m| with n along Stormer-Verlet on its stability bound
@@ -84,13 +84,11 @@ double sv_growth_exponent_at_bound(double t_omega) {
   const std::int64_t n = std::llround(std::floor(t_omega / h));
   std::vector<double> steps, size;
   double largest = 0;
-  with_kernel("stormer_verlet", kOscillator, [&](const auto& m) {
-    integrate(m, make_state(0.0, 1.0), h, n, [&](std::int64_t j, const Z1& z) {
-      largest = std::max(largest, std::hypot(z.p[0], kOscillator.w * z.q[0]));
-      if (j > 0) steps.push_back(static_cast<double>(j)), size.push_back(largest);
-    });
-    return 0;
-  });
+  MethodsOn<HarmonicOscillator>::integrate("stormer_verlet", kOscillator, make_state(0.0, 1.0), h, n,
+                                           [&](std::int64_t j, const Z1& z) {
+    largest = std::max(largest, std::hypot(z.p[0], kOscillator.w * z.q[0]));
+    if (j > 0) steps.push_back(static_cast<double>(j)), size.push_back(largest);
+  }, Bind::kernel);
   return power_law_exponent(steps, size, static_cast<double>(n) / 10);
 }
 
@@ -230,7 +228,7 @@ void compare_ti_sv(json& o, const std::vector<Method>& methods) {
 // The stability bound of TI: where the spectral radius of its one-step matrix (the kernel's) leaves 1.
 void bisect_ti_bound(Context& ctx, json& o) {
   const auto radius = [&](double wh) {
-    return with_kernel("takahashi_imada", kOscillator, [&](const auto& m) { return spectral_radius(one_step_matrix(m, wh)); });
+    return spectral_radius(one_step_matrix(one_step_by_name("takahashi_imada", kOscillator, Bind::kernel), wh));
   };
   const double lo =
       stability_boundary([&](double wh) { return radius(wh) <= 1 + kRadiusTolerance; }, kBisectionLo, kBisectionHi);
@@ -296,7 +294,7 @@ StudyPlan plan_oscillator(const Scene& s) {
 void keys(Schema& s) {
   s.reals("oscillator.omega_h", positive(), 3,
           "effective steps omega h_eff of Fig. 1 (equal work: h = h_eff e/2 for e force evaluations per step)")
-      .texts("oscillator.methods", method_choices<Counting<HarmonicOscillator>>(), 1,
+      .texts("oscillator.methods", MethodsOn<Counting<HarmonicOscillator>>::choices(), 1,
              "methods of Fig. 1, processed where they have processing (registry names or labels)")
       .real("oscillator.t_omega", positive(), "errors are maxima over t <= t_omega / omega (004: 50)");
 }

@@ -12,7 +12,8 @@
 #include "geomint/analysis/orbit_average.hpp"
 #include "geomint/core/integrate.hpp"
 #include "geomint/integrators/takahashi_imada.hpp"
-#include "geomint/methods/methods.hpp"
+#include "geomint/integrators/runge_kutta4.hpp"
+#include "geomint/systems/hamiltonian_field.hpp"
 #include "geomint/observables/ensemble_statistics.hpp"
 #include "geomint/observables/linear_fit.hpp"
 #include "geomint/observables/modified_energy.hpp"
@@ -73,7 +74,7 @@ void run_pendulum(Context& ctx) {
   std::vector<double> ts, es, ts_all, es_all, Hs_all;
   // (4.3)'s rate averaged along the exact orbit (RK4 at step 1e-3 over 2000 time units).
   double predicted = 0;
-  const Z1 ref_end = integrate(RungeKutta4::bind(up), p0, kReferenceStep, kReferenceSteps, [&](std::int64_t j, const Z1& z) {
+  const Z1 ref_end = integrate(one_step_method([f = HamiltonianField<UnsymmetricPendulum>{up}](const Z1& z, double dt) { return runge_kutta4(f, z, dt); }), p0, kReferenceStep, kReferenceSteps, [&](std::int64_t j, const Z1& z) {
     predicted += j > 0 ? simplified_ti_drift_rate(up, z, h) : 0.0;
   });
   integrate(simplified_ti_method(up, false), p0, h, n, [&](std::int64_t j, const Z1& z) {

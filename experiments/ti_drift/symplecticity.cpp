@@ -8,6 +8,7 @@
 
 #include "geomint/core/integrate.hpp"
 #include "geomint/integrators/takahashi_imada.hpp"
+#include "geomint/methods/by_name.hpp"
 #include "geomint/methods/registry.hpp"
 #include "geomint/methods/scene_methods.hpp"
 #include "geomint/observables/order_fit.hpp"
@@ -47,7 +48,7 @@ void run_symplecticity(Context& ctx) {
   const double h = s.real("h"), d = s.real("symplecticity.fd_step");
   json reproduced;
   for (const auto& m : s.texts("symplecticity.methods")) {
-    const Mat<4> J = with_kernel(m, hh, [&](const auto& kernel) { return step_jacobian_fd(kernel, z, h, d); });
+    const Mat<4> J = step_jacobian_fd(one_step_by_name(m, hh, Bind::kernel), z, h, d);
     reproduced[label_of(m) + "_symplecticity_defect"] = symplecticity_defect(J);
     reproduced[label_of(m) + "_det_minus_one"] = J.determinant() - 1.0;
   }
@@ -64,7 +65,7 @@ StudyPlan plan_symplecticity(const Scene& s) {
 }
 
 void keys(Schema& s) {
-  s.texts("symplecticity.methods", method_choices<HenonHeiles>(), 1,
+  s.texts("symplecticity.methods", MethodsOn<HenonHeiles>::choices(), 1,
           "methods whose one-step Jacobian (of the kernel) is checked (registry names or labels)")
       .integer("symplecticity.k", at_least(3), "exponent k of the Henon-Heiles system of the check")
       .real("symplecticity.q2", any_finite(), "start q2 of the check (q1 = 0, p1 > 0 from hh.H0)")
@@ -78,7 +79,7 @@ Study symplecticity_study() {
   return {"symplecticity", "004 Sect. 1.3: TI symplectic, the simplified TI only volume-preserving", {},
           {"symplecticity", "h", "hh.H0"},
           [](const Scene& s) {
-            check_methods(s, "symplecticity.methods", symplecticity_system(s));
+            MethodsOn<HenonHeiles>::check(s, "symplecticity.methods", symplecticity_system(s));
             check_hh_starts(s, "symplecticity", symplecticity_system(s), 0.0, true);
           },
           run_symplecticity, plan_symplecticity, keys};

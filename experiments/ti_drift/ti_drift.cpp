@@ -7,6 +7,7 @@
 #include <random>
 #include <stdexcept>
 
+#include "geomint/methods/by_name.hpp"
 #include "geomint/methods/scene_methods.hpp"
 #include "geomint/observables/linear_fit.hpp"
 #include "geomint/runner/timing.hpp"
@@ -32,14 +33,10 @@ std::string short_num(double v) {
 }
 
 std::int64_t evals_per_step(const std::string& method) {
-  std::int64_t n = 0;
-  const Counting<HarmonicOscillator> counted{kOscillator, &n};
-  with_kernel(method, counted, [&](const auto& m) {
-    const auto s = m.pre(make_state(1.0, 0.0), 0.1);
-    n = 0;
-    do_not_optimize(m.kernel(s, 0.1));
-    return 0;
-  });
+  std::int64_t n = 0;  // counted from z_0 on: one kernel step (the kernel's processors evaluate no force)
+  MethodsOn<Counting<HarmonicOscillator>>::integrate(
+      method, {kOscillator, &n}, make_state(1.0, 0.0), 0.1, 1, [&](std::int64_t j, const Z1&) { if (j == 0) n = 0; },
+      Bind::kernel);
   if (n < 1) throw std::logic_error(method + " evaluates no force in a step");
   return n;
 }

@@ -165,30 +165,28 @@ TEST(RowlandsConvergence, PrintedCoefficientHalvesTheKernelsError) {
   EXPECT_NEAR(r["max"].get<double>(), 0.5, 0.01);
 }
 
-TEST(RowlandsConvergence, CostSummaryOfTheTimingStudy) {
+TEST(RowlandsConvergence, CostSummaryOfTheCostStudy) {
   // Force evaluations per step: one gradient for Stormer-Verlet, a gradient and a Hessian-vector
   // product for the Rowlands kernel (31) (Sec. 3.3 counts only the one-time processing as overhead).
-  const auto& cost = summary()["timing"]["cost"];
-  EXPECT_NEAR(cost["sv"]["evals_per_step"].get<double>(), 1.0, 0.05);
-  EXPECT_NEAR(cost["rowlands"]["evals_per_step"].get<double>(), 2.0, 0.05);
-  const auto targets = summary()["timing"]["cost"]["sv"]["reaches"].size();
-  for (const auto& [m, c] : cost.items()) {
-    ASSERT_EQ(c["reaches"].size(), targets) << m;
-    for (std::size_t i = 0; i < targets; ++i) {
-      EXPECT_EQ(c["reaches"][i].get<bool>(), !c["wall_to"][i].is_null()) << m;
-      EXPECT_EQ(c["reaches"][i].get<bool>(), !c["evals_to"][i].is_null()) << m;
-    }
+  const auto& phase = summary()["cost"]["phase"];
+  const auto& by = phase["by_method"];
+  EXPECT_NEAR(by["sv"]["evals_per_step"].get<double>(), 1.0, 0.05);
+  EXPECT_NEAR(by["rowlands"]["evals_per_step"].get<double>(), 2.0, 0.05);
+  const auto targets = phase["targets"].size();
+  for (const auto& [m, c] : by.items()) {  // a target is reached in wall time exactly where in evaluations
+    ASSERT_EQ(c["wall_s_to"].size(), targets) << m;
+    for (std::size_t i = 0; i < targets; ++i) EXPECT_EQ(c["wall_s_to"][i].is_null(), c["evals_to"][i].is_null()) << m;
   }
-  EXPECT_EQ(summary()["methods"]["timing"].size(), cost.size());
+  EXPECT_EQ(phase["methods"].size(), by.size());
 }
 
 // The timing method (runner/timing.hpp, runner/timing_report.hpp): every timed measurement of the cost
-// study reports its spread (max - min) / min beside its minimum: one per row of timing.csv, and
-// summary.json's timing.spread is over all of them. (Structure only: no timing value is asserted.)
+// study reports its spread (max - min) / min beside its minimum: one per row of cost_phase.csv, and
+// summary.json's cost.phase.spread is over all of them. (Structure only: no timing value is asserted.)
 TEST(RowlandsConvergence, EveryTimedMeasurementReportsItsSpread) {
-  const CsvFile t = read_csv(results_dir("rowlands_convergence") / "timing.csv");
+  const CsvFile t = read_csv(results_dir("rowlands_convergence") / "cost_phase.csv");
   const double largest = largest_spread(t);
-  const auto& spread = summary_of("rowlands_convergence")["timing"]["spread"];
+  const auto& spread = summary_of("rowlands_convergence")["cost"]["phase"]["spread"];
   ASSERT_TRUE(spread.is_object());
   EXPECT_EQ(spread["measurements"].get<std::size_t>(), t.rows.size());
   EXPECT_GE(spread["max"].get<double>(), largest);
@@ -209,5 +207,14 @@ TEST(RowlandsConvergence, RefuseRepeatsBeyondInt) {
   expect_exit("rowlands_convergence", 2, "--set timing.repeats=2147483648", {"timing.repeats", "2147483648"});
 }
 TEST(RowlandsConvergence, PlanOfThePaperSceneHasFiniteStepCounts) {
-  expect_plan("rowlands_convergence", {"convergence", "timing"});
+  expect_plan("rowlands_convergence", {"convergence", "cost"});
+}
+
+// A former study name (Study::aliases) still selects the study, with a note on stderr naming the new one.
+TEST(RowlandsConvergence, FormerStudyNameTimingIsAcceptedWithANote) {
+  const BinaryOutcome r = run_binary("rowlands_convergence", "--quick --plan --study timing");
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("cost"), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("study 'timing' is now called 'cost'"), std::string::npos) << r.err;
+  EXPECT_EQ(run_binary("rowlands_convergence", "--quick --plan --study cost").err, "");
 }

@@ -1,6 +1,7 @@
 // The library's analysis helpers that experiments share: the stability-bound bisection
 // (analysis/linear_stability.hpp), Poincare cuts (analysis/poincare.hpp) and the crossing of two
-// work-precision curves (analysis/work_precision.hpp).
+// work-precision curves, the rule of equal cost and the work-precision set of every cost study
+// (analysis/work_precision.hpp, analysis/work_precision_set.hpp).
 #include <cmath>
 #include <vector>
 
@@ -9,6 +10,7 @@
 #include "geomint/analysis/linear_stability.hpp"
 #include "geomint/analysis/poincare.hpp"
 #include "geomint/analysis/work_precision.hpp"
+#include "geomint/analysis/work_precision_set.hpp"
 
 using namespace geomint;
 
@@ -67,6 +69,66 @@ TEST(WorkPrecision, NoCrossoverWhereTheCurvesDoNotMeetOrDoNotOverlap) {
 }
 
 // The section q1 = 0 upwards: a step from q1 = -1 to q1 = 3 crosses at a quarter of the step.
+TEST(WorkPrecision, EqualCostIsTheLargestCostEveryCurveReaches) {
+  std::vector<CostRun> a = curve(1e-4, 1), b = curve(1e-6, 2);
+  b.pop_back();  // b measured to wall 1e-2 only
+  EXPECT_EQ(equal_cost({a, b}, &CostRun::wall_s), 1e-2);
+  EXPECT_EQ(equal_cost({a, b}, &CostRun::evals), 1e4);  // evals = 1 / w: the largest b reaches is 1e4
+  std::vector<CostRun> late = curve(1, 1);
+  for (CostRun& r : late) r.wall_s *= 1e4;  // walls 1 .. 1e3: no range shared with a
+  EXPECT_FALSE(equal_cost({a, late}, &CostRun::wall_s).has_value());
+  EXPECT_FALSE(equal_cost({a, {}}, &CostRun::wall_s).has_value());
+}
+
+TEST(WorkPrecision, ErrorAtCostInterpolatesPowerLawsExactly) {
+  const auto b = curve(1e-6, 2);  // err = 1e-6 w^-2 = 1e-6 evals^2
+  EXPECT_NEAR(*error_at_cost(b, std::sqrt(1e-3 * 1e-2), &CostRun::wall_s) / (1e-6 / (1e-3 * 1e-2)), 1, 1e-13);
+  EXPECT_NEAR(*error_at_cost(b, 300.0, &CostRun::evals) / (1e-6 * 300.0 * 300.0), 1, 1e-13);
+  EXPECT_FALSE(error_at_cost(b, 1.0, &CostRun::wall_s).has_value());  // beyond the largest run: never extrapolated
+}
+
+// Two methods, four steps each: a of order 1 in wall time (err = 1e-4 / w), b of order 2, b timed at half a's rate.
+WorkPrecisionSet two_methods() {
+  WorkPrecisionSet set("the error of a run");
+  for (const char* m : {"a", "b"})
+    for (double w : {1e-4, 1e-3, 1e-2, 1e-1}) {
+      const bool is_a = m == std::string("a");
+      RunTime t;
+      t.min_s = is_a ? w : w / 2, t.median_s = 1.5 * t.min_s, t.max_s = 2 * t.min_s, t.repeats = 3, t.inner = 1;
+      set.add({m, 1 / w, 1e3 * w, t, (is_a ? 2 : 4) * 1e3 * w, is_a ? 1e-4 / w : 1e-6 / (w * w)});
+    }
+  return set;
+}
+
+TEST(WorkPrecisionSet, SummaryInTheOneShape) {
+  const auto s = two_methods().summary({1e-3, 1e-9});
+  EXPECT_EQ(s["methods"], nlohmann::ordered_json({"a", "b"}));
+  EXPECT_EQ(s["equal_wall_s"].get<double>(), 0.05);  // b's largest wall time 1e-1 / 2
+  EXPECT_EQ(s["equal_evals"].get<double>(), 200.0);  // a's largest: 2 evaluations per step, 100 steps
+  const auto& a = s["by_method"]["a"];
+  const auto& b = s["by_method"]["b"];
+  EXPECT_EQ(a["runs"], 4);
+  EXPECT_NEAR(a["err_at_equal_wall"].get<double>() / (1e-4 / 0.05), 1, 1e-13);
+  EXPECT_NEAR(b["err_at_equal_wall"].get<double>() / (1e-6 / (0.1 * 0.1)), 1, 1e-13);
+  EXPECT_NEAR(b["err_at_equal_evals"].get<double>() / (1e-6 / (0.05 * 0.05)), 1, 1e-13);  // 200 evals: w = 0.05
+  EXPECT_NEAR(a["wall_s_to"][0].get<double>() / 0.1, 1, 1e-13);  // 1e-4 / w = 1e-3 at w = 0.1
+  EXPECT_NEAR(b["wall_s_to"][0].get<double>() / (std::sqrt(1e-3) / 2), 1, 1e-13);  // timed at half a's rate
+  EXPECT_TRUE(a["wall_s_to"][1].is_null());  // 1e-9 is beyond the measured steps
+  EXPECT_NEAR(a["evals_to"][0].get<double>() / 200, 1, 1e-13);
+  EXPECT_EQ(a["min_err"].get<double>(), 1e-4 / 1e-1);
+  EXPECT_NEAR(a["ns_per_step"].get<double>() / (1e9 * 1e-1 / 100), 1, 1e-13);  // at the smallest h (largest w)
+  EXPECT_EQ(b["evals_per_step"].get<double>(), 4.0);
+  EXPECT_EQ(b["ns_per_step_spread"].get<double>(), 1.0);
+  EXPECT_EQ(s["spread"]["max"].get<double>(), 1.0);
+  EXPECT_EQ(s["spread"]["measurements"], 8);
+}
+
+TEST(WorkPrecisionSet, CsvHasOneRowPerRecord) {
+  const Csv csv = two_methods().csv();
+  EXPECT_EQ(csv.rows(), 8u);
+  EXPECT_EQ(csv.str().substr(0, csv.str().find('\n')), "method,h,steps,wall_s,wall_median_s,wall_spread,force_evals,err");
+}
+
 TEST(PoincareSection, UpwardCutInterpolatesTheStepLinearly) {
   const auto z = [](double q1, double q2, double p1, double p2) {
     PhaseState<2> s;

@@ -14,6 +14,8 @@
 #include <optional>
 #include <vector>
 
+#include <Eigen/LU>
+
 #include "geomint/core/state.hpp"
 #include "geomint/observables/linear_fit.hpp"
 

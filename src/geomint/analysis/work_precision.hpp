@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iterator>
+#include <limits>
 #include <optional>
 #include <tuple>
 #include <utility>
@@ -49,20 +50,42 @@ inline std::optional<double> cost_to_reach(const std::vector<CostRun>& runs, dou
   return std::nullopt;
 }
 
-// The error at wall time `wall`: log-log interpolation on the runs ordered by wall time.
-inline std::optional<double> error_at_wall(const std::vector<CostRun>& runs, double wall) {
-  std::vector<std::pair<double, double>> curve;  // (wall_s, err)
-  for (const CostRun& r : runs) curve.emplace_back(r.wall_s, r.err);
+// The error of a curve at a given cost (`&CostRun::wall_s` or `&CostRun::evals`): log-log
+// interpolation on its runs ordered by that cost.
+inline std::optional<double> error_at_cost(const std::vector<CostRun>& runs, double cost, double CostRun::*member) {
+  std::vector<std::pair<double, double>> curve;  // (cost, err)
+  for (const CostRun& r : runs) curve.emplace_back(r.*member, r.err);
   std::sort(curve.begin(), curve.end());
   for (std::size_t i = 0; i + 1 < curve.size(); ++i) {
-    const auto [w0, e0] = curve[i];
-    const auto [w1, e1] = curve[i + 1];
-    if (w0 <= wall && wall <= w1 && w1 > w0) {
-      const double s = std::log(wall / w0) / std::log(w1 / w0);
+    const auto [c0, e0] = curve[i];
+    const auto [c1, e1] = curve[i + 1];
+    if (c0 <= cost && cost <= c1 && c1 > c0) {
+      const double s = std::log(cost / c0) / std::log(c1 / c0);
       return std::exp(std::log(e0) + s * (std::log(e1) - std::log(e0)));
     }
   }
   return std::nullopt;
+}
+
+// The error at wall time `wall`.
+inline std::optional<double> error_at_wall(const std::vector<CostRun>& runs, double wall) {
+  return error_at_cost(runs, wall, &CostRun::wall_s);
+}
+
+// Equal cost, the one rule of every cost comparison: the largest cost (`&CostRun::wall_s` or
+// `&CostRun::evals`) at which every curve is measured, the least of their largest costs; nullopt if
+// it is below the smallest cost of some curve (the curves share no range) or a curve is empty.
+inline std::optional<double> equal_cost(const std::vector<std::vector<CostRun>>& curves, double CostRun::*cost) {
+  if (curves.empty()) return std::nullopt;
+  double lo = 0, hi = std::numeric_limits<double>::infinity();
+  for (const auto& curve : curves) {
+    if (curve.empty()) return std::nullopt;
+    const auto [a, b] = std::minmax_element(curve.begin(), curve.end(),
+                                            [cost](const CostRun& x, const CostRun& y) { return x.*cost < y.*cost; });
+    lo = std::max(lo, (*a).*cost), hi = std::min(hi, (*b).*cost);
+  }
+  if (!(lo <= hi)) return std::nullopt;
+  return hi;
 }
 
 // The wall time of the most expensive run (the common budget at which methods are compared).

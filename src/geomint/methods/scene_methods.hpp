@@ -1,7 +1,7 @@
 #pragma once
 // Checks on the methods a scene names (`<study>.methods = [...]`), before any
-// work: each named once, able to step the study's system, and every step
-// below the stability bound the registry declares for it.
+// work: each named once and every step below the stability bound the registry
+// declares for it (that each can step the study's system: MethodsOn::check, by_name.hpp).
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "geomint/io/csv.hpp"
-#include "geomint/methods/methods.hpp"
+#include "geomint/methods/registry.hpp"
 #include "geomint/scene/scene.hpp"
 
 namespace geomint {
@@ -23,19 +23,6 @@ inline void check_distinct_methods(const Scene& s, const char* key) {
     if (std::find(labels.begin(), labels.end(), label) != labels.end())
       s.reject(key, "each method once (" + m + " is named twice)");
     labels.push_back(label);
-  }
-}
-
-// ... and unless each method can step sys (its kernel, for a processed method).
-template <class Sys>
-void check_methods(const Scene& s, const char* key, const Sys& sys) {
-  check_distinct_methods(s, key);
-  for (const auto& m : s.texts(key)) {
-    try {
-      with_kernel(m, sys, [](const auto&) { return 0; });
-    } catch (const std::invalid_argument& e) {
-      s.reject(key, e.what());
-    }
   }
 }
 

@@ -217,8 +217,18 @@ void collect_values(const nlohmann::ordered_json& j, const std::string& key, boo
   }
 }
 
+// The numbers of a subtree dropped (nulls, which collect_values skips), its texts kept.
+void drop_numbers(nlohmann::ordered_json& j) {
+  if (j.is_number()) j = nullptr;
+  if (j.is_object() || j.is_array())
+    for (auto& v : j) drop_numbers(v);
+}
+
 std::string figure_values(const nlohmann::ordered_json& scene, nlohmann::ordered_json summary) {
-  summary.erase("timing");  // (wall times differ from run to run; this file does not)
+  // (wall times differ from run to run; this file does not): the run's timing, and the numbers of the
+  // cost studies' work-precision sets (analysis/work_precision_set.hpp), whose method lists the figures read
+  summary.erase("timing");
+  if (summary.contains("cost")) drop_numbers(summary["cost"]);
   std::vector<Entry> values;
   collect_values(scene, "scene", true, values);
   collect_values(summary, "summary", false, values);
@@ -249,10 +259,27 @@ std::vector<std::string> study_names(const ExperimentSpec& spec) {
   return names;
 }
 
+// The study called `name`, by its name or a former name (Study::aliases); nullptr if none.
 const Study* find_study(const ExperimentSpec& spec, std::string_view name) {
   for (const auto& st : spec.studies)
-    if (st.name == name) return &st;
+    if (st.name == name || std::find(st.aliases.begin(), st.aliases.end(), name) != st.aliases.end()) return &st;
   return nullptr;
+}
+
+// Every name a scene or --study may use: the studies' names and their former names.
+std::vector<std::string> accepted_study_names(const ExperimentSpec& spec) {
+  std::vector<std::string> names = study_names(spec);
+  for (const auto& st : spec.studies) names.insert(names.end(), st.aliases.begin(), st.aliases.end());
+  return names;
+}
+
+// The current name of a study named in `where` by `name` (known to find_study); a former name gets a note.
+std::string current_name(const ExperimentSpec& spec, const std::string& name, const std::string& where) {
+  const std::string& now = find_study(spec, name)->name;
+  if (now != name)
+    std::cerr << spec.name << ": note: " << where << ": study '" << name << "' is now called '" << now
+              << "' (the former name is accepted for one release)\n";
+  return now;
 }
 
 // The studies the scene asks for (its `studies` list, else the studies whose
@@ -262,13 +289,18 @@ std::vector<const Study*> select_studies(const ExperimentSpec& spec, const Scene
   const std::string valid = " (the studies of " + spec.name + ": " + join(study_names(spec)) + ")";
   std::vector<std::string> asked;
   if (scene.has(kStudiesKey)) {
-    asked = scene.texts(kStudiesKey);  // the schema admits only study names
+    for (const auto& name : scene.texts(kStudiesKey))  // the schema admits only study names (and former names)
+      asked.push_back(current_name(spec, name, scene.file().string() + ": studies"));
   } else {
     for (const auto& st : spec.studies)
-      if (scene.has(st.name)) asked.push_back(st.name);
+      if (scene.has(st.name) || std::any_of(st.aliases.begin(), st.aliases.end(), [&](const auto& a) { return scene.has(a); }))
+        asked.push_back(st.name);
   }
-  for (const auto& name : on_command_line) {
-    if (!find_study(spec, name)) throw SceneError("--study " + name + ": no such study" + valid);
+  std::vector<std::string> named;  // --study, by current names
+  for (const auto& given : on_command_line) {
+    if (!find_study(spec, given)) throw SceneError("--study " + given + ": no such study" + valid);
+    const std::string name = current_name(spec, given, "--study");
+    named.push_back(name);
     if (std::find(asked.begin(), asked.end(), name) == asked.end())
       throw SceneError("--study " + name + ": the scene " + scene.file().string() + " does not ask for it (it asks for: " +
                        (asked.empty() ? std::string("none") : join(asked)) + "; add it to the scene's studies list)");
@@ -276,8 +308,7 @@ std::vector<const Study*> select_studies(const ExperimentSpec& spec, const Scene
   std::vector<const Study*> out;
   for (const auto& st : spec.studies) {
     const bool in_scene = std::find(asked.begin(), asked.end(), st.name) != asked.end();
-    const bool on_line = on_command_line.empty() ||
-                         std::find(on_command_line.begin(), on_command_line.end(), st.name) != on_command_line.end();
+    const bool on_line = named.empty() || std::find(named.begin(), named.end(), st.name) != named.end();
     if (in_scene && on_line) out.push_back(&st);
   }
   if (out.empty()) throw SceneError(scene.file().string() + ": the scene asks for no study" + valid);
@@ -510,7 +541,7 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
   const std::string name = spec.name;
   for (const Study& st : spec.studies)
     if (st.keys) st.keys(spec.schema);
-  spec.schema.texts(kStudiesKey, study_names(spec), 0,
+  spec.schema.texts(kStudiesKey, accepted_study_names(spec), 0,
                     "the studies this scene runs (default: every study whose section the scene has)");
 
   CLI::App app{spec.description, name};
@@ -588,10 +619,12 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
   std::vector<Published> published;
   try {
     if (std::filesystem::exists(published_file)) published = read_published(published_file);
-    for (const Published& p : published)
-      if (!find_study(spec, p.study))
+    for (const Published& p : published) {
+      const Study* st = find_study(spec, p.study);
+      if (!st || st->name != p.study)  // published.toml names studies by their current names
         throw PublishedError(published_file.string() + ": [" + p.key + "]: no study '" + p.study + "' (studies: " +
                              join(study_names(spec)) + ")");
+    }
   } catch (const PublishedError& e) {
     std::cerr << name << ": published values: " << e.what() << '\n';
     return 2;

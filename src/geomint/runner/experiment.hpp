@@ -115,6 +115,7 @@ struct Study {
   std::function<void(Context&)> run;
   std::function<StudyPlan(const Scene&)> plan = {};  // --plan and the count checks (none: not estimated)
   std::function<void(Schema&)> keys = {};  // declares the scene keys only this study reads (shared ones: ExperimentSpec)
+  std::vector<std::string> aliases = {};   // former names, still accepted (with a note on stderr) for one release
 };
 
 struct ExperimentSpec {

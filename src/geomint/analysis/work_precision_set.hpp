@@ -1,0 +1,50 @@
+#pragma once
+// A work-precision set (DiffEqDevTools' WorkPrecisionSet): what accuracy costs, in the one shape of
+// every cost study. One record per (method, step h): the error of one run, its wall time (the timed
+// repeats of runner/timing.hpp), its force evaluations (a separate counting run) and its steps.
+// One CSV (csv()), one summary (summary()) and one rule for "at equal cost" (equal_cost()), drawn by
+// figures/cost.gpi. Costs and errors are interpolated in log-log between measured runs, never
+// extrapolated (analysis/work_precision.hpp).
+#include <string>
+#include <vector>
+
+#include <nlohmann/json.hpp>
+
+#include "geomint/analysis/work_precision.hpp"
+#include "geomint/io/csv.hpp"
+#include "geomint/runner/timing.hpp"
+
+namespace geomint {
+
+struct WorkPrecisionRecord {
+  std::string method;  // registry label
+  double h = 0, steps = 0;
+  RunTime wall;        // of one run; its estimate (RunTime::seconds) is the run's wall time
+  double evals = 0;    // force evaluations of one run
+  double err = 0;      // the error of the run
+};
+
+class WorkPrecisionSet {
+ public:
+  // `error`: what the error of a run is, in words (summary "error").
+  explicit WorkPrecisionSet(std::string error) : error_(std::move(error)) {}
+
+  void add(WorkPrecisionRecord r) { records_.push_back(std::move(r)); }
+  const std::vector<WorkPrecisionRecord>& records() const { return records_; }
+  std::vector<std::string> methods() const;                    // in the order first added
+  std::vector<CostRun> runs(const std::string& method) const;  // its measurable runs, by decreasing h
+
+  // One row per record: method,h,steps,wall_s,wall_median_s,wall_spread,force_evals,err.
+  Csv csv() const;
+  // {error, methods, targets, equal_wall_s, equal_evals (equal_cost), by_method: {label: {runs, min_err,
+  // ns_per_step, ns_per_step_spread, evals_per_step (of its run at the smallest h), err_at_equal_wall,
+  // err_at_equal_evals, wall_s_to, evals_to (per target; null where the measured steps do not reach it)}},
+  // spread (of every timed run: runner/timing_report.hpp)}.
+  nlohmann::ordered_json summary(const std::vector<double>& targets) const;
+
+ private:
+  std::string error_;
+  std::vector<WorkPrecisionRecord> records_;
+};
+
+}  // namespace geomint

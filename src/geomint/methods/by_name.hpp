@@ -1,0 +1,52 @@
+#pragma once
+// The registered methods by scene name, on one system type. Every (method, system) pair a study
+// runs is compiled once, in the library: methods/on_<system>.cpp instantiates MethodsOn<System>
+// (by_name_impl.hpp, the registry's dispatch of methods.hpp). A study includes this header, never
+// methods.hpp, so that editing it recompiles the study alone.
+#include <cstdint>
+#include <functional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "geomint/core/integrate.hpp"
+#include "geomint/runner/timing.hpp"
+
+namespace geomint {
+
+class Scene;
+
+enum class Bind { method, kernel };  // the method (processed where it is), or its kernel with trivial processors
+
+template <class Sys>
+struct MethodsOn {
+  using Z = typename Sys::State;
+  using Observer = std::function<void(std::int64_t, const Z&)>;
+
+  static std::vector<std::string> names();    // the registry names of the methods that can step Sys
+  static std::vector<std::string> choices();  // those and their labels: what a scene may name
+  // Rejects `key` unless it names each method once and each can step sys (its kernel, if processed).
+  static void check(const Scene& s, const char* key, const Sys& sys);
+  // z_n after n steps of eq. (23) from z0 (pre once, post once).
+  static Z integrate(std::string_view method, const Sys& sys, const Z& z0, double h, std::int64_t n,
+                     Bind bind = Bind::method);
+  // The same, calling observe(j, z_j) for j = 0..n (core/integrate.hpp).
+  static Z integrate(std::string_view method, const Sys& sys, const Z& z0, double h, std::int64_t n,
+                     const Observer& observe, Bind bind = Bind::method);
+  // The wall time of n steps from each of `starts`, each step inlined (runner/timing.hpp).
+  static RunTime time(std::string_view method, const Sys& sys, std::span<const Z> starts, double h, std::int64_t n,
+                      int repeats, Bind bind = Bind::method);
+};
+
+// One step of a method by name as a one-step map (core/integrate.hpp), for the analyses that take a
+// method: one_step_matrix (analysis/linear_stability.hpp), step_jacobian_fd (observables/symplecticity.hpp).
+// `method` and `sys` must outlive it.
+template <class Sys>
+auto one_step_by_name(std::string_view method, const Sys& sys, Bind bind = Bind::method) {
+  return one_step_method([method, &sys, bind](const typename Sys::State& z, double h) {
+    return MethodsOn<Sys>::integrate(method, sys, z, h, 1, bind);
+  });
+}
+
+}  // namespace geomint
