@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "euler_compensation.hpp"
+#include "geomint/analysis/order_table.hpp"
 #include "geomint/core/integrate.hpp"
 #include "geomint/integrators/explicit_euler.hpp"
 #include "geomint/methods/registry.hpp"
@@ -71,21 +72,14 @@ void run_convergence(Context& ctx) {
 
   // Orders: least squares on log-log over the points above round-off.
   const double floor = roundoff_floor(std::max(H0, 1.0));
-  Csv order_csv({"name", "order", "log10_c", "r2", "points", "h_min", "h_max"});
-  json orders, fits;
-  const auto fit = [&](const std::string& name, const std::vector<double>& err, double fit_floor) {
-    const OrderFit f = fit_order(hs, err, fit_floor);
-    orders[name] = f.order;
-    fits[name] = to_json(f);
-    order_csv.row(name, f.order, f.log10_c, f.r2, f.points, f.h_min, f.h_max);
-  };
-  fit("ee_decay", ee_decay, roundoff_floor(s.real("decay.y0")));
-  fit("ee_gompertz", ee_gompertz, roundoff_floor(gompertz.equilibrium()));
-  for (std::size_t m = 0; m < methods.size(); ++m) fit(label_of(methods[m]) + "_energy", max_err[m], floor);
-  for (std::size_t m = 0; m < methods.size(); ++m) fit(label_of(methods[m]) + "_energy_rms", rms_err[m], floor);
-  ctx.write("orders.csv", order_csv);
-  ctx.summary["orders"] = orders;
-  ctx.summary["fits"] = fits;
+  OrderTable orders;
+  orders.fit("ee_decay", hs, ee_decay, roundoff_floor(s.real("decay.y0")));
+  orders.fit("ee_gompertz", hs, ee_gompertz, roundoff_floor(gompertz.equilibrium()));
+  for (std::size_t m = 0; m < methods.size(); ++m) orders.fit(label_of(methods[m]) + "_energy", hs, max_err[m], floor);
+  for (std::size_t m = 0; m < methods.size(); ++m) orders.fit(label_of(methods[m]) + "_energy_rms", hs, rms_err[m], floor);
+  ctx.write("orders.csv", orders.csv());
+  ctx.summary["orders"] = orders.orders();
+  ctx.summary["fits"] = orders.fits();
   ctx.summary["norms"] = {
       {"energy", "max over t_j = j h in [0, convergence.t_end] of |H(q_j, p_j) - H(q_0, p_0)|; *_rms: eq. (50)"},
       {"ee", "max over t_j in [0, convergence.t_end] of |y_j - y(t_j)|"},

@@ -14,6 +14,7 @@
 #include <utility>
 #include <vector>
 
+#include "geomint/analysis/order_table.hpp"
 #include "geomint/core/integrate.hpp"
 #include "geomint/core/numerical_failure.hpp"
 #include "geomint/methods/by_name.hpp"
@@ -198,14 +199,12 @@ Orders fit_orders(Context& ctx, const Sys& sys, const std::vector<double>& hs,
                   const std::vector<std::vector<double>>& initial, const std::vector<std::string>& methods,
                   Observables obs, const std::vector<std::vector<Errors>>& runs, double self_check) {
   const std::size_t nh = hs.size();
-  json fits;
   const double energy_floor = roundoff_floor();
   const double phase_floor = std::max(100.0 * self_check, energy_floor);
-  Csv order_csv({"initial", "name", "order", "log10_c", "r2", "points", "h_min", "h_max"});
+  OrderTable table;
   json by_initial = json::array();
   double min_phase = std::numeric_limits<double>::infinity();  // smallest phase error plotted
   for (std::size_t i = 0; i < initial.size(); ++i) {
-    json o;
     for (std::size_t k = 0; k < methods.size(); ++k) {
       const std::string name = order_name(methods[k]);
       std::vector<double> rms, mx, ph;
@@ -214,30 +213,20 @@ Orders fit_orders(Context& ctx, const Sys& sys, const std::vector<double>& hs,
         rms.push_back(e.energy_rms), mx.push_back(e.energy_max), ph.push_back(e.phase);
       }
       const double H0 = std::abs(sys.H(state_of(initial[i])));
-      std::vector<std::tuple<const char*, const std::vector<double>*, double>> fitted;
-      if (obs.energy)
-        fitted = {{"_energy", &rms, energy_floor * std::max(H0, 1.0)}, {"_energy_max", &mx, energy_floor * std::max(H0, 1.0)}};
-      if (obs.phase) fitted.emplace_back("_phase", &ph, phase_floor);
-      for (const auto& [suffix, err, floor] : fitted) {
-        const OrderFit f = [&] {
-          try {
-            return fit_order(hs, *err, floor, (name + suffix).c_str());
-          } catch (const NumericalFailure& e) {
-            throw NumericalFailure(std::string(e.what()) + " (initial condition " + std::to_string(i) + ", floor " +
-                                     format_double(floor) + ": the errors reach round-off or the reference's accuracy there; add larger h)");
-          }
-        }();
-        o[name + suffix] = f.order;
-        if (i == 0) fits[name + suffix] = to_json(f);
-        order_csv.row(static_cast<std::int64_t>(i), name + suffix, f.order, f.log10_c, f.r2, f.points, f.h_min, f.h_max);
-        if (std::string(suffix) == "_phase")
-          for (double e : *err) min_phase = std::min(min_phase, e);
+      const int ic = static_cast<int>(i);
+      if (obs.energy) {
+        table.fit(name + "_energy", hs, rms, energy_floor * std::max(H0, 1.0), ic);
+        table.fit(name + "_energy_max", hs, mx, energy_floor * std::max(H0, 1.0), ic);
+      }
+      if (obs.phase) {
+        table.fit(name + "_phase", hs, ph, phase_floor, ic, "round-off or the reference's accuracy");
+        for (double e : ph) min_phase = std::min(min_phase, e);
       }
     }
-    by_initial.push_back(o);
+    by_initial.push_back(table.orders(static_cast<int>(i)));
   }
-  ctx.write("orders.csv", order_csv);
-  return {by_initial, fits, min_phase};
+  ctx.write("orders.csv", table.csv());
+  return {by_initial, table.fits(0), min_phase};
 }
 
 // What the study reports in summary.json: the reference's margin, the orders and their ranges, the

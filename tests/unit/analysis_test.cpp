@@ -1,13 +1,16 @@
 // The library's analysis helpers that experiments share: the stability-bound bisection
 // (analysis/linear_stability.hpp), Poincare cuts (analysis/poincare.hpp) and the crossing of two
 // work-precision curves, the rule of equal cost and the work-precision set of every cost study
-// (analysis/work_precision.hpp, analysis/work_precision_set.hpp).
+// (analysis/work_precision.hpp, analysis/work_precision_set.hpp), and the order table of every
+// convergence study (analysis/order_table.hpp).
 #include <cmath>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
 
 #include "geomint/analysis/linear_stability.hpp"
+#include "geomint/analysis/order_table.hpp"
 #include "geomint/analysis/poincare.hpp"
 #include "geomint/analysis/work_precision.hpp"
 #include "geomint/analysis/work_precision_set.hpp"
@@ -127,6 +130,37 @@ TEST(WorkPrecisionSet, CsvHasOneRowPerRecord) {
   const Csv csv = two_methods().csv();
   EXPECT_EQ(csv.rows(), 8u);
   EXPECT_EQ(csv.str().substr(0, csv.str().find('\n')), "method,h,steps,wall_s,wall_median_s,wall_spread,force_evals,err");
+}
+
+TEST(OrderTable, FitsEachSeriesPerInitialConditionInOneShape) {
+  const std::vector<double> h{0.1, 0.05, 0.025, 0.0125};
+  std::vector<double> quadratic, quartic;
+  for (double x : h) quadratic.push_back(3 * x * x), quartic.push_back(x * x * x * x);
+  OrderTable t;
+  t.fit("a_energy", h, quadratic, 1e-13);
+  t.fit("a_energy", h, quartic, 1e-13, 1);
+  EXPECT_NEAR(t.orders()["a_energy"].get<double>(), 2.0, 1e-12);
+  EXPECT_NEAR(t.orders(1)["a_energy"].get<double>(), 4.0, 1e-12);
+  EXPECT_NEAR(t.fits()["a_energy"]["log10_c"].get<double>(), std::log10(3.0), 1e-12);
+  EXPECT_EQ(t.fits(1)["a_energy"]["points"], 4);
+  const Csv csv = t.csv();
+  EXPECT_EQ(csv.rows(), 2u);
+  EXPECT_EQ(csv.str().substr(0, csv.str().find('\n')), "initial,name,order,log10_c,r2,points,h_min,h_max");
+  EXPECT_EQ(csv.str().substr(csv.str().rfind('\n', csv.str().size() - 2) + 1, 11), "1,a_energy,");
+}
+
+TEST(OrderTable, RefusesASeriesWithFewerThanThreePointsAboveItsFloorNamingIt) {
+  OrderTable t;
+  const std::vector<double> h{0.1, 0.05, 0.025, 0.0125}, err{1e-3, 1e-4, 1e-16, 1e-17};
+  try {
+    t.fit("sv_phase", h, err, 1e-14, 2, "round-off or the reference's accuracy");
+    FAIL() << "fitted two points";
+  } catch (const NumericalFailure& e) {
+    const std::string what = e.what();
+    EXPECT_NE(what.find("sv_phase"), std::string::npos) << what;
+    EXPECT_NE(what.find("initial condition 2"), std::string::npos) << what;
+    EXPECT_NE(what.find("reference's accuracy"), std::string::npos) << what;
+  }
 }
 
 TEST(PoincareSection, UpwardCutInterpolatesTheStepLinearly) {
