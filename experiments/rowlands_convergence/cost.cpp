@@ -65,8 +65,6 @@ void cost_with(Context& ctx, const Sys& sys) {
   const std::string first = label_of(methods[0]);
   for (const auto& m : methods)  // ns per step relative to the first method of timing.methods
     cost["relative_ns_per_step"][label_of(m)] = by[label_of(m)]["ns_per_step"].get<double>() / by[first]["ns_per_step"].get<double>();
-  if (by.contains("sv") && by.contains("rowlands"))
-    cost["ns_per_step_ratio_rowlands_over_sv"] = by["rowlands"]["ns_per_step"].get<double>() / by["sv"]["ns_per_step"].get<double>();
   ctx.summary["cost"] = cost;
   scene_summary(ctx);
 }
