@@ -319,7 +319,9 @@ def ledger_tex(runs, papers, tests):
                 scripts += figure_scripts(name, st["files"])
                 tests_cited.append(f"{experiment}.studies")
                 for key, c in (runs[name]["summary"].get("comparisons") or {}).items():
-                    if c.get("study") != st["name"] or c["verdict"] in ("not comparable", "not computed"):
+                    # this figure's own comparisons (published.toml `figure`), not its study's other figures'
+                    if c.get("study") != st["name"] or c.get("figure") != f"{paper['id']} {item['name']}" \
+                            or c["verdict"] in ("not comparable", "not computed"):
                         continue
                     verdicts.append((c["verdict"], c.get("expect", "reproduced"), key, c))
                     if c["verdict"] == "differs":  # the file that states the discrepancy and its reason

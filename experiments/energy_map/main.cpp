@@ -5,7 +5,7 @@
 //   Fig 6    the map, with a checkpoint for --resume, and its statistics                map.cpp
 //   Sec 5.2  p_x per step in polar coordinates, the angular momentum in Cartesian ones    first_integrals.cpp
 // plus what the map costs: the batched kernel against the straightforward scalar
-// loop, ns per step (study `timing`)                                                   kernel_timing.cpp
+// loop, ns per step (study `kernel_timing`, formerly `timing`)                         kernel_timing.cpp
 // and the energy error against wall time and force evaluations (work-precision of the
 // two coordinate systems on a few starts, study `cost`)                                cost.cpp
 // Here: the studies, and the scene keys that several of them read.

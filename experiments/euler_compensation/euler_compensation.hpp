@@ -59,12 +59,12 @@ void check_oscillator_step(const Scene& s, const char* key, double h);
 void check_steps(const Scene& s, const char* key, const char* methods_key);
 
 // ---- --plan: steps in double; ns per step are constants measured on the paper scene
-// (results/euler_compensation, summary timing.ns_per_step: symplectic Euler with (82), the most
+// (results/euler_compensation, summary cost.ns_per_step: symplectic Euler with (82), the most
 // expensive, for the oscillator; study wall time over its steps for Figs 2, 3).
 constexpr double kCellBytes = 24;      // one CSV cell held in memory
 constexpr double kOscillatorNs = 272;  // compensated symplectic Euler (82), the most expensive method
 constexpr double kEvalsPerStep = 4;    // the most of the paper scene's methods (rk4)
-constexpr const char* kOscillatorNsNote = "ns per step: symplectic Euler with (82) (paper-scene summary timing.ns_per_step)";
+constexpr const char* kOscillatorNsNote = "ns per step: symplectic Euler with (82) (paper-scene summary cost.ns_per_step)";
 
 // The steps of the runs to convergence.t_end at the steps of `key`, added up.
 double steps_to_t_end(const Scene& s, const char* key);

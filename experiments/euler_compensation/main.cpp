@@ -4,7 +4,7 @@
 //   Fig 8  symplectic Euler (42)-(43) on the oscillator (74), with and without
 //          the compensating point transformation (82)                            oscillator.cpp
 //   Fig 9  error in H against h for both: fitted orders 1 and 2                  convergence.cpp
-// plus what the accuracy costs: ns per step and error against wall time          cost.cpp
+// plus what the accuracy costs (study `cost`): error against wall time, ns per step  cost.cpp
 // Here: the studies, and the scene keys that several of them read.
 #include "euler_compensation.hpp"
 

@@ -9,6 +9,7 @@
 #include "geomint/methods/by_name.hpp"
 #include "geomint/methods/registry.hpp"
 #include "geomint/methods/scene_methods.hpp"
+#include "geomint/runner/timing_report.hpp"
 
 namespace geomint::lobatto_table {
 
@@ -60,5 +61,11 @@ Oscillator oscillator(const Scene& s) {
 Pendulum pendulum(const Scene& s) { return {NonlinearPendulum{}, make_state(s.real("nonlinear.pendulum_q0"), 0.0)}; }
 
 double period_of(const Scene& s) { return 2 * std::numbers::pi / s.real("oscillator.omega"); }
+
+std::string cost_method_text(int repeats) {
+  return timing_method_text(repeats) + "; ns_per_step at the smallest h of a set; force evaluations count U_q and U_qq "
+         "calls; long_run_*: a run's wall time is its steps times the time per step measured on a segment of "
+         "long_run_cost.timing_steps steps (at most the run), every call of a step through integrate";
+}
 
 }  // namespace geomint::lobatto_table

@@ -27,7 +27,7 @@ Study figure1_study();        // 001 Fig 1                                     f
 Study long_run_study();       // 001 Fig 2                                     long_run.cpp
 Study stability_study();      // the stability set beyond 001 eq. (10)         stability.cpp
 Study nonlinear_study();      // nonlinear Lagrangians (Newton)                nonlinear.cpp
-Study timing_study();         // cost on the nonlinear pendulum                cost.cpp
+Study cost_study();           // cost on the nonlinear pendulum                cost.cpp
 Study long_run_cost_study();  // cost over the long run of Fig 2               long_run_cost.cpp
 
 // The largest linear frequency of the nonlinear pendulum (U'' = cos q <= 1) and of the elastic
@@ -69,7 +69,7 @@ struct Oscillator {
 
 Oscillator oscillator(const Scene& s);
 
-// ---- the nonlinear pendulum of the nonlinear and timing studies ----
+// ---- the nonlinear pendulum of the nonlinear and cost studies ----
 
 struct Pendulum {
   NonlinearPendulum pend;
@@ -82,8 +82,9 @@ Pendulum pendulum(const Scene& s);
 //
 // Steps are counted in double (t_end = 1e300 gives a huge count, refused by the runner, not an overflowed
 // integer). The ns per step are constants measured on the paper scene (results/lobatto_table, 2 threads):
-// summary timing.ns_per_step and timing.long_run_cost.cost.*.ns_per_step, and study wall time over steps for
-// the linear iterations; force evaluations per step are the largest of summary timing.cost.*.evals_per_step.
+// summary cost.pendulum.by_method.*.ns_per_step and cost.long_run_phase.by_method.*.ns_per_step, and study wall
+// time over steps for the linear iterations; force evaluations per step are the largest of summary
+// cost.pendulum.by_method.*.evals_per_step.
 
 constexpr double kCellBytes = 24;            // one CSV cell held in memory (text and separator)
 constexpr double kStateBytes = sizeof(Z1);   // one stored (q, p)
@@ -94,5 +95,9 @@ constexpr double kOscillatorNs = 280;        // one Lobatto step through integra
 constexpr double kPendulumNs = 520;          // one Lobatto step (Newton) on the nonlinear pendulum
 
 double period_of(const Scene& s);
+
+// summary.cost.method: how the runs of both cost studies (cost, long_run_cost) are timed; the same text
+// from either, so that each may run alone or after the other (merge of runner/summary.hpp).
+std::string cost_method_text(int repeats);
 
 }  // namespace geomint::lobatto_table

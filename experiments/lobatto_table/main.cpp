@@ -9,7 +9,7 @@
 //   Fig 2    the energy error over 10^5 periods, plain and compensated        long_run.cpp
 // plus the stability set beyond eq. (10), runs at 0.99 and 1.01 of the bound   stability.cpp
 //      nonlinear Lagrangians (Newton): order 6, symplecticity                 nonlinear.cpp
-//      cost (study timing): error against wall time, nonlinear pendulum      cost.cpp
+//      cost (study cost): error against wall time, nonlinear pendulum        cost.cpp
 //      cost over the long run of Fig 2: error against wall time               long_run_cost.cpp
 // The compared methods are registry names (methods/registry.hpp); CSV columns and summary keys carry
 // their labels. Here: the studies, and the scene keys that several of them read.
@@ -43,6 +43,6 @@ int main(int argc, char** argv) {
                       "its stability set, nonlinear Lagrangians, and what the accuracy costs",
                       shared_keys(),
                       {table1_study(), figure1_study(), long_run_study(), stability_study(), nonlinear_study(),
-                       timing_study(), long_run_cost_study()}};
+                       cost_study(), long_run_cost_study()}};
   return run_experiment(argc, argv, std::move(spec), GEOMINT_EXPERIMENT_DIR);
 }

@@ -131,7 +131,7 @@ StudyPlan plan_nonlinear(const Scene& s) {
   double steps = 0;
   for (double h : s.reals("nonlinear.h")) steps += runs * t_end / h;
   return {steps, steps * kPendulumEvals, static_cast<double>(s.reals("nonlinear.h").size()) * runs * 4 * sizeof(double),
-          kPendulumNs, "odeint reference steps not counted; ns per step: Lobatto on the pendulum (paper-scene summary timing)"};
+          kPendulumNs, "odeint reference steps not counted; ns per step: Lobatto on the pendulum (paper-scene summary cost.pendulum)"};
 }
 
 void keys(Schema& s) {

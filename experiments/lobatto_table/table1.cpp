@@ -148,7 +148,7 @@ StudyPlan plan_table1(const Scene& s) {
   const double runs = 2.0 + static_cast<double>(s.texts("table1.methods").size());  // Lobatto, (12), compared
   for (double n : s.reals("meshes")) steps += runs * n, largest = std::max(largest, n);
   return {steps, steps * kOscillatorEvals, 2 * (largest + 1) * kStateBytes, kOscillatorNs,
-          "ns per step: Lobatto on the oscillator (paper-scene summary timing.long_run_cost)"};
+          "ns per step: Lobatto on the oscillator (paper-scene summary cost.long_run_phase)"};
 }
 
 void keys(Schema& s) {

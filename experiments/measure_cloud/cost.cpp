@@ -1,35 +1,41 @@
-// Beyond 003: what each discretization costs -- the error at energies.t_end of Phi^(4) against wall
-// time (time_runs: the minimum of timing.repeats runs of >= 10 ms) over the steps order_study.h, with
-// ns and Newton iterations per step at h -- and, at equal cost, Phi^(4) and Phi^(0) of
-// cost.discretization against the classical RK4 on (3.8) over cost.rk4_h: trajectory and energy
-// errors against wall time and evaluations (the runs take the steps of the order study to the end
-// time of the energies).
+// Beyond 003: what accuracy costs on the harmonic particle (study `cost`): two work-precision sets
+// (analysis/work_precision_set.hpp) of the same runs, one per error: "trajectory", the l2 phase-space
+// error |z_N - z_ref(t_N)|_2 at t_N = N h <= T against the reference there, and "energy", the energy
+// error max_j |H(z_j) - H_0| over the run. Methods: Phi^(4) of each scene discretization (phi4_<label>)
+// and Phi^(0) of cost.discretization (phi0_<label>) over order_study.h, and the classical RK4 on (3.8)
+// (rk4) over cost.rk4_h; every run from cloud.center with N = floor(T/h) steps, T = energies.t_end.
+// Costs: wall time (time_runs: the minimum of timing.repeats runs of >= 10 ms) and evaluations (Newton
+// iterations of Psi_{h,E}, each the discrete momentum with its 2x2 Jacobian; 4 evaluations of (3.8)
+// per RK4 step). Besides, what is not a cost (reproduced, orders, ranges): per discretization the
+// Newton iterations per step at h, the errors at T for the steps that end there and the order of the
+// trajectory error; the orders of the compared runs and the reference's own error.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <limits>
-#include <optional>
+#include <map>
 #include <string>
 #include <vector>
 
-#include "geomint/analysis/work_precision.hpp"
-#include "geomint/runner/summary.hpp"
+#include "geomint/analysis/work_precision_set.hpp"
 #include "geomint/integrators/runge_kutta4.hpp"
 #include "geomint/methods/registry.hpp"
 #include "geomint/observables/error_norms.hpp"
 #include "geomint/observables/order_fit.hpp"
+#include "geomint/runner/summary.hpp"
 #include "geomint/runner/timing.hpp"
+#include "geomint/runner/timing_report.hpp"
 #include "measure_cloud.hpp"
 
 namespace geomint::measure_cloud {
 namespace {
 
-// ---- work-precision: Phi^(4) against Phi^(0) and RK4 ----
-
-// One timed run: its step, its trajectory (z_0 .. z_n; Newton iterations for Phi^(ell)) and its time.
+// One timed run: its label in the sets, its step, its trajectory (z_0 .. z_n; Newton iterations for
+// Phi^(ell)), its evaluations and its time.
 struct TimedRun {
+  std::string method;
   double h;
   Trajectory tr;
+  double evals;
   RunTime time;
 };
 
@@ -57,169 +63,162 @@ Trajectory run_rk4(const NonholonomicParticle& sys, double h, const Point4& z0, 
   return t;
 }
 
-// The runs compared at equal cost, in the order of the CSV rows.
-constexpr const char* kCompared[] = {"phi4", "phi0", "rk4"};
+std::string phi_label(int ell, Discretization d) { return "phi" + std::to_string(ell) + "_" + discretization_name(d); }
 
-// The common budget and the errors and costs at the targets of the runs of work_precision (traj:
-// trajectory errors, energy: energy errors; per run of kCompared): summary.reproduced.work_precision
-// what does not depend on the clock, summary.timing.work_precision the wall-time quantities.
-void report_work_precision(Context& ctx, Discretization cmp, const std::vector<CostRun> (&traj)[3],
-                           const std::vector<CostRun> (&energy)[3], double ref_err, double spread_max) {
-  const Scene& s = ctx.scene;
-  // the common budget: the largest wall time that every method reaches
-  double budget = std::numeric_limits<double>::infinity();
-  for (int m = 0; m < 3; ++m) budget = std::min(budget, largest_wall(traj[m]));
-  const double target = s.real("cost.target_err"), target_energy = s.real("cost.target_energy_err");
-  json w, wt;  // w: what does not depend on the clock (deterministic); wt: wall-time quantities (timing)
-  w["discretization"] = discretization_name(cmp);
-  w["methods"] = {"phi4", "phi0", "rk4"};
-  w["reference_error"] = ref_err;
-  w["reference_check_factor"] = reference_check_factor;
-  w["target_err"] = target;
-  w["target_energy_err"] = target_energy;
-  wt["budget_s"] = budget;
-  for (int m = 0; m < 3; ++m) {
-    const auto t = by_decreasing_h(traj[m]), e = by_decreasing_h(energy[m]);
-    json c, ct;
-    ct["err_at_budget"] = or_null(error_at_wall(t, budget));
-    ct["energy_err_at_budget"] = or_null(error_at_wall(e, budget));
-    ct["wall_s_to_target"] = or_null(cost_to_reach(t, target, &CostRun::wall_s));
-    c["evals_to_target"] = or_null(cost_to_reach(t, target, &CostRun::evals));
-    ct["wall_s_to_target_energy"] = or_null(cost_to_reach(e, target_energy, &CostRun::wall_s));
-    c["evals_to_target_energy"] = or_null(cost_to_reach(e, target_energy, &CostRun::evals));
-    std::vector<double> hs, errs;
-    for (const CostRun& r : t) hs.push_back(r.h), errs.push_back(r.err);
-    c["order"] = fit_order(hs, errs, 0.0, "work precision").order;  // trajectory error against h
-    ct["ns_per_step_at_h_max"] = 1e9 * t.front().wall_s / t.front().steps;
-    w[kCompared[m]] = c, wt[kCompared[m]] = ct;
-  }
-  // speeds as ratios measured in this run: the cost of each method to reach the target over that of RK4
-  for (const char* key : {"wall_s_to_target", "wall_s_to_target_energy"}) {
-    const json r = wt["rk4"][key];  // copies: inserting into wt (an ordered_json) moves its elements
-    for (const char* m : {"phi4", "phi0"}) {
-      const json x = wt[m][key];
-      wt["ratio_to_rk4"][m][key] = x.is_number() && r.is_number() ? json(x.get<double>() / r.get<double>()) : json(nullptr);
-    }
-  }
-  ctx.summary["timing"]["work_precision"] = wt;
-  ctx.summary["reproduced"]["work_precision"] = w;
-  put(ctx, "timing", "work_precision_spread_max", spread_max);
+// Phi^(ell) of d at the step h to T = energies.t_end, timed.
+TimedRun timed_phi(const Scene& s, const PhiStudy& p, Discretization d, int ell, double h) {
+  const std::int64_t n = steps_in(s.real("energies.t_end"), h);  // n h <= T: the error is taken there
+  Trajectory tr;
+  const RunTime rt = time_runs(static_cast<int>(s.integer("timing.repeats")), [&] {
+    tr = run_phi(d, p.sys, h, ell, p.z0, n);
+    do_not_optimize(tr.z.back());
+  });
+  return {phi_label(ell, d), h, tr, static_cast<double>(tr.iterations), rt};
 }
 
-// At equal cost (003, harmonic scene, not in the paper): Phi^(4) and Phi^(0) with the discretization
-// cmp over order_study.h (the Phi^(4) runs are those of the cost study) and the classical RK4 on
-// (3.8) over cost.rk4_h, each from z0 with N = floor(T/h) steps, T = energies.t_end. Two errors:
-// the trajectory error |z_N - z(t_N)|_2 against the reference at t_N (whose own error, against a
-// reference at 100x tighter tolerances, is reported), and the energy error max_j |H(z_j) - H0|
-// (bounded for the conformal methods, drifting for RK4). Costs: wall time (time_runs: the minimum
-// of timing.repeats runs of >= 10 ms) and evaluations (Newton iterations of Psi_{h,E}, each the
-// discrete momentum with its 2x2 Jacobian; 4 evaluations of (3.8) per RK4 step).
-void work_precision(Context& ctx, const NonholonomicParticle& sys, const Point4& z0, double rtol, double atol,
-                    Discretization cmp, const std::vector<TimedRun>& phi4_runs) {
-  const Scene& s = ctx.scene;
-  const double T = s.real("energies.t_end"), H0 = sys.H(as_state(z0));
-  const int repeats = static_cast<int>(s.integer("timing.repeats"));
-  ctx.progress("cost: Phi^(4), Phi^(0) and RK4 at equal cost");
-  std::vector<TimedRun> phi0_runs, rk4_runs;
-  std::vector<std::int64_t> rk4_evals;
-  for (double hh : s.reals("order_study.h")) {
-    const std::int64_t n = steps_in(T, hh);
-    Trajectory tr;
-    const RunTime rt = time_runs(repeats, [&] {
-      tr = run_phi(cmp, sys, hh, 0, z0, n);
-      do_not_optimize(tr.z.back());
-    });
-    phi0_runs.push_back({hh, tr, rt});
-  }
-  for (double hh : s.reals("cost.rk4_h")) {
-    const std::int64_t n = steps_in(T, hh);
-    Trajectory tr;
-    std::int64_t evals = 0;
-    const RunTime rt = time_runs(repeats, [&] {
-      evals = 0;
-      tr = run_rk4(sys, hh, z0, n, &evals);
-      do_not_optimize(tr.z.back());
-    });
-    rk4_runs.push_back({hh, tr, rt}), rk4_evals.push_back(evals);
-  }
-  const std::vector<TimedRun>* all[] = {&phi4_runs, &phi0_runs, &rk4_runs};
-  Csv csv({"method", "h", "steps", "t_end", "err", "energy_err", "evals", "wall_s", "wall_spread"});
-  std::vector<CostRun> traj[3], energy[3];
-  double ref_err = 0, spread_max = 0;
-  for (int m = 0; m < 3; ++m)
-    for (std::size_t i = 0; i < all[m]->size(); ++i) {
-      const TimedRun& r = (*all[m])[i];
-      const std::int64_t n = static_cast<std::int64_t>(r.tr.z.size()) - 1;
-      const double tN = static_cast<double>(n) * r.h;
-      const auto ref = reference_samples(sys, z0, tN, 1, rtol, atol).back();
-      const auto tight = reference_samples(sys, z0, tN, 1, reference_check_factor * rtol, reference_check_factor * atol).back();
-      ref_err = std::max(ref_err, phase_distance(as_state(ref), as_state(tight)));
-      double e_energy = 0;
-      for (const Point4& z : r.tr.z) e_energy = std::max(e_energy, std::abs(sys.H(as_state(z)) - H0));
-      const double err = phase_distance(as_state(r.tr.z.back()), as_state(ref));
-      const double evals = m == 2 ? static_cast<double>(rk4_evals[i]) : static_cast<double>(r.tr.iterations);
-      spread_max = std::max(spread_max, r.time.spread());
-      csv.row(kCompared[m], r.h, n, tN, err, e_energy, evals, r.time.seconds(), r.time.spread());
-      traj[m].push_back({r.h, static_cast<double>(n), r.time.seconds(), evals, err});
-      energy[m].push_back({r.h, static_cast<double>(n), r.time.seconds(), evals, e_energy});
-    }
-  ctx.write("timing_work_precision.csv", csv);
-  report_work_precision(ctx, cmp, traj, energy, ref_err, spread_max);
+// The classical RK4 on (3.8) at the step h to T = energies.t_end, timed; its evaluations of (3.8) counted.
+TimedRun timed_rk4(const Scene& s, const PhiStudy& p, double h) {
+  const std::int64_t n = steps_in(s.real("energies.t_end"), h);
+  Trajectory tr;
+  std::int64_t evals = 0;
+  const RunTime rt = time_runs(static_cast<int>(s.integer("timing.repeats")), [&] {
+    evals = 0;
+    tr = run_rk4(p.sys, h, p.z0, n, &evals);
+    do_not_optimize(tr.z.back());
+  });
+  return {"rk4", h, tr, static_cast<double>(evals), rt};
 }
 
-// ---- cost: error at energies.t_end against wall time, per method (Phi^(4)), over order_study.h ----
-
-void run_cost(Context& ctx) {
+// Every run, in the order of the sets' rows: Phi^(4) of each discretization, Phi^(0) of cmp, RK4.
+std::vector<TimedRun> timed_runs(Context& ctx, const PhiStudy& p, Discretization cmp) {
   const Scene& s = ctx.scene;
-  const auto [sys, z0, rtol, atol, h, methods] = phi_study(ctx);
-  ctx.progress("cost");
+  std::vector<TimedRun> runs;
+  ctx.progress("cost: Phi^(4) of each discretization");
+  for (Discretization d : p.methods)
+    for (double h : s.reals("order_study.h")) runs.push_back(timed_phi(s, p, d, 4, h));
+  ctx.progress("cost: Phi^(0) and RK4");
+  for (double h : s.reals("order_study.h")) runs.push_back(timed_phi(s, p, cmp, 0, h));
+  for (double h : s.reals("cost.rk4_h")) runs.push_back(timed_rk4(s, p, h));
+  return runs;
+}
+
+struct Sets {
+  WorkPrecisionSet trajectory{"l2 phase-space error |z_N - z_ref(t_N)|_2 at t_N = N h <= energies.t_end from cloud.center"};
+  WorkPrecisionSet energy{"energy error max_j |H(z_j) - H_0| over the run from cloud.center to t_N = N h <= energies.t_end"};
+  double reference_error = 0;  // of the references at every t_N, against references at 100x tighter tolerances
+};
+
+// The errors of every run against the reference at its t_N (one reference per t_N, and its own error).
+Sets errors_of(const PhiStudy& p, const std::vector<TimedRun>& runs) {
+  Sets out;
+  const double H0 = p.sys.H(as_state(p.z0));
+  std::map<double, Point4> refs;  // by t_N
+  for (const TimedRun& r : runs) {
+    const auto n = static_cast<std::int64_t>(r.tr.z.size()) - 1;
+    const double tN = static_cast<double>(n) * r.h;
+    if (!refs.contains(tN)) {
+      const auto ref = reference_samples(p.sys, p.z0, tN, 1, p.rtol, p.atol).back();
+      const auto tight = reference_samples(p.sys, p.z0, tN, 1, reference_check_factor * p.rtol, reference_check_factor * p.atol).back();
+      out.reference_error = std::max(out.reference_error, phase_distance(as_state(ref), as_state(tight)));
+      refs.emplace(tN, ref);
+    }
+    double e_energy = 0;
+    for (const Point4& z : r.tr.z) e_energy = std::max(e_energy, std::abs(p.sys.H(as_state(z)) - H0));
+    const double err = phase_distance(as_state(r.tr.z.back()), as_state(refs.at(tN)));
+    out.trajectory.add({r.method, r.h, static_cast<double>(n), r.time, r.evals, err});
+    out.energy.add({r.method, r.h, static_cast<double>(n), r.time, r.evals, e_energy});
+  }
+  return out;
+}
+
+// Per discretization, from its Phi^(4) runs: the Newton iterations per step at h, the errors at T for
+// the steps whose runs end at T itself (n h = T), and the order of the error against h over all the
+// steps (reproduced, ranges, orders). Returns the ns per step at h (the step of 003's figures), by label.
+json report_discretizations(Context& ctx, const PhiStudy& p, const WorkPrecisionSet& trajectory) {
+  const Scene& s = ctx.scene;
   const double T = s.real("energies.t_end");
   const auto hs = s.reals("order_study.h");
-  // the steps whose runs end at T itself (n h = T), for which the errors are also reported by step
   json h_at_T = json::array();
   for (double hh : hs)
     if (std::abs(static_cast<double>(steps_in(T, hh)) * hh / T - 1) < 1e-9) h_at_T.push_back(hh);
-  Csv csv({"method", "h", "steps", "t_end", "err", "wall_s", "ns_per_step", "newton_iterations_per_step"});
-  json ns_per_step, newton_at_h, err_at_T, order, time_at_h;
-  double spread_max = 0;
-  const Discretization cmp = *parse_discretization(method_info(s.text("cost.discretization")).label);
-  std::vector<TimedRun> phi4_runs;  // the runs of Phi^(4) with the compared discretization, reused below
-  for (Discretization d : methods) {
+  json ns_per_step, newton_at_h, err_at_T, order;
+  for (Discretization d : p.methods) {
     const char* name = discretization_name(d);
-    std::vector<double> errs;
-    for (double hh : hs) {
-      const std::int64_t n = steps_in(T, hh);  // the error is taken at n h <= T, against the reference there
-      const auto ref = reference_samples(sys, z0, static_cast<double>(n) * hh, 1, rtol, atol).back();
-      Trajectory tr;
-      const RunTime rt = time_runs(static_cast<int>(s.integer("timing.repeats")), [&] {
-        tr = run_phi(d, sys, hh, 4, z0, n);
-        do_not_optimize(tr.z.back());
-      });
-      const double sec = rt.seconds();
-      spread_max = std::max(spread_max, rt.spread());
-      if (d == cmp) phi4_runs.push_back({hh, tr, rt});
-      const double ns = 1e9 * sec / static_cast<double>(n), err = phase_distance(as_state(tr.z.back()), as_state(ref));
-      const double newton = static_cast<double>(tr.iterations) / static_cast<double>(n);
-      csv.row(name, hh, n, static_cast<double>(n) * hh, err, sec, ns, newton);
-      errs.push_back(err);
-      if (std::find(h_at_T.begin(), h_at_T.end(), hh) != h_at_T.end()) err_at_T[name].push_back(err);
-      if (hh == h) ns_per_step[name] = ns, newton_at_h[name] = newton, time_at_h[name] = to_json(rt);
+    std::vector<double> errs;  // in the order of hs
+    for (const WorkPrecisionRecord& r : trajectory.records()) {
+      if (r.method != phi_label(4, d)) continue;
+      errs.push_back(r.err);
+      if (std::find(h_at_T.begin(), h_at_T.end(), r.h) != h_at_T.end()) err_at_T[name].push_back(r.err);
+      if (r.h == p.h) ns_per_step[name] = 1e9 * r.wall.seconds() / r.steps, newton_at_h[name] = r.evals / r.steps;
     }
-    order[name] = fit_order(hs, errs, 0.0, "cost").order;  // error against h over all the steps
+    order[name] = fit_order(hs, errs, 0.0, "cost").order;
   }
-  ctx.write("timing_cost.csv", csv);
-  put(ctx, "timing", "cost_at_h", time_at_h);
-  put(ctx, "timing", "cost_spread_max", spread_max);
-  put(ctx, "timing", "ns_per_step", ns_per_step);
-  put(ctx, "timing", "ns_per_step_ranges", method_ranges(ns_per_step));
   put_methods(ctx, "newton_iterations_per_step_phi4", newton_at_h);
   put(ctx, "reproduced", "cost_h_at_t_end", h_at_T);
   put(ctx, "reproduced", "cost_err_at_t_end", err_at_T);
   ctx.summary["orders"]["cost_error_phi4"] = order;
   ctx.summary["ranges"]["cost_error_phi4"] = method_ranges(order);
-  work_precision(ctx, sys, z0, rtol, atol, cmp, phi4_runs);
+  return ns_per_step;
 }
 
+// The comparison of Phi^(4), Phi^(0) (of cmp) and RK4 that is not a cost (summary.reproduced.work_precision):
+// the fitted order of each one's trajectory error against h and the reference's own error.
+void report_compared(Context& ctx, Discretization cmp, const Sets& sets) {
+  const Scene& s = ctx.scene;
+  json w;
+  w["discretization"] = discretization_name(cmp);
+  w["methods"] = {"phi4", "phi0", "rk4"};
+  w["reference_error"] = sets.reference_error;
+  w["reference_check_factor"] = reference_check_factor;
+  w["target_err"] = s.real("cost.target_err");
+  w["target_energy_err"] = s.real("cost.target_energy_err");
+  for (const std::string m : {"phi4", "phi0", "rk4"}) {
+    std::vector<double> hs, errs;
+    for (const CostRun& r : sets.trajectory.runs(m == "rk4" ? m : m + "_" + discretization_name(cmp)))
+      hs.push_back(r.h), errs.push_back(r.err);
+    w[m]["order"] = fit_order(hs, errs, 0.0, "work precision").order;  // trajectory error against h
+  }
+  ctx.summary["reproduced"]["work_precision"] = w;
+}
+
+// summary.cost: the two sets, the timing method, the ns per step of Phi^(4) at h (by label, and its
+// ranges), and per set the wall time of each method to its target over that of RK4
+// (wall_s_to_target_over_rk4; null where either does not reach it).
+void report_cost(Context& ctx, const Sets& sets, const json& ns_per_step_at_h) {
+  const Scene& s = ctx.scene;
+  json& cost = ctx.summary["cost"];
+  cost["trajectory"] = sets.trajectory.summary({s.real("cost.target_err")});
+  cost["energy"] = sets.energy.summary({s.real("cost.target_energy_err")});
+  cost["method"] = timing_method_text(static_cast<int>(s.integer("timing.repeats"))) +
+                   "; one run from cloud.center to energies.t_end; ns_per_step at the smallest h (by_method) and, "
+                   "for Phi^(4), at the scene's h (ns_per_step_at_h)";
+  cost["ns_per_step_at_h"] = ns_per_step_at_h;
+  cost["ns_per_step_at_h_ranges"] = method_ranges(ns_per_step_at_h);
+  for (const char* set : {"trajectory", "energy"}) {
+    const json by = cost[set]["by_method"];  // (a copy: cost grows below)
+    const json rk4 = by["rk4"]["wall_s_to"][0];
+    for (const auto& [m, c] : by.items()) {
+      const json x = c["wall_s_to"][0];
+      if (m != "rk4")
+        cost["wall_s_to_target_over_rk4"][set][m] =
+            x.is_number() && rk4.is_number() ? json(x.get<double>() / rk4.get<double>()) : json(nullptr);
+    }
+  }
+}
+
+void run_cost(Context& ctx) {
+  const Scene& s = ctx.scene;
+  const PhiStudy p = phi_study(ctx);
+  const Discretization cmp = *parse_discretization(method_info(s.text("cost.discretization")).label);
+  const std::vector<TimedRun> runs = timed_runs(ctx, p, cmp);
+  ctx.progress("cost: errors against the reference");
+  const Sets sets = errors_of(p, runs);
+  ctx.write("cost_trajectory.csv", sets.trajectory.csv());
+  ctx.write("cost_energy.csv", sets.energy.csv());
+  const json ns_at_h = report_discretizations(ctx, p, sets.trajectory);
+  report_compared(ctx, cmp, sets);
+  report_cost(ctx, sets, ns_at_h);
+}
 StudyPlan plan_cost(const Scene& s) {
   const double T = s.real("energies.t_end"), runs = static_cast<double>(s.integer("timing.repeats")) + 1;
   const double M = static_cast<double>(s.texts("methods").size());
@@ -252,8 +251,8 @@ void keys(Schema& s) {
 
 // the cost runs take the steps of the order study to the end time of the energies
 Study cost_study() {
-  return {"cost", "error against wall time of each discretization; Phi^(4) against Phi^(0) and RK4 at equal cost",
-          {"timing_cost.csv", "timing_work_precision.csv"},
+  return {"cost", "work precision: Phi^(4) of each discretization, Phi^(0) and RK4; trajectory and energy errors",
+          {"cost_trajectory.csv", "cost_energy.csv"},
           {"potential", "cloud.center", "h", "methods", "energies.t_end", "order_study.h", "timing", "cost", "reference"},
           check_cost, run_cost, plan_cost, keys};
 }

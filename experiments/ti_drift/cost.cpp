@@ -1,23 +1,23 @@
-// Cost: work-precision of the methods of work_precision.methods (processed where they have processing, as
-// Fig. 1) on the harmonic oscillator of Fig. 1 (exact solution) and on Henon-Heiles k = 3 from the start of
-// Fig. 3 (odeint reference): the global error at work_precision.t_end against the wall time
-// (runner/timing.hpp) and the force evaluations, and the cost to reach work_precision.target.
-#include <algorithm>
+// Cost (study `cost`, formerly `work_precision`): work-precision of the methods of work_precision.methods
+// (processed where they have processing, as Fig. 1) in two sets (analysis/work_precision_set.hpp):
+// "henon_heiles", Henon-Heiles k = 3 from the start of Fig. 3 (odeint reference), and "oscillator", the
+// harmonic oscillator of Fig. 1 (exact solution). Per method and step h of work_precision.h: the global
+// error at work_precision.t_end, the wall time of one run (runner/timing.hpp) and the force evaluations
+// of a counting run; the cost to reach work_precision.target, and the errors at equal cost (equal_cost).
 #include <cmath>
 #include <cstdint>
-#include <limits>
-#include <optional>
+#include <span>
 #include <string>
-#include <utility>
 #include <vector>
 
-#include "geomint/analysis/work_precision.hpp"
+#include "geomint/analysis/work_precision_set.hpp"
 #include "geomint/core/integrate.hpp"
 #include "geomint/methods/by_name.hpp"
 #include "geomint/methods/registry.hpp"
 #include "geomint/methods/scene_methods.hpp"
 #include "geomint/reference/odeint_reference.hpp"
 #include "geomint/runner/timing.hpp"
+#include "geomint/runner/timing_report.hpp"
 #include "geomint/systems/counting.hpp"
 #include "henon_heiles_starts.hpp"
 #include "ti_drift.hpp"
@@ -25,19 +25,13 @@
 namespace geomint::ti_drift {
 namespace {
 
-struct WpRow {
-  std::string method;
-  CostRun run;
-  double spread = 0;
-};
-
-// The runs of one method on one problem: error(z_end) of the processed end state, evals by a counting run.
+// The runs of one method into `set`: evals by a counting run, the wall time by timed runs, error(z_end) of
+// the processed end state by a run of its own (as before the one shape: the same numbers).
 template <class Sys, class Err>
-std::vector<WpRow> wp_runs(const Scene& s, const std::string& method, const Sys& sys, const typename Sys::State& z0,
-                           const Err& error) {
+void add_runs(WorkPrecisionSet& set, const Scene& s, const std::string& method, const Sys& sys,
+              const typename Sys::State& z0, const Err& error) {
   const double T = s.real("work_precision.t_end");
   const int repeats = static_cast<int>(s.integer("timing.repeats"));
-  std::vector<WpRow> rows;
   for (double h : s.reals("work_precision.h")) {
     const std::int64_t n = steps_to(T, h);
     std::int64_t evals = 0;
@@ -48,18 +42,32 @@ std::vector<WpRow> wp_runs(const Scene& s, const std::string& method, const Sys&
     if (!std::isfinite(err))
       throw NumericalFailure(method + " at h = " + format_double(h) + ": the error at t = " +
                              format_double(T) + " is not finite");
-    rows.push_back({label_of(method), {h, static_cast<double>(n), rt.seconds(), static_cast<double>(evals), err}, rt.spread()});
+    set.add({label_of(method), h, static_cast<double>(n), rt, static_cast<double>(evals), err});
   }
-  return rows;
 }
 
-void run_work_precision(Context& ctx) {
+// summary.cost.cost_ratio_to_<first>.<set>.<label>: the wall time and the force evaluations to reach the
+// target (the set's only one), relative to the first method; only where both reach it.
+json cost_ratios(const json& set, const std::string& first) {
+  json ratio = json::object();
+  const json& by = set["by_method"];
+  for (const auto& [label, m] : by.items()) {
+    const json &a = m["wall_s_to"][0], &b = by[first]["wall_s_to"][0];
+    if (a.is_null() || b.is_null()) continue;  // (evals_to is null exactly where wall_s_to is: the same bracket)
+    ratio[label] = {{"wall_s", a.get<double>() / b.get<double>()},
+                    {"evals", m["evals_to"][0].get<double>() / by[first]["evals_to"][0].get<double>()}};
+  }
+  return ratio;
+}
+
+void run_cost(Context& ctx) {
   const Scene& s = ctx.scene;
-  ctx.progress("cost: work-precision");
-  const double T = s.real("work_precision.t_end"), target = s.real("work_precision.target");
+  const double T = s.real("work_precision.t_end");
+  const std::vector<double> targets{s.real("work_precision.target")};
   const auto methods = s.texts("work_precision.methods");
-  // the reference of Henon-Heiles: odeint at rtol = atol = work_precision.reference_tol, its error estimated by the
-  // difference to the solution at a 100 times tighter tolerance
+  // the reference of Henon-Heiles: odeint at rtol = atol = work_precision.reference_tol / 100, its error
+  // estimated by the difference to the solution at work_precision.reference_tol
+  ctx.progress("cost: Henon-Heiles reference (odeint Bulirsch-Stoer)");
   const HenonHeiles hh{{}, 3};
   const Z2 hh0 = hh_start(hh, s.real("hh3.q2"), s.real("hh3.p2"), s.real("hh.H0"));
   const double tol = s.real("work_precision.reference_tol");
@@ -68,67 +76,31 @@ void run_work_precision(Context& ctx) {
   const auto norm2 = [](const Z2& a, const Z2& b) { return std::sqrt((a.q - b.q).squaredNorm() + (a.p - b.p).squaredNorm()); };
   const Z1 osc0 = make_state(0.0, 1.0);
   const Z1 osc_end = kOscillator.exact(osc0, T);
-  Csv out({"problem", "method", "h", "steps", "wall_s", "wall_spread", "force_evals", "error"});
-  json wp = {{"t_end", T}, {"target", target}, {"repeats", s.integer("timing.repeats")},
-             {"reference", {{"oscillator", "exact solution"},
-                            {"henon_heiles_tol", tol / 100},
-                            {"henon_heiles_error", norm2(ref, ref_coarse)}}}};  // estimate: against tol
-  for (const std::string problem : {"oscillator", "henon_heiles"}) {
-    std::vector<std::vector<CostRun>> curves;
-    json to_reach, evals_to_reach, spread_max;
-    for (const auto& m : methods) {
-      const auto rows = problem == "oscillator"
-                            ? wp_runs(s, m, kOscillator, osc0, [&](const Z1& z) {
-                                return std::hypot(z.p[0] - osc_end.p[0], kOscillator.w * (z.q[0] - osc_end.q[0]));
-                              })
-                            : wp_runs(s, m, hh, hh0, [&](const Z2& z) { return norm2(z, ref); });
-      std::vector<CostRun> c;
-      double sp = 0;
-      for (const auto& r : rows) {
-        out.row(problem, r.method, r.run.h, r.run.steps, r.run.wall_s, r.spread, r.run.evals, r.run.err);
-        c.push_back(r.run), sp = std::max(sp, r.spread);
-      }
-      c = by_decreasing_h(c);
-      to_reach[label_of(m)] = {{"wall_s", or_null(cost_to_reach(c, target, &CostRun::wall_s))},
-                               {"evals", or_null(cost_to_reach(c, target, &CostRun::evals))},
-                               {"ns_per_eval", 1e9 * rows.back().run.wall_s / rows.back().run.evals}};
-      evals_to_reach[label_of(m)] = or_null(cost_to_reach(c, target, &CostRun::evals));
-      spread_max[label_of(m)] = sp;
-      curves.push_back(c);
-    }
-    double w_lo = 0, w_hi = std::numeric_limits<double>::infinity();
-    for (const auto& c : curves) {
-      double lo = std::numeric_limits<double>::infinity(), hi = 0;
-      for (const auto& r : c) lo = std::min(lo, r.wall_s), hi = std::max(hi, r.wall_s);
-      w_lo = std::max(w_lo, lo), w_hi = std::min(w_hi, hi);
-    }
-    json at_wall = nullptr;
-    if (w_lo < w_hi) {
-      const double w_star = std::sqrt(w_lo * w_hi);
-      at_wall = {{"wall_s", w_star}};
-      for (std::size_t m = 0; m < methods.size(); ++m) at_wall[label_of(methods[m])] = or_null(error_at_wall(curves[m], w_star));
-    }
-    // (wall times: summary.timing.work_precision, which figure_values.gp and the thread check leave out)
-    wp[problem] = {{"evals_to_reach", evals_to_reach}};
-    json& wt = ctx.summary["timing"]["work_precision"][problem];
-    wt = {{"cost_to_reach", to_reach}, {"error_at_equal_wall_time", at_wall}, {"largest_spread", spread_max}};
-    // the ratios of the costs to reach the target, relative to the first method, in wall time and in force evaluations
-    json ratio;
-    const std::string first = label_of(methods[0]);
-    for (const auto& m : methods) {
-      const auto& a = to_reach[label_of(m)];
-      const auto& b = to_reach[first];
-      if (!a["wall_s"].is_null() && !b["wall_s"].is_null())
-        ratio[label_of(m)] = {{"wall_s", a["wall_s"].get<double>() / b["wall_s"].get<double>()},
-                              {"evals", a["evals"].get<double>() / b["evals"].get<double>()}};
-    }
-    wt["cost_ratio_to_" + first] = ratio;
-  }
-  ctx.write("timing_work_precision.csv", out);
-  ctx.summary["work_precision"] = wp;
+
+  ctx.progress("cost: work-precision");
+  WorkPrecisionSet henon_heiles("l2 phase-space error |z_N - z(t_end)| against the odeint reference, Henon-Heiles k = 3");
+  WorkPrecisionSet oscillator("sqrt((p_N - p(t_end))^2 + (omega (q_N - q(t_end)))^2) against the exact solution, omega = 1");
+  for (const auto& m : methods) add_runs(henon_heiles, s, m, hh, hh0, [&](const Z2& z) { return norm2(z, ref); });
+  for (const auto& m : methods)
+    add_runs(oscillator, s, m, kOscillator, osc0, [&](const Z1& z) {
+      return std::hypot(z.p[0] - osc_end.p[0], kOscillator.w * (z.q[0] - osc_end.q[0]));
+    });
+  ctx.write("cost_henon_heiles.csv", henon_heiles.csv());
+  ctx.write("cost_oscillator.csv", oscillator.csv());
+
+  json cost = {{"henon_heiles", henon_heiles.summary(targets)},
+               {"oscillator", oscillator.summary(targets)},
+               {"method", timing_method_text(static_cast<int>(s.integer("timing.repeats"))) +
+                              "; one run from the start to work_precision.t_end, processing included, every call inlined"},
+               {"reference", {{"oscillator", "exact solution"},
+                              {"henon_heiles_tol", tol / 100},
+                              {"henon_heiles_error", norm2(ref, ref_coarse)}}}};  // estimate: against tol
+  const std::string first = label_of(methods[0]);
+  for (const char* set : {"henon_heiles", "oscillator"}) cost["cost_ratio_to_" + first][set] = cost_ratios(cost[set], first);
+  ctx.summary["cost"] = cost;
 }
 
-void check_work_precision(const Scene& s) {
+void check_cost(const Scene& s) {
   MethodsOn<Counting<HenonHeiles>>::check(s, "work_precision.methods", {HenonHeiles{{}, 3}, nullptr});
   MethodsOn<Counting<HarmonicOscillator>>::check(s, "work_precision.methods", {kOscillator, nullptr});
   check_hh_starts(s, "hh3", HenonHeiles{{}, 3}, 0.0, false);
@@ -140,7 +112,7 @@ void check_work_precision(const Scene& s) {
     }
 }
 
-StudyPlan plan_work_precision(const Scene& s) {
+StudyPlan plan_cost(const Scene& s) {
   // per method, problem and step: a counting run, an error run and timing.repeats timed runs (each repeated up to
   // 10 ms: the steps here are a lower bound); the odeint reference not counted
   const double T = s.real("work_precision.t_end"), runs = 2 + static_cast<double>(s.integer("timing.repeats"));
@@ -150,7 +122,7 @@ StudyPlan plan_work_precision(const Scene& s) {
       p.steps += 2 * runs * T / h, p.force_evals += 2 * runs * T / h * static_cast<double>(evals_per_step(m));
   p.memory_bytes = 1e5;
   p.ns_per_step = kNsPerStepHH;
-  p.note = "a lower bound (timed runs last at least 10 ms each); " + std::string(kNsNote);
+  p.note = "a lower bound (timed runs last at least 10 ms); " + std::string(kNsNote);
   return p;
 }
 
@@ -166,11 +138,11 @@ void keys(Schema& s) {
 
 }  // namespace
 
-Study work_precision_study() {
-  return {"work_precision", "cost: error against wall time and force evaluations (oscillator, Henon-Heiles k = 3)",
-          {"timing_work_precision.csv"},
+Study cost_study() {
+  return {"cost", "cost: error against wall time and force evaluations (Henon-Heiles k = 3, oscillator)",
+          {"cost_henon_heiles.csv", "cost_oscillator.csv"},
           {"work_precision", "timing.repeats", "hh3.q2", "hh3.p2", "hh.H0"},
-          check_work_precision, run_work_precision, plan_work_precision, keys};
+          check_cost, run_cost, plan_cost, keys, {"work_precision"}};
 }
 
 }  // namespace geomint::ti_drift

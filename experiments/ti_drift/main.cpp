@@ -10,8 +10,8 @@
 //   Fig 6      the Lennard-Jones cluster: a step-size scan and the ensemble statistics lj.cpp
 //   Fig 6      sigma against h (the printed step)                                     lj_steps.cpp
 //   Sect. 1.3  symplecticity against volume preservation                              symplecticity.cpp
-// plus the cost: error against wall time and force evaluations                        cost.cpp
-//            and ns per step of each method's kernel                                  kernel_timing.cpp
+// plus the cost: error against wall time and force evaluations (study `cost`)         cost.cpp
+//            and ns per step of each method's kernel (study `kernel_timing`)          kernel_timing.cpp
 // One study per figure (or analysis); the scene's sections say which run. Here: the studies, and the
 // scene keys that several of them read (what they share otherwise: ti_drift.hpp, henon_heiles_starts.hpp).
 #include <utility>
@@ -54,6 +54,6 @@ int main(int argc, char** argv) {
   ExperimentSpec spec{"ti_drift", "004 Figs 1-6: energy behaviour of the (simplified) Takahashi-Imada method",
                       shared_keys(),
                       {oscillator_study(), pendulum_study(), hh3_study(), ensemble_study(), lj_study(), lj_steps_study(),
-                       work_precision_study(), symplecticity_study(), timing_study()}};
+                       cost_study(), symplecticity_study(), kernel_timing_study()}};
   return run_experiment(argc, argv, std::move(spec), GEOMINT_EXPERIMENT_DIR);
 }

@@ -30,9 +30,9 @@ Study hh3_study();             // 004 Fig 3                                     
 Study ensemble_study();        // 004 Figs 4, 5                                        ensemble.cpp
 Study lj_study();              // 004 Fig 6                                            lj.cpp
 Study lj_steps_study();        // 004 Fig 6: sigma against h (the printed step)        lj_steps.cpp
-Study work_precision_study();  // cost: error against wall time and force evaluations  cost.cpp
+Study cost_study();            // cost: error against wall time and force evaluations  cost.cpp
 Study symplecticity_study();   // 004 Sect. 1.3: symplectic against volume-preserving  symplecticity.cpp
-Study timing_study();          // cost: ns per step of each method                     kernel_timing.cpp
+Study kernel_timing_study();   // cost: ns per step of each method                     kernel_timing.cpp
 
 // ---- summary.json
 

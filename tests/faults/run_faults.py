@@ -31,6 +31,9 @@ import sys
 import time
 from pathlib import Path
 
+sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "regression"))
+import same_csv  # noqa: E402
+
 TIMEOUT_S = 30  # a --plan or a refused run that takes longer hangs
 SCALARS = ["0", "-1", "nan", "inf", "-inf", "1e300", "1e-300", "2147483648", "9223372036854775807",
            "9223372036854775808", "0.5"]
@@ -195,7 +198,10 @@ def check_real_runs(binary, keys, accepted, work, rng, count):
 
 
 def csv_bytes(out_dir):
-    return {f.name: f.read_bytes() for f in sorted(Path(out_dir).glob("*.csv")) if not f.name.startswith("timing")}
+    """The CSVs of a run to compare: all but timing*.csv (wall times), and of a work-precision set
+    cost_*.csv every cell but its wall times (tests/regression/same_csv.py)."""
+    return {f.name: same_csv.cells(f) if f.name.startswith("cost_") else f.read_bytes()
+            for f in sorted(Path(out_dir).glob("*.csv")) if not f.name.startswith("timing")}
 
 
 def check_checkpoints(binary, keys, work, rng, kills, settings):

@@ -10,6 +10,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -51,22 +52,22 @@ TEST(EulerCompensation, Rk4EnergyErrorIsFifthOrderOnTheOscillator) {
   EXPECT_NEAR(summary()["orders"]["rk4_energy"].get<double>(), 5.0, 0.1);
 }
 
-TEST(EulerCompensation, TimingRunsHaveTheErrorsAndEvaluationsOfTheConvergenceRuns) {
-  // The cost study's error and force evaluations at a step h (timing.csv) are those of the
-  // convergence run at the same h (fig9_convergence.csv), over t_end / h steps.
-  const CsvFile timing = read_csv(dir / "timing.csv"), conv = read_csv(dir / "fig9_convergence.csv");
+TEST(EulerCompensation, CostRunsHaveTheErrorsAndEvaluationsOfTheConvergenceRuns) {
+  // The cost study's error and force evaluations at a step h (cost_energy.csv, the set "energy") are
+  // those of the convergence run at the same h (fig9_convergence.csv), over t_end / h steps.
+  const CsvFile cost = read_csv(dir / "cost_energy.csv"), conv = read_csv(dir / "fig9_convergence.csv");
   std::ifstream in(dir / "run.json");
   const double t_end = json::parse(in)["scene"]["convergence"]["t_end"];
   int matched = 0;
-  for (const auto& row : timing.rows) {
-    const std::string label = row[timing.column("method")];
-    const double h = std::stod(row[timing.column("h")]);
-    EXPECT_EQ(std::stoll(row[timing.column("steps")]), std::llround(t_end / h));
+  for (const auto& row : cost.rows) {
+    const std::string label = row[cost.column("method")];
+    const double h = std::stod(row[cost.column("h")]);
+    EXPECT_EQ(std::stoll(row[cost.column("steps")]), std::llround(t_end / h));
     for (const auto& c : conv.rows) {
       if (std::stod(c[conv.column("h")]) != h) continue;
       ++matched;
-      EXPECT_EQ(row[timing.column("force_evals")], c[conv.column(label + "_evals")]) << label << " h = " << h;
-      EXPECT_DOUBLE_EQ(std::stod(row[timing.column("energy_err_max")]), std::stod(c[conv.column(label + "_max")]))
+      EXPECT_EQ(row[cost.column("force_evals")], c[conv.column(label + "_evals")]) << label << " h = " << h;
+      EXPECT_DOUBLE_EQ(std::stod(row[cost.column("err")]), std::stod(c[conv.column(label + "_max")]))
           << label << " h = " << h;
     }
   }
@@ -75,7 +76,7 @@ TEST(EulerCompensation, TimingRunsHaveTheErrorsAndEvaluationsOfTheConvergenceRun
 
 TEST(EulerCompensation, OutputsAreComplete) {
   for (const char* f : {"fig2_decay.csv", "fig2_decay_exact.csv", "fig3_gompertz.csv", "fig3_gompertz_exact.csv",
-                        "fig8_phase.csv", "fig8_exact.csv", "fig9_convergence.csv", "orders.csv", "timing.csv",
+                        "fig8_phase.csv", "fig8_exact.csv", "fig9_convergence.csv", "orders.csv", "cost_energy.csv",
                         "summary.json", "run.json"}) {
     ASSERT_TRUE(fs::is_regular_file(dir / f)) << f;
     EXPECT_GT(fs::file_size(dir / f), 20u) << f;
@@ -113,17 +114,30 @@ TEST(EulerCompensation, PrintedFieldSixteenIsExactOnlyForAlphaOne) {
   EXPECT_LT(r["decay_compensated_max_rel_err"].get<double>(), 1e-12);
 }
 
-TEST(EulerCompensation, CostSummaryOfTheTimingStudy) {
-  // Relative cost against the first method, and the crossover of the first two methods' work-precision
-  // curves: a point between their measured wall times where both interpolated errors agree.
-  const auto& t = summary()["timing"];
-  const auto& ns = t["ns_per_step"];
+TEST(EulerCompensation, CostSummaryOfTheCostStudy) {
+  // Time per step relative to the first method, and the crossover of the first two methods' work-precision
+  // curves: a point inside the wall times both measure, where both interpolated errors agree.
+  const auto& c = summary()["cost"];
+  const auto& ns = c["ns_per_step"];
   for (const auto& [m, v] : ns.items())
-    EXPECT_DOUBLE_EQ(t["relative_cost"][m].get<double>(), v.get<double>() / ns["se"].get<double>()) << m;
+    EXPECT_DOUBLE_EQ(c["relative_ns_per_step"][m].get<double>(), v.get<double>() / ns["se"].get<double>()) << m;
   const auto& h = summary()["h_range"];
   EXPECT_LT(h["timing"]["min"].get<double>(), h["timing"]["max"].get<double>());
   EXPECT_EQ(h["convergence"]["count"].get<int>(), summary()["fits"]["se_energy"]["points"].get<int>());
-  if (!t["crossover"].is_null()) EXPECT_GT(t["crossover"]["err"].get<double>(), 0.0);
+  if (c["crossover"].is_null()) return;
+  EXPECT_GT(c["crossover"]["err"].get<double>(), 0.0);
+  const CsvFile t = read_csv(dir / "cost_energy.csv");
+  std::map<std::string, std::pair<double, double>> range;  // per method: its smallest and largest wall time
+  for (const auto& r : t.rows) {
+    const double w = std::stod(r[t.column("wall_s")]);
+    const auto it = range.try_emplace(r[t.column("method")], w, w).first;
+    it->second = {std::min(it->second.first, w), std::max(it->second.second, w)};
+  }
+  const double wall = c["crossover"]["wall_s"].get<double>();
+  for (const char* m : {"se", "se_compensated"}) {
+    EXPECT_GE(wall, range[m].first) << m;
+    EXPECT_LE(wall, range[m].second) << m;
+  }
 }
 
 TEST(EulerCompensation, EnergyNormFiftyIsPreAsymptoticOverFigureNine) {
@@ -155,15 +169,36 @@ TEST(EulerCompensation, EnergyNormFiftyIsPreAsymptoticOverFigureNine) {
 }
 
 // The timing method (runner/timing.hpp, runner/timing_report.hpp): every timed measurement of the cost
-// study reports its spread (max - min) / min beside its minimum: one per row of timing.csv and one per method for ns_per_step, and
-// summary.json's timing.spread is over all of them. (Structure only: no timing value is asserted.)
+// study reports its spread (max - min) / min beside its minimum: one per row of cost_energy.csv, over
+// which summary.json's cost.energy.spread is, and one per method for ns_per_step (cost.ns_per_step_spread).
+// (Structure only: no timing value is asserted.)
 TEST(EulerCompensation, EveryTimedMeasurementReportsItsSpread) {
-  const CsvFile t = read_csv(results_dir("euler_compensation") / "timing.csv");
+  const CsvFile t = read_csv(results_dir("euler_compensation") / "cost_energy.csv");
   const double largest = largest_spread(t);
-  const auto& spread = summary_of("euler_compensation")["timing"]["spread"];
+  const auto& cost = summary_of("euler_compensation")["cost"];
+  const auto& spread = cost["energy"]["spread"];
   ASSERT_TRUE(spread.is_object());
-  EXPECT_EQ(spread["measurements"].get<std::size_t>(), t.rows.size() + summary_of("euler_compensation")["timing"]["ns_per_step"].size());
+  EXPECT_EQ(spread["measurements"].get<std::size_t>(), t.rows.size());
   EXPECT_GE(spread["max"].get<double>(), largest);
+  ASSERT_EQ(cost["ns_per_step_spread"].size(), cost["ns_per_step"].size());
+  for (const auto& [m, ns] : cost["ns_per_step"].items()) EXPECT_TRUE(cost["ns_per_step_spread"][m].is_number()) << m;
+}
+
+// Equal wall time is the one rule (analysis/work_precision.hpp equal_cost): the least of the methods'
+// largest wall times in cost_energy.csv; the crossover is of the first two methods' curves.
+TEST(EulerCompensation, EqualWallTimeIsTheLeastLargestWallTime) {
+  const CsvFile t = read_csv(dir / "cost_energy.csv");
+  std::map<std::string, double> largest;
+  for (const auto& r : t.rows) {
+    double& w = largest[r[t.column("method")]];
+    w = std::max(w, std::stod(r[t.column("wall_s")]));
+  }
+  double least = largest.begin()->second;
+  for (const auto& [m, w] : largest) least = std::min(least, w);
+  const auto& cost = summary()["cost"];
+  EXPECT_DOUBLE_EQ(cost["energy"]["equal_wall_s"].get<double>(), least);
+  for (const auto& [m, w] : largest) EXPECT_TRUE(cost["energy"]["by_method"][m]["err_at_equal_wall"].is_number()) << m;
+  if (!cost["crossover"].is_null()) EXPECT_EQ(cost["crossover"]["methods"], json({"se", "se_compensated"}));
 }
 
 // ---- Bad input (the interface contract): exit 2 before any work, one stderr line naming the key,
@@ -179,5 +214,14 @@ TEST(EulerCompensation, RefuseFigureLongerThanMemory) {
   expect_exit("euler_compensation", 2, "--set oscillator.steps=2000000000", {"oscillator", "memory"});
 }
 TEST(EulerCompensation, PlanOfThePaperSceneHasFiniteStepCounts) {
-  expect_plan("euler_compensation", {"decay", "gompertz", "oscillator", "convergence", "timing"});
+  expect_plan("euler_compensation", {"decay", "gompertz", "oscillator", "convergence", "cost"});
+}
+
+// A former study name (Study::aliases) still selects the study, with a note on stderr naming the new one.
+TEST(EulerCompensation, FormerStudyNameTimingIsAcceptedWithANote) {
+  const BinaryOutcome r = run_binary("euler_compensation", "--quick --plan --study timing");
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("cost"), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("study 'timing' is now called 'cost'"), std::string::npos) << r.err;
+  EXPECT_EQ(run_binary("euler_compensation", "--quick --plan --study cost").err, "");
 }

@@ -99,7 +99,8 @@ TEST(LobattoTable, MeasuredGrowthIsTheExactGrowth) {
   EXPECT_LT(std::abs(r["H_rate_minus_exact"].get<double>()), 10 * r["roundoff_in_H"].get<double>());
 }
 
-// The work-precision runs over the long run of Fig. 2 (timing_long_run.csv) against closed forms in
+// The work-precision runs over the long run of Fig. 2 (the sets long_run_phase and long_run_energy of the
+// same runs: cost_long_run_phase.csv, cost_long_run_energy.csv) against closed forms in
 // exact arithmetic: the Lobatto scheme is the rotation by theta of 001 (13)-(14) (q_N = A cos(N theta),
 // p_N = -sqrt(-b/c) A sin(N theta)), the implicit midpoint rule on the oscillator the rotation by
 // 2 atan(h omega / 2) (it conserves H); the phase error at t_N against the exact flow from either.
@@ -109,13 +110,18 @@ TEST(LobattoTable, LongRunCostErrorsMatchTheClosedForms) {
   const auto& sc = run["scene"];
   const double m = sc["oscillator"]["m"], w = sc["oscillator"]["omega"], A = sc["oscillator"]["amplitude"];
   const double periods = sc["long_run"]["periods"], T = 2 * std::numbers::pi / w;
-  const CsvFile csv = read_csv(results_dir("lobatto_table") / "timing_long_run.csv");
+  const CsvFile csv = read_csv(results_dir("lobatto_table") / "cost_long_run_phase.csv");
+  const CsvFile energy = read_csv(results_dir("lobatto_table") / "cost_long_run_energy.csv");
   const std::size_t cm = csv.column("method"), ch = csv.column("h"), cs = csv.column("steps"),
-                    cp = csv.column("phase_err"), ce = csv.column("energy_err"), cf = csv.column("force_evals");
+                    cp = csv.column("err"), ce = energy.column("err"), cf = csv.column("force_evals");
+  ASSERT_EQ(energy.rows.size(), csv.rows.size());
   std::map<std::string, std::vector<double>> hs, phase;
   std::map<std::string, double> evals_per_step;
   int checked = 0;
-  for (const auto& row : csv.rows) {
+  for (std::size_t i = 0; i < csv.rows.size(); ++i) {
+    const auto& row = csv.rows[i];
+    for (const char* c : {"method", "h", "steps", "force_evals"})  // the same run in both sets
+      EXPECT_EQ(energy.rows[i][energy.column(c)], row[csv.column(c)]) << c << " row " << i;
     const std::string method = row[cm];
     const double h = std::stod(row[ch]), err = std::stod(row[cp]);
     const std::int64_t n = std::stoll(row[cs]);
@@ -135,14 +141,14 @@ TEST(LobattoTable, LongRunCostErrorsMatchTheClosedForms) {
       const double exact = distance(A * std::cos(N * orbit->theta), -std::sqrt(-k.b / k.c) * A * std::sin(N * orbit->theta));
       EXPECT_NEAR(err, exact, 1e-6 * exact + 1e-9) << "h = " << h;
       // |H_j - H_0| <= |K| in exact arithmetic; in floating point up to the round-off of N steps, N u H_0
-      EXPECT_LE(std::stod(row[ce]), std::abs(orbit->K) + N * std::numeric_limits<double>::epsilon() * orbit->H0) << "h = " << h;
-      EXPECT_GE(std::stod(row[ce]), 0.5 * std::abs(orbit->K)) << "h = " << h;  // sin^2(j theta) comes near 1 in a period
+      EXPECT_LE(std::stod(energy.rows[i][ce]), std::abs(orbit->K) + N * std::numeric_limits<double>::epsilon() * orbit->H0) << "h = " << h;
+      EXPECT_GE(std::stod(energy.rows[i][ce]), 0.5 * std::abs(orbit->K)) << "h = " << h;  // sin^2(j theta) comes near 1 in a period
       ++checked;
     } else if (method == label("implicit_midpoint")) {
       const double theta = 2 * std::atan(h * w / 2);
       const double exact = distance(A * std::cos(N * theta), -m * w * A * std::sin(N * theta));
       EXPECT_NEAR(err, exact, 1e-6 * exact + 1e-9) << "h = " << h;
-      EXPECT_LT(std::stod(row[ce]), 1e-9 * 0.5 * m * w * w * A * A) << "h = " << h;  // H conserved up to round-off
+      EXPECT_LT(std::stod(energy.rows[i][ce]), 1e-9 * 0.5 * m * w * w * A * A) << "h = " << h;  // H conserved up to round-off
       ++checked;
     }
   }
@@ -154,16 +160,44 @@ TEST(LobattoTable, LongRunCostErrorsMatchTheClosedForms) {
 }
 
 // The timing method (runner/timing.hpp, runner/timing_report.hpp): every timed measurement of the cost
-// study reports its spread (max - min) / min beside its minimum: one per row of timing_long_run.csv (the long runs of Fig. 2), and
-// summary.json's timing.long_run_cost.spread is over all of them. (Structure only: no timing value is asserted.)
+// studies reports its spread (max - min) / min beside its minimum: one per row of each set's cost_<set>.csv
+// (the pendulum runs; the long runs of Fig. 2, the same in both long-run sets), and summary.json's
+// cost.<set>.spread is over all of them. (Structure only: no timing value is asserted.)
 TEST(LobattoTable, EveryTimedMeasurementReportsItsSpread) {
-  const CsvFile t = read_csv(results_dir("lobatto_table") / "timing_long_run.csv");
-  const double largest = largest_spread(t);
-  const auto& spread = summary_of("lobatto_table")["timing"]["long_run_cost"]["spread"];
-  ASSERT_TRUE(spread.is_object());
-  EXPECT_EQ(spread["measurements"].get<std::size_t>(), t.rows.size());
-  EXPECT_GE(spread["max"].get<double>(), largest);
-  EXPECT_DOUBLE_EQ(spread["max"].get<double>(), largest);
+  for (const char* set : {"pendulum", "long_run_phase", "long_run_energy"}) {
+    const CsvFile t = read_csv(results_dir("lobatto_table") / ("cost_" + std::string(set) + ".csv"));
+    const double largest = largest_spread(t);
+    const auto& spread = summary()["cost"][set]["spread"];
+    ASSERT_TRUE(spread.is_object()) << set;
+    EXPECT_EQ(spread["measurements"].get<std::size_t>(), t.rows.size()) << set;
+    EXPECT_DOUBLE_EQ(spread["max"].get<double>(), largest) << set;
+  }
+}
+
+// Both cost studies merge into summary.cost (either may run alone); equal wall time is the one rule
+// (analysis/work_precision.hpp equal_cost): the least of the methods' largest wall times in the set's CSV,
+// whatever the scene's (unused) timing.equal_wall names.
+TEST(LobattoTable, CostSetsFollowTheOneRuleOfEqualCost) {
+  const auto& cost = summary()["cost"];
+  EXPECT_TRUE(cost["method"].is_string());
+  for (const char* set : {"pendulum", "long_run_phase", "long_run_energy"}) {
+    const CsvFile t = read_csv(results_dir("lobatto_table") / ("cost_" + std::string(set) + ".csv"));
+    std::map<std::string, std::pair<double, double>> range;  // per method: its smallest and largest wall time
+    for (const auto& r : t.rows) {
+      const double w = std::stod(r[t.column("wall_s")]);
+      const auto it = range.try_emplace(r[t.column("method")], w, w).first;
+      it->second = {std::min(it->second.first, w), std::max(it->second.second, w)};
+    }
+    double least = std::numeric_limits<double>::infinity(), lo = 0;
+    for (const auto& [m, w] : range) least = std::min(least, w.second), lo = std::max(lo, w.first);
+    if (lo <= least) EXPECT_DOUBLE_EQ(cost[set]["equal_wall_s"].get<double>(), least) << set;
+    else EXPECT_TRUE(cost[set]["equal_wall_s"].is_null()) << set;  // (the ranges share no wall time)
+    EXPECT_EQ(cost[set]["methods"].size(), range.size()) << set;
+  }
+  const auto& by = cost["pendulum"]["by_method"];
+  for (const auto& [m, c] : by.items())  // ns per step relative to the first of timing.methods
+    EXPECT_DOUBLE_EQ(cost["relative_ns_per_step"][m].get<double>(),
+                     c["ns_per_step"].get<double>() / by[label("lobatto")]["ns_per_step"].get<double>()) << m;
 }
 
 // ---- Bad input (the interface contract): exit 2 before any work, one stderr line naming the key,
@@ -189,12 +223,21 @@ TEST(LobattoTable, RefuseSingularElasticInitialCondition) {
   expect_exit("lobatto_table", 2, "--set 'nonlinear.elastic_initial=[[0.0, 0.0, 0.1, 0.0]]'", {"nonlinear.elastic_initial", "singular"});
 }
 TEST(LobattoTable, PlanOfThePaperSceneHasFiniteStepCounts) {
-  expect_plan("lobatto_table", {"table1", "figure1", "long_run", "stability", "nonlinear", "timing", "long_run_cost"});
+  expect_plan("lobatto_table", {"table1", "figure1", "long_run", "stability", "nonlinear", "cost", "long_run_cost"});
+}
+
+// A former study name (Study::aliases) still selects the study, with a note on stderr naming the new one.
+TEST(LobattoTable, FormerStudyNameTimingIsAcceptedWithANote) {
+  const BinaryOutcome r = run_binary("lobatto_table", "--quick --plan --study timing");
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.out.find("cost"), std::string::npos) << r.out;
+  EXPECT_NE(r.err.find("study 'timing' is now called 'cost'"), std::string::npos) << r.err;
+  EXPECT_EQ(run_binary("lobatto_table", "--quick --plan --study cost").err, "");
 }
 
 // Checkpoints (runner/checkpoint.hpp): the long runs of the cost study, stopped after one round and resumed (on 1
-// thread), give the files of a run straight through (timing_long_run.csv holds wall times: only summary.json's
-// errors and counts are compared).
+// thread), give the files of a run straight through (the sets' wall times aside: every other cell of
+// cost_long_run_*.csv, and summary.json but its timing and cost).
 TEST(LobattoTable, ResumedLongRunCostGivesTheSameResults) {
   expect_resume_identical("lobatto_table", "--quick --study long_run_cost", 1, "long_run_cost");
 }

@@ -155,6 +155,55 @@ TEST(MeasureCloud, WorkPrecisionOrdersAndReference) {
   EXPECT_LT(w["reference_error"].get<double>(), 1e-10);
 }
 
+// The cost study's two work-precision sets (cost_trajectory.csv, cost_energy.csv) are two errors of the
+// same runs: every column but the error is the same, row by row. Evaluations: 4 per RK4 step; the Newton
+// iterations of Phi^(4) at h, which the table quotes (reproduced.newton_iterations_per_step_phi4), are
+// those of its run at h in the set.
+TEST(MeasureCloud, CostSetsAreTwoErrorsOfTheSameRuns) {
+  const CsvFile traj = read_csv(results_dir("measure_cloud") / "cost_trajectory.csv");
+  const CsvFile energy = read_csv(results_dir("measure_cloud") / "cost_energy.csv");
+  ASSERT_EQ(traj.names, energy.names);
+  ASSERT_EQ(traj.rows.size(), energy.rows.size());
+  ASSERT_GT(traj.rows.size(), 0u);
+  const std::size_t err = traj.column("err");
+  for (std::size_t i = 0; i < traj.rows.size(); ++i)
+    for (std::size_t c = 0; c < traj.names.size(); ++c)
+      if (c != err) EXPECT_EQ(traj.rows[i][c], energy.rows[i][c]) << "row " << i << " " << traj.names[c];
+  const auto& cost = harmonic()["cost"];
+  EXPECT_EQ(cost["trajectory"]["methods"], cost["energy"]["methods"]);
+  EXPECT_EQ(cost["trajectory"]["equal_wall_s"], cost["energy"]["equal_wall_s"]);
+  EXPECT_EQ(cost["trajectory"]["by_method"]["rk4"]["evals_per_step"].get<double>(), 4.0);
+  const json run = json::parse(std::ifstream(results_dir("measure_cloud") / "run.json"));
+  const double h = run["scene"]["h"].get<double>();
+  std::size_t checked = 0;
+  for (const auto& row : traj.rows) {
+    const std::string m = row[traj.column("method")];
+    if (m.rfind("phi4_", 0) != 0 || std::stod(row[traj.column("h")]) != h) continue;
+    const double per_step = std::stod(row[traj.column("force_evals")]) / std::stod(row[traj.column("steps")]);
+    EXPECT_EQ(per_step, harmonic()["reproduced"]["newton_iterations_per_step_phi4"][m.substr(5)].get<double>()) << m;
+    ++checked;
+  }
+  EXPECT_EQ(checked, std::size(kMethods));
+}
+
+// At equal evaluations (deterministic: no wall time), the choice of E trades one error for the other:
+// Phi^(0) reaches the trajectory error target in fewer evaluations than Phi^(4), Phi^(4) the energy
+// error target in fewer than Phi^(0); the explicit RK4 reaches both in fewer than either (harmonic
+// scene, over t <= energies.t_end; paper/sections/cost/measure_cloud.tex).
+TEST(MeasureCloud, ChoiceOfEnergyTradesTrajectoryErrorForEnergyError) {
+  const auto& cost = harmonic()["cost"];
+  const std::string d = harmonic()["reproduced"]["work_precision"]["discretization"].get<std::string>();
+  const auto evals_to = [&](const char* set, const std::string& m) {
+    const auto& v = cost[set]["by_method"][m]["evals_to"][0];
+    EXPECT_TRUE(v.is_number()) << set << " " << m << " does not reach its target";
+    return v.is_number() ? v.get<double>() : std::numeric_limits<double>::quiet_NaN();
+  };
+  EXPECT_LT(evals_to("trajectory", "phi0_" + d), evals_to("trajectory", "phi4_" + d));
+  EXPECT_LT(evals_to("energy", "phi4_" + d), evals_to("energy", "phi0_" + d));
+  for (const char* set : {"trajectory", "energy"})
+    for (const std::string m : {"phi4_" + d, "phi0_" + d}) EXPECT_LT(evals_to(set, "rk4"), evals_to(set, m)) << set << " " << m;
+}
+
 // ---- bad input: exit 2 before any work, one line naming the key, the value and what is allowed, nothing in --out;
 // a numerical failure: exit 4 (tests/regression/summary.hpp: expect_exit, expect_plan) ----
 

@@ -79,6 +79,21 @@ inline double largest_spread(const CsvFile& t) {
   return largest;
 }
 
+// A work-precision set's CSV (cost_<set>.csv, analysis/work_precision_set.hpp) without its wall-time
+// columns (wall_s, wall_median_s, wall_spread), which differ from run to run: the cells to compare.
+inline CsvFile without_wall_times(const CsvFile& t) {
+  const auto wall = [](const std::string& c) { return c == "wall_s" || c == "wall_median_s" || c == "wall_spread"; };
+  CsvFile out;
+  std::vector<std::size_t> keep;
+  for (std::size_t i = 0; i < t.names.size(); ++i)
+    if (!wall(t.names[i])) keep.push_back(i), out.names.push_back(t.names[i]);
+  for (const auto& row : t.rows) {
+    out.rows.emplace_back();
+    for (std::size_t i : keep) out.rows.back().push_back(i < row.size() ? row[i] : std::string());
+  }
+  return out;
+}
+
 // ---- Running an experiment's binary (the command-line tests) ----
 
 inline std::string file_text(const std::filesystem::path& p) {
@@ -182,10 +197,17 @@ inline void expect_resume_identical(const std::string& experiment, const std::st
   for (const auto& e : fs::directory_iterator(b)) {
     const std::string f = e.path().filename().string();
     if (!f.ends_with(".csv") || f.starts_with("timing")) continue;
+    if (f.starts_with("cost_")) {  // a work-precision set: every cell but its wall times
+      const CsvFile ca = without_wall_times(read_csv(a / f)), cb = without_wall_times(read_csv(e.path()));
+      EXPECT_EQ(ca.names, cb.names) << f;
+      EXPECT_EQ(ca.rows, cb.rows) << f;
+      continue;
+    }
     EXPECT_EQ(read(a / f), read(e.path())) << f;
   }
   for (const auto& e : fs::directory_iterator(a)) EXPECT_EQ(e.path().string().find(".checkpoint."), std::string::npos) << e.path();
   auto sa = nlohmann::json::parse(read(a / "summary.json")), sb = nlohmann::json::parse(read(b / "summary.json"));
   sa.erase("timing"), sb.erase("timing");
+  sa.erase("cost"), sb.erase("cost");  // (wall times and what follows from them; the sets' other cells: their CSVs)
   EXPECT_EQ(sa, sb);
 }

@@ -8,9 +8,11 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
@@ -242,6 +244,88 @@ TEST(TiDrift, PublishedStabilityBoundOfTakahashiImadaIsTwoSqrtThree) {
   EXPECT_NEAR(summary()["reproduced"]["ti_stability_bound"].get<double>(), printed, pe.tolerance * printed);
 }
 
+// ---- the cost study: two work-precision sets (analysis/work_precision_set.hpp), henon_heiles and oscillator ----
+
+namespace {
+const char* const kCostSets[] = {"henon_heiles", "oscillator"};
+}  // namespace
+
+TEST(TiDrift, CostSetsHaveARunPerMethodAndStep) {
+  // One row per method and step of work_precision.h; force evaluations per step at the smallest h: one gradient
+  // (Stormer-Verlet), two (TI: a gradient and a Hessian-vector product; simplified: two gradients), the processing
+  // of TI and the simplified method a few evaluations per run on top.
+  for (const char* set : kCostSets) {
+    const CsvFile t = read_csv(results_dir("ti_drift") / (std::string("cost_") + set + ".csv"));
+    const auto& c = summary()["cost"][set];
+    EXPECT_EQ(c["methods"], json({"sv", "ti", "sti"})) << set;
+    EXPECT_EQ(t.rows.size(), 3 * 7u) << set;  // the quick scene: 3 methods, 7 steps
+    EXPECT_NEAR(c["by_method"]["sv"]["evals_per_step"].get<double>(), 1.0, 0.01) << set;
+    EXPECT_NEAR(c["by_method"]["ti"]["evals_per_step"].get<double>(), 2.0, 0.01) << set;
+    EXPECT_NEAR(c["by_method"]["sti"]["evals_per_step"].get<double>(), 2.0, 0.01) << set;
+    for (const auto& [m, b] : c["by_method"].items()) {  // work_precision.target is reached by every method
+      EXPECT_EQ(b["runs"].get<int>(), 7) << set << " " << m;
+      ASSERT_EQ(b["evals_to"].size(), 1u) << set << " " << m;
+      EXPECT_FALSE(b["evals_to"][0].is_null()) << set << " " << m;
+      EXPECT_FALSE(b["wall_s_to"][0].is_null()) << set << " " << m;
+    }
+  }
+}
+
+TEST(TiDrift, OnTheOscillatorTheSimplifiedMethodIsTi) {
+  // The same map on a linear force (Fig. 1): the same error and force evaluations at every step.
+  const CsvFile t = read_csv(results_dir("ti_drift") / "cost_oscillator.csv");
+  const std::size_t method = t.column("method"), h = t.column("h"), err = t.column("err"), evals = t.column("force_evals");
+  int pairs = 0;
+  for (const auto& a : t.rows)
+    for (const auto& b : t.rows)
+      if (a[method] == "ti" && b[method] == "sti" && a[h] == b[h]) {
+        EXPECT_NEAR(std::stod(a[err]), std::stod(b[err]), 1e-9 * std::stod(a[err])) << a[h];
+        EXPECT_EQ(a[evals], b[evals]) << a[h];
+        ++pairs;
+      }
+  EXPECT_EQ(pairs, 7);
+}
+
+TEST(TiDrift, CostRatiosFollowFromTheSets) {
+  // summary.cost.cost_ratio_to_sv: the cost to reach work_precision.target relative to Stormer-Verlet; the
+  // fourth-order processed methods need fewer evaluations at this accuracy.
+  for (const char* set : kCostSets) {
+    const auto& by = summary()["cost"][set]["by_method"];
+    const auto& r = summary()["cost"]["cost_ratio_to_sv"][set];
+    EXPECT_DOUBLE_EQ(r["sv"]["evals"].get<double>(), 1.0) << set;
+    for (const char* m : {"ti", "sti"}) {
+      EXPECT_DOUBLE_EQ(r[m]["evals"].get<double>(), by[m]["evals_to"][0].get<double>() / by["sv"]["evals_to"][0].get<double>()) << set;
+      EXPECT_DOUBLE_EQ(r[m]["wall_s"].get<double>(), by[m]["wall_s_to"][0].get<double>() / by["sv"]["wall_s_to"][0].get<double>()) << set;
+      EXPECT_LT(r[m]["evals"].get<double>(), 0.5) << set << " " << m;
+    }
+  }
+}
+
+TEST(TiDrift, EqualCostIsTheLargestCostEveryMethodReaches) {
+  // The one rule (equal_cost): the least over the methods of their largest force evaluations.
+  for (const char* set : kCostSets) {
+    const CsvFile t = read_csv(results_dir("ti_drift") / (std::string("cost_") + set + ".csv"));
+    std::map<std::string, double> largest;
+    for (const auto& row : t.rows)
+      largest[row[t.column("method")]] = std::max(largest[row[t.column("method")]], std::stod(row[t.column("force_evals")]));
+    double least = largest.begin()->second;
+    for (const auto& [m, e] : largest) least = std::min(least, e);
+    EXPECT_DOUBLE_EQ(summary()["cost"][set]["equal_evals"].get<double>(), least) << set;
+  }
+}
+
+// Every timed run of the cost study reports its spread (max - min) / min beside its minimum: one per row of
+// cost_<set>.csv, and summary.cost.<set>.spread is over all of them. (Structure only: no timing value is asserted.)
+TEST(TiDrift, EveryTimedCostRunReportsItsSpread) {
+  for (const char* set : kCostSets) {
+    const CsvFile t = read_csv(results_dir("ti_drift") / (std::string("cost_") + set + ".csv"));
+    const auto& spread = summary()["cost"][set]["spread"];
+    ASSERT_TRUE(spread.is_object()) << set;
+    EXPECT_EQ(spread["measurements"].get<std::size_t>(), t.rows.size()) << set;
+    EXPECT_GE(spread["max"].get<double>(), largest_spread(t)) << set;
+  }
+}
+
 // ---- bad input: exit 2 before any work, one line naming the key, the value and what is allowed, nothing in --out;
 // a numerical failure: exit 4 (tests/regression/summary.hpp: expect_exit, expect_plan) ----
 
@@ -277,8 +361,19 @@ TEST(TiDrift, DivergingLennardJonesEnsembleIsANumericalFailure) {
   expect_exit("ti_drift", 4, "--set 'lj.h=0.1' --study 'lj'", {"lj.h = 0.1", "diverged", "lj.blowup"});
 }
 TEST(TiDrift, PlanOfThePaperSceneCountsEveryStudy) {
-  expect_plan("ti_drift", {"oscillator", "pendulum", "hh3", "ensemble", "lj", "lj_steps", "work_precision", "symplecticity",
-                        "timing"});
+  expect_plan("ti_drift", {"oscillator", "pendulum", "hh3", "ensemble", "lj", "lj_steps", "cost", "symplecticity",
+                        "kernel_timing"});
+}
+
+// Former study names (Study::aliases) still select the studies, with a note on stderr naming the new ones.
+TEST(TiDrift, FormerStudyNamesAreAcceptedWithANote) {
+  for (const auto& [former, now] : {std::pair<std::string, std::string>{"work_precision", "cost"}, {"timing", "kernel_timing"}}) {
+    const BinaryOutcome r = run_binary("ti_drift", "--quick --plan --study " + former);
+    EXPECT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.out.find(now), std::string::npos) << r.out;
+    EXPECT_NE(r.err.find("study '" + former + "' is now called '" + now + "'"), std::string::npos) << r.err;
+    EXPECT_EQ(run_binary("ti_drift", "--quick --plan --study " + now).err, "");
+  }
 }
 
 // Checkpoints (runner/checkpoint.hpp): the Fig. 4 ensemble and the Lennard-Jones ensemble of Fig. 6, stopped after one

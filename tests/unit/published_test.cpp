@@ -165,3 +165,43 @@ compare = { order = 0.3 }
   EXPECT_EQ((*c)["verdict"], "differs");
   EXPECT_NEAR((*c)["difference"]["T"].get<double>(), -0.4, 1e-12);
 }
+
+TEST(Published, MadeItemsAsThePapersNameThem) {
+  using V = std::vector<std::string>;
+  EXPECT_EQ(made_items("003 Figs 5.2, 5.4"), (V{"003 Fig. 5.2", "003 Fig. 5.4"}));
+  EXPECT_EQ(made_items("003 Figs 5.3, 5.5, 5.6"), (V{"003 Fig. 5.3", "003 Fig. 5.5", "003 Fig. 5.6"}));
+  EXPECT_EQ(made_items("001 Table 1"), V{"001 Table 1"});
+  EXPECT_EQ(made_items("000 Sec 5.2"), V{"000 Sec. 5.2"});
+  EXPECT_EQ(made_items("004 Fig 6: sigma against h (the printed step)"), V{"004 Fig. 6"});
+  EXPECT_EQ(made_items("004 Sect. 1.3: TI symplectic, the simplified TI only volume-preserving"), V{});
+  EXPECT_EQ(made_items("cost: error against wall time and force evaluations"), V{});
+  EXPECT_EQ(made_items("stability set beyond 001 eq. (10)"), V{});
+}
+
+// Every entry belongs to one item of the paper its study makes: given where the study makes several,
+// taken from the study where it makes one; the comparison carries it (the ledger's verdict per figure).
+TEST(Published, EachEntryBelongsToAFigureItsStudyMakes) {
+  const auto makes = [](const std::string& study) {
+    return study == "table1" ? "001 Table 1" : study == "convergence" ? "000 Fig 4" : study == "long_run" ? "001 Fig 2"
+                                                                                                          : "004 Figs 4, 5";
+  };
+  auto entries = read_published(published_file(kEntries));
+  resolve_figures(entries, "published.toml", makes);
+  EXPECT_EQ(entries[0].figure, "001 Table 1");
+  EXPECT_EQ(entries[1].figure, "000 Fig. 4");
+  const auto c = compare_published(entries[1], {{"orders", {{"sv", 4.05}}}}, json::object(), {"convergence"});
+  ASSERT_TRUE(c.has_value());
+  EXPECT_EQ((*c)["figure"], "000 Fig. 4");
+  const auto resolved = [&](const std::string& figure_line) {
+    auto e = read_published(published_file("[a]\nstudy = \"ensemble\"\nvalue = 1\nwhere = \"w\"\nsummary = \"x\"\n" + figure_line));
+    try {
+      resolve_figures(e, "published.toml", makes);
+    } catch (const PublishedError& err) {
+      return std::string(err.what());
+    }
+    return e[0].figure;
+  };
+  EXPECT_EQ(resolved("figure = \"004 Fig. 5\"\n"), "004 Fig. 5");
+  EXPECT_NE(resolved("").find("figure = ?"), std::string::npos) << resolved("");
+  EXPECT_NE(resolved("figure = \"004 Fig. 6\"\n").find("not one the study ensemble makes"), std::string::npos);
+}

@@ -625,6 +625,7 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
         throw PublishedError(published_file.string() + ": [" + p.key + "]: no study '" + p.study + "' (studies: " +
                              join(study_names(spec)) + ")");
     }
+    resolve_figures(published, published_file, [&](const std::string& study) { return find_study(spec, study)->makes; });
   } catch (const PublishedError& e) {
     std::cerr << name << ": published values: " << e.what() << '\n';
     return 2;

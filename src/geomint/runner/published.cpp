@@ -1,6 +1,7 @@
 #include "geomint/runner/published.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
@@ -16,7 +17,8 @@ namespace {
 
 using json = nlohmann::ordered_json;
 
-const std::vector<std::string> kFields = {"study", "value", "where", "summary", "compare", "requires", "expect", "note", "test"};
+const std::vector<std::string> kFields = {"study", "figure", "value", "where", "summary", "compare", "requires", "expect",
+                                          "note", "test"};
 
 [[noreturn]] void fail(const std::filesystem::path& file, const std::string& key, const std::string& what) {
   throw PublishedError(file.string() + ": [" + key + "]: " + what);
@@ -106,6 +108,7 @@ std::vector<Published> read_published(const std::filesystem::path& file) {
     p.key = key;
     p.study = text(*t, "study", file, key, true);
     p.where = text(*t, "where", file, key, true);
+    p.figure = text(*t, "figure", file, key, false);
     p.summary = text(*t, "summary", file, key, true);
     p.note = text(*t, "note", file, key, false);
     p.test = text(*t, "test", file, key, false);
@@ -156,7 +159,9 @@ std::optional<json> compare_published(const Published& e, const json& summary, c
                                       const std::vector<std::string>& studies_ran) {
   if (std::find(studies_ran.begin(), studies_ran.end(), e.study) == studies_ran.end()) return std::nullopt;
   const json* reproduced = json_at(summary, e.summary);
-  json c = {{"study", e.study}, {"where", e.where}, {"published", e.value}, {"reproduced", reproduced ? *reproduced : json(nullptr)}};
+  json c = {{"study", e.study}};
+  if (!e.figure.empty()) c["figure"] = e.figure;
+  c["where"] = e.where, c["published"] = e.value, c["reproduced"] = reproduced ? *reproduced : json(nullptr);
   if (!e.compare.empty()) c["compare"] = {{e.compare, e.tolerance}};
   const auto done = [&](const std::string& verdict, const std::string& reason) {
     c["verdict"] = verdict;
@@ -227,6 +232,52 @@ void apply_published(const std::vector<Published>& entries, json& summary, const
     const std::string verdict = (*c)["verdict"];
     if (verdict != "not comparable" && verdict != "not computed") summary["published"][e.key] = (*c)["published"];
     summary["comparisons"][e.key] = std::move(*c);
+  }
+}
+
+std::vector<std::string> made_items(const std::string& makes) {
+  // "<paper> <kind> <numbers>": kind Fig/Figs/Table/Tables/Sec, optionally with a dot; numbers separated by ", "
+  const std::size_t sp = makes.find(' ');
+  if (sp != 3 || !std::all_of(makes.begin(), makes.begin() + 3, [](char c) { return c >= '0' && c <= '9'; })) return {};
+  const std::string paper = makes.substr(0, 3);
+  std::size_t i = 4, j = i;
+  while (j < makes.size() && std::isalpha(static_cast<unsigned char>(makes[j]))) ++j;
+  const std::string word = makes.substr(i, j - i);
+  const std::string kind = word == "Fig" || word == "Figs" ? "Fig." : word == "Table" || word == "Tables" ? "Table"
+                           : word == "Sec"                  ? "Sec."
+                                                            : "";
+  if (kind.empty()) return {};
+  if (j < makes.size() && makes[j] == '.') ++j;
+  if (j >= makes.size() || makes[j] != ' ') return {};
+  std::vector<std::string> items;
+  std::string number;
+  for (std::size_t k = j + 1; k <= makes.size(); ++k) {
+    const char c = k < makes.size() ? makes[k] : ':';
+    if ((c >= '0' && c <= '9') || c == '.') {
+      number += c;
+      continue;
+    }
+    while (!number.empty() && number.back() == '.') number.pop_back();
+    if (!number.empty()) items.push_back(paper + " " + kind + " " + number);
+    number.clear();
+    if (c != ',' && c != ' ') break;  // the description after the numbers
+  }
+  return items;
+}
+
+void resolve_figures(std::vector<Published>& entries, const std::filesystem::path& file,
+                     const std::function<std::string(const std::string&)>& makes_of) {
+  for (Published& p : entries) {
+    const std::string makes = makes_of(p.study);
+    const auto items = made_items(makes);
+    if (p.figure.empty()) {
+      if (items.size() > 1)
+        fail(file, p.key, "figure = ? (study " + p.study + " makes " + makes + ": say which of them it belongs to)");
+      if (items.size() == 1) p.figure = items[0];
+    } else if (std::find(items.begin(), items.end(), p.figure) == items.end()) {
+      fail(file, p.key, "figure = \"" + p.figure + "\" is not one the study " + p.study + " makes (" +
+                            (items.empty() ? std::string("none of the papers' figures") : makes) + ")");
+    }
   }
 }
 

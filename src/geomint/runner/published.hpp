@@ -6,6 +6,9 @@
 //   study = "table1"                      # the study that reproduces it
 //   value = 1.0e-6                        # or a table keyed by a parameter: { "0.1" = 3.0e-11, ... }
 //   where = "001 Table 1, N = 10"         # seed, figure / table / equation
+//   figure = "001 Table 1"                # the figure, table or section of the paper it belongs to: one
+//                                         # the study makes (Study::makes); may be left out where the study
+//                                         # makes exactly one (or none: a quantity beyond the figures)
 //   summary = "reproduced.p_err_N10"      # the reproduced value in summary.json (dotted path)
 //   compare = { rel = 0.03 }              # or { abs = 1e-13 }, { order = 0.1 } (|difference| <= 0.1);
 //                                         # without compare the value is reported, not compared
@@ -15,7 +18,7 @@
 //   test = "regression.X.Y"               # the ctest test that demonstrates it (required with expect)
 //
 // After the studies ran, every entry of a study that ran is set against the
-// summary: summary.comparisons.<key> holds where, published, reproduced, difference,
+// summary: summary.comparisons.<key> holds figure, where, published, reproduced, difference,
 // compare, verdict and note. The verdict is "reproduced" or "differs" (by the
 // tolerance), "reported" (no compare), "not comparable" (the scene differs
 // from `requires`) or "not computed" (the study ran without computing it, e.g.
@@ -24,6 +27,7 @@
 // entry but those not comparable or not computed. The regression tests require
 // every comparison of the quick scenes to be made.
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -39,6 +43,7 @@ struct PublishedError : std::runtime_error {
 
 struct Published {
   std::string key, study, where, summary, note, test;
+  std::string figure;                // "004 Fig. 5": the item of the paper (paper/papers.toml) it belongs to
   std::string expect = "reproduced";
   nlohmann::ordered_json value;     // a number, or an object of numbers keyed by a parameter
   std::string compare;              // "rel", "abs", "order" or "" (reported only)
@@ -58,6 +63,16 @@ std::optional<nlohmann::ordered_json> compare_published(const Published& entry, 
 // Sets summary.published and summary.comparisons from every entry of a study that ran.
 void apply_published(const std::vector<Published>& entries, nlohmann::ordered_json& summary,
                      const nlohmann::ordered_json& scene, const std::vector<std::string>& studies_ran);
+
+// The items of the papers a study makes (Study::makes), as paper/papers.toml names them:
+// "003 Figs 5.2, 5.4" -> {"003 Fig. 5.2", "003 Fig. 5.4"}; "001 Table 1" -> {"001 Table 1"};
+// "000 Sec 5.2" -> {"000 Sec. 5.2"}; none for a study beyond the papers' items.
+std::vector<std::string> made_items(const std::string& makes);
+
+// Each entry's figure checked against, or taken from, the items its study makes (made_items of
+// `makes_of(study)`); throws PublishedError naming the file and the entry.
+void resolve_figures(std::vector<Published>& entries, const std::filesystem::path& file,
+                     const std::function<std::string(const std::string&)>& makes_of);
 
 // The value at a dotted path ("reproduced.p_err_N10", "initial.0.1"), or nullptr if there is none.
 const nlohmann::ordered_json* json_at(const nlohmann::ordered_json& j, const std::string& dotted);
