@@ -9,7 +9,7 @@
 #   (b) the other trajectories (thin gray), with the mean μ(t) and μ ± σ(t) over all trajectories
 #       (σ: sample standard deviation) from fig4_stats.csv.
 #   (c) σ(t) in log-log, with the least-squares line whose slope is summary values's
-#       reproduced.hh5_sigma_exponent (fitted on t ≥ t_end/10 as in experiments/ti_drift/ensemble.cpp,
+#       reproduced.hh5_sigma_exponent (fitted on t ≥ ensemble.fit.t_min as in experiments/ti_drift/ensemble.cpp,
 #       drawn through the centroid of that part) and a √t guide through the same point.
 # The curves of (a) and (b) are drawn as line segments between consecutive samples of one
 # trajectory (one pass over the file, 'with vectors'), so the file is read once per panel.
@@ -50,8 +50,10 @@ stats STA using "t" nooutput
 TMAX = STATS_max; NST = STATS_records
 stats STA using (column("t") > 0 ? column("t") : NaN) nooutput
 TMIN = STATS_min
-# (c): the centroid of (log10 t, log10 σ) over t ≥ t_end/10, which the least-squares line passes through
-stats STA using (column("t") >= TMAX / 10 && column("sigma") > 0 ? log10(column("t")) : NaN):(column("t") >= TMAX / 10 && column("sigma") > 0 ? log10(column("sigma")) : NaN) nooutput
+# (c): the centroid of (log10 t, log10 σ) over the fit window t ≥ T_FIT (summary ensemble.fit.t_min, the scene's
+# ensemble.fit_from of t_end), which the least-squares line passes through
+eval need_num('T_FIT', summary_real('ensemble.fit.t_min'))
+stats STA using (column("t") >= T_FIT && column("sigma") > 0 ? log10(column("t")) : NaN):(column("t") >= T_FIT && column("sigma") > 0 ? log10(column("sigma")) : NaN) nooutput
 LTB = STATS_mean_x; LSB = STATS_mean_y
 sigfit(t) = 10**(LSB + GAM * (log10(t) - LTB))
 sqrtguide(t) = 10**(LSB + 0.5 * (log10(t) - LTB))
@@ -159,7 +161,7 @@ do for [fmt in FORMATS] {
     set title "(c) standard deviation"
     set key top left Left reverse samplen 2.5 width -4 font ",8"
     plot STA using (column("t") > 0 ? column("t") : NaN):"sigma" with lines ls 406 title "σ(t), all trajectories", \
-         [t=TMAX / 10:TMAX:TMAX * 0.9] '+' using (t):(sigfit(t)) with lines ls 407 title sprintf("fit t ≥ t_{end}/10: t^{%.3f}", GAM), \
+         [t=T_FIT:TMAX:TMAX - T_FIT] '+' using (t):(sigfit(t)) with lines ls 407 title sprintf("fit t ≥ %g: t^{%.3f}", T_FIT, GAM), \
          [t=TMIN:TMAX:TMAX - TMIN] '+' using (t):(sqrtguide(t)) with lines ls 408 title "√t guide"
     unset label
     unset logscale xy

@@ -12,7 +12,7 @@
 #   (b) as the paper's Fig. 6: the error of E = Ĥ + ½h^4α^2K (the modified energy, note §3.4) of the
 #       trajectories of fig6_trajectories.csv (thin gray), with the mean μ(t) and μ ± σ(t) over the
 #       whole ensemble (bold); key: μ and σ at t_end with their standard errors, and the published ones.
-#   (c) σ(t), log-log: the least-squares line of log σ on log t over t ≥ t_end/10 (as lj.cpp fits
+#   (c) σ(t), log-log: the least-squares line of log σ on log t over t ≥ lj.fit.t_min (as lj.cpp fits
 #       it) with the slope reproduced.lj_sigma_exponent, through the centroid of those points; dotted:
 #       t^γ with the published exponent (1/2, a random walk) through the same centroid.
 #   (d) the RMS over the ensemble of H(p_n, q_n) − H(p_0, q_0) and of H(p̂_n, q̂_n) − H(p̂_0, q̂_0),
@@ -87,12 +87,13 @@ if (RT * NT != STATS_records || STATS_min != 1) {
 U6 = 1e-6                                                 # (b) in units of 10^{-6}
 pm(x, se) = sprintf("%s%.3f ± %.3f·10^{−6}", x < 0 ? "−" : "", abs(x) / U6, se / U6)
 
-# ---- (c): the centroid of the fitted points (t ≥ t_end/10, σ > 0), and a check of the fit ----
-infit(t, s) = (t >= T_END / 10 && s > 0)
+# ---- (c): the centroid of the fitted points (t ≥ T_FIT: summary lj.fit.t_min, σ > 0), and a check of the fit ----
+eval need_num('T_FIT', summary_real('lj.fit.t_min'))
+infit(t, s) = (t >= T_FIT && s > 0)
 stats STATF using (infit(column("t"), column("sigma")) ? log(column("t")) : NaN):(infit(column("t"), column("sigma")) ? log(column("sigma")) : NaN) nooutput
 LTBAR = STATS_mean_x; LSBAR = STATS_mean_y; TFIT0 = exp(STATS_min_x); TFIT1 = exp(STATS_max_x)
 if (abs(STATS_slope - GAMMA) > 1e-6 * abs(GAMMA)) {
-    exit error sprintf("fig6_stats.csv: slope of log σ over t ≥ t_end/10 is %.9g, summary.json lj_sigma_exponent %.9g", STATS_slope, GAMMA)
+    exit error sprintf("fig6_stats.csv: slope of log σ over t ≥ %g is %.9g, summary.json lj_sigma_exponent %.9g", T_FIT, STATS_slope, GAMMA)
 }
 sigfit(t, g) = exp(LSBAR + g * (log(t) - LTBAR))
 stats STATF using (column("t") > 0 ? column("t") : NaN) nooutput

@@ -94,7 +94,7 @@ Stats write_stats(Context& ctx, const Run& run, json& reproduced) {
   }
   ctx.write("fig4_stats.csv", f4s);
   reproduced["hh5_mu_final"] = mus.back(), reproduced["hh5_sigma_final"] = sigmas.back();
-  reproduced["hh5_sigma_exponent"] = power_law_exponent(ts, sigmas, t_end / 10);  // past the bounded part
+  reproduced["hh5_sigma_exponent"] = power_law_exponent(ts, sigmas, fit_t_min(ctx.scene, "ensemble", t_end));  // past the bounded part
   return {ts, mus, sigmas};
 }
 
@@ -145,6 +145,7 @@ json ensemble_summary(const Context& ctx, const HH& hhk, const Run& run, const S
   const auto& series = run.series;
   const std::size_t M = run.M, ns = run.ns;
   const double t_end = run.t_end;
+  const double t_fit = fit_t_min(s, "ensemble", t_end);
   const std::int64_t n4 = run.n4;
   const auto time_of = [&](std::size_t k) { return run.time_of(k); };
   json ensemble = {{"p1", hh_start(hhk, s.real("hh3.q2"), s.real("hh3.p2"), s.real("hh.H0")).p[0]},  // unperturbed
@@ -161,22 +162,23 @@ json ensemble_summary(const Context& ctx, const HH& hhk, const Run& run, const S
       tk.push_back(time_of(k)), sk.push_back(last.sd);
     }
     ensemble["without_outliers"] = {{"mu_final", last.mean}, {"sigma_final", last.sd},
-                                    {"sigma_exponent", power_law_exponent(tk, sk, t_end / 10)}};
+                                    {"sigma_exponent", power_law_exponent(tk, sk, t_fit)}};
   }
-  // The mean: at the first output time after the start, and over [t_end/10, t_end].
+  // The mean: at the first output time after the start, and over the fit window [t_fit, t_end].
   std::vector<double> mu_late, sigma2(sigmas.size());
   for (std::size_t k = 0; k < ns; ++k) {
-    if (ts[k] >= t_end / 10) mu_late.push_back(mus[k]);
+    if (ts[k] >= t_fit) mu_late.push_back(mus[k]);
     sigma2[k] = sigmas[k] * sigmas[k];
   }
   ensemble["mu_first"] = {{"t", ts.at(1)}, {"mu", mus.at(1)}};
   ensemble["mu_late"] = spread_of(mu_late);
   ensemble["mu_final_stderr"] = standard_error_of_mean(sigmas.back(), static_cast<double>(M));
   ensemble["sigma_rel_stderr"] = standard_error_of_deviation(1.0, static_cast<double>(M));
-  ensemble["sigma_exponent_from_hundredth"] = power_law_exponent(ts, sigmas, t_end / 100);
-  // sigma^2 = c + D t of a random walk: D at t_end, and the slope of sigma^2 over [t_end/10, t_end].
+  ensemble["sigma_exponent_from_hundredth"] = power_law_exponent(ts, sigmas, t_fit / 10);  // a window ten times longer
+  // sigma^2 = c + D t of a random walk: D at t_end, and the slope of sigma^2 over the fit window.
   ensemble["sigma2_over_t"] = sigma2.back() / ts.back();
-  ensemble["sigma2_slope"] = slope_from(ts, sigma2, t_end / 10);
+  ensemble["sigma2_slope"] = slope_from(ts, sigma2, t_fit);
+  ensemble["fit"] = {{"t_min", t_fit}, {"t_max", t_end}};
   // The same from the printed sigma, at the printed time (published.toml: hh5_sigma_final).
   const Published& printed = ctx.published("hh5_sigma_final");
   const double printed_sigma = printed.value.get<double>(), printed_t = printed.requires_.at("t_end").get<double>();
@@ -249,6 +251,9 @@ void keys(Schema& s) {
             "Fig. 5 episodes: a sample belongs to an episode where its running slope differs from their median by more "
             "than this many robust standard deviations (1.4826 MAD) of the running slopes")
       .real("ensemble.episode_min_length", positive(), "Fig. 5 episodes: the shortest episode (time units)")
+      .real("ensemble.fit_from", {.gt = 0.0, .ge = {}, .lt = 1.0, .le = {}},
+            "Fig. 4: sigma ~ t^gamma, the late mean and the slope of sigma^2 are fitted over [fit_from t_end, t_end] "
+            "(summary ensemble.fit; 004: past the bounded part, 0.1)")
       .real("ensemble.outlier", positive(), "trajectories whose max |error| exceeds this go to Fig. 4's upper panel (004: 2e-6)");
 }
 

@@ -193,7 +193,7 @@ Stats write_stats(Context& ctx, const Ensemble& en, json& reproduced) {
   const double sigma_se = standard_error_of_deviation(sigma_f, static_cast<double>(Ml));
   reproduced["lj_mu_final_stderr"] = mu_se;
   reproduced["lj_sigma_final_stderr"] = sigma_se;
-  reproduced["lj_sigma_exponent"] = power_law_exponent(ts, sigmas, s.real("lj.t_end") / 10);
+  reproduced["lj_sigma_exponent"] = power_law_exponent(ts, sigmas, fit_t_min(s, "lj", s.real("lj.t_end")));
   reproduced["lj_H_err_max"] = H_max;
   return {ts, H_rms, Hhat_rms, Hhat_change, mu_f, sigma_f, mu_se, sigma_se};
 }
@@ -240,7 +240,8 @@ void put_summary(Context& ctx, const LJ& lj, const Scan& scan, const Ensemble& e
       // H(p^_n, q^_n) - H(p^_0, q^_0): its root mean square at t_end, against sigma of E, and its growth exponent
       {"Hhat_change_rms_final", Hhat_change.back()},
       {"Hhat_change_over_sigma_final", Hhat_change.back() / sigma_f},
-      {"Hhat_change_exponent", power_law_exponent(ts, Hhat_change, s.real("lj.t_end") / 10)},
+      {"Hhat_change_exponent", power_law_exponent(ts, Hhat_change, fit_t_min(s, "lj", s.real("lj.t_end")))},
+      {"fit", {{"t_min", fit_t_min(s, "lj", s.real("lj.t_end"))}, {"t_max", s.real("lj.t_end")}}},
       // the published mean and standard deviation (published.toml) in standard errors of ours, and ours from zero
       {"standard_scores", {{"mu_from_printed", std::abs(mu_f - ctx.published_value("lj_mu_final")) / mu_se},
                            {"mu_from_zero", std::abs(mu_f) / mu_se},
@@ -305,6 +306,8 @@ void keys(Schema& s) {
       .real("lj.scan_t", positive(), "time span of the step-size scan")
       .integer("lj.scan_size", at_least(1), "trajectories of the scan")
       .real("lj.t_end", positive(), "Fig. 6 time span (004: 2e4)")
+      .real("lj.fit_from", {.gt = 0.0, .ge = {}, .lt = 1.0, .le = {}},
+            "Fig. 6: sigma ~ t^gamma and the growth of H(p^, q^) are fitted over [fit_from t_end, t_end] (summary lj.fit)")
       .integer("lj.size", at_least(2), "Fig. 6 trajectories (004: 400)")
       .real("lj.blowup", positive(), "|H - H0| above this marks a scan run diverged");
 }

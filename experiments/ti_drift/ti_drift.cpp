@@ -41,6 +41,10 @@ std::int64_t evals_per_step(const std::string& method) {
   return n;
 }
 
+double fit_t_min(const Scene& s, const std::string& section, double t_end) {
+  return s.real(section + ".fit_from") * t_end;
+}
+
 Vec<2> lj_grid(int k) { return Vec<2>(1 + k % 3, 1 + k / 3); }  // (i, j), i, j in {1, 2, 3}
 
 Z18 lj_start_of(const Scene& s, std::size_t i) {

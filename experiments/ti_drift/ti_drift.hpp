@@ -52,6 +52,8 @@ inline const HarmonicOscillator kOscillator{1.0, 1.0};
 // Force evaluations in one step of a method's kernel (a gradient, a force or a
 // Hessian-vector product counts one: systems/counting.hpp).
 std::int64_t evals_per_step(const std::string& method);
+// The start of a figure's fit window (power laws and drifts over [t_min, t_end]): <section>.fit_from of t_end.
+double fit_t_min(const Scene& s, const std::string& section, double t_end);
 
 // Fig. 6: the Lennard-Jones cluster.
 using LJ = LennardJones<9>;

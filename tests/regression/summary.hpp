@@ -33,6 +33,18 @@ inline const nlohmann::json& summary_of(const std::string& experiment) {
   return it->second;
 }
 
+// The resolved scene of an experiment's quick run (run.json "scene").
+inline const nlohmann::json& scene_of(const std::string& experiment) {
+  static std::map<std::string, nlohmann::json> cache;
+  auto it = cache.find(experiment);
+  if (it == cache.end()) {
+    std::ifstream in(results_dir(experiment) / "run.json");
+    if (!in) throw std::runtime_error("no run.json in " + results_dir(experiment).string() + " (run the quick_run fixture)");
+    it = cache.emplace(experiment, nlohmann::json::parse(in)["scene"]).first;
+  }
+  return it->second;
+}
+
 // A CSV file of a run: its header and its rows, as text (no quoted fields: the runs write none).
 struct CsvFile {
   std::vector<std::string> names;
