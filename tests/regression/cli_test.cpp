@@ -11,9 +11,12 @@
 #include <sstream>
 #include <string>
 #include <system_error>
+#include <tuple>
 #include <vector>
 
 #include <nlohmann/json.hpp>
+
+#include "summary.hpp"
 
 namespace fs = std::filesystem;
 
@@ -275,4 +278,20 @@ TEST(Cli, RowlandsEnergyErrorAloneComputesNoReference) {
   EXPECT_FALSE(summary.contains("reproduced") && summary["reproduced"].contains("reference_self_check"));
   EXPECT_EQ(summary["comparisons"]["sv_phase"]["verdict"], "not computed");  // published, but not asked for
   EXPECT_EQ(summary["comparisons"]["sv_energy"]["verdict"], "reproduced");
+}
+
+// A former study name (Study::aliases) still selects the study, with a note on stderr naming the new
+// one; the new name gets no note.
+TEST(Cli, FormerStudyNamesAreAcceptedWithANote) {
+  const std::vector<std::tuple<std::string, std::string, std::string>> renamed = {
+      {"euler_compensation", "timing", "cost"}, {"rowlands_convergence", "timing", "cost"},
+      {"energy_map", "timing", "kernel_timing"}, {"lobatto_table", "timing", "cost"},
+      {"ti_drift", "work_precision", "cost"},   {"ti_drift", "timing", "kernel_timing"}};
+  for (const auto& [experiment, former, now] : renamed) {
+    const BinaryOutcome r = run_binary(experiment, "--quick --plan --study " + former);
+    EXPECT_EQ(r.code, 0) << experiment << ": " << r.err;
+    EXPECT_NE(r.out.find(now), std::string::npos) << experiment << ": " << r.out;
+    EXPECT_NE(r.err.find("study '" + former + "' is now called '" + now + "'"), std::string::npos) << experiment << ": " << r.err;
+    EXPECT_EQ(run_binary(experiment, "--quick --plan --study " + now).err, "") << experiment;
+  }
 }

@@ -303,15 +303,6 @@ TEST(EnergyMap, EveryTimedMeasurementReportsItsSpread) {
   }
 }
 
-// A former study name (Study::aliases) still selects the study, with a note on stderr naming the new one.
-TEST(EnergyMap, FormerStudyNameTimingIsAcceptedWithANote) {
-  const BinaryOutcome r = run_binary("energy_map", "--quick --plan --study timing");
-  EXPECT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.out.find("kernel_timing"), std::string::npos) << r.out;
-  EXPECT_NE(r.err.find("study 'timing' is now called 'kernel_timing'"), std::string::npos) << r.err;
-  EXPECT_EQ(run_binary("energy_map", "--quick --plan --study kernel_timing").err, "");
-}
-
 // ---- Bad input: refused before any work (exit 2, one line naming the key or file, --out not created) ----
 
 namespace {

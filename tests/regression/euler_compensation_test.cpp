@@ -217,11 +217,3 @@ TEST(EulerCompensation, PlanOfThePaperSceneHasFiniteStepCounts) {
   expect_plan("euler_compensation", {"decay", "gompertz", "oscillator", "convergence", "cost"});
 }
 
-// A former study name (Study::aliases) still selects the study, with a note on stderr naming the new one.
-TEST(EulerCompensation, FormerStudyNameTimingIsAcceptedWithANote) {
-  const BinaryOutcome r = run_binary("euler_compensation", "--quick --plan --study timing");
-  EXPECT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.out.find("cost"), std::string::npos) << r.out;
-  EXPECT_NE(r.err.find("study 'timing' is now called 'cost'"), std::string::npos) << r.err;
-  EXPECT_EQ(run_binary("euler_compensation", "--quick --plan --study cost").err, "");
-}

@@ -226,15 +226,6 @@ TEST(LobattoTable, PlanOfThePaperSceneHasFiniteStepCounts) {
   expect_plan("lobatto_table", {"table1", "figure1", "long_run", "stability", "nonlinear", "cost", "long_run_cost"});
 }
 
-// A former study name (Study::aliases) still selects the study, with a note on stderr naming the new one.
-TEST(LobattoTable, FormerStudyNameTimingIsAcceptedWithANote) {
-  const BinaryOutcome r = run_binary("lobatto_table", "--quick --plan --study timing");
-  EXPECT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.out.find("cost"), std::string::npos) << r.out;
-  EXPECT_NE(r.err.find("study 'timing' is now called 'cost'"), std::string::npos) << r.err;
-  EXPECT_EQ(run_binary("lobatto_table", "--quick --plan --study cost").err, "");
-}
-
 // Checkpoints (runner/checkpoint.hpp): the long runs of the cost study, stopped after one round and resumed (on 1
 // thread), give the files of a run straight through (the sets' wall times aside: every other cell of
 // cost_long_run_*.csv, and summary.json but its timing and cost).

@@ -210,11 +210,3 @@ TEST(RowlandsConvergence, PlanOfThePaperSceneHasFiniteStepCounts) {
   expect_plan("rowlands_convergence", {"convergence", "cost"});
 }
 
-// A former study name (Study::aliases) still selects the study, with a note on stderr naming the new one.
-TEST(RowlandsConvergence, FormerStudyNameTimingIsAcceptedWithANote) {
-  const BinaryOutcome r = run_binary("rowlands_convergence", "--quick --plan --study timing");
-  EXPECT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.out.find("cost"), std::string::npos) << r.out;
-  EXPECT_NE(r.err.find("study 'timing' is now called 'cost'"), std::string::npos) << r.err;
-  EXPECT_EQ(run_binary("rowlands_convergence", "--quick --plan --study cost").err, "");
-}

@@ -22,28 +22,23 @@ inline std::filesystem::path results_dir(const std::string& experiment) {
   return std::filesystem::path(GEOMINT_TEST_RESULTS) / experiment;
 }
 
-inline const nlohmann::json& summary_of(const std::string& experiment) {
+// A JSON file of an experiment's quick run, or a member of it, read once.
+inline const nlohmann::json& json_of(const std::string& experiment, const std::string& file, const std::string& member = {}) {
   static std::map<std::string, nlohmann::json> cache;
-  auto it = cache.find(experiment);
+  const std::string key = experiment + "/" + file + "#" + member;
+  auto it = cache.find(key);
   if (it == cache.end()) {
-    std::ifstream in(results_dir(experiment) / "summary.json");
-    if (!in) throw std::runtime_error("no summary.json in " + results_dir(experiment).string() + " (run the quick_run fixture)");
-    it = cache.emplace(experiment, nlohmann::json::parse(in)).first;
+    std::ifstream in(results_dir(experiment) / file);
+    if (!in) throw std::runtime_error("no " + file + " in " + results_dir(experiment).string() + " (run the quick_run fixture)");
+    const nlohmann::json j = nlohmann::json::parse(in);
+    it = cache.emplace(key, member.empty() ? j : j.at(member)).first;
   }
   return it->second;
 }
 
+inline const nlohmann::json& summary_of(const std::string& experiment) { return json_of(experiment, "summary.json"); }
 // The resolved scene of an experiment's quick run (run.json "scene").
-inline const nlohmann::json& scene_of(const std::string& experiment) {
-  static std::map<std::string, nlohmann::json> cache;
-  auto it = cache.find(experiment);
-  if (it == cache.end()) {
-    std::ifstream in(results_dir(experiment) / "run.json");
-    if (!in) throw std::runtime_error("no run.json in " + results_dir(experiment).string() + " (run the quick_run fixture)");
-    it = cache.emplace(experiment, nlohmann::json::parse(in)["scene"]).first;
-  }
-  return it->second;
-}
+inline const nlohmann::json& scene_of(const std::string& experiment) { return json_of(experiment, "run.json", "scene"); }
 
 // A CSV file of a run: its header and its rows, as text (no quoted fields: the runs write none).
 struct CsvFile {

@@ -387,17 +387,6 @@ TEST(TiDrift, PlanOfThePaperSceneCountsEveryStudy) {
                         "kernel_timing"});
 }
 
-// Former study names (Study::aliases) still select the studies, with a note on stderr naming the new ones.
-TEST(TiDrift, FormerStudyNamesAreAcceptedWithANote) {
-  for (const auto& [former, now] : {std::pair<std::string, std::string>{"work_precision", "cost"}, {"timing", "kernel_timing"}}) {
-    const BinaryOutcome r = run_binary("ti_drift", "--quick --plan --study " + former);
-    EXPECT_EQ(r.code, 0) << r.err;
-    EXPECT_NE(r.out.find(now), std::string::npos) << r.out;
-    EXPECT_NE(r.err.find("study '" + former + "' is now called '" + now + "'"), std::string::npos) << r.err;
-    EXPECT_EQ(run_binary("ti_drift", "--quick --plan --study " + now).err, "");
-  }
-}
-
 // Checkpoints (runner/checkpoint.hpp): the Fig. 4 ensemble and the Lennard-Jones ensemble of Fig. 6, stopped after one
 // round of trajectories (a batch of lanes) and resumed (on 1 thread), give the files of a run straight through.
 TEST(TiDrift, ResumedEnsembleGivesTheSameFiles) {
