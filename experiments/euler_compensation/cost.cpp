@@ -79,7 +79,7 @@ void run_cost(Context& ctx) {
 StudyPlan plan_cost(const Scene& s) {
   const double methods = static_cast<double>(s.texts("timing.methods").size());
   const double repeats = static_cast<double>(s.integer("timing.repeats"));
-  const double counted = methods * steps_to_t_end(s, "timing.h");
+  const double counted = methods * steps_to_each(s.real("convergence.t_end"), s.reals("timing.h"));
   const double steps = counted * (1 + repeats) + methods * repeats * static_cast<double>(s.integer("timing.steps"));
   return {steps, counted * kEvalsPerStep, methods * static_cast<double>(s.reals("timing.h").size()) * 8 * kCellBytes,
           kOscillatorNs, std::string("timed runs of < 10 ms are repeated to 10 ms (not counted); ") + kOscillatorNsNote};

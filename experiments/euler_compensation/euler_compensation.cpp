@@ -91,10 +91,5 @@ void check_steps(const Scene& s, const char* key, const char* methods_key) {
   }
 }
 
-double steps_to_t_end(const Scene& s, const char* key) {
-  double steps = 0;
-  for (double h : s.reals(key)) steps += s.real("convergence.t_end") / h;
-  return steps;
-}
 
 }  // namespace geomint::euler_compensation

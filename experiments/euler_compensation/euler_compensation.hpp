@@ -66,7 +66,4 @@ constexpr double kOscillatorNs = 272;  // compensated symplectic Euler (82), the
 constexpr double kEvalsPerStep = 4;    // the most of the paper scene's methods (rk4)
 constexpr const char* kOscillatorNsNote = "ns per step: symplectic Euler with (82) (paper-scene summary cost.ns_per_step)";
 
-// The steps of the runs to convergence.t_end at the steps of `key`, added up.
-double steps_to_t_end(const Scene& s, const char* key);
-
 }  // namespace geomint::euler_compensation

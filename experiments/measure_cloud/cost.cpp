@@ -67,7 +67,7 @@ std::string phi_label(int ell, Discretization d) { return "phi" + std::to_string
 
 // Phi^(ell) of d at the step h to T = energies.t_end, timed.
 TimedRun timed_phi(const Scene& s, const PhiStudy& p, Discretization d, int ell, double h) {
-  const std::int64_t n = steps_in(s.real("energies.t_end"), h);  // n h <= T: the error is taken there
+  const std::int64_t n = steps_within(s.real("energies.t_end"), h);  // n h <= T: the error is taken there
   Trajectory tr;
   const RunTime rt = time_runs(static_cast<int>(s.integer("timing.repeats")), [&] {
     tr = run_phi(d, p.sys, h, ell, p.z0, n);
@@ -78,7 +78,7 @@ TimedRun timed_phi(const Scene& s, const PhiStudy& p, Discretization d, int ell,
 
 // The classical RK4 on (3.8) at the step h to T = energies.t_end, timed; its evaluations of (3.8) counted.
 TimedRun timed_rk4(const Scene& s, const PhiStudy& p, double h) {
-  const std::int64_t n = steps_in(s.real("energies.t_end"), h);
+  const std::int64_t n = steps_within(s.real("energies.t_end"), h);
   Trajectory tr;
   std::int64_t evals = 0;
   const RunTime rt = time_runs(static_cast<int>(s.integer("timing.repeats")), [&] {
@@ -140,7 +140,7 @@ json report_discretizations(Context& ctx, const PhiStudy& p, const WorkPrecision
   const auto hs = s.reals("order_study.h");
   json h_at_T = json::array();
   for (double hh : hs)
-    if (std::abs(static_cast<double>(steps_in(T, hh)) * hh / T - 1) < 1e-9) h_at_T.push_back(hh);
+    if (std::abs(static_cast<double>(steps_within(T, hh)) * hh / T - 1) < 1e-9) h_at_T.push_back(hh);
   json ns_per_step, newton_at_h, err_at_T, order;
   for (Discretization d : p.methods) {
     const char* name = discretization_name(d);
@@ -223,8 +223,8 @@ StudyPlan plan_cost(const Scene& s) {
   const double T = s.real("energies.t_end"), runs = static_cast<double>(s.integer("timing.repeats")) + 1;
   const double M = static_cast<double>(s.texts("methods").size());
   double steps = 0, kept = 0;
-  for (double h : s.reals("order_study.h")) steps += (M + 1) * runs * steps_of(T, h), kept += 2 * (steps_of(T, h) + 1);
-  for (double h : s.reals("cost.rk4_h")) steps += runs * steps_of(T, h), kept += steps_of(T, h) + 1;
+  for (double h : s.reals("order_study.h")) steps += (M + 1) * runs * step_count_within(T, h), kept += 2 * (step_count_within(T, h) + 1);
+  for (double h : s.reals("cost.rk4_h")) steps += runs * step_count_within(T, h), kept += step_count_within(T, h) + 1;
   return make_plan(steps, kept * kPointBytes, 119000, "steps: a lower bound (timed runs last at least 10 ms each)");
 }
 

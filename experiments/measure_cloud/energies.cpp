@@ -23,7 +23,7 @@ void run_energies(Context& ctx) {
   const auto [sys, z0, rtol, atol, h, methods] = phi_study(ctx);
   const std::string pot = potential_name(sys.potential);
   ctx.progress("Figs 5.3, 5.5, 5.6: energies");
-  const std::int64_t n = steps_in(s.real("energies.t_end"), h);
+  const std::int64_t n = steps_within(s.real("energies.t_end"), h);
   const auto ref = reference_samples(sys, z0, h, n, rtol, atol);
   const auto ref_tight =
       reference_samples(sys, z0, h, n, reference_check_factor * rtol, reference_check_factor * atol);
@@ -81,7 +81,7 @@ void run_energies(Context& ctx) {
 }
 
 StudyPlan plan_energies(const Scene& s) {
-  const double n = steps_of(s.real("energies.t_end"), s.real("h")), M = static_cast<double>(s.texts("methods").size());
+  const double n = step_count_within(s.real("energies.t_end"), s.real("h")), M = static_cast<double>(s.texts("methods").size());
   const double runs = M * (max_modified_order / 2 + 1) + 2;
   return make_plan(runs * n, runs * (n + 1) * kPointBytes, 7500);
 }

@@ -17,7 +17,7 @@ void run_long_run(Context& ctx) {
   const Scene& s = ctx.scene;
   const auto [sys, z0, rtol, atol, h, methods] = phi_study(ctx);
   ctx.progress("long run");
-  const std::int64_t n = steps_in(s.real("long_run.t_end"), h);
+  const std::int64_t n = steps_within(s.real("long_run.t_end"), h);
   const std::size_t M = methods.size();
   const auto runs = distributed_map(2 * M, [&](std::size_t k) { return run_phi(methods[k % M], sys, h, k < M ? 0 : 4, z0, n); });
   std::vector<std::string> cols{"t"};
@@ -45,7 +45,7 @@ void run_long_run(Context& ctx) {
 }
 
 StudyPlan plan_long_run(const Scene& s) {
-  const double n = steps_of(s.real("long_run.t_end"), s.real("h")), M = static_cast<double>(s.texts("methods").size());
+  const double n = step_count_within(s.real("long_run.t_end"), s.real("h")), M = static_cast<double>(s.texts("methods").size());
   return make_plan(2 * M * n, 2 * M * (n + 1) * kPointBytes, 1800);
 }
 

@@ -86,8 +86,6 @@ void check_first_step(const Scene& s, const char* key, const std::vector<double>
     }
 }
 
-std::int64_t steps_in(double t, double h) { return std::llround(std::floor(t / h + 1e-9)); }
-
 Z as_state(const Point4& a) { return from_array(a); }
 
 std::vector<Point4> reference_samples(const NonholonomicParticle& sys, const Point4& z0, double dt, std::int64_t n,
@@ -242,8 +240,6 @@ PhiStudy phi_study(Context& ctx) {
   put(ctx, "reproduced", "h_pow_ell_plus_2", powers);
   return {sys, z0, rtol, atol, h, scene_methods(s)};
 }
-
-double steps_of(double t, double h) { return std::floor(t / h + 1e-9); }
 
 StudyPlan make_plan(double steps, double memory, double ns_per_step, const std::string& extra) {
   return {steps, kNewtonPerStep * steps, memory, ns_per_step, extra.empty() ? kPlanNote : extra + "; " + kPlanNote};

@@ -13,6 +13,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "geomint/core/integrate.hpp"  // steps_within, step_count_within
 #include "geomint/core/state.hpp"
 #include "geomint/geometry/clouds.hpp"
 #include "geomint/geometry/hull_volume.hpp"
@@ -61,9 +62,6 @@ void check_at_least_one_step(const Scene& s, const char* key, const std::vector<
 // The conformal step's Newton iteration converges at each step of `key` from the centre cloud.center (one step of each
 // scene method, E = H(z0)): where it does not, every run of the study would fail in its first step.
 void check_first_step(const Scene& s, const char* key, const std::vector<double>& hs);
-
-// Number of steps of length h in [0, t].
-std::int64_t steps_in(double t, double h);
 
 Z as_state(const Point4& a);
 
@@ -169,8 +167,6 @@ PhiStudy phi_study(Context& ctx);
 // force evaluations: Newton iterations, 3.86 per step (timing.newton_iterations_mean there). The odeint
 // reference samples count as steps.
 constexpr double kPointBytes = 4 * 8;
-
-double steps_of(double t, double h);  // steps_in in double, before any cast
 
 StudyPlan make_plan(double steps, double memory, double ns_per_step, const std::string& extra = {});
 

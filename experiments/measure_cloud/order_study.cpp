@@ -96,7 +96,7 @@ void run_order_study(Context& ctx) {
     const bool probe = T.e == es.size();
     const double hh = probe ? h_probe : hs[T.i];
     const int ell = probe ? max_modified_order : es[T.e];
-    const std::int64_t n = steps_in(s.real("order_study.t_end"), hh);
+    const std::int64_t n = steps_within(s.real("order_study.t_end"), hh);
     const CloudRun run = cloud_phi(methods[T.k], sys, hh, ell, cloud, n);
     const ModifiedSeries ms(methods[T.k], sys, hh);
     std::vector<double> v;
@@ -105,7 +105,7 @@ void run_order_study(Context& ctx) {
       facets = cloud_hull(snap, facets);
       v.push_back(hull_volumes(snap, facets, ms, {ell})[0]);
     }
-    return Result{relative_peak_to_peak(v, static_cast<std::size_t>(steps_in(s.real("ptp_window"), hh)) + 1), run.iterations,
+    return Result{relative_peak_to_peak(v, static_cast<std::size_t>(steps_within(s.real("ptp_window"), hh)) + 1), run.iterations,
                   run.steps};
   });
   Csv csv({"method", "ell", "h", "ptp"});
@@ -133,9 +133,9 @@ StudyPlan plan_order_study(const Scene& s) {
   const auto hs = s.reals("order_study.h");
   const double T = s.real("order_study.t_end"), M = static_cast<double>(s.texts("methods").size());
   const double ells_n = static_cast<double>(s.reals("order_study.ells").size()), h_min = *std::min_element(hs.begin(), hs.end());
-  double steps = M * 120 * steps_of(T, h_min / 2);  // the round-off probes
-  for (double h : hs) steps += M * ells_n * 120 * steps_of(T, h);
-  StudyPlan p = make_plan(steps, 2 * (steps_of(T, h_min / 2) + 1) * 121 * kPointBytes, 8100, "the snapshots of two runs at once");
+  double steps = M * 120 * step_count_within(T, h_min / 2);  // the round-off probes
+  for (double h : hs) steps += M * ells_n * 120 * step_count_within(T, h);
+  StudyPlan p = make_plan(steps, 2 * (step_count_within(T, h_min / 2) + 1) * 121 * kPointBytes, 8100, "the snapshots of two runs at once");
   p.tasks = M * (ells_n * static_cast<double>(hs.size()) + 1);  // (a cloud run each)
   return p;
 }

@@ -54,7 +54,7 @@ void run_symplecticity(Context& ctx, const NonholonomicParticle& sys, const Poin
   const double h = s.real("h");
   const auto methods = scene_methods(s);
   put_run_facts(ctx, methods);
-  const std::int64_t n = steps_in(t_end, h);
+  const std::int64_t n = steps_within(t_end, h);
   ctx.progress("Fig. 5.1: symplecticity defect of the flow");
   const Vec<4> z0(z0a[0], z0a[1], z0a[2], z0a[3]);
   const auto flows = parallel_map(2, [&](std::size_t k) {
@@ -157,7 +157,7 @@ void run_shape(Context& ctx) {
 
 StudyPlan plan_shape(const Scene& s) {
   const double snaps = static_cast<double>(s.integer("shape.snapshots")), points = static_cast<double>(s.integer("shape.points"));
-  const double n = steps_of(snaps * s.real("shape.snapshot_dt"), s.real("h")), M = static_cast<double>(s.texts("methods").size());
+  const double n = step_count_within(snaps * s.real("shape.snapshot_dt"), s.real("h")), M = static_cast<double>(s.texts("methods").size());
   return make_plan(M * n + points * snaps + 2 * n, points * (snaps + 1) * kPointBytes * 2 + (2 + M) * (n + 1) * 20 * 8, 15700);
 }
 

@@ -70,8 +70,8 @@ void cloud_volumes(Context& ctx, const PhiStudy& p, const std::vector<Point4>& c
   const Scene& s = ctx.scene;
   std::vector<int> all_measures;
   for (int m = 0; m <= max_modified_order; m += 2) all_measures.push_back(m);
-  const std::int64_t n = steps_in(s.real("t_end"), p.h);
-  const std::size_t window = static_cast<std::size_t>(steps_in(s.real("ptp_window"), p.h)) + 1;
+  const std::int64_t n = steps_within(s.real("t_end"), p.h);
+  const std::size_t window = static_cast<std::size_t>(steps_within(s.real("ptp_window"), p.h)) + 1;
   const auto put_here = [&](const std::string& key, json value) {
     if (nest.empty()) put(ctx, "reproduced", key, std::move(value));
     else ctx.summary["reproduced"][nest][key] = std::move(value);
@@ -149,7 +149,7 @@ void run_volumes(Context& ctx) {
       hull_integral(cloud, facets0, cloud.front(), [](const Point4&) { return 1.0; }) / std::pow(r, 4));
   put(ctx, "reproduced", "hull_volume_exact_over_r4", six_hundred_cell_volume(1.0));
   const auto small = cloud_around(p.z0, six_hundred_cell_vertices(), artefact_radius_fraction * r);
-  const std::vector<double> small_volumes = reference_volumes(ctx, "volumes.reference_small", p, small, steps_in(s.real("ptp_window"), p.h));
+  const std::vector<double> small_volumes = reference_volumes(ctx, "volumes.reference_small", p, small, steps_within(s.real("ptp_window"), p.h));
   const double ptp_small = relative_peak_to_peak(small_volumes, small_volumes.size());
   put(ctx, "reproduced", "artefact_radius_fraction", artefact_radius_fraction);
   put(ctx, "reproduced", "ptp_reference_mu_small_radius", ptp_small);
@@ -160,7 +160,7 @@ void run_volumes(Context& ctx) {
 }
 
 StudyPlan plan_volumes(const Scene& s) {
-  const double n = steps_of(s.real("t_end"), s.real("h")), M = static_cast<double>(s.texts("methods").size());
+  const double n = step_count_within(s.real("t_end"), s.real("h")), M = static_cast<double>(s.texts("methods").size());
   const double runs = M * static_cast<double>(s.reals("cloud.ells").size()) + 1;  // + the reference
   const double points = 2 * 121.0;  // the full cloud and the authors' (at most)
   return make_plan(runs * points * n, runs * (n + 1) * 121 * kPointBytes, 9500);

@@ -283,7 +283,7 @@ void run_convergence(Context& ctx) {
 
 StudyPlan plan_convergence(const Scene& s) {
   const double runs = static_cast<double>(s.real_rows("initial").size() * s.texts("methods").size());
-  const double steps = runs * steps_per_run(s);
+  const double steps = runs * steps_to_each(s.real("t_end"), s.reals("h"));
   const double rows = static_cast<double>(s.real_rows("initial").size() * s.reals("h").size());
   return {steps, steps * kEvalsPerStep, rows * (3 + 4 * static_cast<double>(s.texts("methods").size())) * kCellBytes,
           kNsPerStep, "odeint reference steps not counted; ns per step: the processed Rowlands method (paper-scene summary timing)"};

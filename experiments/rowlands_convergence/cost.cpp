@@ -76,7 +76,7 @@ void run_cost(Context& ctx) {
 StudyPlan plan_cost(const Scene& s) {
   const double methods = static_cast<double>(s.texts("timing.methods").size());
   const double repeats = static_cast<double>(s.integer("timing.repeats"));
-  const double counted = methods * steps_per_run(s);
+  const double counted = methods * steps_to_each(s.real("t_end"), s.reals("h"));
   return {counted * (1 + repeats), counted * kEvalsPerStep, methods * static_cast<double>(s.reals("h").size()) * 8 * kCellBytes,
           kNsPerStep, "timed runs of < 10 ms are repeated to 10 ms (not counted); ns per step: the processed Rowlands method "
           "(paper-scene summary timing)"};

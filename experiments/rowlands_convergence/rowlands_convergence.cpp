@@ -48,10 +48,5 @@ void check_common(const Scene& s) {
     if (std::hypot(row[0], row[1]) == 0.0) s.reject("initial", "the spring force is singular at x = y = 0");
 }
 
-double steps_per_run(const Scene& s) {
-  double steps = 0;
-  for (double h : s.reals("h")) steps += s.real("t_end") / h;
-  return steps;
-}
 
 }  // namespace geomint::rowlands_convergence

@@ -51,7 +51,4 @@ constexpr double kNsPerStep = 40;   // the processed Rowlands method on the elas
 constexpr double kEvalsPerStep = 6; // the most of the paper scene's methods (odeint_rkn_sb3a)
 constexpr double kCellBytes = 24;   // one CSV cell held in memory
 
-// The steps of one run to t_end at each h of the scene, added up.
-double steps_per_run(const Scene& s);
-
 }  // namespace geomint::rowlands_convergence

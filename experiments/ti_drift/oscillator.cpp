@@ -67,7 +67,7 @@ double closed_form(const std::string& method, double wh) {
 std::pair<double, double> oscillator_errors(const std::string& method, const Z1& z0, double h, double t_omega) {
   const HarmonicOscillator& osc = kOscillator;
   double gm = 0, em = 0;
-  MethodsOn<HarmonicOscillator>::integrate(method, osc, z0, h, std::llround(std::floor(t_omega / h)),
+  MethodsOn<HarmonicOscillator>::integrate(method, osc, z0, h, steps_within(t_omega, h),
                                            [&](std::int64_t j, const Z1& z) {
     const Z1 ex = osc.exact(z0, static_cast<double>(j) * h);
     gm = std::max(gm, std::hypot(z.p[0] - ex.p[0], z.q[0] - ex.q[0]));  // (|e_p|^2 + w^2 |e_q|^2)^(1/2)
@@ -81,7 +81,7 @@ std::pair<double, double> oscillator_errors(const std::string& method, const Z1&
 // solution, 1 for the linear growth of the double root -1 of q_{n+1} + 2 q_n + q_{n-1} = 0 (004 Sect. 1.4).
 double sv_growth_exponent_at_bound(double t_omega) {
   const double h = method_info("stormer_verlet").oscillatory_bound / kOscillator.w;
-  const std::int64_t n = std::llround(std::floor(t_omega / h));
+  const std::int64_t n = steps_within(t_omega, h);
   std::vector<double> steps, size;
   double largest = 0;
   MethodsOn<HarmonicOscillator>::integrate("stormer_verlet", kOscillator, make_state(0.0, 1.0), h, n,

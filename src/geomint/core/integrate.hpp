@@ -12,6 +12,7 @@
 // counter: t_j = j h is computed by the observer, never accumulated.
 #include <cmath>
 #include <cstdint>
+#include <vector>
 
 namespace geomint {
 
@@ -32,8 +33,19 @@ auto one_step_method(Step step) {
   return Processed{step, unprocessed, unprocessed};
 }
 
-// The number of steps of size h to t_end (scenes check that h divides t_end).
+// The step counts, one convention each. steps_to: the steps of size h to t_end, where the scene
+// checks that h divides t_end. steps_within: the steps of size h in [0, t], the largest n with
+// n h <= t (a quotient t/h within 1e-9 below an integer counts as that integer); step_count_within is
+// the same as a real, for --plan's counts before any cast. steps_to_each: the steps of one run to
+// t_end for each h of a list, together (--plan).
 inline std::int64_t steps_to(double t_end, double h) { return std::llround(t_end / h); }
+inline double step_count_within(double t, double h) { return std::floor(t / h + 1e-9); }
+inline std::int64_t steps_within(double t, double h) { return std::llround(step_count_within(t, h)); }
+inline double steps_to_each(double t_end, const std::vector<double>& hs) {
+  double steps = 0;
+  for (double h : hs) steps += t_end / h;
+  return steps;
+}
 
 namespace detail {
 template <class M, class S>
