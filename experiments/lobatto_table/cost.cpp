@@ -47,12 +47,8 @@ void run_cost(Context& ctx) {
     }
   ctx.write("cost_pendulum.csv", set.csv());
   json cost = {{"pendulum", set.summary(s.reals("timing.error_targets"))}, {"method", cost_method_text(repeats)}};
-  const json& by = cost["pendulum"]["by_method"];
-  const std::string first = label_of(methods.front());
-  json relative = json::object();  // ns per step on the pendulum relative to the first of timing.methods
-  for (const auto& m : methods)
-    relative[label_of(m)] = by[label_of(m)]["ns_per_step"].get<double>() / by[first]["ns_per_step"].get<double>();
-  cost["relative_ns_per_step"] = relative;
+  // ns per step on the pendulum relative to the first of timing.methods
+  cost["relative_ns_per_step"] = WorkPrecisionSet::relative_ns_per_step(cost["pendulum"]);
   merge(ctx.summary, "cost", cost);  // (long_run_cost adds its sets beside, in either order, or alone)
 }
 

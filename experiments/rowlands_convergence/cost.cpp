@@ -61,10 +61,8 @@ void cost_with(Context& ctx, const Sys& sys) {
   json cost = {{"phase", phase.summary(s.reals("timing.error_targets"))},
                {"method", timing_method_text(repeats) + "; from initial[0] to t_end (pre- and postprocessing once, every "
                                                         "call inlined); ns_per_step at the smallest h"}};
-  const json by = cost["phase"]["by_method"];  // (a copy: cost grows below)
-  const std::string first = label_of(methods[0]);
-  for (const auto& m : methods)  // ns per step relative to the first method of timing.methods
-    cost["relative_ns_per_step"][label_of(m)] = by[label_of(m)]["ns_per_step"].get<double>() / by[first]["ns_per_step"].get<double>();
+  // ns per step relative to the first method of timing.methods
+  cost["relative_ns_per_step"] = WorkPrecisionSet::relative_ns_per_step(cost["phase"]);
   ctx.summary["cost"] = cost;
   scene_summary(ctx);
 }

@@ -63,4 +63,15 @@ nlohmann::ordered_json WorkPrecisionSet::summary(const std::vector<double>& targ
           {"spread", spreads.to_json()}};
 }
 
+nlohmann::ordered_json WorkPrecisionSet::relative_ns_per_step(const nlohmann::ordered_json& summary) {
+  const auto& by = summary.at("by_method");
+  const double first = by.at(summary.at("methods").at(0).get<std::string>()).at("ns_per_step").get<double>();
+  nlohmann::ordered_json out = nlohmann::ordered_json::object();
+  for (const auto& m : summary.at("methods")) {
+    const std::string label = m.get<std::string>();
+    out[label] = by.at(label).at("ns_per_step").get<double>() / first;
+  }
+  return out;
+}
+
 }  // namespace geomint

@@ -41,6 +41,8 @@ class WorkPrecisionSet {
   // err_at_equal_evals, wall_s_to, evals_to (per target; null where the measured steps do not reach it)}},
   // spread (of every timed run: runner/timing_report.hpp)}.
   nlohmann::ordered_json summary(const std::vector<double>& targets) const;
+  // {label: its ns_per_step / that of the first method added}, from a summary() of this shape.
+  static nlohmann::ordered_json relative_ns_per_step(const nlohmann::ordered_json& summary);
 
  private:
   std::string error_;
