@@ -1,5 +1,7 @@
 #include "geomint/scene/scene.hpp"
 
+#include <toml++/toml.h>
+
 #include <algorithm>
 #include <charconv>
 #include <cstdint>
@@ -309,6 +311,10 @@ bool key_under(std::string_view key, const std::vector<std::string>& prefixes) {
   return false;
 }
 
+struct Scene::Table {
+  toml::table t;
+};
+
 Scene Scene::load(const std::filesystem::path& file, const std::vector<std::string>& overrides,
                   const Schema& schema) {
   Scene scene;
@@ -316,12 +322,12 @@ Scene Scene::load(const std::filesystem::path& file, const std::vector<std::stri
   const std::string where = file.string();
   std::vector<std::filesystem::path> chain{std::filesystem::weakly_canonical(file)};
   Loaded loaded = read_scene(file, schema, chain);
-  scene.table_ = std::move(loaded.table);
+  scene.table_ = std::make_shared<Table>(Table{std::move(loaded.table)});
   scene.origin_ = std::move(loaded.origin);
   scene.bases_ = std::move(loaded.bases);
 
   std::vector<std::string> keys;
-  leaf_keys(scene.table_, "", keys);
+  leaf_keys(scene.table_->t, "", keys);
   for (const auto& key : keys) {
     if (!schema.find(key)) throw SceneError(scene.origin_[key].substr(3) + ": unknown key '" + key + "' (see --help for the keys)");
   }
@@ -344,7 +350,7 @@ Scene Scene::load(const std::filesystem::path& file, const std::vector<std::stri
       throw SceneError("--set " + key + "=" + value + ": cannot read '" + value + "' as " + type_name(entry->type) +
                        " (TOML syntax: 0.1, 1e-3, [0.1, 0.05], true, \"text\")");
     }
-    toml::table* t = &scene.table_;
+    toml::table* t = &scene.table_->t;
     const auto parts = split_dotted(key);
     for (std::size_t i = 0; i + 1 < parts.size(); ++i) {
       if (!(*t)[parts[i]].as_table()) t->insert_or_assign(parts[i], toml::table{});
@@ -355,7 +361,7 @@ Scene Scene::load(const std::filesystem::path& file, const std::vector<std::stri
   }
 
   for (const auto& e : schema.entries()) {
-    const auto node = scene.table_.at_path(e.key);
+    const auto node = scene.table_->t.at_path(e.key);
     if (node)
       if (auto why = check(e, *node.node())) scene.reject(e.key, *why);
   }
@@ -364,7 +370,7 @@ Scene Scene::load(const std::filesystem::path& file, const std::vector<std::stri
 
 void Scene::require(const std::vector<std::string>& prefixes, std::string_view who, const Schema& schema) const {
   for (const auto& e : schema.entries()) {
-    if (!key_under(e.key, prefixes) || table_.at_path(e.key)) continue;
+    if (!key_under(e.key, prefixes) || table_->t.at_path(e.key)) continue;
     std::string bases;
     for (const auto& b : bases_) bases += ", base " + b.string();
     throw SceneError(file_.string() + bases + ": missing key '" + e.key + "' (" + type_name(e.type) + "), needed by " +
@@ -377,45 +383,59 @@ void Scene::restrict_reads(std::vector<std::string> prefixes, std::string who) c
   reader_ = std::move(who);
 }
 
-bool Scene::has(std::string_view key) const { return static_cast<bool>(table_.at_path(key)); }
+bool Scene::has(std::string_view key) const { return static_cast<bool>(table_->t.at_path(key)); }
 
 void Scene::reject(std::string_view key, std::string_view allowed) const {
-  const auto node = table_.at_path(key);
+  const auto node = table_->t.at_path(key);
   const std::string value = node ? repr(*node.node()) : "(missing)";
   const auto from = origin_.find(key);
   throw SceneError(std::string(key) + " = " + value + " (" + (from != origin_.end() ? from->second : "in " + file_.string()) +
                    "): " + std::string(allowed));
 }
 
-toml::node_view<const toml::node> Scene::at(std::string_view key) const {
+void Scene::note_read(std::string_view key) const {
   if (!readable_.empty() && !key_under(key, readable_))
     throw std::logic_error(reader_ + " reads the scene key '" + std::string(key) + "', which it does not declare");
-  const auto node = table_.at_path(key);
-  if (!node) throw std::logic_error("Scene: key not present (not required by the studies that run): " + std::string(key));
+  if (!table_->t.at_path(key))
+    throw std::logic_error("Scene: key not present (not required by the studies that run): " + std::string(key));
   if (read_log_ && std::find(read_log_->begin(), read_log_->end(), key) == read_log_->end()) read_log_->emplace_back(key);
-  return node;
 }
 
-double Scene::real(std::string_view key) const { return *at(key).value<double>(); }
-std::int64_t Scene::integer(std::string_view key) const { return *at(key).value<std::int64_t>(); }
-bool Scene::boolean(std::string_view key) const { return *at(key).value<bool>(); }
-std::string Scene::text(std::string_view key) const { return *at(key).value<std::string>(); }
+double Scene::real(std::string_view key) const {
+  note_read(key);
+  return *table_->t.at_path(key).value<double>();
+}
+std::int64_t Scene::integer(std::string_view key) const {
+  note_read(key);
+  return *table_->t.at_path(key).value<std::int64_t>();
+}
+bool Scene::boolean(std::string_view key) const {
+  note_read(key);
+  return *table_->t.at_path(key).value<bool>();
+}
+std::string Scene::text(std::string_view key) const {
+  note_read(key);
+  return *table_->t.at_path(key).value<std::string>();
+}
 
 std::vector<double> Scene::reals(std::string_view key) const {
+  note_read(key);
   std::vector<double> out;
-  for (const auto& x : *at(key).as_array()) out.push_back(*x.value<double>());
+  for (const auto& x : *table_->t.at_path(key).as_array()) out.push_back(*x.value<double>());
   return out;
 }
 
 std::vector<std::string> Scene::texts(std::string_view key) const {
+  note_read(key);
   std::vector<std::string> out;
-  for (const auto& x : *at(key).as_array()) out.push_back(*x.value<std::string>());
+  for (const auto& x : *table_->t.at_path(key).as_array()) out.push_back(*x.value<std::string>());
   return out;
 }
 
 std::vector<std::vector<double>> Scene::real_rows(std::string_view key) const {
+  note_read(key);
   std::vector<std::vector<double>> out;
-  for (const auto& row : *at(key).as_array()) {
+  for (const auto& row : *table_->t.at_path(key).as_array()) {
     auto& r = out.emplace_back();
     for (const auto& x : *row.as_array()) r.push_back(*x.value<double>());
   }
@@ -424,7 +444,7 @@ std::vector<std::vector<double>> Scene::real_rows(std::string_view key) const {
 
 nlohmann::ordered_json Scene::to_json() const {
   std::ostringstream s;
-  s << toml::json_formatter{table_};
+  s << toml::json_formatter{table_->t};
   return nlohmann::ordered_json::parse(s.str());
 }
 

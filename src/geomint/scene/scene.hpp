@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <map>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -20,7 +21,6 @@
 #include <vector>
 
 #include <nlohmann/json.hpp>
-#include <toml++/toml.h>
 
 namespace geomint {
 
@@ -119,10 +119,12 @@ class Scene {
   const std::vector<std::filesystem::path>& bases() const { return bases_; }  // base files, nearest first
 
  private:
-  toml::node_view<const toml::node> at(std::string_view key) const;
+  struct Table;  // the resolved TOML table (scene.cpp): toml++ stays out of this header
+  // A read of `key`: refused outside restrict_reads' prefixes, recorded in log_reads' log.
+  void note_read(std::string_view key) const;
   std::filesystem::path file_;
   std::vector<std::filesystem::path> bases_;
-  toml::table table_;
+  std::shared_ptr<Table> table_;  // immutable once load() returns; copies of a Scene share it
   std::map<std::string, std::string, std::less<>> origin_;  // leaf key -> "from --set" / "in FILE"
   mutable std::vector<std::string> readable_;
   mutable std::string reader_;
