@@ -34,16 +34,10 @@ void check_stability(const Scene& s) {
 
 bool stable(double rho) { return rho <= 1.0 + kRadiusTolerance; }
 
-// The intervals [lo, hi] of consecutive scan points (h omega) at which the radius is stable.
-json stable_intervals(const std::vector<double>& hw, const std::vector<double>& rho) {
+// The scanned stable set: the intervals [lo, hi] of h omega (analysis/linear_stability.hpp), as [[lo, hi], ...].
+json stable_set_of(const std::vector<double>& hw, const std::vector<double>& rho) {
   json set = json::array();
-  bool in_stable = false;
-  double start = 0;
-  for (std::size_t i = 0; i < hw.size(); ++i) {
-    if (stable(rho[i]) && !in_stable) in_stable = true, start = hw[i];
-    if (!stable(rho[i]) && in_stable) in_stable = false, set.push_back({start, hw[i - 1]});
-  }
-  if (in_stable) set.push_back({start, hw.back()});
+  for (const StableInterval& i : stable_intervals(hw, rho, kRadiusTolerance)) set.push_back({i.lo, i.hi});
   return set;
 }
 
@@ -110,7 +104,7 @@ void run_stability(Context& ctx) {
   lo = stability_boundary([&](double hw) { return stable(radius_at(hw)); }, lo, hi);
   // Runs of long_run.periods periods at kBoundFactors times the bound: bounded below it, diverged above.
   const auto [runs, run_list] = bound_runs(s, o, lo);
-  const json stable_set = stable_intervals(hws, rhos);
+  const json stable_set = stable_set_of(hws, rhos);
   ctx.summary["reproduced"]["stability_bound"] = lo;
   ctx.summary["reproduced"]["stable_set_h_omega"] = stable_set;
   ctx.summary["reproduced"]["bound_runs"] = runs;
@@ -118,7 +112,7 @@ void run_stability(Context& ctx) {
   // per period; the scan point nearest h omega = pi (h = T/2, the paper's remark after (10)).
   json compared = json::object();
   for (std::size_t k = 0; k < methods.size(); ++k) {
-    const json set = stable_intervals(hws, rho_m[k]);
+    const json set = stable_set_of(hws, rho_m[k]);
     compared[label_of(methods[k])] = {{"stable_set_h_omega", set}, {"intervals", set.size()}};
   }
   std::size_t near_pi = 0;

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "geomint/geometry/clouds.hpp"
+#include "geomint/geometry/convex_area.hpp"
 #include "geomint/observables/symplecticity.hpp"
 #include "geomint/runner/distributed_map.hpp"
 #include "geomint/sweep/parallel_map.hpp"
@@ -20,23 +21,6 @@
 
 namespace geomint::measure_cloud {
 namespace {
-
-// 2-D convex-hull area (Andrew's monotone chain, then the shoelace formula).
-double convex_area(std::vector<std::array<double, 2>> p) {
-  std::sort(p.begin(), p.end());
-  const auto cross = [](const auto& o, const auto& a, const auto& b) {
-    return (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]);
-  };
-  std::vector<std::array<double, 2>> hull(2 * p.size());
-  std::size_t k = 0;
-  for (std::size_t i = 0; i < p.size(); hull[k++] = p[i++])
-    while (k >= 2 && cross(hull[k - 2], hull[k - 1], p[i]) <= 0) --k;
-  for (std::size_t i = p.size() - 1, t = k + 1; i-- > 0; hull[k++] = p[i])
-    while (k >= t && cross(hull[k - 2], hull[k - 1], p[i]) <= 0) --k;
-  double a = 0;
-  for (std::size_t i = 0; i + 1 < k; ++i) a += hull[i][0] * hull[i + 1][1] - hull[i + 1][0] * hull[i][1];
-  return 0.5 * std::abs(a);
-}
 
 // ---- Fig. 5.1: is the flow symplectic? The defect max |Phi^T Omega Phi - Omega| of its Jacobian ----
 

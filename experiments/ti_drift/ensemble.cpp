@@ -23,20 +23,6 @@
 namespace geomint::ti_drift {
 namespace {
 
-// The column k of an ensemble's series, over the trajectories `which`.
-std::vector<double> column(const std::vector<std::vector<double>>& series, const std::vector<std::size_t>& which,
-                           std::size_t k) {
-  std::vector<double> v;
-  for (std::size_t i : which) v.push_back(series[i][k]);
-  return v;
-}
-
-std::vector<std::size_t> all_of(std::size_t M) {
-  std::vector<std::size_t> v(M);
-  for (std::size_t i = 0; i < M; ++i) v[i] = i;
-  return v;
-}
-
 // The scene keys the ensemble's series depend on (its checkpoint).
 const std::vector<std::string> kEnsembleKeys = {"h", "t_end", "samples", "hh", "ensemble.size", "ensemble.seed",
                                                 "ensemble.perturbation", "hh3.q2", "hh3.p2"};
@@ -82,16 +68,18 @@ struct Stats {
 
 Stats write_stats(Context& ctx, const Run& run, json& reproduced) {
   const auto& series = run.series;
-  const std::size_t M = run.M, ns = run.ns;
+  const std::size_t ns = run.ns;
   const double t_end = run.t_end;
   const auto time_of = [&](std::size_t k) { return run.time_of(k); };
   Csv f4s({"t", "mu", "sigma"});
-  std::vector<double> ts, mus, sigmas;
+  std::vector<double> ts;
+  const EnsembleMoments m = ensemble_moments(series);
   for (std::size_t k = 0; k < ns; ++k) {
-    const auto [mu, sigma] = mean_and_deviation(column(series, all_of(M), k));
-    f4s.row(time_of(k), mu, sigma);
-    ts.push_back(time_of(k)), mus.push_back(mu), sigmas.push_back(sigma);
+    f4s.row(time_of(k), m.mean[k], m.sd[k]);
+    ts.push_back(time_of(k));
   }
+  const std::vector<double>& mus = m.mean;
+  const std::vector<double>& sigmas = m.sd;
   ctx.write("fig4_stats.csv", f4s);
   reproduced["hh5_mu_final"] = mus.back(), reproduced["hh5_sigma_final"] = sigmas.back();
   reproduced["hh5_sigma_exponent"] = power_law_exponent(ts, sigmas, fit_t_min(ctx.scene, "ensemble", t_end));  // past the bounded part
@@ -155,14 +143,11 @@ json ensemble_summary(const Context& ctx, const HH& hhk, const Run& run, const S
                    {"outliers", outliers.size()},
                    {"kept", kept.size()}};
   if (kept.size() >= 2) {
-    std::vector<double> tk, sk;
-    MeanDeviation last;
-    for (std::size_t k = 0; k < ns; k += stride) {
-      last = mean_and_deviation(column(series, kept, k));
-      tk.push_back(time_of(k)), sk.push_back(last.sd);
-    }
-    ensemble["without_outliers"] = {{"mu_final", last.mean}, {"sigma_final", last.sd},
-                                    {"sigma_exponent", power_law_exponent(tk, sk, t_fit)}};
+    const EnsembleMoments m = ensemble_moments(series, kept, stride);
+    std::vector<double> tk;
+    for (std::size_t k : m.k) tk.push_back(time_of(k));
+    ensemble["without_outliers"] = {{"mu_final", m.mean.back()}, {"sigma_final", m.sd.back()},
+                                    {"sigma_exponent", power_law_exponent(tk, m.sd, t_fit)}};
   }
   // The mean: at the first output time after the start, and over the fit window [t_fit, t_end].
   std::vector<double> mu_late, sigma2(sigmas.size());

@@ -1,9 +1,12 @@
-// The library's analysis helpers that experiments share: the stability-bound bisection
-// (analysis/linear_stability.hpp), Poincare cuts (analysis/poincare.hpp) and the crossing of two
+// The library's analysis helpers that experiments share: the stability-bound bisection and the
+// scanned stable set (analysis/linear_stability.hpp), the area of a convex hull in the plane
+// (geometry/convex_area.hpp), Poincare cuts (analysis/poincare.hpp) and the crossing of two
 // work-precision curves, the rule of equal cost and the work-precision set of every cost study
 // (analysis/work_precision.hpp, analysis/work_precision_set.hpp), and the order table of every
 // convergence study (analysis/order_table.hpp).
+#include <array>
 #include <cmath>
+#include <numbers>
 #include <string>
 #include <vector>
 
@@ -14,6 +17,7 @@
 #include "geomint/analysis/poincare.hpp"
 #include "geomint/analysis/work_precision.hpp"
 #include "geomint/analysis/work_precision_set.hpp"
+#include "geomint/geometry/convex_area.hpp"
 
 using namespace geomint;
 
@@ -30,6 +34,38 @@ TEST(StabilityBoundary, ReturnsTheLastStablePointOfTheBracket) {
   // Stable below 0.3: 60 halvings of [0, 1] close in on the last double below it (the spacing there is 2^-54).
   EXPECT_EQ(stability_boundary([](double x) { return x < 0.3; }, 0.0, 1.0), std::nextafter(0.3, 0.0));
   EXPECT_EQ(stability_boundary([](double x) { return x <= 0.3; }, 0.0, 1.0), 0.3);
+}
+
+// A scan with two stable runs, one of them a single point at the end, and a radius one tolerance
+// above 1 (stable) next to one just beyond it (not).
+TEST(StableIntervals, AreTheMaximalRunsOfStableScanPoints) {
+  const std::vector<double> x{0.0, 0.5, 1.0, 1.5, 2.0, 2.5, 3.0};
+  const double tol = 1e-12;
+  const std::vector<double> rho{1.0, 1.0 + tol, 1.0 + 2 * tol, 1.2, 0.9, 1.1, 1.0};
+  const auto set = stable_intervals(x, rho, tol);
+  ASSERT_EQ(set.size(), 3u);
+  EXPECT_EQ(set[0].lo, 0.0);
+  EXPECT_EQ(set[0].hi, 0.5);
+  EXPECT_EQ(set[1].lo, 2.0);
+  EXPECT_EQ(set[1].hi, 2.0);
+  EXPECT_EQ(set[2].lo, 3.0);
+  EXPECT_EQ(set[2].hi, 3.0);
+  EXPECT_TRUE(stable_intervals(x, std::vector<double>(x.size(), 2.0), tol).empty());
+  EXPECT_EQ(stable_intervals(x, std::vector<double>(x.size(), 1.0), tol).size(), 1u);
+}
+
+// The unit square with interior, repeated and edge points; a triangle in either orientation; a line.
+TEST(ConvexArea, CountsOnlyTheHull) {
+  EXPECT_DOUBLE_EQ(convex_area({{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0.5, 0.5}, {0.5, 0}, {1, 1}, {0.2, 0.9}}), 1.0);
+  EXPECT_DOUBLE_EQ(convex_area({{0, 0}, {2, 0}, {0, 3}}), 3.0);
+  EXPECT_DOUBLE_EQ(convex_area({{0, 3}, {2, 0}, {0, 0}}), 3.0);
+  EXPECT_EQ(convex_area({{0, 0}, {1, 1}, {2, 2}, {3, 3}}), 0.0);
+  EXPECT_EQ(convex_area({{1, 1}}), 0.0);
+  // A regular 12-gon of radius 1, its vertices shuffled: area 3.
+  std::vector<std::array<double, 2>> gon;
+  for (int k : {5, 0, 7, 2, 11, 9, 1, 3, 10, 4, 8, 6})
+    gon.push_back({std::cos(k * std::numbers::pi / 6), std::sin(k * std::numbers::pi / 6)});
+  EXPECT_NEAR(convex_area(gon), 3.0, 1e-15);
 }
 
 // Two power laws err = c w^-p in wall time w: a (order 1) cheap at low accuracy, b (order 2) below it.

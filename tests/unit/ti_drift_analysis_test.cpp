@@ -13,6 +13,7 @@
 #include "geomint/core/integrate.hpp"
 #include "geomint/integrators/runge_kutta4.hpp"
 #include "geomint/methods/methods.hpp"
+#include "geomint/observables/ensemble_statistics.hpp"
 #include "geomint/observables/modified_energy.hpp"
 #include "geomint/systems/unsymmetric_pendulum.hpp"
 
@@ -38,6 +39,26 @@ Series walk_with_ramp(std::size_t n, std::size_t a, std::size_t b, double rate) 
 }
 
 }  // namespace
+
+// Three trajectories of five output times: at time k they are k - 1, k and k + 1 (mean k, sd 1),
+// but trajectory 2 is an outlier from k = 3 on.
+TEST(EnsembleMoments, AreTakenAcrossTheTrajectoriesAtEveryStrideThTime) {
+  const std::vector<std::vector<double>> series{{-1, 0, 1, 2, 3}, {0, 1, 2, 3, 4}, {1, 2, 3, 40, 50}};
+  const EnsembleMoments all = ensemble_moments(series);
+  ASSERT_EQ(all.k, (std::vector<std::size_t>{0, 1, 2, 3, 4}));
+  for (std::size_t k = 0; k < 3; ++k) {
+    EXPECT_DOUBLE_EQ(all.mean[k], static_cast<double>(k));
+    EXPECT_DOUBLE_EQ(all.sd[k], 1.0);  // the sample deviation (denominator M - 1)
+  }
+  EXPECT_DOUBLE_EQ(all.mean[4], 19.0);
+  const std::vector<std::size_t> which{0, 2};  // trajectories 0 and 2, every second time
+  const EnsembleMoments thinned = ensemble_moments(series, which, 2);
+  ASSERT_EQ(thinned.k, (std::vector<std::size_t>{0, 2, 4}));
+  EXPECT_DOUBLE_EQ(thinned.mean[1], 2.0);
+  EXPECT_DOUBLE_EQ(thinned.sd[1], std::sqrt(2.0));
+  EXPECT_DOUBLE_EQ(thinned.mean[2], 26.5);
+  EXPECT_DOUBLE_EQ(thinned.sd[2], 47 / std::sqrt(2.0));
+}
 
 TEST(GrowthEpisodes, RunningSlopeOfALineIsItsSlope) {
   std::vector<double> t, y;

@@ -4,6 +4,9 @@
 // method is stable where the radius is 1 and the eigenvalues are simple).
 // Rows and columns are in the order (q, p); 001 eq. (13) orders them (p, q),
 // the same matrix up to the swap, with the same eigenvalues (in_pq_order).
+#include <cstddef>
+#include <vector>
+
 #include <Eigen/Eigenvalues>
 #include <Eigen/SVD>
 
@@ -53,6 +56,22 @@ template <class Stable>
 double stability_boundary(Stable&& stable, double lo, double hi) {
   for (int it = 0; it < 60; ++it) (stable(0.5 * (lo + hi)) ? lo : hi) = 0.5 * (lo + hi);
   return lo;
+}
+
+// The maximal runs [lo, hi] of consecutive scan points x_i (increasing) at which the spectral radius
+// rho_i is at most 1 + tolerance: a scanned stable set (a run of one point has lo = hi).
+struct StableInterval {
+  double lo, hi;
+};
+inline std::vector<StableInterval> stable_intervals(const std::vector<double>& x, const std::vector<double>& rho,
+                                                    double tolerance) {
+  std::vector<StableInterval> set;
+  for (std::size_t i = 0; i < x.size(); ++i) {
+    const bool stable = rho[i] <= 1.0 + tolerance, was = i > 0 && rho[i - 1] <= 1.0 + tolerance;
+    if (stable && !was) set.push_back({x[i], x[i]});
+    if (stable) set.back().hi = x[i];
+  }
+  return set;
 }
 
 }  // namespace geomint

@@ -29,6 +29,31 @@ inline MeanDeviation mean_and_deviation(std::span<const double> v) {
   return {mean, std::sqrt(var / (M - 1))};
 }
 
+// The mean and sample standard deviation across the trajectories `which` (M >= 2) of an ensemble's
+// series (series[i][k]: trajectory i at its k-th output time, all of one length), at every stride-th
+// output time k = 0, stride, 2 stride, ...: the moments of 004 Fig. 4 against t.
+struct EnsembleMoments {
+  std::vector<std::size_t> k;  // the output times taken
+  std::vector<double> mean, sd;
+};
+inline EnsembleMoments ensemble_moments(const std::vector<std::vector<double>>& series,
+                                        std::span<const std::size_t> which, std::size_t stride = 1) {
+  EnsembleMoments out;
+  std::vector<double> column(which.size());
+  for (std::size_t k = 0; k < series.at(which[0]).size(); k += stride) {
+    for (std::size_t j = 0; j < which.size(); ++j) column[j] = series[which[j]][k];
+    const MeanDeviation md = mean_and_deviation(column);
+    out.k.push_back(k), out.mean.push_back(md.mean), out.sd.push_back(md.sd);
+  }
+  return out;
+}
+// The same over every trajectory.
+inline EnsembleMoments ensemble_moments(const std::vector<std::vector<double>>& series, std::size_t stride = 1) {
+  std::vector<std::size_t> all(series.size());
+  for (std::size_t i = 0; i < all.size(); ++i) all[i] = i;
+  return ensemble_moments(series, all, stride);
+}
+
 // Standard errors of the mean and of the standard deviation sd of M samples (normal
 // approximation): sd / sqrt(M) and sd / sqrt(2 (M - 1)).
 inline double standard_error_of_mean(double sd, double M) { return sd / std::sqrt(M); }
