@@ -6,40 +6,33 @@
 #include <string>
 #include <vector>
 
-#include "geomint/core/integrate.hpp"
-#include "geomint/integrators/takahashi_imada.hpp"
 #include "geomint/methods/by_name.hpp"
 #include "geomint/methods/registry.hpp"
 #include "geomint/methods/scene_methods.hpp"
 #include "geomint/runner/timing.hpp"
 #include "geomint/sweep/ensemble_kernels.hpp"
+#include "geomint/sweep/lanes_timing.hpp"
 #include "henon_heiles_starts.hpp"
 #include "ti_drift.hpp"
 
 namespace geomint::ti_drift {
 namespace {
 
-// The ensembles' lane kernels (sweep/ensemble_kernels.hpp) against the scalar method, simplified Takahashi-Imada
-// unprocessed: ns per trajectory-step of the trajectories from `starts` (one batch), n steps, single thread.
+// The ensembles' lane kernels against the scalar method (sweep/lanes_timing.hpp): ns per trajectory-step of the
+// trajectories from `starts` (one batch), n steps.
 template <class Sys>
 json lanes_timing(const Sys& sys, const std::vector<typename Sys::State>& starts, double h, std::int64_t n, int repeats) {
-  using Z = typename Sys::State;
   const double steps = static_cast<double>(starts.size()) * static_cast<double>(n);
-  const auto method = simplified_ti_method(sys, false);
-  const RunTime scalar = time_runs(repeats, [&] {
-    for (const Z& z : starts) do_not_optimize(integrate_inlined(method, z, h, n));
-  });
+  const LanesTiming t = time_lanes(sys, starts, h, n, repeats);
+  const RunTime& scalar = t.scalar;
   json out = {{"trajectories", starts.size()}, {"steps", n}, {"scalar_ns_per_step", 1e9 * scalar.seconds() / steps},
               {"scalar_spread", scalar.spread()}};
-  for (const auto& k : simplified_ti_lanes_kernels<Sys>()) {
-    const RunTime t = time_runs(repeats, [&] {
-      do_not_optimize(simplified_ti_lanes(sys, k.steps, std::span<const Z>(starts), h, n, n, [](int, std::int64_t, const Z&) {}));
-    });
-    out["kernels"][k.name] = {{"ns_per_step", 1e9 * t.seconds() / steps}, {"spread", t.spread()},
-                              {"speedup_vs_scalar", scalar.seconds() / t.seconds()}};
+  for (const auto& [name, k] : t.kernels) {
+    out["kernels"][name] = {{"ns_per_step", 1e9 * k.seconds() / steps}, {"spread", k.spread()},
+                            {"speedup_vs_scalar", scalar.seconds() / k.seconds()}};
     if (!out.contains("isa"))  // the one the ensembles use (the best)
-      out["isa"] = k.name, out["ns_per_step"] = 1e9 * t.seconds() / steps, out["spread"] = t.spread(),
-      out["speedup_vs_scalar"] = scalar.seconds() / t.seconds();
+      out["isa"] = name, out["ns_per_step"] = 1e9 * k.seconds() / steps, out["spread"] = k.spread(),
+      out["speedup_vs_scalar"] = scalar.seconds() / k.seconds();
   }
   return out;
 }

@@ -1,0 +1,29 @@
+#pragma once
+// The ensembles' lane kernels (sweep/ensemble_kernels.hpp) timed against the scalar method they
+// reproduce bit for bit: the simplified Takahashi-Imada method (004 (1.6)) unprocessed, on the
+// trajectories of one batch, single thread (runner/timing.hpp). Compiled once in the library for the
+// systems of 004 Figs 4 and 6.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "geomint/runner/timing.hpp"
+
+namespace geomint {
+
+struct LanesTiming {
+  RunTime scalar;  // integrate(simplified_ti_method(sys, false), ...), one trajectory after another, every call inlined
+  struct Kernel {
+    std::string name;  // "AVX-512", "AVX2", "SSE2"
+    RunTime time;      // all lanes at once
+  };
+  std::vector<Kernel> kernels;  // each lane kernel this CPU runs, best first
+};
+
+// n steps of h from each of `starts` (at most kEnsembleLanes), `repeats` timed runs of each.
+// For LennardJones<9>, HenonHeilesT<true> and HenonHeilesT<false>.
+template <class Sys>
+LanesTiming time_lanes(const Sys& sys, const std::vector<typename Sys::State>& starts, double h, std::int64_t n,
+                       int repeats);
+
+}  // namespace geomint
