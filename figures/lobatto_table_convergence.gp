@@ -3,7 +3,7 @@
 # the absolute errors of p, q and H (Lobatto), of the discrete energy H_d (15) (round-off), and
 # of q for the methods of the scene key table1.methods (the paper scene: the Simpson scheme and the
 # implicit midpoint rule). Large black rings around the markers: the values printed in
-# the paper's Table 1 (summary values comparisons.*_err_N<N>.published), drawn behind the
+# the paper's Table 1 (summary values comparisons.*_err.published.<N>), drawn behind the
 # reproduced markers so that both show where they agree.
 # Right, beyond the paper: nonlinear Lagrangians (Newton on the internal nodes), phase-space
 # error |z_N − z(t_end)|_2 against an odeint reference: the pendulum L = q̇²/2 + cos q (Lobatto and
@@ -79,13 +79,13 @@ ITP = ITS('pendulum')
 ITE = ITS('elastic')
 GUIDE(tag, s, key, h) = 10**(value(sprintf("CY_%s_%s", tag, s)) + ORDER(key) * (log10(h) - value(sprintf("CX_%s_%s", tag, s))))
 
-# the published Table 1 (summary values comparisons.<q>_err_N<N>.published, N from the scene key meshes)
+# the published Table 1 (summary values comparisons.<q>_err.published.<N>, N from the scene key meshes)
 set print $PUB
 do for [k = 0:9] {
     n = scene_num(sprintf('meshes.%d', k))
     if (n ne "?") {
         do for [q in "p q H Hd"] {
-            v = summary_num(sprintf('comparisons.%s_err_N%d.published', q, int(real(n))))
+            v = summary_num(sprintf('comparisons.%s_err.published.%d', q, int(real(n))))
             if (v ne "?") { print sprintf("%.17g,%s", 2 * pi / OMEGA / real(n), v) }
         }
     }

@@ -52,22 +52,20 @@ bool rounds_to_printed(double printed, double reproduced, int digits) {
 // Table 1 against the printed values: how many of the errors of p, q and H round to the three printed
 // digits, the largest relative deviation, and the range of the printed H_d errors (round-off, compared apart).
 json printed_table1(const Context& ctx) {
-  const Scene& s = ctx.scene;
   const json& summary = ctx.summary;
   int compared = 0, rounding = 0;
   double deviation = 0;
   std::vector<double> printed_Hd;
-  for (double Nd : s.reals("meshes")) {
-    const std::string n = std::to_string(static_cast<std::int64_t>(Nd));
-    for (const char* prefix : {"p", "q", "H", "Hd"}) {
-      const auto c = ctx.comparison(summary, std::string("reproduced.") + prefix + "_err_N" + n);
-      if (!c) continue;
-      const double printed = (*c)["published"], reproduced = (*c)["reproduced"];
-      if (std::string(prefix) == "Hd") {
+  for (const char* quantity : {"p", "q", "H", "Hd"}) {
+    const auto c = ctx.comparison(summary, std::string("reproduced.") + quantity + "_err");  // by N
+    if (!c) continue;
+    for (const auto& [N, printed] : (*c)["published"].items()) {
+      if (!(*c)["reproduced"].contains(N)) continue;
+      if (std::string(quantity) == "Hd") {
         printed_Hd.push_back(printed);
       } else {
-        ++compared, rounding += rounds_to_printed(printed, reproduced, 3);
-        deviation = std::max(deviation, std::abs((*c)["difference"].get<double>()));  // (relative: compare = rel)
+        ++compared, rounding += rounds_to_printed(printed, (*c)["reproduced"][N], 3);
+        deviation = std::max(deviation, std::abs((*c)["difference"][N].get<double>()));  // (relative: compare = rel)
       }
     }
   }
@@ -108,9 +106,8 @@ void run_table1(Context& ctx) {
       em[k].push_back(e);
     }
     t1.end_row();
-    const std::string n = std::to_string(N);
-    reproduced["p_err_N" + n] = p, reproduced["q_err_N" + n] = q;
-    reproduced["H_err_N" + n] = H, reproduced["Hd_err_N" + n] = Hd;
+    const std::string n = std::to_string(N);  // the errors by N
+    reproduced["p_err"][n] = p, reproduced["q_err"][n] = q, reproduced["H_err"][n] = H, reproduced["Hd_err"][n] = Hd;
     hs.push_back(h), ep.push_back(p), eq.push_back(q), eH.push_back(H), eHd.push_back(Hd), Hd0s.push_back(Hd0);
     // 001 eq. (12) as printed, iterated as a scheme of its own (it is not (13)-(14): see the unit tests)
     e12.push_back(max_q_error(iterate_pq(lobatto_map_12(h, osc.m, osc.w, Eq12::printed), z0, N), o, h));

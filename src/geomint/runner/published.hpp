@@ -2,14 +2,15 @@
 // What the papers printed, as data: experiments/<name>/published.toml holds
 // one table per published quantity,
 //
-//   [p_err_N10]
+//   [p_err]
 //   study = "table1"                      # the study that reproduces it
-//   value = 1.0e-6                        # or a table keyed by a parameter: { "0.1" = 3.0e-11, ... }
-//   where = "001 Table 1, N = 10"         # seed, figure / table / equation
+//   value = { "10" = 8.95e-6, "20" = 1.39e-7 }   # a table keyed by a parameter (here N), or one number
+//   where = "001 Table 1, N = 10, 20"     # seed, figure / table / equation
 //   figure = "001 Table 1"                # the figure, table or section of the paper it belongs to: one
 //                                         # the study makes (Study::makes); may be left out where the study
 //                                         # makes exactly one (or none: a quantity beyond the figures)
-//   summary = "reproduced.p_err_N10"      # the reproduced value in summary.json (dotted path)
+//   summary = "reproduced.p_err"          # the reproduced value in summary.json (dotted path; for a
+//                                         # table, an object with the parameters as keys)
 //   compare = { rel = 0.03 }              # or { abs = 1e-13 }, { order = 0.1 } (|difference| <= 0.1);
 //                                         # without compare the value is reported, not compared
 //   requires = { "long_run.periods" = 100000.0 }   # scene values under which it is comparable
@@ -74,7 +75,7 @@ std::vector<std::string> made_items(const std::string& makes);
 void resolve_figures(std::vector<Published>& entries, const std::filesystem::path& file,
                      const std::function<std::string(const std::string&)>& makes_of);
 
-// The value at a dotted path ("reproduced.p_err_N10", "initial.0.1"), or nullptr if there is none.
+// The value at a dotted path ("reproduced.p_err.10", "initial.0.1"), or nullptr if there is none.
 const nlohmann::ordered_json* json_at(const nlohmann::ordered_json& j, const std::string& dotted);
 
 }  // namespace geomint
