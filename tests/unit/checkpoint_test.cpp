@@ -22,6 +22,7 @@
 #include <nlohmann/json.hpp>
 
 #include "geomint/runner/checkpoint.hpp"
+#include "temp_paths.hpp"
 
 using namespace geomint;
 namespace fs = std::filesystem;
@@ -45,7 +46,7 @@ std::string read(const fs::path& p) {
 
 // A staging directory, a scene (a = 1, checkpoint.stop_after, checkpoint.interval if >= 0) and a Context on them.
 struct Fixture {
-  fs::path dir = fs::temp_directory_path() / ("geomint_checkpoint_test_" + std::to_string(::getpid()));
+  fs::path dir = test::temp_path("geomint_checkpoint_test");
   Scene scene;
   OutputDir out;
   Context ctx;
@@ -56,7 +57,7 @@ struct Fixture {
     ctx.experiment = "unit", ctx.study = "tasks", ctx.resume = !fresh, ctx.resume_command = "unit --resume";
   }
   static Scene load(int stop_after, double a, double interval) {
-    const fs::path file = fs::temp_directory_path() / ("geomint_checkpoint_scene_" + std::to_string(::getpid()) + ".toml");
+    const fs::path file = test::temp_path("geomint_checkpoint_scene", ".toml");
     std::ofstream(file) << "a = " << a << "\n[checkpoint]\nstop_after = " << stop_after << "\n"
                         << (interval >= 0 ? "interval = " + std::to_string(interval) + "\n" : "");
     Schema schema;
@@ -179,7 +180,7 @@ TEST(Checkpoint, MissingHeaderStartsOver) {
 // not leave a header counting the bytes of a log already removed (a --resume would refuse it).
 // Here every log fails to be removed (a directory that is not empty): all headers must be gone first.
 TEST(Checkpoint, RemovalTakesEveryHeaderBeforeAnyLog) {
-  const fs::path dir = fs::temp_directory_path() / ("geomint_checkpoint_removal_" + std::to_string(::getpid()));
+  const fs::path dir = test::temp_path("geomint_checkpoint_removal");
   fs::remove_all(dir);
   for (int k = 0; k < 16; ++k) {  // 16 pairs: in any directory order, some header would follow a log
     const std::string stem = "study" + std::to_string(k);

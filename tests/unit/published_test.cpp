@@ -7,6 +7,7 @@
 #include <string>
 
 #include "geomint/runner/published.hpp"
+#include "temp_paths.hpp"
 
 using namespace geomint;
 using json = nlohmann::ordered_json;
@@ -16,8 +17,7 @@ namespace {
 
 fs::path published_file(const std::string& text) {
   static int count = 0;
-  const fs::path p = fs::temp_directory_path() /
-                     ("geomint_published_test_" + std::to_string(::getpid()) + "_" + std::to_string(count++) + ".toml");
+  const fs::path p = test::temp_path("geomint_published_test", "_" + std::to_string(count++) + ".toml");
   std::ofstream(p) << text;
   return p;
 }
