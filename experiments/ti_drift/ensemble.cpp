@@ -78,12 +78,10 @@ Stats write_stats(Context& ctx, const Run& run, json& reproduced) {
     f4s.row(time_of(k), m.mean[k], m.sd[k]);
     ts.push_back(time_of(k));
   }
-  const std::vector<double>& mus = m.mean;
-  const std::vector<double>& sigmas = m.sd;
   ctx.write("fig4_stats.csv", f4s);
-  reproduced["hh5_mu_final"] = mus.back(), reproduced["hh5_sigma_final"] = sigmas.back();
-  reproduced["hh5_sigma_exponent"] = power_law_exponent(ts, sigmas, fit_t_min(ctx.scene, "ensemble", t_end));  // past the bounded part
-  return {ts, mus, sigmas};
+  reproduced["hh5_mu_final"] = m.mean.back(), reproduced["hh5_sigma_final"] = m.sd.back();
+  reproduced["hh5_sigma_exponent"] = power_law_exponent(ts, m.sd, fit_t_min(ctx.scene, "ensemble", t_end));  // past the bounded part
+  return {ts, m.mean, m.sd};
 }
 
 // Every trajectory's series (thinned to at most 200 times) and the outliers.

@@ -1,13 +1,13 @@
 #include "geomint/scene/scene.hpp"
 
-#include <toml++/toml.h>
-
 #include <algorithm>
 #include <charconv>
 #include <cstdint>
 #include <cmath>
 #include <limits>
 #include <sstream>
+
+#include <toml++/toml.h>
 
 namespace geomint {
 
@@ -396,49 +396,52 @@ void Scene::reject(std::string_view key, std::string_view allowed) const {
 void Scene::note_read(std::string_view key) const {
   if (!readable_.empty() && !key_under(key, readable_))
     throw std::logic_error(reader_ + " reads the scene key '" + std::string(key) + "', which it does not declare");
-  if (!table_->t.at_path(key))
-    throw std::logic_error("Scene: key not present (not required by the studies that run): " + std::string(key));
   if (read_log_ && std::find(read_log_->begin(), read_log_->end(), key) == read_log_->end()) read_log_->emplace_back(key);
 }
 
-double Scene::real(std::string_view key) const {
-  note_read(key);
-  return *table_->t.at_path(key).value<double>();
+namespace {
+
+// The node of a key that the studies that run required (Scene::require): its absence is a bug.
+const toml::node& required_node(const toml::table& t, std::string_view key) {
+  const auto node = t.at_path(key);
+  if (!node) throw std::logic_error("Scene: key not present (not required by the studies that run): " + std::string(key));
+  return *node.node();
 }
-std::int64_t Scene::integer(std::string_view key) const {
-  note_read(key);
-  return *table_->t.at_path(key).value<std::int64_t>();
+
+template <class T>
+std::vector<T> values_of(const toml::node& array) {
+  std::vector<T> out;
+  for (const auto& x : *array.as_array()) out.push_back(*x.value<T>());
+  return out;
 }
-bool Scene::boolean(std::string_view key) const {
+
+}  // namespace
+
+template <class T>
+T Scene::value(std::string_view key) const {
   note_read(key);
-  return *table_->t.at_path(key).value<bool>();
+  return *required_node(table_->t, key).value<T>();
 }
-std::string Scene::text(std::string_view key) const {
-  note_read(key);
-  return *table_->t.at_path(key).value<std::string>();
-}
+
+double Scene::real(std::string_view key) const { return value<double>(key); }
+std::int64_t Scene::integer(std::string_view key) const { return value<std::int64_t>(key); }
+bool Scene::boolean(std::string_view key) const { return value<bool>(key); }
+std::string Scene::text(std::string_view key) const { return value<std::string>(key); }
 
 std::vector<double> Scene::reals(std::string_view key) const {
   note_read(key);
-  std::vector<double> out;
-  for (const auto& x : *table_->t.at_path(key).as_array()) out.push_back(*x.value<double>());
-  return out;
+  return values_of<double>(required_node(table_->t, key));
 }
 
 std::vector<std::string> Scene::texts(std::string_view key) const {
   note_read(key);
-  std::vector<std::string> out;
-  for (const auto& x : *table_->t.at_path(key).as_array()) out.push_back(*x.value<std::string>());
-  return out;
+  return values_of<std::string>(required_node(table_->t, key));
 }
 
 std::vector<std::vector<double>> Scene::real_rows(std::string_view key) const {
   note_read(key);
   std::vector<std::vector<double>> out;
-  for (const auto& row : *table_->t.at_path(key).as_array()) {
-    auto& r = out.emplace_back();
-    for (const auto& x : *row.as_array()) r.push_back(*x.value<double>());
-  }
+  for (const auto& row : *required_node(table_->t, key).as_array()) out.push_back(values_of<double>(row));
   return out;
 }
 

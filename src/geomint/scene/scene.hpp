@@ -122,6 +122,8 @@ class Scene {
   struct Table;  // the resolved TOML table (scene.cpp): toml++ stays out of this header
   // A read of `key`: refused outside restrict_reads' prefixes, recorded in log_reads' log.
   void note_read(std::string_view key) const;
+  template <class T>
+  T value(std::string_view key) const;  // a number, boolean or string (scene.cpp)
   std::filesystem::path file_;
   std::vector<std::filesystem::path> bases_;
   std::shared_ptr<Table> table_;  // immutable once load() returns; copies of a Scene share it
