@@ -7,7 +7,6 @@
 #include <random>
 #include <string>
 
-#include "geomint/observables/stiffness.hpp"
 #include "geomint/systems/henon_heiles.hpp"
 #include "ti_drift.hpp"
 
@@ -36,52 +35,19 @@ Z2 ensemble_start(const Scene& s, const HH& hhk, std::size_t i) {
   return hh_start(hhk, s.real("hh3.q2") + dq, s.real("hh3.p2") + dp, s.real("hh.H0"));
 }
 
-// %g of v (the numbers of the messages of check_hh_starts).
-std::string short_num(double v);
-
 // The escape energy of U = (q1^2 + q2^2)/2 + c q1^2 q2 - q2^k/k: the lowest of its saddles, on the axis
 // (q1 = 0, |q2| = 1: U = 1/2 - 1/k) and, for c != 0, at q2 = -1/(2c), q1^2 = (q2^(k-1) - q2)/c where that is
 // positive (1/6 for k = 3, c = 1, the triangle of 004 Fig. 3). Below it the motion from a start inside stays bounded.
 template <class HH>
-double hh_escape_energy(const HH& hh) {
-  double e = 0.5 - 1.0 / hh.k;
-  if (hh.c != 0.0) {
-    const double q2 = -1 / (2 * hh.c), q1sq = (int_pow(q2, hh.k - 1) - q2) / hh.c;
-    if (q1sq > 0) e = std::min(e, hh.U(Vec<2>(std::sqrt(q1sq), q2)));
-  }
-  return e;
-}
+double hh_escape_energy(const HH& hh);
 
 // The Henon-Heiles starts q1 = 0, q2 in [q2 - d, q2 + d], p2 in [p2 - d, p2 + d] (d: the ensemble's
 // perturbation, 0 for one start) lie in the bounded well below the escape energy: hh.H0 below it, every q2 between
 // the saddles on the axis (q2 < 1, and q2 > -1 for even k: U(0, .) is monotone on either side of 0 there, so
 // p1^2 = 2 (H0 - U(0, q2)) - p2^2 > 0 at the corners of the box holds on all of it), and the step h below the
 // bound at the frequency of the linearisation at the start, max eig U''(0, q2) (a necessary condition).
+// Both are compiled once, in ti_drift.cpp, for HenonHeilesT<true> and HenonHeilesT<false>.
 template <class HH>
-void check_hh_starts(const Scene& s, const std::string& section, const HH& hh, double d, bool check_h) {
-  const double H0 = s.real("hh.H0"), q2 = s.real(section + ".q2"), p2 = s.real(section + ".p2");
-  const double escape = hh_escape_energy(hh);
-  if (!(H0 < escape))
-    s.reject("hh.H0", "must be below the escape energy " + format_double(escape) + " of U (k = " + std::to_string(hh.k) +
-                          ", c = " + format_double(hh.c) + ": its lowest saddle); here " + format_double(H0));
-  // the unperturbed start is blamed on its keys, a perturbed one on ensemble.perturbation
-  const auto inside = [&](double a) { return a < 1 && (hh.k % 2 == 1 || a > -1); };
-  const auto exists = [&](double a, double b) { return 2 * (H0 - hh.U(Vec<2>(0.0, a))) - b * b > 0; };
-  if (!inside(q2))
-    s.reject(section + ".q2", "the start must lie between the saddles of U on q1 = 0 (q2 < 1" +
-                                  std::string(hh.k % 2 ? "" : ", q2 > -1") + "); here q2 = " + format_double(q2));
-  if (!exists(q2, p2))
-    s.reject(section + ".p2", "the start q1 = 0, q2 = " + short_num(q2) + ", p2 = " + short_num(p2) + " (k = " +
-                                  std::to_string(hh.k) + ") needs U(0, q2) + p2^2/2 < hh.H0 = " + short_num(H0));
-  for (const double a : {q2 - d, q2 + d})
-    for (const double b : {p2 - d, p2 + d})
-      if (!inside(a) || !exists(a, b))
-        s.reject("ensemble.perturbation", "the perturbed start q1 = 0, q2 = " + short_num(a) + ", p2 = " + short_num(b) +
-                                              " must lie between the saddles of U on q1 = 0 with U(0, q2) + p2^2/2 < "
-                                              "hh.H0 = " + short_num(H0) + "; here " + format_double(d));
-  if (check_h)
-    check_step_bound(s, "h", s.real("h"), std::sqrt(max_hessian_eigenvalue(hh, Vec<2>(0.0, q2))),
-                     "omega^2 = max eig U''(0, " + section + ".q2), Henon-Heiles k = " + std::to_string(hh.k));
-}
+void check_hh_starts(const Scene& s, const std::string& section, const HH& hh, double d, bool check_h);
 
 }  // namespace geomint::ti_drift

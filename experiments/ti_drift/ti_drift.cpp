@@ -10,6 +10,7 @@
 #include "geomint/methods/by_name.hpp"
 #include "geomint/methods/scene_methods.hpp"
 #include "geomint/observables/linear_fit.hpp"
+#include "geomint/observables/stiffness.hpp"
 #include "geomint/runner/timing.hpp"
 #include "geomint/systems/counting.hpp"
 #include "henon_heiles_starts.hpp"
@@ -61,5 +62,47 @@ void check_step_bound(const Scene& s, const char* step_key, double h, double ome
 }
 
 double kept_samples(double n, double samples) { return std::floor(n / std::max(1.0, std::floor(n / samples))) + 1; }
+
+template <class HH>
+double hh_escape_energy(const HH& hh) {
+  double e = 0.5 - 1.0 / hh.k;
+  if (hh.c != 0.0) {
+    const double q2 = -1 / (2 * hh.c), q1sq = (int_pow(q2, hh.k - 1) - q2) / hh.c;
+    if (q1sq > 0) e = std::min(e, hh.U(Vec<2>(std::sqrt(q1sq), q2)));
+  }
+  return e;
+}
+
+template <class HH>
+void check_hh_starts(const Scene& s, const std::string& section, const HH& hh, double d, bool check_h) {
+  const double H0 = s.real("hh.H0"), q2 = s.real(section + ".q2"), p2 = s.real(section + ".p2");
+  const double escape = hh_escape_energy(hh);
+  if (!(H0 < escape))
+    s.reject("hh.H0", "must be below the escape energy " + format_double(escape) + " of U (k = " + std::to_string(hh.k) +
+                          ", c = " + format_double(hh.c) + ": its lowest saddle); here " + format_double(H0));
+  // the unperturbed start is blamed on its keys, a perturbed one on ensemble.perturbation
+  const auto inside = [&](double a) { return a < 1 && (hh.k % 2 == 1 || a > -1); };
+  const auto exists = [&](double a, double b) { return 2 * (H0 - hh.U(Vec<2>(0.0, a))) - b * b > 0; };
+  if (!inside(q2))
+    s.reject(section + ".q2", "the start must lie between the saddles of U on q1 = 0 (q2 < 1" +
+                                  std::string(hh.k % 2 ? "" : ", q2 > -1") + "); here q2 = " + format_double(q2));
+  if (!exists(q2, p2))
+    s.reject(section + ".p2", "the start q1 = 0, q2 = " + short_num(q2) + ", p2 = " + short_num(p2) + " (k = " +
+                                  std::to_string(hh.k) + ") needs U(0, q2) + p2^2/2 < hh.H0 = " + short_num(H0));
+  for (const double a : {q2 - d, q2 + d})
+    for (const double b : {p2 - d, p2 + d})
+      if (!inside(a) || !exists(a, b))
+        s.reject("ensemble.perturbation", "the perturbed start q1 = 0, q2 = " + short_num(a) + ", p2 = " + short_num(b) +
+                                              " must lie between the saddles of U on q1 = 0 with U(0, q2) + p2^2/2 < "
+                                              "hh.H0 = " + short_num(H0) + "; here " + format_double(d));
+  if (check_h)
+    check_step_bound(s, "h", s.real("h"), std::sqrt(max_hessian_eigenvalue(hh, Vec<2>(0.0, q2))),
+                     "omega^2 = max eig U''(0, " + section + ".q2), Henon-Heiles k = " + std::to_string(hh.k));
+}
+
+template double hh_escape_energy(const HenonHeilesT<true>&);
+template double hh_escape_energy(const HenonHeilesT<false>&);
+template void check_hh_starts(const Scene&, const std::string&, const HenonHeilesT<true>&, double, bool);
+template void check_hh_starts(const Scene&, const std::string&, const HenonHeilesT<false>&, double, bool);
 
 }  // namespace geomint::ti_drift

@@ -7,9 +7,6 @@
 #include <cstddef>
 #include <vector>
 
-#include <Eigen/Eigenvalues>
-#include <Eigen/SVD>
-
 #include "geomint/core/state.hpp"
 #include "geomint/core/integrate.hpp"
 
@@ -38,16 +35,12 @@ inline Mat<2> in_pq_order(const Mat<2>& M) {
   return P;
 }
 
-inline double spectral_radius(const Mat<2>& M) {
-  return Eigen::EigenSolver<Mat<2>>(M).eigenvalues().cwiseAbs().maxCoeff();
-}
+// The spectral radius of M (linear_stability.cpp).
+double spectral_radius(const Mat<2>& M);
 
 // The condition number kappa of the eigenvector matrix V of M = V D V^{-1}: where the spectral
 // radius is at most 1, |M^n z| <= kappa |z| for every n (infinite at a double eigenvalue).
-inline double eigenvector_condition(const Mat<2>& M) {
-  const Eigen::Vector2d s = Eigen::JacobiSVD<Eigen::Matrix2cd>(Eigen::EigenSolver<Mat<2>>(M).eigenvectors()).singularValues();
-  return s[0] / s[1];
-}
+double eigenvector_condition(const Mat<2>& M);
 
 // The boundary of a stable interval: `stable(lo)` holds and `stable(hi)` does not; 60 halvings of
 // [lo, hi] (below the spacing of doubles for any bracket of width < 2^8 times the bound) return the
@@ -63,15 +56,7 @@ double stability_boundary(Stable&& stable, double lo, double hi) {
 struct StableInterval {
   double lo, hi;
 };
-inline std::vector<StableInterval> stable_intervals(const std::vector<double>& x, const std::vector<double>& rho,
-                                                    double tolerance) {
-  std::vector<StableInterval> set;
-  for (std::size_t i = 0; i < x.size(); ++i) {
-    const bool stable = rho[i] <= 1.0 + tolerance, was = i > 0 && rho[i - 1] <= 1.0 + tolerance;
-    if (stable && !was) set.push_back({x[i], x[i]});
-    if (stable) set.back().hi = x[i];
-  }
-  return set;
-}
+std::vector<StableInterval> stable_intervals(const std::vector<double>& x, const std::vector<double>& rho,
+                                             double tolerance);
 
 }  // namespace geomint

@@ -5,8 +5,7 @@
 #include <stdexcept>
 #include <string>
 
-#include <Eigen/LU>
-
+#include "geomint/core/dense_solve.hpp"
 #include "geomint/core/numerical_failure.hpp"
 #include "geomint/core/state.hpp"
 
@@ -35,7 +34,7 @@ Vec<D> newton_solve(const ResidualJacobian& rj, Vec<D> x, const char* what, int*
     if constexpr (D == 1) {
       dx[0] = r[0] / J(0, 0);
     } else {
-      dx = J.partialPivLu().solve(r);
+      dx = lu_solve<D>(J, r);
     }
     x -= dx;
     if (!x.allFinite()) {

@@ -6,8 +6,7 @@
 #include <cmath>
 #include <limits>
 
-#include <Eigen/LU>
-
+#include "geomint/core/dense_solve.hpp"
 #include "geomint/core/state.hpp"
 #include "geomint/integrators/stormer_verlet.hpp"
 #include "geomint/core/integrate.hpp"
@@ -36,7 +35,7 @@ template <class Sys, int D>
 PhaseState<D> ti_process(const Sys& sys, const PhaseState<D>& z, double h, double c) {
   const double ch2 = c * h * h;
   const Mat<D> A = Mat<D>::Identity() - ch2 * sys.U_qq(z.q);
-  return make_state<D>(z.q - ch2 * sys.U_q(z.q), A.partialPivLu().solve(z.p));
+  return make_state<D>(z.q - ch2 * sys.U_q(z.q), lu_solve<D>(A, z.p));
 }
 
 // 004 (1.5), inverse: q from q - c h^2 grad U(q) = qhat by the fixed point
