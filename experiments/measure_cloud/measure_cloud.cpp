@@ -4,8 +4,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include <boost/numeric/odeint.hpp>
-
 #include "geomint/core/integrate.hpp"
 #include "geomint/methods/registry.hpp"
 #include "geomint/reference/odeint_reference.hpp"
@@ -13,8 +11,6 @@
 #include "geomint/systems/nonholonomic_modified_series.hpp"
 
 namespace geomint::measure_cloud {
-
-namespace odeint = boost::numeric::odeint;
 
 namespace {
 
@@ -90,12 +86,15 @@ Z as_state(const Point4& a) { return from_array(a); }
 
 std::vector<Point4> reference_samples(const NonholonomicParticle& sys, const Point4& z0, double dt, std::int64_t n,
                                       double rtol, double atol) {
-  odeint::bulirsch_stoer<Point4> stepper(atol, rtol);
-  const auto f = [&sys](const Point4& x, Point4& dxdt, double) { dxdt = sys.rhs(x); };
+  const auto f = [&sys](const double* x, double* dxdt) {
+    const Point4 v = sys.rhs(Point4{x[0], x[1], x[2], x[3]});
+    std::copy(v.begin(), v.end(), dxdt);
+  };
+  ReferenceIntegrator reference(4, f, rtol, atol);
   std::vector<Point4> out{z0};
   Point4 x = z0;
   for (std::int64_t j = 1; j <= n; ++j) {
-    reference_integrate(stepper, f, x, static_cast<double>(j - 1) * dt, static_cast<double>(j) * dt, 0.1 * dt);
+    reference.integrate(x, static_cast<double>(j - 1) * dt, static_cast<double>(j) * dt, 0.1 * dt);
     out.push_back(x);
   }
   return out;

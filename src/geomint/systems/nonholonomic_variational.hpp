@@ -13,7 +13,6 @@
 
 #include <Eigen/Core>
 #include <Eigen/LU>
-#include <boost/numeric/odeint.hpp>
 #include <unsupported/Eigen/AutoDiff>
 
 #include "geomint/core/state.hpp"
@@ -61,22 +60,22 @@ struct FlowJacobian {
 inline std::vector<FlowJacobian> variational_flow(const NonholonomicParticle& sys, const Vec<4>& z0, ParticleFlow flow,
                                                   double dt, std::int64_t n, double rtol, double atol) {
   using X = std::array<double, 20>;  // z, then Phi column-major
-  const auto rhs = [&sys, flow](const X& x, X& dxdt, double) {
-    const Vec<4> z = Eigen::Map<const Vec<4>>(x.data());
+  const auto rhs = [&sys, flow](const double* x, double* dxdt) {
+    const Vec<4> z = Eigen::Map<const Vec<4>>(x);
     const auto [f, Df] = field_and_jacobian(sys, z, flow);
-    Eigen::Map<Vec<4>>(dxdt.data()) = f;
-    Eigen::Map<Mat<4>>(dxdt.data() + 4) = Df * Eigen::Map<const Mat<4>>(x.data() + 4);
+    Eigen::Map<Vec<4>>{dxdt} = f;
+    Eigen::Map<Mat<4>>{dxdt + 4} = Df * Eigen::Map<const Mat<4>>(x + 4);
   };
   X x{};
   Eigen::Map<Vec<4>>(x.data()) = z0;
   Eigen::Map<Mat<4>>(x.data() + 4) = Mat<4>::Identity();
-  boost::numeric::odeint::bulirsch_stoer<X> stepper(atol, rtol);
+  ReferenceIntegrator reference(x.size(), rhs, rtol, atol);
   const auto sample = [](const X& s) {
     return FlowJacobian{Eigen::Map<const Vec<4>>(s.data()), Eigen::Map<const Mat<4>>(s.data() + 4)};
   };
   std::vector<FlowJacobian> out{sample(x)};
   for (std::int64_t j = 1; j <= n; ++j) {
-    reference_integrate(stepper, rhs, x, static_cast<double>(j - 1) * dt, static_cast<double>(j) * dt, 0.1 * dt);
+    reference.integrate(x, static_cast<double>(j - 1) * dt, static_cast<double>(j) * dt, 0.1 * dt);
     out.push_back(sample(x));
   }
   return out;
