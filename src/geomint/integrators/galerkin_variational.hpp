@@ -14,7 +14,7 @@
 #include <array>
 #include <cmath>
 
-#include <Eigen/Dense>
+#include <Eigen/LU>
 
 #include "geomint/core/state.hpp"
 #include "geomint/integrators/newton.hpp"
