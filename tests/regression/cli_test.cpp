@@ -20,6 +20,8 @@
 
 namespace fs = std::filesystem;
 
+namespace cli_test {  // the file's scope (the tests build as one translation unit)
+
 namespace {
 
 std::string bin_of(const std::string& name) { return std::string(GEOMINT_BIN_DIR) + "/" + name; }
@@ -295,3 +297,5 @@ TEST(Cli, FormerStudyNamesAreAcceptedWithANote) {
     EXPECT_EQ(run_binary(experiment, "--quick --plan --study " + now).err, "") << experiment;
   }
 }
+
+}  // namespace cli_test

@@ -26,6 +26,8 @@
 #include "summary.hpp"
 
 namespace fs = std::filesystem;
+
+namespace energy_map_test {  // the file's scope (the tests build as one translation unit)
 using json = nlohmann::json;
 using namespace geomint;
 
@@ -446,3 +448,5 @@ TEST(EnergyMap, ProgressMarksTheStartAndTheEndOfEachLoop) {
   EXPECT_LT(start, end) << r.err;
   fs::remove_all(out);
 }
+
+}  // namespace energy_map_test

@@ -20,6 +20,8 @@
 #include "summary.hpp"
 
 namespace fs = std::filesystem;
+
+namespace euler_compensation_test {  // the file's scope (the tests build as one translation unit)
 using json = nlohmann::json;
 
 namespace {
@@ -217,3 +219,4 @@ TEST(EulerCompensation, PlanOfThePaperSceneHasFiniteStepCounts) {
   expect_plan("euler_compensation", {"decay", "gompertz", "oscillator", "convergence", "cost"});
 }
 
+}  // namespace euler_compensation_test

@@ -25,6 +25,8 @@
 #include "geomint/observables/order_fit.hpp"
 #include "summary.hpp"
 
+namespace lobatto_table_test {  // the file's scope (the tests build as one translation unit)
+
 using json = nlohmann::json;
 namespace fs = std::filesystem;
 using geomint::method_info;
@@ -252,3 +254,5 @@ TEST(LobattoTable, ResumedRunHoldsOnlyItsOwnFiles) {
   std::sort(listed.begin(), listed.end()), std::sort(held.begin(), held.end());
   EXPECT_EQ(held, listed);
 }
+
+}  // namespace lobatto_table_test

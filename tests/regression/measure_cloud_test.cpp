@@ -25,6 +25,8 @@
 #include "geomint/methods/registry.hpp"
 #include "summary.hpp"
 
+namespace measure_cloud_test {  // the file's scope (the tests build as one translation unit)
+
 using json = nlohmann::json;
 
 namespace {
@@ -275,3 +277,5 @@ TEST(MeasureCloud, ResumedOrderStudyGivesTheSameFiles) {
                           "--quick --study order_study --set order_study.t_end=3 --set ptp_window=2 --set 'methods=[\"conformal_M\"]' "
                           "--set 'order_study.h=[0.25, 0.125, 0.0625]'", 1, "order_study");
 }
+
+}  // namespace measure_cloud_test

@@ -12,6 +12,8 @@
 
 using namespace geomint;
 
+namespace published_test {  // the file's scope (the tests build as one translation unit)
+
 namespace {
 
 void expect_published(const std::string& experiment) {
@@ -43,3 +45,5 @@ TEST(Published, RowlandsConvergence) { expect_published("rowlands_convergence");
 TEST(Published, EnergyMap) { expect_published("energy_map"); }
 TEST(Published, TiDrift) { expect_published("ti_drift"); }
 TEST(Published, MeasureCloud) { expect_published("measure_cloud"); }
+
+}  // namespace published_test

@@ -22,6 +22,8 @@
 #include "summary.hpp"
 
 namespace fs = std::filesystem;
+
+namespace rowlands_convergence_test {  // the file's scope (the tests build as one translation unit)
 using json = nlohmann::json;
 
 namespace {
@@ -210,3 +212,4 @@ TEST(RowlandsConvergence, PlanOfThePaperSceneHasFiniteStepCounts) {
   expect_plan("rowlands_convergence", {"convergence", "cost"});
 }
 
+}  // namespace rowlands_convergence_test

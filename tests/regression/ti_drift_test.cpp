@@ -21,6 +21,8 @@
 #include "geomint/runner/published.hpp"
 #include "summary.hpp"
 
+namespace ti_drift_test {  // the file's scope (the tests build as one translation unit)
+
 using json = nlohmann::json;
 
 namespace {
@@ -395,3 +397,5 @@ TEST(TiDrift, ResumedEnsembleGivesTheSameFiles) {
 TEST(TiDrift, ResumedLennardJonesEnsembleGivesTheSameFiles) {
   expect_resume_identical("ti_drift", "--quick --study lj --set lj.t_end=100", 1, "lj");
 }
+
+}  // namespace ti_drift_test

@@ -11,6 +11,8 @@
 
 using namespace geomint;
 
+namespace nonholonomic_stability_test {  // the file's scope (the tests build as one translation unit)
+
 TEST(NonholonomicStability, FreeParticlePhi4ToT100) {
   const NonholonomicParticle sys{Potential::free};
   const double h = 0.25;
@@ -32,3 +34,5 @@ TEST(NonholonomicStability, FreeParticlePhi4ToT100) {
     EXPECT_LT(max_H_err, 0.05) << discretization_name(d);
   }
 }
+
+}  // namespace nonholonomic_stability_test

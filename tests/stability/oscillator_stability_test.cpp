@@ -17,6 +17,8 @@
 
 using namespace geomint;
 
+namespace oscillator_stability_test {  // the file's scope (the tests build as one translation unit)
+
 namespace {
 constexpr double kPeriods = 1e5;
 std::int64_t steps_for_periods(double h) { return std::llround(kPeriods * 2 * std::numbers::pi / h); }
@@ -93,3 +95,5 @@ TEST(Stability, CompensationWithTooSmallKFailsLoudly) {
       },
       IntegrationError);
 }
+
+}  // namespace oscillator_stability_test

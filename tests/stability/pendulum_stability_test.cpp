@@ -14,6 +14,8 @@
 
 using namespace geomint;
 
+namespace pendulum_stability_test {  // the file's scope (the tests build as one translation unit)
+
 namespace {
 
 const ElasticPendulumWithGravity sys{1.0, {SpringTerm{1.0, 1.0}, GravityTerm{1.0, 0.2}}};
@@ -51,3 +53,5 @@ TEST(Stability, StormerVerletNearItsBoundOnThePendulum) {
   // h sqrt(k/m) = 1.8, 90 % of the linear stability bound 2 of the spring mode.
   expect_bounded_without_drift(energy_windows(stormer_verlet_method(sys), 1.8), 1.0);
 }
+
+}  // namespace pendulum_stability_test

@@ -21,6 +21,8 @@
 
 using namespace geomint;
 
+namespace analysis_test {  // the file's scope (the tests build as one translation unit)
+
 // Stormer-Verlet on q'' = -q: |trace| of its one-step matrix is |2 - (w h)^2|, stable for w h < 2.
 TEST(StabilityBoundary, BisectsStormerVerletToItsBoundOfTwo) {
   const auto stable = [](double wh) { return std::abs(2 - wh * wh) < 2; };
@@ -216,3 +218,5 @@ TEST(PoincareSection, UpwardCutInterpolatesTheStepLinearly) {
   EXPECT_FALSE(upward_cut(z(1, 0, 1, 0), z(3, 0, 1, 0)).has_value());     // no crossing
   EXPECT_TRUE(upward_cut(z(-1, 0, 1, 0), z(0, 0, 1, 0)).has_value());     // ends on the section
 }
+
+}  // namespace analysis_test

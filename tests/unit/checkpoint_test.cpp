@@ -27,6 +27,8 @@
 using namespace geomint;
 namespace fs = std::filesystem;
 
+namespace checkpoint_test {  // the file's scope (the tests build as one translation unit)
+
 namespace {
 
 // Task i: i % 5 + 1 values (records of different lengths).
@@ -375,3 +377,5 @@ TEST(Checkpoint, DefaultRoundKeepsEveryWorkerBusy) {
   EXPECT_EQ(default_round(9, 2), 2u);
   EXPECT_EQ(default_round(0, 4), 1u);
 }
+
+}  // namespace checkpoint_test

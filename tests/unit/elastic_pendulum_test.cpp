@@ -9,6 +9,8 @@
 
 using namespace geomint;
 
+namespace elastic_pendulum_test {  // the file's scope (the tests build as one translation unit)
+
 namespace {
 const ElasticPendulumWithGravity pendulum{1.3, {SpringTerm{0.7, 1.1}, GravityTerm{1.3, 0.2}}};
 
@@ -77,3 +79,5 @@ TEST(ElasticPendulum, RadialOscillationOfSection41) {
   EXPECT_LT(cart.U_q(Vec<2>(0.0, hanging_equilibrium_y(p))).norm(), 1e-15);
   EXPECT_DOUBLE_EQ(spring_frequency(p), std::sqrt(0.7 / 1.3));
 }
+
+}  // namespace elastic_pendulum_test

@@ -19,6 +19,8 @@
 
 using namespace geomint;
 
+namespace energy_map_test {  // the file's scope (the tests build as one translation unit)
+
 namespace {
 const EnergyMapParams P{1.0, 1.0, 1.0, 0.02, 0.2, 2000, 1e3};  // 000 Fig. 6 parameters, 400 time units
 
@@ -259,3 +261,5 @@ TEST(EnergyMapStatistics, NearestRankQuantile) {
   EXPECT_EQ(nearest_rank_quantile(std::vector<int>{1, 2, 3, 4}, 0.5), 3);  // round(1.5) = 2, to even
   EXPECT_EQ(nearest_rank_quantile(std::vector<int>{1, 2, 3, 4, 5, 6}, 0.5), 3);  // round(2.5) = 2
 }
+
+}  // namespace energy_map_test

@@ -10,6 +10,8 @@
 
 using namespace geomint;
 
+namespace ensemble_kernels_test {  // the file's scope (the tests build as one translation unit)
+
 namespace {
 
 // Bit-for-bit equality of two states (EXPECT_EQ on doubles would let -0.0 == 0.0 pass).
@@ -91,3 +93,5 @@ TEST(EnsembleKernels, AShortBatchFillsItsLanesAndReturnsOnlyItsTrajectories) {
   // 3 trajectories, and a step count that is not a multiple of `every` (the last part unobserved).
   expect_lanes_are_the_scalar_method(LennardJones<9>{}, cluster_starts(3), 0.01, 250, 100);
 }
+
+}  // namespace ensemble_kernels_test

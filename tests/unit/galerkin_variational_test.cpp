@@ -23,6 +23,8 @@
 
 using namespace geomint;
 
+namespace galerkin_variational_test {  // the file's scope (the tests build as one translation unit)
+
 namespace {
 Mat<2> one_step_matrix(const auto& R, const HarmonicOscillator& osc, double h) {  // (p, q) ordering
   const auto ep = galerkin_step(R, osc, make_state(0.0, 1.0), h), eq = galerkin_step(R, osc, make_state(1.0, 0.0), h);
@@ -236,3 +238,5 @@ TEST(WorkPrecision, InterpolatesInLogLogAndNeverExtrapolates) {
   EXPECT_FALSE(error_at_wall(r, 1e-3).has_value());
   EXPECT_EQ(largest_wall(r), 1e-6 / 0.05);
 }
+
+}  // namespace galerkin_variational_test

@@ -22,6 +22,8 @@
 
 using namespace geomint;
 
+namespace integrators_test {  // the file's scope (the tests build as one translation unit)
+
 namespace {
 using Transformed = PointTransformed<HarmonicOscillator, OscillatorCompensation>;
 const Transformed transformed{{}, OscillatorCompensation{2.0, 0.3}};
@@ -131,3 +133,5 @@ TEST(MethodRegistry, WithMethodBindsByNameAndRefusesWhatCannotStepTheSystem) {
   EXPECT_NE(std::find(names.begin(), names.end(), "symplectic_euler_qp"), names.end());
   EXPECT_EQ(std::find(names.begin(), names.end(), "stormer_verlet"), names.end());
 }
+
+}  // namespace integrators_test

@@ -24,6 +24,8 @@
 using namespace geomint;
 namespace fs = std::filesystem;
 
+namespace io_test {  // the file's scope (the tests build as one translation unit)
+
 TEST(Csv, HeaderRowsAndFullPrecision) {
   Csv csv({"name", "h", "n"});
   csv.row("se", 0.1, 10);
@@ -222,3 +224,5 @@ TEST(ParallelMap, ResultsByIndexAndLowestIndexErrorWins) {
     EXPECT_STREQ(e.what(), "bad 3");
   }
 }
+
+}  // namespace io_test

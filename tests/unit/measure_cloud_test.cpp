@@ -20,6 +20,8 @@
 
 using namespace geomint;
 
+namespace measure_cloud_test {  // the file's scope (the tests build as one translation unit)
+
 namespace {
 
 using Z = PhaseState<2>;
@@ -350,3 +352,5 @@ TEST(MeasureCloud, SpherePointsAreSeededAndOnTheSphere) {
 }
 
 }  // namespace
+
+}  // namespace measure_cloud_test

@@ -11,6 +11,8 @@
 
 using namespace geomint;
 
+namespace order_fit_test {  // the file's scope (the tests build as one translation unit)
+
 TEST(OrderFit, ExactPowerLaw) {
   std::vector<double> h, e;
   for (double x = 0.2; x > 1e-3; x /= 2) h.push_back(x), e.push_back(3.0 * x * x);
@@ -78,3 +80,5 @@ TEST(TimeRuns, CalibratesCallsPerRunAndOrdersTheStatistics) {
   const RunTime once = time_runs(1, busy, 0);  // a run already long enough: one call per run
   EXPECT_EQ(once.inner, 1);
 }
+
+}  // namespace order_fit_test

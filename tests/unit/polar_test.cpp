@@ -12,6 +12,8 @@
 
 using namespace geomint;
 
+namespace polar_test {  // the file's scope (the tests build as one translation unit)
+
 namespace {
 const double l = 1.0, m = 1.3, k = 0.9, g = 0.02;
 const ElasticPendulumWithGravity cart{m, {SpringTerm{k, l}, GravityTerm{m, g}}};
@@ -84,3 +86,5 @@ TEST(Polar, PrintedInverseOf63GivesAnotherPendulum) {
     EXPECT_GT(std::abs(printed - cart.H(at_rest(q))), 1e-3);
   }
 }
+
+}  // namespace polar_test

@@ -10,6 +10,8 @@
 #include "temp_paths.hpp"
 
 using namespace geomint;
+
+namespace published_test {  // the file's scope (the tests build as one translation unit)
 using json = nlohmann::ordered_json;
 namespace fs = std::filesystem;
 
@@ -205,3 +207,5 @@ TEST(Published, EachEntryBelongsToAFigureItsStudyMakes) {
   EXPECT_NE(resolved("").find("figure = ?"), std::string::npos) << resolved("");
   EXPECT_NE(resolved("figure = \"004 Fig. 6\"\n").find("not one the study ensemble makes"), std::string::npos);
 }
+
+}  // namespace published_test

@@ -9,6 +9,8 @@
 
 using namespace geomint;
 
+namespace reference_test {  // the file's scope (the tests build as one translation unit)
+
 TEST(Reference, RadialOscillationWithoutGravity) {
   // q = (x, 0), p = (px, 0), x > 0: x(t) = l + (x0 - l) cos wt + px0/(m w) sin wt, w = sqrt(k/m).
   const double l = 1.0, m = 2.0, k = 3.0, w = std::sqrt(k / m), t = 4.0;
@@ -32,3 +34,5 @@ TEST(Reference, VerticalOscillationWithGravity) {
   EXPECT_NEAR(z.p[1], -(1.5 - ys) * std::sin(w * t) + 0.1 * std::cos(w * t), 1e-12);
   EXPECT_EQ(z.q[0], 0.0);
 }
+
+}  // namespace reference_test

@@ -14,6 +14,8 @@
 
 using namespace geomint;
 
+namespace rowlands_test {  // the file's scope (the tests build as one translation unit)
+
 namespace {
 const ElasticPendulumWithGravity sys{1.0, {SpringTerm{1.0, 1.0}, GravityTerm{1.0, 0.2}}};
 const PhaseState<2> z0 = make_state<2>(Vec<2>(0.5, 1.0), Vec<2>(0.3, 0.2));  // p not along q: the spring is nonlinear across q
@@ -105,3 +107,5 @@ TEST(Processing, FinalOnlyRunEqualsTheObservedRun) {
               0.0);
   }
 }
+
+}  // namespace rowlands_test

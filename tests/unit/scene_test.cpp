@@ -14,6 +14,8 @@
 using namespace geomint;
 namespace fs = std::filesystem;
 
+namespace scene_test {  // the file's scope (the tests build as one translation unit)
+
 namespace {
 
 Schema schema() {
@@ -228,3 +230,5 @@ TEST(Scene, AnErrorInAnOlderSpellingNamesIt) {
             "studies = [\"c\"] (from --set as 'observables', the older name of 'studies'): must be a list of strings, "
             "each one of \"a\", \"b\"");
 }
+
+}  // namespace scene_test

@@ -26,6 +26,8 @@
 
 using namespace geomint;
 
+namespace takahashi_imada_test {  // the file's scope (the tests build as one translation unit)
+
 namespace {
 const double alpha = takahashi_imada_alpha;
 
@@ -396,3 +398,5 @@ TEST(Stiffness, LargestEigenvalueOfTheHessian) {
   EXPECT_NEAR(max_hessian_eigenvalue(HenonHeiles{}, Vec<2>(0.0, 0.0)), 1.0, 1e-15);
   EXPECT_NEAR(max_hessian_eigenvalue(HenonHeiles{}, Vec<2>(0.0, -0.2)), 1.4, 1e-14);
 }
+
+}  // namespace takahashi_imada_test

@@ -19,6 +19,8 @@
 
 using namespace geomint;
 
+namespace ti_drift_analysis_test {  // the file's scope (the tests build as one translation unit)
+
 namespace {
 
 // A random walk of n steps (unit variance per step, fixed seed) plus a ramp of `rate` per sample on [a, b).
@@ -130,3 +132,5 @@ TEST(OrbitAverage, RefusesAnOrbitThatDoesNotRotate) {
   const UnsymmetricPendulum up;
   EXPECT_THROW(rotation_average(up, 0.0, [](double, double) { return 1.0; }), NumericalFailure);
 }
+
+}  // namespace ti_drift_analysis_test

@@ -12,6 +12,8 @@
 
 using namespace geomint;
 
+namespace transforms_test {  // the file's scope (the tests build as one translation unit)
+
 namespace {
 double central_difference(const auto& f, double x, double d) { return (f(x + d) - f(x - d)) / (2 * d); }
 }  // namespace
@@ -105,3 +107,5 @@ TEST(PointTransformed, GradientsAgainstFiniteDifferences) {
   const auto Hq = [&](double y) { return sys.H_q(Vec<1>(qb), Vec<1>(y))[0]; };
   EXPECT_NEAR(sys.H_qp(Vec<1>(qb), Vec<1>(pb))(0, 0), (Hq(pb + d) - Hq(pb - d)) / (2 * d), 1e-7);
 }
+
+}  // namespace transforms_test
