@@ -10,6 +10,7 @@
 #   make paper                    figures + scaling + tables from summary.json + paper/main.pdf
 #   make experiment NAME=x [SCENE=v] ARGS='--study S --set key=value'   one experiment (+ the figures of what ran)
 #   make bench                    throughput benchmarks (Google Benchmark)
+#   make methods-gpi              rewrite figures/methods.gpi from the method registry (after changing it)
 #   make clean                    remove build/, results/, figures/out/, paper outputs
 
 BUILD     ?= build
@@ -19,7 +20,7 @@ CMAKE_ARGS ?=
 EXPERIMENTS := $(notdir $(patsubst %/,%,$(dir $(wildcard experiments/*/main.cpp))))
 DEPS_STAMP := .deps
 
-.PHONY: all deps build test figures figure-runs figure-files scaling paper experiment bench clean
+.PHONY: all deps build test figures figure-runs figure-files scaling paper experiment bench methods-gpi clean
 all: build
 
 $(DEPS_STAMP)/%.stamp: scripts/install-deps.sh
@@ -105,6 +106,10 @@ bench: $(DEPS_STAMP)/build.stamp $(DEPS_STAMP)/figures.stamp $(BUILD)/CMakeCache
 	cmake --build $(BUILD) -j $(JOBS) --target geomint_bench geomint_energy_map_bench
 	$(BUILD)/bin/geomint_bench
 	bench/run_energy_map_bench.sh $(BUILD)
+
+methods-gpi: $(DEPS_STAMP)/build.stamp $(BUILD)/CMakeCache.txt
+	cmake --build $(BUILD) -j $(JOBS) --target geomint-methods
+	$(BUILD)/bin/geomint-methods --gnuplot > figures/methods.gpi
 
 clean:
 	rm -rf $(BUILD) $(RESULTS) figures/out paper/generated

@@ -27,45 +27,14 @@ term(fmt, name, w, h) = (fmt eq "pdf" \
 set datafile separator comma
 csv(file) = results . '/' . file
 
-# ---- one colour per method, keyed by the registry's names (build/bin/geomint-methods --names) ----
-# method_colour('stormer_verlet') is the colour of a method in every figure (Okabe-Ito and, for the
-# five discretizations of 003, Paul Tol's "bright": colour-blind safe). A base method is vermillion
-# and its processed or compensated form blue throughout. Methods that a scene lists together
-# (its *.methods) have different colours: ctest palette.distinct_per_scene checks this palette
-# against every paper scene and the registry.
-PALETTE = " explicit_euler:#D55E00" \
-        . " rk4:#009E73" \
-        . " symplectic_euler_pq:#D55E00" \
-        . " symplectic_euler_qp:#D55E00" \
-        . " compensated_symplectic_euler:#0072B2" \
-        . " stormer_verlet:#D55E00" \
-        . " rowlands_kernel:#E69F00" \
-        . " rowlands:#0072B2" \
-        . " rowlands_cheap:#56B4E9" \
-        . " rowlands_printed:#CC79A7" \
-        . " takahashi_imada:#0072B2" \
-        . " simplified_takahashi_imada:#009E73" \
-        . " forest_ruth:#000000" \
-        . " implicit_midpoint:#D55E00" \
-        . " lobatto:#0072B2" \
-        . " simpson:#E69F00" \
-        . " conformal_M:#4477AA" \
-        . " conformal_MT:#228833" \
-        . " conformal_TM:#EE6677" \
-        . " conformal_TT:#AA3377" \
-        . " conformal_T:#CCBB44" \
-        . " phi0:#D55E00" \
-        . " phi2:#E69F00" \
-        . " phi4:#0072B2" \
-        . " phi6:#009E73" \
-        . " odeint_rk4:#009E73" \
-        . " odeint_rkn_sb3a:#882255" \
-        . " odeint_velocity_verlet:#8C3B00" \
-        . " odeint_rkf78:#CC79A7" \
-        . " odeint_bulirsch_stoer:#000000"
-C_OTHER = '#777777'      # a method the palette does not know
-method_colour(name) = (_p = strstrt(PALETTE . " ", " " . name . ":"), \
-                       _p > 0 ? PALETTE[_p + strlen(name) + 2 : _p + strlen(name) + 8] : C_OTHER)
+# ---- methods: colour, key title and equations from the registry --------------------------------
+# figures/methods.gpi is generated from the method registry (geomint-methods --gnuplot): a method's
+# colour method_colour(m) is the same in every figure (Okabe-Ito and, for the five discretizations
+# of 003, Paul Tol's "bright": colour-blind safe; a base method is vermillion and its processed or
+# compensated form blue throughout), its key text method_key(m, paper) names it with the equations
+# of that paper. Methods that a scene lists together (its *.methods) have different colours: ctest
+# palette.distinct_per_scene checks this against every paper scene.
+load 'figures/methods.gpi'
 
 C_EXACT = '#000000'                                  # exact solution
 C_SE    = method_colour('symplectic_euler_pq')       # (symplectic) Euler without compensation

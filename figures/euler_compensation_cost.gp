@@ -6,8 +6,8 @@
 load 'figures/common.gp'
 stats csv('cost_energy.csv') using (column("h") * column("steps")) nooutput
 T = STATS_max
-METHODS = "se se_compensated rk4"
-LABEL(m) = m eq "se" ? "symplectic Euler" : m eq "se_compensated" ? "with transformation (82)" : "RK4 (reference)"
+METHODS = summary_words('cost.energy.methods')
+LABEL(m) = method_key(m, "000")   # (figures/methods.gpi: the registry's title and 000's equations)
 STYLE(m) = m eq "se" ? LS_SE : m eq "se_compensated" ? LS_COMP : LS_RK4
 COST_NAME = 'euler_compensation_cost'
 COST_TITLE = sprintf("{/:Bold Cost:} energy error against computing effort, harmonic oscillator, one run to T = %g per step size h\nwall time: minimum of %s runs of at least 10 ms, single thread", T, scene_num('timing.repeats'))

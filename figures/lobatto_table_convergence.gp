@@ -36,7 +36,7 @@ do for [i = 1:words(ALLM)] {   # styles for methods other than Simpson's and the
     eval sprintf("set style line %d lc rgb '%s' lw 0.9 dt (8,4) pt %d ps 0.7", 70 + i, c, (2 * i) % 14 + 1)
 }
 MSTYLE(m) = m eq "simpson" ? LS_SIMP : m eq "midpoint" ? LS_MID : 60 + word_index(ALLM, m)
-MLABEL(m) = m eq "midpoint" ? "implicit midpoint" : nosub(m)
+MLABEL(m) = method_title(m)
 
 # series: name, file, column, summary order key (or "" for none), style, label
 LOB1(s)  = s eq "p" || s eq "q" || s eq "H" || s eq "Hd"           # (the Lobatto series of Table 1)

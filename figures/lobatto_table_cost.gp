@@ -18,11 +18,7 @@ if (words(METHODS) == 0) { exit error sprintf("%s/figure_values.gp: no cost.pend
 do for [i = 1:words(METHODS)] {   # styles for methods other than these five
     eval sprintf("set style line %d lc rgb '%s' lw 1.0 pt %d ps 0.7", 60 + i, word("#882255 #56B4E9 #999999 #000000 #E69F00 #0072B2 #D55E00 #009E73 #CC79A7", (i - 1) % 9 + 1), (2 * i) % 14 + 1)
 }
-LABEL(m) = m eq "lobatto"  ? "Lobatto (13)–(14), Newton" \
-         : m eq "simpson"  ? "Simpson [2], Newton" \
-         : m eq "midpoint" ? "implicit midpoint, Newton" \
-         : m eq "odeint_rk4" ? "odeint: classical RK4" \
-         : m eq "odeint_rkf78" ? "odeint: Runge–Kutta–Fehlberg 7(8), fixed step" : nosub(m)
+LABEL(m) = method_key(m, "001")   # (figures/methods.gpi: the registry's title and 001's equations)
 STYLE(m) = m eq "lobatto" ? LS_LOB : m eq "simpson" ? LS_SIMP : m eq "midpoint" ? LS_MID \
          : m eq "odeint_rk4" ? LS_RK4 : m eq "odeint_rkf78" ? LS_RKF78 : 60 + word_index(METHODS, m)
 COST_NAME = 'lobatto_table_cost'

@@ -27,8 +27,8 @@ if (words(METHODS) == 0) { exit error sprintf("%s/figure_values.gp: no methods.f
 do for [i = 1:words(METHODS)] {   # styles for methods other than the paper's three
     eval sprintf("set style line %d lc rgb '%s' lw 1.0 pt %d ps 0.7", 60 + i, word("#009E73 #CC79A7 #56B4E9 #882255 #999999 #000000 #E69F00 #0072B2 #D55E00", (i - 1) % 9 + 1), (2 * i) % 14 + 1)
 }
-LABEL(m) = m eq "lobatto" ? "Lobatto (13)–(14)" : m eq "simpson" ? "Simpson [2]" : m eq "midpoint" ? "implicit midpoint" : nosub(m)
-SHORT(m) = m eq "lobatto" ? "Lobatto" : m eq "simpson" ? "Simpson" : nosub(m)
+LABEL(m) = method_key(m, "001")   # (figures/methods.gpi: the registry's title and 001's equations)
+SHORT(m) = method_title(m)
 STYLE(m) = m eq "lobatto" ? LS_LOB : m eq "simpson" ? LS_SIMP : m eq "midpoint" ? LS_MID : 60 + word_index(METHODS, m)
 
 # "max_j error: Lobatto 1.2e-03, Simpson ..." per mesh (k = 0, 1) and variable, ERRS_<k>_<var>: the
@@ -57,7 +57,7 @@ do for [fmt in FORMATS] {
     set format y "%g"
     set offsets 0, 0, graph 0.06, graph 0.06
     unset key
-    set label 1 "" at graph 0.02, graph 0.06 left front font ",8"   # the errors of the panel
+    set label 1 "" at graph 0.02, graph 0.06 left front font ",7.5"   # the errors of the panel
     do for [row = 1:2] {
         n = (row == 1 ? N1 : N2)
         B = (row == 1 ? 0.535 : 0.135)         # bottom of the row, screen

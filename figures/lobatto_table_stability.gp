@@ -30,7 +30,7 @@ METHODS = summary_words('methods.stability')
 do for [i = 1:words(METHODS)] {   # styles for methods other than Simpson's
     eval sprintf("set style line %d lc rgb '%s' lw 1.0", 60 + i, word("#009E73 #CC79A7 #D55E00 #882255 #999999 #000000 #56B4E9 #E69F00 #0072B2", (i - 1) % 9 + 1))
 }
-LABEL(m) = m eq "simpson" ? "Simpson [2]" : nosub(m)
+LABEL(m) = method_key(m, "001")   # (figures/methods.gpi: the registry's title and 001's equations)
 STYLE(m) = m eq "simpson" ? LS_SIMP : 60 + word_index(METHODS, m)
 # the compared curves and their key entries as plot clauses (none without compared methods)
 COMPARED = words(METHODS) == 0 ? "" : 'for [m in METHODS] ST using "h_omega":(clip(column("spectral_radius_".m))) with lines ls STYLE(m), '

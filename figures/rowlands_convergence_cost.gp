@@ -17,13 +17,7 @@ T = STATS_max
 CSV_METHODS = summary_words('cost.phase.methods')
 PREFERRED = "sv rowlands rowlands_cheap forest_ruth odeint_velocity_verlet odeint_rkn_sb3a odeint_rk4"
 eval ORDER_METHODS
-LABEL(m) = m eq "sv"             ? "Störmer–Verlet (26)–(28)" \
-         : m eq "rowlands"       ? "Rowlands, processors (32)–(33), h²/12" \
-         : m eq "rowlands_cheap" ? "Rowlands, cheap processors (34)–(37)" \
-         : m eq "forest_ruth"    ? "Forest–Ruth, order 4 (3 forces per step)" \
-         : m eq "odeint_rk4"     ? "odeint: classical RK4" \
-         : m eq "odeint_rkn_sb3a" ? "odeint: symplectic RKN SB3a, order 4" \
-         : m eq "odeint_velocity_verlet" ? "odeint: velocity Verlet (= Störmer–Verlet)" : nosub(m)
+LABEL(m) = method_key(m, "000")   # (figures/methods.gpi: the registry's title and 000's equations)
 STYLE(m) = m eq "sv" ? LS_SV : m eq "rowlands" ? LS_ROW : m eq "rowlands_cheap" ? LS_ROWCH \
          : m eq "forest_ruth" ? LS_FR : m eq "odeint_rk4" ? LS_RK4 : m eq "odeint_rkn_sb3a" ? LS_RKN \
          : m eq "odeint_velocity_verlet" ? LS_VV : LS_OTHER

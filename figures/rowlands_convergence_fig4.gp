@@ -26,12 +26,7 @@ QUANTITIES = (HAS_ENERGY ? "energy " : "") . (HAS_PHASE ? "phase" : "")
 PREFERRED = "sv kernel rowlands_printed rowlands rowlands_cheap forest_ruth"   # (the key's order)
 eval ORDER_METHODS
 FIT(m)   = m eq "kernel" ? "kernel_unprocessed" : m                   # (name prefix in orders.csv)
-LABEL(m) = m eq "sv"       ? "Störmer–Verlet (26)–(28)" \
-         : m eq "rowlands" ? "Rowlands, processors (32)–(33), h²/12" \
-         : m eq "rowlands_cheap" ? "Rowlands, cheap processors (34)–(37)" \
-         : m eq "kernel"   ? "Rowlands kernel (31) alone" \
-         : m eq "rowlands_printed" ? "(32)–(33) as printed, h^2/24" \
-         : m eq "forest_ruth" ? "Forest–Ruth (3 forces per step)" : nosub(m)
+LABEL(m) = method_key(m, "000")   # (figures/methods.gpi: the registry's title and 000's equations)
 STYLE(m) = m eq "sv" ? LS_SV : m eq "rowlands" ? LS_ROW : m eq "rowlands_cheap" ? LS_ROWCH \
          : m eq "kernel" ? LS_KERNEL : m eq "rowlands_printed" ? LS_PRINTED : m eq "forest_ruth" ? LS_FR : LS_OTHER
 FITSTYLE(m) = STYLE(m) + 10

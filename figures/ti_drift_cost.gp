@@ -18,8 +18,7 @@ eval need_num('REF_TOL', scene_real('work_precision.reference_tol'))
 CSV_METHODS = summary_words('cost.henon_heiles.methods')
 PREFERRED = "sv ti sti"
 eval ORDER_METHODS
-LABEL(m) = m eq "sv" ? "Störmer–Verlet (1.3)" : m eq "ti" ? "Takahashi–Imada (1.4)" : m eq "sti" ? "simplified TI (1.6)" \
-         : m eq "forest_ruth" ? "Forest–Ruth" : m
+LABEL(m) = method_key(m, "004")   # (figures/methods.gpi: the registry's title and 004's equations)
 # TI and the simplified method coincide on the oscillator: open squares around filled circles keep both visible
 set style line 701 lc rgb method_colour('stormer_verlet') lw 1.0 pt 7 ps 0.55
 set style line 702 lc rgb method_colour('takahashi_imada') lw 1.0 pt 4 ps 0.85

@@ -44,7 +44,7 @@ LS_TD_OTHER = 105; set style line LS_TD_OTHER lc rgb C_OTHER lw 1.0 dt (2,3) pt 
 set style line LS_TD_FR + 10    lc rgb C_FR    lw 0.9 dt (2,3)
 set style line LS_TD_OTHER + 10 lc rgb C_OTHER lw 0.9 dt (2,3)
 STYLE(m) = m eq "sv" ? LS_TD_SV : m eq "ti" ? LS_TD_TI : m eq "sti" ? LS_TD_STI : m eq "forest_ruth" ? LS_TD_FR : LS_TD_OTHER
-COLOR(m) = m eq "sv" ? C_SV : m eq "ti" ? C_TI : m eq "sti" ? C_STI : m eq "forest_ruth" ? C_FR : C_OTHER
+COLOR(m) = method_colour(m)
 SHORT(m) = m eq "sv" ? "SV" : m eq "ti" ? "TI" : m eq "sti" ? "simplified TI" : m eq "forest_ruth" ? "Forest–Ruth" : nosub(m)
 NAME(m) = m eq "sv" ? "SV (1.3)" : m eq "ti" ? "TI (1.4), processed" : m eq "sti" ? "simplified TI (1.6), processed" : SHORT(m)
 STEP(m) = (_e = value('EVALS_'.m)) == 2 ? "h = h_{eff}" : _e == 1 ? "h = h_{eff}/2" : sprintf("h = %gh_{eff}/2", _e)

@@ -1,11 +1,13 @@
 #!/usr/bin/env python3
-"""check_palette.py SOURCE_DIR METHODS_BIN: one colour per method, distinct where methods meet.
+"""check_palette.py SOURCE_DIR METHODS_BIN [--gpi]: one colour per method, distinct where methods meet.
 
-The palette of figures/common.gp (PALETTE, keyed by registry name) has an entry for every method
-of the registry (METHODS_BIN --names) and no other; and in every paper scene
+Every method of the registry (METHODS_BIN --json) has a colour "#rrggbb"; and in every paper scene
 (experiments/<name>/*.toml but quick* and published.toml) each list of methods (a key ending in
-"methods") has as many colours as methods: methods drawn in one figure never share a colour.
+"methods", naming methods by registry name or label) has as many colours as methods: methods drawn
+in one figure never share a colour. With --gpi: figures/methods.gpi is what METHODS_BIN --gnuplot
+writes (run `make methods-gpi` after changing the registry).
 """
+import json
 import pathlib
 import re
 import subprocess
@@ -23,10 +25,21 @@ def method_lists(node, key=""):
 
 def main(argv):
     source, methods_bin = pathlib.Path(argv[1]), argv[2]
-    palette = dict(re.findall(r'" ([A-Za-z0-9_]+):(#[0-9A-Fa-f]{6})"', (source / "figures" / "common.gp").read_text()))
-    registry = subprocess.run([methods_bin, "--names"], capture_output=True, text=True, check=True).stdout.split()
-    problems = [f"the palette has no colour for {m}" for m in registry if m not in palette]
-    problems += [f"the palette names {m}, which the registry does not have" for m in palette if m not in registry]
+    if argv[3:] == ["--gpi"]:
+        generated = subprocess.run([methods_bin, "--gnuplot"], capture_output=True, text=True, check=True).stdout
+        committed = (source / "figures" / "methods.gpi").read_text(encoding="utf-8")
+        if generated != committed:
+            print("figures/methods.gpi differs from the registry (geomint-methods --gnuplot): run make methods-gpi")
+            return 1
+        print("figures/methods.gpi: current")
+        return 0
+    registry = json.loads(subprocess.run([methods_bin, "--json"], capture_output=True, text=True, check=True).stdout)
+    palette = {}
+    problems = []
+    for m in registry:
+        if not re.fullmatch(r"#[0-9A-Fa-f]{6}", m["colour"]):
+            problems.append(f"{m['name']}: colour {m['colour']!r} is not #rrggbb")
+        palette[m["name"]] = palette[m["label"]] = m["colour"]
     scenes = [p for p in sorted((source / "experiments").glob("*/*.toml"))
               if not p.name.startswith("quick") and p.name != "published.toml"]
     lists = 0
@@ -41,7 +54,7 @@ def main(argv):
                 colours.setdefault(c, m)
     for p in problems:
         print(p)
-    print(f"palette: {len(palette)} methods, {lists} method lists in {len(scenes)} scenes: "
+    print(f"palette: {len(registry)} methods, {lists} method lists in {len(scenes)} scenes: "
           + ("ok" if not problems else f"{len(problems)} problems"))
     return 1 if problems else 0
 

@@ -2,7 +2,9 @@
 // radial oscillation without gravity, vertical oscillation with gravity.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
+#include <stdexcept>
 
 #include "geomint/reference/odeint_reference.hpp"
 #include "geomint/systems/elastic_pendulum.hpp"
@@ -33,6 +35,24 @@ TEST(Reference, VerticalOscillationWithGravity) {
   EXPECT_NEAR(z.q[1], ys + (1.5 - ys) * std::cos(w * t) + 0.1 * std::sin(w * t), 1e-12);
   EXPECT_NEAR(z.p[1], -(1.5 - ys) * std::sin(w * t) + 0.1 * std::cos(w * t), 1e-12);
   EXPECT_EQ(z.q[0], 0.0);
+}
+
+// The integrator kept across calls lands on every sample time: x' = -x sampled at t = 0.5, 1, ..., 3.
+TEST(Reference, IntegratorKeptAcrossSamplesLandsOnEachTime) {
+  ReferenceIntegrator reference(1, [](const double* x, double* dxdt) { dxdt[0] = -x[0]; }, 1e-13, 1e-13);
+  std::array<double, 1> x{1.0};
+  for (int j = 1; j <= 6; ++j) {
+    reference.integrate(x, 0.5 * (j - 1), 0.5 * j, 0.05);
+    EXPECT_NEAR(x[0], std::exp(-0.5 * j), 1e-12) << "t = " << 0.5 * j;
+  }
+}
+
+TEST(Reference, FailuresAreReportedNotReturned) {
+  ReferenceIntegrator blow_up(1, [](const double* x, double* dxdt) { dxdt[0] = x[0] * x[0]; }, 1e-10, 1e-10);
+  std::array<double, 1> x{1.0};  // x = 1/(1 - t): infinite at t = 1
+  EXPECT_THROW(blow_up.integrate(x, 0.0, 2.0, 1e-3), NumericalFailure);
+  std::array<double, 2> wrong{1.0, 2.0};
+  EXPECT_THROW(blow_up.integrate(wrong, 0.0, 1.0, 1e-3), std::invalid_argument);
 }
 
 }  // namespace reference_test

@@ -31,6 +31,10 @@ struct MethodInfo {
   int measure_order = 0;        // Phi^(ell): mu^(ell)_mod preserved to O(h^measure_order), = ell + 2; else 0
   std::string_view applies_to;  // the systems it can step, in words
   std::string_view citation;    // the paper and equation(s) that define it
+  // How figures show it (figures/methods.gpi, generated from these by geomint-methods --gnuplot):
+  std::string_view title;       // its name in a figure's key (gnuplot enhanced text)
+  std::string_view equations;   // the equations that define it in each paper that prints them: "000 (26)–(28); 004 (1.3)"
+  std::string_view colour;      // its colour in every figure ("#rrggbb": Okabe-Ito, and Paul Tol's bright for 003's five)
 
   bool has(unsigned p) const { return (properties & p) == p; }
 };

@@ -2,7 +2,9 @@
 // on std::vector<double>, parsed and compiled here only.
 #include "geomint/reference/odeint_reference.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
