@@ -36,7 +36,6 @@ do for [i = 1:words(ALLM)] {   # styles for methods other than Simpson's and the
     eval sprintf("set style line %d lc rgb '%s' lw 0.9 dt (8,4) pt %d ps 0.7", 70 + i, c, (2 * i) % 14 + 1)
 }
 MSTYLE(m) = m eq "simpson" ? LS_SIMP : m eq "midpoint" ? LS_MID : 60 + word_index(ALLM, m)
-MLABEL(m) = method_title(m)
 
 # series: name, file, column, summary order key (or "" for none), style, label
 LOB1(s)  = s eq "p" || s eq "q" || s eq "H" || s eq "Hd"           # (the Lobatto series of Table 1)
@@ -46,7 +45,7 @@ COL1(s)  = LOB1(s) ? s."_err" : s."_q_err"
 ORD1(s)  = s eq "p" ? "lobatto_p" : s eq "q" ? "lobatto_q" : s eq "H" ? "lobatto_H" : s eq "Hd" ? "" : s
 STY1(s)  = s eq "p" ? LS_LOB : s eq "q" ? LS_LOB2 : s eq "H" ? LS_LOB3 : s eq "Hd" ? LS_LOB4 : MSTYLE(s)
 LAB1(s)  = s eq "p" ? "Lobatto, momentum p" : s eq "q" ? "Lobatto, state q" : s eq "H" ? "Lobatto, energy H" \
-         : s eq "Hd" ? "Lobatto, discrete energy H_d (15)" : s eq "simpson" ? "Simpson [2], state q" : MLABEL(s).", state q"
+         : s eq "Hd" ? "Lobatto, discrete energy H_d (15)" : s eq "simpson" ? "Simpson [2], state q" : method_title(s).", state q"
 S2 = "pendulum_err elastic_err"
 do for [m in NLM] { S2 = S2 . " " . m . "_pendulum_err" }
 MOF(s)   = s[1:strlen(s) - strlen("_pendulum_err")]           # (the method of a compared series)
@@ -54,7 +53,7 @@ ORD2(s)  = s eq "pendulum_err" ? "lobatto_nonlinear_pendulum" : s eq "elastic_er
          : MOF(s)."_nonlinear_pendulum"
 STY2(s)  = s eq "pendulum_err" ? LS_LOB : s eq "elastic_err" ? LS_LOB2 : MSTYLE(MOF(s))
 LAB2(s)  = s eq "pendulum_err" ? "Lobatto, pendulum" : s eq "elastic_err" ? "Lobatto, elastic pendulum (2 DOF)" \
-         : MOF(s) eq "simpson" ? "Simpson, pendulum" : MLABEL(MOF(s)).", pendulum"
+         : MOF(s) eq "simpson" ? "Simpson, pendulum" : method_title(MOF(s)).", pendulum"
 ORDER(key) = (o = summary_num('orders.'.key), o eq "?" ? NaN : real(o))
 ORDTXT(key) = key eq "" ? "round-off, no order" : (o = summary_num('orders.'.key), o eq "?" ? "order: not in summary.json" : sprintf("order %.2f", real(o)))
 

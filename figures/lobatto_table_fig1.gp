@@ -28,7 +28,6 @@ do for [i = 1:words(METHODS)] {   # styles for methods other than the paper's th
     eval sprintf("set style line %d lc rgb '%s' lw 1.0 pt %d ps 0.7", 60 + i, word("#009E73 #CC79A7 #56B4E9 #882255 #999999 #000000 #E69F00 #0072B2 #D55E00", (i - 1) % 9 + 1), (2 * i) % 14 + 1)
 }
 LABEL(m) = method_key(m, "001")   # (figures/methods.gpi: the registry's title and 001's equations)
-SHORT(m) = method_title(m)
 STYLE(m) = m eq "lobatto" ? LS_LOB : m eq "simpson" ? LS_SIMP : m eq "midpoint" ? LS_MID : 60 + word_index(METHODS, m)
 
 # "max_j error: Lobatto 1.2e-03, Simpson ..." per mesh (k = 0, 1) and variable, ERRS_<k>_<var>: the
@@ -38,7 +37,7 @@ do for [k = 0:1] {
         e = ""
         do for [m in METHODS] {
             eval need_num('ERR', summary_num(sprintf('figure1.max_error.%d.%s.%s', k, m, v)))
-            e = e . sprintf("%s %s %.1e", e eq "" ? "" : ",", SHORT(m), ERR)
+            e = e . sprintf("%s %s %.1e", e eq "" ? "" : ",", method_title(m), ERR)
         }
         eval sprintf("ERRS_%d_%s = 'max_j error:%s'", k, v, e)
     }

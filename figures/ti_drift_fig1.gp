@@ -44,7 +44,6 @@ LS_TD_OTHER = 105; set style line LS_TD_OTHER lc rgb C_OTHER lw 1.0 dt (2,3) pt 
 set style line LS_TD_FR + 10    lc rgb C_FR    lw 0.9 dt (2,3)
 set style line LS_TD_OTHER + 10 lc rgb C_OTHER lw 0.9 dt (2,3)
 STYLE(m) = m eq "sv" ? LS_TD_SV : m eq "ti" ? LS_TD_TI : m eq "sti" ? LS_TD_STI : m eq "forest_ruth" ? LS_TD_FR : LS_TD_OTHER
-COLOR(m) = method_colour(m)
 SHORT(m) = m eq "sv" ? "SV" : m eq "ti" ? "TI" : m eq "sti" ? "simplified TI" : m eq "forest_ruth" ? "Forest–Ruth" : nosub(m)
 NAME(m) = m eq "sv" ? "SV (1.3)" : m eq "ti" ? "TI (1.4), processed" : m eq "sti" ? "simplified TI (1.6), processed" : SHORT(m)
 STEP(m) = (_e = value('EVALS_'.m)) == 2 ? "h = h_{eff}" : _e == 1 ? "h = h_{eff}/2" : sprintf("h = %gh_{eff}/2", _e)
@@ -93,9 +92,9 @@ do for [fmt in FORMATS] {
             _x = m eq "ti" ? TI_BOUND : value('BOUND_'.m)
             _text = m eq "ti" ? sprintf("TI: 2√3 = %.4f", TI_BOUND) : sprintf("%s: ωh_{eff} = %.4g", SHORT(m), _x)
             eval sprintf("set arrow %d from %.17g, graph 0 to %.17g, graph 1 nohead lc rgb '%s' lw 0.8 dt %s", \
-                         _a, _x, _x, COLOR(m), m eq "ti" ? "1" : "(6,3)")
+                         _a, _x, _x, method_colour(m), m eq "ti" ? "1" : "(6,3)")
             eval sprintf("set label %d \"%s\" at %.17g, graph 0.03 left rotate by 90 offset %s, 0 font \",7\" tc rgb '%s'", \
-                         _a, _text, _x, m eq "ti" ? "-0.4" : "0.9", COLOR(m))
+                         _a, _text, _x, m eq "ti" ? "-0.4" : "0.9", method_colour(m))
         }
     }
     set bmargin 9.5   # (the same for both panels, room for the longer key, so that the axes line up)

@@ -86,11 +86,7 @@ Z as_state(const Point4& a) { return from_array(a); }
 
 std::vector<Point4> reference_samples(const NonholonomicParticle& sys, const Point4& z0, double dt, std::int64_t n,
                                       double rtol, double atol) {
-  const auto f = [&sys](const double* x, double* dxdt) {
-    const Point4 v = sys.rhs(Point4{x[0], x[1], x[2], x[3]});
-    std::copy(v.begin(), v.end(), dxdt);
-  };
-  ReferenceIntegrator reference(4, f, rtol, atol);
+  ReferenceIntegrator reference(4, array_field<4>(sys), rtol, atol);
   std::vector<Point4> out{z0};
   Point4 x = z0;
   for (std::int64_t j = 1; j <= n; ++j) {

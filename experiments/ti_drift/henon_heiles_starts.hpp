@@ -35,18 +35,13 @@ Z2 ensemble_start(const Scene& s, const HH& hhk, std::size_t i) {
   return hh_start(hhk, s.real("hh3.q2") + dq, s.real("hh3.p2") + dp, s.real("hh.H0"));
 }
 
-// The escape energy of U = (q1^2 + q2^2)/2 + c q1^2 q2 - q2^k/k: the lowest of its saddles, on the axis
-// (q1 = 0, |q2| = 1: U = 1/2 - 1/k) and, for c != 0, at q2 = -1/(2c), q1^2 = (q2^(k-1) - q2)/c where that is
-// positive (1/6 for k = 3, c = 1, the triangle of 004 Fig. 3). Below it the motion from a start inside stays bounded.
-template <class HH>
-double hh_escape_energy(const HH& hh);
-
 // The Henon-Heiles starts q1 = 0, q2 in [q2 - d, q2 + d], p2 in [p2 - d, p2 + d] (d: the ensemble's
-// perturbation, 0 for one start) lie in the bounded well below the escape energy: hh.H0 below it, every q2 between
-// the saddles on the axis (q2 < 1, and q2 > -1 for even k: U(0, .) is monotone on either side of 0 there, so
-// p1^2 = 2 (H0 - U(0, q2)) - p2^2 > 0 at the corners of the box holds on all of it), and the step h below the
-// bound at the frequency of the linearisation at the start, max eig U''(0, q2) (a necessary condition).
-// Both are compiled once, in ti_drift.cpp, for HenonHeilesT<true> and HenonHeilesT<false>.
+// perturbation, 0 for one start) lie in the bounded well below the escape energy (the lowest saddle of
+// U): hh.H0 below it, every q2 between the saddles on the axis (q2 < 1, and q2 > -1 for even k: U(0, .)
+// is monotone on either side of 0 there, so p1^2 = 2 (H0 - U(0, q2)) - p2^2 > 0 at the corners of the
+// box holds on all of it), and the step h below the bound at the frequency of the linearisation at the
+// start, max eig U''(0, q2) (a necessary condition).
+// Compiled once, in ti_drift.cpp, for HenonHeilesT<true> and HenonHeilesT<false>.
 template <class HH>
 void check_hh_starts(const Scene& s, const std::string& section, const HH& hh, double d, bool check_h);
 

@@ -27,12 +27,6 @@ void put_differences(Context& ctx, const std::string& study) {
   }
 }
 
-std::string short_num(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
-
 std::int64_t evals_per_step(const std::string& method) {
   std::int64_t n = 0;  // counted from z_0 on: one kernel step (the kernel's processors evaluate no force)
   MethodsOn<Counting<HarmonicOscillator>>::integrate(
@@ -63,6 +57,18 @@ void check_step_bound(const Scene& s, const char* step_key, double h, double ome
 
 double kept_samples(double n, double samples) { return std::floor(n / std::max(1.0, std::floor(n / samples))) + 1; }
 
+namespace {
+
+// %g of v (the numbers of the messages of check_hh_starts).
+std::string short_num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+// The escape energy of U = (q1^2 + q2^2)/2 + c q1^2 q2 - q2^k/k: the lowest of its saddles, on the axis
+// (q1 = 0, |q2| = 1: U = 1/2 - 1/k) and, for c != 0, at q2 = -1/(2c), q1^2 = (q2^(k-1) - q2)/c where that is
+// positive (1/6 for k = 3, c = 1, the triangle of 004 Fig. 3). Below it the motion from a start inside stays bounded.
 template <class HH>
 double hh_escape_energy(const HH& hh) {
   double e = 0.5 - 1.0 / hh.k;
@@ -72,6 +78,8 @@ double hh_escape_energy(const HH& hh) {
   }
   return e;
 }
+
+}  // namespace
 
 template <class HH>
 void check_hh_starts(const Scene& s, const std::string& section, const HH& hh, double d, bool check_h) {
@@ -100,8 +108,6 @@ void check_hh_starts(const Scene& s, const std::string& section, const HH& hh, d
                      "omega^2 = max eig U''(0, " + section + ".q2), Henon-Heiles k = " + std::to_string(hh.k));
 }
 
-template double hh_escape_energy(const HenonHeilesT<true>&);
-template double hh_escape_energy(const HenonHeilesT<false>&);
 template void check_hh_starts(const Scene&, const std::string&, const HenonHeilesT<true>&, double, bool);
 template void check_hh_starts(const Scene&, const std::string&, const HenonHeilesT<false>&, double, bool);
 

@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """check_palette.py SOURCE_DIR METHODS_BIN [--gpi]: one colour per method, distinct where methods meet.
 
-Every method of the registry (METHODS_BIN --json) has a colour "#rrggbb"; and in every paper scene
+Every method of the registry (METHODS_BIN --json) has a colour "#rrggbb" and its equations in the
+form "000 (26)–(28); 004 (1.3)" (or none); and in every paper scene
 (experiments/<name>/*.toml but quick* and published.toml) each list of methods (a key ending in
 "methods", naming methods by registry name or label) has as many colours as methods: methods drawn
 in one figure never share a colour. With --gpi: figures/methods.gpi is what METHODS_BIN --gnuplot
@@ -39,6 +40,8 @@ def main(argv):
     for m in registry:
         if not re.fullmatch(r"#[0-9A-Fa-f]{6}", m["colour"]):
             problems.append(f"{m['name']}: colour {m['colour']!r} is not #rrggbb")
+        if m["equations"] and not re.fullmatch(r"\d{3} [^;]+(; \d{3} [^;]+)*", m["equations"]):
+            problems.append(f"{m['name']}: equations {m['equations']!r} are not 'PPP (eq); PPP (eq)'")
         palette[m["name"]] = palette[m["label"]] = m["colour"]
     scenes = [p for p in sorted((source / "experiments").glob("*/*.toml"))
               if not p.name.startswith("quick") and p.name != "published.toml"]

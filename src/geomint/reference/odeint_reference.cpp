@@ -21,7 +21,8 @@ struct ReferenceIntegrator::Impl {
 };
 
 ReferenceIntegrator::ReferenceIntegrator(std::size_t n, ReferenceField f, double rtol, double atol)
-    : impl_(new Impl{std::move(f), odeint::bulirsch_stoer<std::vector<double>>(atol, rtol), std::vector<double>(n)}) {}
+    : impl_(std::make_unique<Impl>(Impl{std::move(f), odeint::bulirsch_stoer<std::vector<double>>(atol, rtol),
+                                        std::vector<double>(n)})) {}
 
 ReferenceIntegrator::~ReferenceIntegrator() = default;
 

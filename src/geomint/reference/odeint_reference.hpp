@@ -82,16 +82,21 @@ typename Sys::State reference_solution(const Sys& sys, const typename Sys::State
   return from_odeint<D>(x);
 }
 
-// The same for a first-order system x' = sys.rhs(x) on std::array (the equations (3.8) of 003).
-template <class Sys, std::size_t N>
-std::array<double, N> reference_solution(const Sys& sys, std::array<double, N> x, double t_end, double rtol, double atol) {
-  const auto field = [&sys](const double* y, double* dydt) {
+// The field of a first-order system x' = sys.rhs(x) on std::array<double, N> (the equations (3.8) of 003).
+template <std::size_t N, class Sys>
+ReferenceField array_field(const Sys& sys) {
+  return [&sys](const double* y, double* dydt) {
     std::array<double, N> a;
     std::copy_n(y, N, a.begin());
     const std::array<double, N> f = sys.rhs(a);
     std::copy_n(f.begin(), N, dydt);
   };
-  ReferenceIntegrator(N, field, rtol, atol).integrate(x, 0.0, t_end, std::min(1e-3, t_end));
+}
+
+// The same for a first-order system x' = sys.rhs(x) on std::array.
+template <class Sys, std::size_t N>
+std::array<double, N> reference_solution(const Sys& sys, std::array<double, N> x, double t_end, double rtol, double atol) {
+  ReferenceIntegrator(N, array_field<N>(sys), rtol, atol).integrate(x, 0.0, t_end, std::min(1e-3, t_end));
   return x;
 }
 
