@@ -20,7 +20,7 @@ CMAKE_ARGS ?=
 EXPERIMENTS := $(notdir $(patsubst %/,%,$(dir $(wildcard experiments/*/main.cpp))))
 DEPS_STAMP := .deps
 
-.PHONY: all deps build test figures figure-runs figure-files scaling paper experiment bench methods-gpi clean
+.PHONY: all deps build test figures figure-runs figure-files scaling paper experiment bench methods-gpi clean FORCE
 all: build
 
 $(DEPS_STAMP)/%.stamp: scripts/install-deps.sh
@@ -43,12 +43,20 @@ test: build
 # has the id <name>-<variant> for its results and figures.
 scene_id = $(if $(filter $(1),$(2)),$(1),$(1)-$(2))
 
-# One experiment with its paper scene (or SCENE=<variant>, or ARGS), then its figures.
+# One experiment with its paper scene (or SCENE=<variant>), then its figures. With ARGS (a reviewer's
+# --set or --study) the run goes to $(RESULTS)/<id>+<8 hex digits of a hash of ARGS>, or to OUT=DIR, and its
+# figures into that directory's figures/: never over the paper run that make figures and make paper report.
 SCENE ?= $(NAME)
+ARGS_QUOTED = '$(subst ','\'',$(ARGS))'
 experiment: build $(DEPS_STAMP)/figures.stamp
-	@test -n "$(NAME)" || { echo "usage: make experiment NAME=<one of: $(EXPERIMENTS)> [SCENE=<variant>] [ARGS='--study S --set key=value']"; exit 2; }
-	$(BUILD)/bin/$(NAME) --scene experiments/$(NAME)/$(SCENE).toml --out $(RESULTS)/$(call scene_id,$(NAME),$(SCENE)) $(ARGS)
-	tests/figures/render_figures.sh --only-available $(RESULTS)/$(call scene_id,$(NAME),$(SCENE)) figures/out $(wildcard figures/$(call scene_id,$(NAME),$(SCENE))_*.gp)
+	@test -n "$(NAME)" || { echo "usage: make experiment NAME=<one of: $(EXPERIMENTS)> [SCENE=<variant>] [ARGS='--study S --set key=value'] [OUT=DIR]"; exit 2; }
+	@id=$(call scene_id,$(NAME),$(SCENE)); out="$(OUT)"; figs=figures/out; \
+	if [ -z "$$out" ] && [ -n "$(strip $(ARGS))" ]; then \
+	  out=$(RESULTS)/$$id+$$(printf '%s' $(ARGS_QUOTED) | sha256sum | cut -c1-8); fi; \
+	if [ -n "$$out" ]; then figs=$$out/figures; else out=$(RESULTS)/$$id; fi; \
+	echo "== $$out"; \
+	$(BUILD)/bin/$(NAME) --scene experiments/$(NAME)/$(SCENE).toml --out "$$out" $(ARGS) && \
+	tests/figures/render_figures.sh --only-available "$$out" "$$figs" $(wildcard figures/$(call scene_id,$(NAME),$(SCENE))_*.gp)
 
 # Every paper scene experiments/<name>/<scene>.toml (not quick*, not published.toml) has the id
 # <name> or <name>-<scene>. Its results are remade when the binary, a scene file of the experiment
@@ -60,7 +68,7 @@ CLUSTER_SCENES := $(shell grep -l '^\# scale: cluster' experiments/*/*.toml)
 PAPER_SCENES := $(filter-out %/published.toml $(CLUSTER_SCENES),$(foreach n,$(EXPERIMENTS),$(filter-out experiments/$(n)/quick%,$(wildcard experiments/$(n)/*.toml))))
 id_of = $(call scene_id,$(word 2,$(subst /, ,$(1))),$(basename $(notdir $(1))))
 define SCENE_RULES
-$(RESULTS)/$(3)/run.json: $(BUILD)/bin/$(1) $(2) $(filter-out experiments/$(1)/quick% $(CLUSTER_SCENES),$(wildcard experiments/$(1)/*.toml))
+$(RESULTS)/$(3)/run.json: $(BUILD)/bin/$(1) $(2) $(filter-out experiments/$(1)/quick% $(CLUSTER_SCENES),$(wildcard experiments/$(1)/*.toml)) $(if $(filter $(3),$(STALE_RUNS)),FORCE)
 	@echo "== $(3)"
 	@start=$$$$(date +%s%N); $(BUILD)/bin/$(1) --scene $(2) --out $(RESULTS)/$(3) && \
 	  awk -v ns=$$$$(( $$$$(date +%s%N) - start )) 'BEGIN { printf "== $(3): %.1f s\n", ns / 1e9 }'
@@ -70,7 +78,11 @@ $$(FIGURES_$(3)): figures/out/%.pdf: figures/%.gp figures/common.gp figures/cost
 ALL_FIGURES += $$(FIGURES_$(3)) $(RESULTS)/$(3)/run.json
 ALL_RUNS += $(RESULTS)/$(3)/run.json
 endef
+# A results directory that is not its paper scene's run (another scene, --set overrides, not every
+# study: scripts/paper_runs.py) is rerun, whatever its timestamps say.
+STALE_RUNS := $(shell python3 scripts/paper_runs.py stale $(RESULTS) $(foreach sc,$(PAPER_SCENES),$(call id_of,$(sc))=$(sc)))
 $(foreach sc,$(PAPER_SCENES),$(eval $(call SCENE_RULES,$(word 2,$(subst /, ,$(sc))),$(sc),$(call id_of,$(sc)))))
+FORCE:
 $(BUILD)/bin/%: ;   # made by `build`, before figure-files is asked for
 
 # The runs one after another (each uses every core, and times itself), then the figures rendered
@@ -91,14 +103,19 @@ $(RESULTS)/mpi_scaling/summary.json: $(BUILD)/bin/energy_map bench/mpi_scaling.p
 scaling: build
 	@$(MAKE) --no-print-directory $(RESULTS)/mpi_scaling/summary.json
 
-paper: figures scaling $(DEPS_STAMP)/paper.stamp
+# The hard cases are rerun only when a binary or the test list changed (a second make paper with
+# nothing changed runs no test).
+paper/generated/hardcases.xml: $(wildcard $(BUILD)/bin/*) $(wildcard $(BUILD)/tests/CTestTestfile.cmake)
+	@mkdir -p paper/generated
+	ctest --test-dir $(BUILD) -j $(JOBS) -L hardcase --output-junit $(CURDIR)/$@ > /dev/null
+
+paper: figures scaling $(DEPS_STAMP)/paper.stamp paper/generated/hardcases.xml
 	@mkdir -p paper/generated
 	$(BUILD)/bin/geomint-methods --json > paper/generated/methods.json
 	ctest --test-dir $(BUILD) --show-only=json-v1 > paper/generated/tests.json
-	ctest --test-dir $(BUILD) -j $(JOBS) -L hardcase --output-junit $(CURDIR)/paper/generated/hardcases.xml > /dev/null
 	python3 scripts/report.py $(RESULTS) paper/generated --methods paper/generated/methods.json \
 	  --papers paper/papers.toml --tests paper/generated/tests.json --quick $(BUILD)/test-results \
-	  --junit paper/generated/hardcases.xml
+	  --junit paper/generated/hardcases.xml --paper-scenes $(foreach sc,$(PAPER_SCENES),$(call id_of,$(sc))=$(sc))
 	cd paper && latexmk -pdf -interaction=nonstopmode -halt-on-error main.tex
 	python3 scripts/check_pdf.py paper/main.pdf
 

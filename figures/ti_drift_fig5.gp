@@ -92,7 +92,7 @@ do for [fmt in FORMATS] {
     set format x ""
     unset xlabel
     set ylabel sprintf("E_n − E_0  [10^{%d}]", EK) offset 1, 0
-    set title sprintf("(a) error of E along trajectory no. %d: %d episode(s) (shaded: growth red, decline blue), flattest window (c) grey", TRAJ, NEP) offset 0, -0.4
+    set title sprintf("(a) error of E along trajectory no. %d: episodes of linear change: %d (shaded: growth red, decline blue), flattest window (c) grey", TRAJ, NEP) offset 0, -0.4
     set object 1 rect from F0 / XS, graph 0 to F1 / XS, graph 1 behind fc rgb '#E0E0E0' fs solid 1.0 noborder
     set label 1 "(c)" at (F0 + F1) / 2 / XS, graph 0.88 center font ",8"
     do for [i = 0:NEP - 1] {

@@ -1,11 +1,14 @@
 #!/usr/bin/env python3
-"""check_pdf.py PDF: the built report shows no unresolved reference, missing value or non-number.
+"""check_pdf.py PDF [--log LOG]: the built report shows no unresolved reference, missing value,
+non-number or layout fault.
 
 Reads the text of the PDF (pdftotext, poppler-utils) and fails, naming the page and line, on
 "??" (an undefined reference), "n/a", "nan" as C++ and Python print a NaN (not the word "NaN" or
 the "Nan" of a test's name), "missing:" (a value report.py --draft could not
-find), an "inf" standing alone or a figure "not yet rendered"; and if its first pages lack the
-contents or the ledger.
+find), an "inf" standing alone, a figure "not yet rendered" or an "(s)" plural; and if its first
+pages lack the contents or the ledger. With the LaTeX log (--log, paper/main.log) it also fails on an
+overfull box more than 5 pt too wide or too high (text past the margin) and on a float too large
+for the page (a table or figure that runs into the page number).
 """
 import re
 import subprocess
@@ -13,24 +16,44 @@ import sys
 
 BAD = [(re.compile(r"\?\?"), "an undefined reference"), (re.compile(r"\bn/a\b", re.I), "n/a"),
        (re.compile(r"(?<![\w.])-?(nan|NAN)\b"), "a NaN"), (re.compile(r"\bmissing:"), "a missing value"),
-       (re.compile(r"(?<![\w.])-?inf\b"), "an infinity"), (re.compile(r"not yet rendered"), "a missing figure")]
+       (re.compile(r"(?<![\w.])-?inf\b"), "an infinity"), (re.compile(r"not yet rendered"), "a missing figure"),
+       (re.compile(r"\w\(s\)"), 'an "(s)" plural')]
+OVERFULL = re.compile(r"^Overfull \\[hv]box \((\d+(?:\.\d+)?)pt too (wide|high)\)(.*)$", re.M)
+FLOAT = re.compile(r"Float too large for page by (\d+(?:\.\d+)?)pt")
+TOLERANCE_PT = 5.0
+
+
+def text_problems(pages):
+    """What the PDF's text shows wrong, page by page (pages: the text of each page)."""
+    problems = [f"p. {p + 1}: {what}: {line.strip()}"
+                for p, page in enumerate(pages) for line in page.splitlines()
+                for rx, what in BAD if rx.search(line)]
+    front = "\n".join(pages[:4])
+    problems += [f"'{heading}' is not on the first pages" for heading in ("Contents", "The reproduction ledger")
+                 if heading not in front]
+    return problems
+
+
+def log_problems(log):
+    """Layout faults in a LaTeX log: overfull boxes beyond TOLERANCE_PT, floats too large for the page."""
+    problems = [f"overfull box, {m.group(1)} pt too {m.group(2)}:{m.group(3)}"
+                for m in OVERFULL.finditer(log) if float(m.group(1)) > TOLERANCE_PT]
+    problems += [f"a float {m.group(1)} pt too large for the page" for m in FLOAT.finditer(log)]
+    return problems
 
 
 def main(argv):
-    if len(argv) != 2:
+    if len(argv) not in (2, 4) or (len(argv) == 4 and argv[2] != "--log"):
         print(__doc__.strip(), file=sys.stderr)
         return 2
     text = subprocess.run(["pdftotext", "-layout", argv[1], "-"], capture_output=True, text=True, check=True).stdout
     pages = text.split("\f")
-    problems = [f"{argv[1]}: p. {p + 1}: {what}: {line.strip()}"
-                for p, page in enumerate(pages) for line in page.splitlines()
-                for rx, what in BAD if rx.search(line)]
-    front = "\n".join(pages[:4])
-    for heading in ("Contents", "The reproduction ledger"):
-        if heading not in front:
-            problems.append(f"{argv[1]}: '{heading}' is not on the first pages")
+    problems = text_problems(pages)
+    if len(argv) == 4:
+        with open(argv[3], encoding="latin-1") as f:
+            problems += log_problems(f.read())
     for p in problems:
-        print(p)
+        print(f"{argv[1]}: {p}")
     print(f"check_pdf.py: {len(pages)} pages, " + ("ok" if not problems else f"{len(problems)} problems"))
     return 1 if problems else 0
 

@@ -15,7 +15,10 @@ into OUT_DIR:
                       \\resultrange[fmt]{run}{key}   an object {min, max} as "a--b" ("a" if equal)
                     fmt: one of FORMATS below (default general). A key that does not exist or has
                     no finite value stops this script (exit 1) and the LaTeX run, naming it; with
-                    --draft it is shown as a framed "missing" note instead.
+                    --draft it is shown as a framed "missing" note instead. fmt? (e.g. err?): a
+                    value the run may not have (null or absent, e.g. an equal wall time that the
+                    runs' times do not reach) is shown as ---.
+                      \\ifresult{run}{key}{A}{B}   A if the run has the value (not null), else B
   comparisons.tex   per run, its published quantities (summary.json "comparisons", made by the
                     executable from experiments/<name>/published.toml) against the reproduction.
   errata.tex        every comparison published.toml expects to differ: what was published, what
@@ -41,6 +44,9 @@ import pathlib
 import re
 import sys
 import tomllib
+
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
+from paper_runs import why_not_paper_run  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 NA = None  # a value that cannot be shown
@@ -106,6 +112,7 @@ FORMATS = {  # name -> math-mode text of a finite number
 }
 TEXT_FORMATS = ("text", "vec")
 LOOKUP = re.compile(r"\\result(range)?(?:\[([^\]]*)\])?\{([^}]*)\}\{([^}]*)\}")
+HAS = re.compile(r"\\ifresult\{([^}]*)\}\{([^}]*)\}")  # \ifresult{run}{key}{if it has a value}{if not}
 
 
 def tex_escape(text):
@@ -165,18 +172,28 @@ def results_tex(runs, tex_files, draft):
              r"{no value '#3' (format #2) in the run #1}{Run make paper; check the key in results/#1/summary.json}}"
              r"{\@nameuse{geomint@#1@#2@#3@#4}}}",
              r"\newcommand{\result}[3][general]{\geomint@value{#2}{#1}{#3}{v}}",
-             r"\newcommand{\resultrange}[3][general]{\geomint@value{#2}{#1}{#3}{r}}"]
+             r"\newcommand{\resultrange}[3][general]{\geomint@value{#2}{#1}{#3}{r}}",
+             r"\newcommand{\ifresult}[4]{\@ifundefined{geomint@has@#1@#2}{#4}{#3}}"]
     missing, seen = [], set()
     for path in tex_files:
         text = re.sub(r"(?<!\\)%.*", "", path.read_text(encoding="utf-8"))  # (not in LaTeX comments)
+        for m in HAS.finditer(text):  # a value that may be absent (e.g. no overlap of wall times)
+            run, key = m.group(1), m.group(2)
+            if run in runs and at(runs[run]["summary"], key) is not None:
+                lines.append(f"\\@namedef{{geomint@has@{run}@{key}}}{{}}")
         for m in LOOKUP.finditer(text):
             ranged, fmt, run, key = bool(m.group(1)), m.group(2) or "general", m.group(3), m.group(4)
             if (run, key, fmt, ranged) in seen or "#" in run + key + fmt:  # (a macro's own parameters)
                 continue
             seen.add((run, key, fmt, ranged))
+            optional = fmt.endswith("?")  # [fmt?]: a value that may be absent, shown as ---
+            fmt = fmt.rstrip("?")
             if fmt not in FORMATS and fmt not in TEXT_FORMATS:
                 raise SystemExit(f"report.py: {path}: unknown format '{fmt}' in {m.group(0)}")
             text = lookup_text(runs[run], key, fmt, ranged) if run in runs else None
+            if text is None and optional and run in runs and at(runs[run]["summary"], key) is None:
+                text = "---"
+            fmt += "?" if optional else ""
             if text is None:
                 missing.append(f"{path.name}: {m.group(0)}")
                 if not draft:
@@ -233,21 +250,47 @@ def comparisons_tex(runs):
     return "\n".join(out) + "\n"
 
 
+ERRATA_SECTIONS = [  # (title, the comparisons it lists)
+    ("Errata", lambda c: c.get("expect") == "differs" and c.get("kind", "printed") in ("printed", "authors_code")),
+    ("Possible scanning errors", lambda c: c.get("expect") == "differs" and c.get("kind") == "scanning"),
+    ("Conventions the papers leave open", lambda c: c.get("kind") == "convention"),
+    ("Values from the authors' code", lambda c: c.get("kind") == "authors_code"),
+    ("Observations of a sample the papers do not give", lambda c: c.get("kind") == "sample"),
+]
+ERRATA_INTRO = {
+    "Errata": "A printed statement that derivation and a test contradict.",
+    "Possible scanning errors": "A printed statement that does not hold as the scanned text gives it, where "
+                                "the scan may have garbled it: flagged, not charged to the paper.",
+    "Conventions the papers leave open": "A choice the paper does not state; the report computes both and "
+                                         "compares only the one stated in the comparisons. Neither is an erratum.",
+    "Values from the authors' code": "Numbers the papers do not print, taken from the code published with them "
+                                     "and labelled so; they are never listed as published.",
+    "Observations of a sample the papers do not give": "What a paper observes on one random sample (a trajectory "
+                                                       "from a start it does not print); the reproduction's sample "
+                                                       "may differ without contradicting it.",
+}
+
+
 def errata_tex(runs, tests):
-    out = ["% The published statements the reproduction differs from (published.toml: expect = differs)."]
-    items = []
-    for name, run in runs.items():
-        for key, c in (run["summary"].get("comparisons") or {}).items():
-            if c.get("expect", "reproduced") == "reproduced":
-                continue
-            test = c.get("test", "")
-            if tests is not None and test not in tests:
-                raise SystemExit(f"report.py: {name}: {key} names the test '{test}', which ctest does not list")
-            items.append(f"\\item \\textbf{{{tex_escape(c['where'])}.}} Published {value_text(c.get('published'))}; "
-                         f"the printed statement gives {value_text(c.get('reproduced'))} "
-                         f"(\\texttt{{{tex_escape(name)}}}, verdict: {c['verdict']}). {tex_escape(c.get('note', ''))} "
-                         f"Shown by {code('ctest -R ' + test)}.")
-    out += [r"\begin{enumerate}"] + items + [r"\end{enumerate}"] if items else ["No published statement differs."]
+    """The published statements the reproduction differs from, the possible scanning errors, the open
+    conventions and the authors' code values (published.toml: expect, kind), one subsection each."""
+    out = ["% Errata, scanning errors, open conventions, authors' code values (published.toml: expect, kind)."]
+    for title, selects in ERRATA_SECTIONS:
+        items = []
+        for name, run in runs.items():
+            for key, c in (run["summary"].get("comparisons") or {}).items():
+                if not selects(c):
+                    continue
+                test = c.get("test", "")
+                if test and tests is not None and test not in tests:
+                    raise SystemExit(f"report.py: {name}: {key} names the test '{test}', which ctest does not list")
+                source = "The authors' code gives" if c.get("kind") == "authors_code" else "Printed"
+                items.append(f"\\item \\textbf{{{tex_escape(c['where'])}.}} {source}: {value_text(c.get('published'))}; "
+                             f"reproduced: {value_text(c.get('reproduced'))} (\\texttt{{{tex_escape(name)}}}, "
+                             f"\\texttt{{{tex_escape(key)}}}, verdict: {c['verdict']}). {tex_escape(c.get('note', ''))}" +
+                             (f" Shown by {code('ctest -R ' + test)}." if test else ""))
+        out += [f"\\subsection*{{{title}}}", ERRATA_INTRO[title]]
+        out += [r"\begin{enumerate}"] + items + [r"\end{enumerate}"] if items else ["None."]
     return "\n".join(out) + "\n"
 
 
@@ -289,17 +332,35 @@ def figure_scripts(run, files):
     return found
 
 
+def short_value(c):
+    """A comparison's published and reproduced values, short: "3.08e-6 / 3.11e-6"."""
+    pub, rep = c.get("published"), c.get("reproduced")
+    if isinstance(rep, dict) and len(rep) > 2:  # a table: its range
+        nums = [x for x in rep.values() if is_number(x)]
+        rep = {"min": min(nums), "max": max(nums)} if nums else None
+        rep_text = f"${number(rep['min'], 'sci3')}$--${number(rep['max'], 'sci3')}$" if rep else "not computed"
+    else:
+        rep_text = value_text(rep)
+    pub_text = tex_escape(pub) if isinstance(pub, str) else value_text(pub) if not isinstance(pub, dict) or len(pub) <= 2 \
+        else f"{len(pub)} values"
+    label = "authors' code" if c.get("kind") == "authors_code" else "printed"
+    return f"{label} {pub_text}, reproduced {rep_text}"
+
+
 def ledger_tex(runs, papers, tests):
+    """One row per item of the papers, with the verdict its own run computed (summary.json "figures")
+    from that item's own comparisons."""
     makers = {}  # (paper, item) -> [(run name, study)]
     for name, run in runs.items():
         for st in run["run"].get("study_list", []):
             if st.get("ran"):
-                for item in made_items(st["makes"]):
-                    makers.setdefault(item, []).append((name, st))
+                for item in st.get("made", []):
+                    paper_id, _, item_name = item.partition(" ")
+                    makers.setdefault((paper_id, item_name), []).append((name, st))
     out = ["% The reproduction ledger (scripts/report.py from paper/papers.toml, run.json and summary.json).",
            r"{\scriptsize\begin{longtable}{@{}>{\raggedright}p{0.07\linewidth}>{\raggedright}p{0.08\linewidth}"
-           r">{\raggedright}p{0.25\linewidth}>{\raggedright}p{0.22\linewidth}>{\raggedright\arraybackslash}p{0.3\linewidth}@{}}",
-           r"\toprule paper & in this report & verdict & published / reproduced & rerun, figure, test\\ \midrule",
+           r">{\raggedright}p{0.25\linewidth}>{\raggedright}p{0.25\linewidth}>{\raggedright\arraybackslash}p{0.27\linewidth}@{}}",
+           r"\toprule paper & in this report & verdict & its own values & rerun, figure, test\\ \midrule",
            r"\endhead"]
     for paper in papers["paper"]:
         for item in paper["item"]:
@@ -310,41 +371,34 @@ def ledger_tex(runs, papers, tests):
             done = makers.get((paper["id"], item["name"]), [])
             if not done:
                 raise SystemExit(f"report.py: no run made [{paper['id']}] {item['name']} (papers.toml lists it)")
-            verdicts, values, commands, tests_cited, scripts, backing = [], [], [], [], [], []
+            figure = f"{paper['id']} {item['name']}"
+            verdicts, values, commands, tests_cited, scripts = [], [], [], [], []
             for name, st in done:
-                experiment = runs[name]["summary"].get("experiment", name)
+                summary = runs[name]["summary"]
+                experiment = summary.get("experiment", name)
                 scene = runs[name]["run"].get("scene_file", "")
                 commands.append(code(f"build/bin/{experiment} --study {st['name']}" +
                                      ("" if name == experiment else f" --scene {scene}")))
                 scripts += figure_scripts(name, st["files"])
                 tests_cited.append(f"{experiment}.studies")
-                for key, c in (runs[name]["summary"].get("comparisons") or {}).items():
-                    # this figure's own comparisons (published.toml `figure`), not its study's other figures'
-                    if c.get("study") != st["name"] or c.get("figure") != f"{paper['id']} {item['name']}" \
-                            or c["verdict"] in ("not comparable", "not computed"):
-                        continue
-                    verdicts.append((c["verdict"], c.get("expect", "reproduced"), key, c))
-                    if c["verdict"] == "differs":  # the file that states the discrepancy and its reason
-                        backing.append(f"experiments/{experiment}/published.toml")
-                    if c.get("test"):
-                        tests_cited.append(c["test"])
-            unexpected = [k for v, e, k, _ in verdicts if v == "differs" and e != "differs"]
-            errata = [k for v, e, k, _ in verdicts if v == "differs" and e == "differs"]
-            compared = sum(v == "reproduced" for v, _, _, _ in verdicts)
-            reported = sum(v == "reported" for v, _, _, _ in verdicts)
-            if unexpected:
-                verdict = "discrepant: " + ", ".join(f"\\texttt{{{tex_escape(k)}}}" for k in unexpected) + " differ"
-            elif "partial" in item:
-                verdict = "partial: " + tex_escape(item["partial"])
-            else:
-                verdict = "reproduced"
-            details = ([f"{compared} within tolerance"] if compared else []) + \
-                      ([f"{reported} reported"] if reported else []) + \
-                      ([r"errata (Section~\ref{sec:errata}): " + ", ".join(f"\\texttt{{{tex_escape(k)}}}" for k in errata)]
-                       if errata else []) + ([] if verdicts else ["the paper prints no number to compare"])
-            verdict += " (" + "; ".join(details + [code(f) for f in dict.fromkeys(backing)]) + ")"
-            for _, _, key, c in verdicts[:2]:
-                values.append(f"{value_text(c.get('published'))} / {value_text(c.get('reproduced'))}")
+                f = (summary.get("figures") or {}).get(figure)
+                if f is None:
+                    raise SystemExit(f"report.py: {name}: summary.json has no verdict for {figure}")
+                verdict = tex_escape(f["verdict"])
+                comparisons = summary.get("comparisons") or {}
+                for key, ch in (f.get("chosen") or {}).items():
+                    verdict += f" ({code(key)} = {value_text(ch.get('used'))}, printed {value_text(ch.get('printed'))})"
+                if f.get("unexpected"):
+                    verdict += ": " + ", ".join(code(k) for k in f["unexpected"]) + " differ unexpectedly"
+                elif f.get("differs"):
+                    verdict += r" (Section~\ref{sec:errata})"
+                verdicts.append(verdict)
+                for key in (f.get("reproduced", []) + f.get("differs", []))[:2]:
+                    values.append(short_value(comparisons[key]))
+                    if comparisons[key].get("test"):
+                        tests_cited.append(comparisons[key]["test"])
+                if f["verdict"] == "no printed value":
+                    values.append("the paper prints no value or claim: shape compared by eye")
             if tests is not None:
                 for t in tests_cited:
                     if t not in tests:
@@ -354,7 +408,7 @@ def ledger_tex(runs, papers, tests):
                      if label else "")
             rerun = "; ".join(commands) + ("; " + ", ".join(code(f"figures/{g}") for g in scripts) if scripts else "") + \
                 "; " + ", ".join(code(t) for t in dict.fromkeys(tests_cited))
-            out.append(f"{where} & {shown} & {verdict} & {'; '.join(values)} & {rerun}\\\\")
+            out.append(f"{where} & {shown} & {'; '.join(verdicts)} & {'; '.join(values)} & {rerun}\\\\")
     out += [r"\bottomrule", r"\end{longtable}}"]
     return "\n".join(out) + "\n"
 
@@ -475,16 +529,28 @@ def main():
     parser.add_argument("--tex", nargs="*", help="the LaTeX files whose lookups to resolve")
     parser.add_argument("--junit", help="ctest -L hardcase --output-junit FILE: the hard cases and their results")
     parser.add_argument("--draft", action="store_true", help="show a missing value as a note, do not stop")
+    parser.add_argument("--paper-scenes", nargs="*", metavar="ID=SCENE",
+                        help="report only these runs, each the run of its paper scene (scripts/paper_runs.py): a "
+                             "run with --set overrides or without every study of its scene is refused")
     args = parser.parse_args()
     root, out = pathlib.Path(args.results), pathlib.Path(args.out)
     runs = {}
+    paper_scenes = dict(pair.partition("=")[::2] for pair in args.paper_scenes or [])
     for path in sorted(root.glob("*/summary.json")):
+        if paper_scenes and path.parent.name not in paper_scenes and "+" in path.parent.name:
+            continue  # (a reviewer's rerun, results/<id>+<hash>: not the report's)
         run_json = path.parent / "run.json"
         runs[path.parent.name] = {"summary": json.loads(path.read_text(encoding="utf-8")),
                                   "run": json.loads(run_json.read_text(encoding="utf-8")) if run_json.is_file() else {}}
     if not runs:
         print(f"report.py: no */summary.json in {root}", file=sys.stderr)
         return 1
+    for run_id, scene in paper_scenes.items():
+        why = why_not_paper_run(runs[run_id]["run"], scene) if run_id in runs else "it has no summary.json"
+        if why:
+            print(f"report.py: {root / run_id} is not the run of the paper scene {scene}: {why} (make figures reruns it)",
+                  file=sys.stderr)
+            return 1
     tex = [pathlib.Path(t) for t in args.tex] if args.tex is not None else \
         [ROOT / "paper" / "main.tex"] + sorted((ROOT / "paper" / "sections").rglob("*.tex"))
     tests, ctest = None, []

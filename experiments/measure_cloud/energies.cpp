@@ -90,13 +90,19 @@ StudyPlan plan_energies(const Scene& s) {
 
 // (energies.t_end is also the end time of the cost runs: a shared key, main.cpp)
 Study energies_study() {
-  return {"energies", "003 Figs 5.3, 5.5, 5.6", {"energies_phi*.csv"},
-          {"potential", "cloud.center", "h", "methods", "energies", "reference"},
-          [](const Scene& s) {
-            check_at_least_one_step(s, "energies.t_end", {s.real("h")}, "h");
-            check_first_step(s, "h", {s.real("h")});
-          },
-          run_energies, plan_energies};
+  Study st{"energies", "003 Figs 5.3, 5.5, 5.6", {"energies_phi*.csv"},
+           {"potential", "cloud.center", "h", "methods", "energies", "reference"},
+           [](const Scene& s) {
+             check_at_least_one_step(s, "energies.t_end", {s.real("h")}, "h");
+             check_first_step(s, "h", {s.real("h")});
+           },
+           run_energies, plan_energies};
+  // Fig 5.3 is the harmonic particle's, Figs 5.5 (Phi^(4)) and 5.6 (Phi^(0)) the free particle's (003 Sec. 5.3)
+  st.makes_under = [](const Scene& s) {
+    const std::string pot = s.text("potential");
+    return pot == "harmonic" ? std::string("003 Fig 5.3") : pot == "free" ? std::string("003 Figs 5.5, 5.6") : "";
+  };
+  return st;
 }
 
 }  // namespace geomint::measure_cloud

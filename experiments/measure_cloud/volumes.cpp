@@ -178,9 +178,11 @@ void keys(Schema& s) {
 }  // namespace
 
 Study volumes_study() {
-  return {"volumes", "003 Figs 5.2, 5.4", {"volumes_phi*.csv", "volumes_authors_phi*.csv"},
-          {"potential", "cloud.center", "h", "methods", "t_end", "ptp_window", "cloud", "checkpoint", "reference"},
-          check_volumes, run_volumes, plan_volumes, keys};
+  Study st{"volumes", "003 Figs 5.2, 5.4", {"volumes_phi*.csv", "volumes_authors_phi*.csv"},
+           {"potential", "cloud.center", "h", "methods", "t_end", "ptp_window", "cloud", "checkpoint", "reference"},
+           check_volumes, run_volumes, plan_volumes, keys};
+  st.makes_under = [](const Scene& s) { return s.text("potential") == "harmonic" ? std::string("003 Figs 5.2, 5.4") : ""; };
+  return st;
 }
 
 }  // namespace geomint::measure_cloud

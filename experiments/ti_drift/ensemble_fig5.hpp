@@ -235,6 +235,7 @@ inline json episode_summary(const Scene& s, const Run& run, const std::vector<do
                    {"sign", ep.sign},
                    {"cuts", c.count},
                    {"share_p2_negative", share(c)},
+                   {"share_one_side", c.count ? std::max(share(c), 1 - share(c)) : 0.0},  // the side holding most cuts
                    {"mean_p2", c.count ? c.p2_sum / static_cast<double>(c.count) : 0.0},
                    {"share_time_p2_negative", time_share(i)},
                    {"E_err_change", change},

@@ -99,6 +99,7 @@ void run_pendulum(Context& ctx) {
       {"steps", n},
       {"sample_dt", static_cast<double>(every) * h},
       {"change", es_all.back()},               // of H + h^2 H_3 over the run
+      {"change_relative_to_H0", es_all.back() / up.H(p0)},
       {"H_drift_rate", slope(ts_all, Hs_all)},  // the slope of the error of H over the run
       {"peak_to_peak_about_trend", {{"shifted_energy", peak_to_peak_about_line(ts_all, es_all)},
                                     {"H", peak_to_peak_about_line(ts_all, Hs_all)}}},

@@ -204,8 +204,95 @@ TEST(Published, EachEntryBelongsToAFigureItsStudyMakes) {
     return e[0].figure;
   };
   EXPECT_EQ(resolved("figure = \"004 Fig. 5\"\n"), "004 Fig. 5");
+  EXPECT_EQ(resolved("figure = \"004 Sec. 1.4\"\n"), "004 Sec. 1.4");  // a statement of the text
+  EXPECT_EQ(resolved("figure = \"000 eq. (16)\"\n"), "000 eq. (16)");
   EXPECT_NE(resolved("").find("figure = ?"), std::string::npos) << resolved("");
   EXPECT_NE(resolved("figure = \"004 Fig. 6\"\n").find("not one the study ensemble makes"), std::string::npos);
+}
+
+TEST(Published, ClaimsAreComparedWithTheirBound) {
+  const auto e = read_published(published_file(R"(
+[side]
+study = "table1"
+where = "the cuts lie in p2 < 0"
+summary = "share"
+compare = { above = 0.5 }
+
+[each]
+study = "table1"
+where = "less drift than the other, for every method"
+summary = "ratio"
+compare = { below = 1 }
+)"));
+  EXPECT_EQ(e[0].value, "> 0.5");
+  EXPECT_EQ(verdict(e[0], {{"share", 0.93}}), "reproduced");
+  EXPECT_EQ(verdict(e[0], {{"share", 0.07}}), "differs");
+  EXPECT_EQ(verdict(e[0], {{"share", 0.5}}), "differs");  // on the bound: the claim does not hold
+  EXPECT_EQ(verdict(e[1], {{"ratio", {{"M", 0.2}, {"T", 0.9}}}}), "reproduced");
+  EXPECT_EQ(verdict(e[1], {{"ratio", {{"M", 0.2}, {"T", 1.1}}}}), "differs");  // every value of a table
+  EXPECT_EQ(verdict(e[1], {{"ratio", json::object()}}), "differs");           // nothing measured: no claim holds
+  EXPECT_NE(error_of("[a]\nstudy = \"s\"\nvalue = 1\nwhere = \"w\"\nsummary = \"x\"\ncompare = { above = 0.5 }\n")
+                .find("no 'value'"),
+            std::string::npos);
+}
+
+TEST(Published, KindsAndChosenParameters) {
+  EXPECT_NE(error_of("[a]\nstudy = \"s\"\nvalue = 1\nwhere = \"w\"\nsummary = \"x\"\nkind = \"rumour\"\n").find("kind is"),
+            std::string::npos);
+  EXPECT_NE(error_of("[a]\nstudy = \"s\"\nvalue = 1\nwhere = \"w\"\nsummary = \"x\"\nkind = \"convention\"\n")
+                .find("needs its note"),
+            std::string::npos);
+  EXPECT_NE(error_of("[a]\nstudy = \"s\"\nvalue = 1\nwhere = \"w\"\nsummary = \"x\"\nchosen = { h = 0.2 }\n")
+                .find("needs its note"),
+            std::string::npos);
+  const auto e = read_published(published_file(
+      "[a]\nstudy = \"table1\"\nvalue = 3.0\nwhere = \"w\"\nsummary = \"x\"\ncompare = { rel = 0.1 }\n"
+      "kind = \"authors_code\"\nchosen = { \"lj.h\" = 0.2 }\nnote = \"the printed step diverges\"\n"));
+  const auto c = compare_published(e[0], {{"x", 3.1}}, {{"lj", {{"h", 0.01}}}}, {"table1"});
+  ASSERT_TRUE(c.has_value());
+  EXPECT_EQ((*c)["kind"], "authors_code");
+  EXPECT_EQ((*c)["chosen"]["lj.h"]["printed"], 0.2);
+  EXPECT_EQ((*c)["chosen"]["lj.h"]["used"], 0.01);
+}
+
+TEST(Published, EachFigureHasOneVerdictFromItsOwnComparisons) {
+  const auto comparison = [](const char* figure, const char* verdict, json extra = json::object()) {
+    json c = {{"figure", figure}, {"verdict", verdict}};
+    for (const auto& [k, v] : extra.items()) c[k] = v;
+    return c;
+  };
+  const json chosen = {{"chosen", {{"lj.h", {{"printed", 0.2}, {"used", 0.01}}}}}};
+  const json comparisons = {
+      {"sigma4", comparison("004 Fig. 4", "reproduced")},
+      {"side", comparison("004 Fig. 5", "differs", {{"expect", "differs"}})},
+      {"symmetric", comparison("004 Fig. 5", "reproduced")},
+      {"sigma6", comparison("004 Fig. 6", "reproduced", chosen)},
+      {"mu6", comparison("004 Fig. 6", "reported", chosen)},
+      {"printed_step", comparison("004 Sec. 5.3", "differs", {{"expect", "differs"}})},
+      {"norm", comparison("000 Fig. 9", "differs", {{"kind", "convention"}})},
+      {"max_norm", comparison("000 Fig. 9", "reproduced")},
+      {"eq12", comparison("001 Table 1", "differs")},
+      {"other_scene", comparison("003 Fig. 5.3", "not comparable")},
+  };
+  const auto verdict_of = [&](const char* figure) { return figure_verdict(comparisons, figure)["verdict"]; };
+  EXPECT_EQ(verdict_of("004 Fig. 4"), "reproduced");
+  EXPECT_EQ(verdict_of("004 Fig. 5"), "partly reproduced");  // never Fig. 4's values
+  EXPECT_EQ(verdict_of("004 Fig. 6"), "reproduced with a chosen parameter");  // the text's erratum is not Fig. 6's
+  EXPECT_EQ(verdict_of("000 Fig. 9"), "reproduced");          // a convention is listed, not judged
+  EXPECT_EQ(verdict_of("001 Table 1"), "differs");
+  EXPECT_EQ(verdict_of("003 Fig. 5.3"), "not comparable");
+  EXPECT_EQ(verdict_of("003 Fig. 5.1"), "no printed value");
+  const json f5 = figure_verdict(comparisons, "004 Fig. 5");
+  EXPECT_EQ(f5["reproduced"], json::array({"symmetric"}));
+  EXPECT_EQ(f5["differs"], json::array({"side"}));
+  EXPECT_FALSE(f5.contains("unexpected"));  // expected to differ: an erratum, not a regression
+  EXPECT_EQ(figure_verdict(comparisons, "001 Table 1")["unexpected"], json::array({"eq12"}));
+  EXPECT_EQ(figure_verdict(comparisons, "004 Fig. 6")["chosen"]["lj.h"]["printed"], 0.2);
+  EXPECT_EQ(figure_verdict(comparisons, "000 Fig. 9")["conventions"], json::array({"norm"}));
+  json summary = {{"comparisons", comparisons}};
+  apply_figure_verdicts(summary, {"004 Fig. 4", "004 Fig. 5"});
+  EXPECT_EQ(summary["figures"].size(), 2u);
+  EXPECT_EQ(summary["figures"]["004 Fig. 5"]["verdict"], "partly reproduced");
 }
 
 }  // namespace published_test

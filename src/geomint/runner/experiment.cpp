@@ -266,6 +266,17 @@ const Study* find_study(const ExperimentSpec& spec, std::string_view name) {
   return nullptr;
 }
 
+// What a study makes under a scene (Study::makes_under): a part of what it declares it makes.
+std::string makes_here(const Study& st, const Scene& scene) {
+  if (!st.makes_under) return st.makes;
+  const std::string here = st.makes_under(scene);
+  const auto all = made_items(st.makes);
+  for (const auto& item : made_items(here))
+    if (std::find(all.begin(), all.end(), item) == all.end())
+      throw std::logic_error("study " + st.name + " makes " + item + " under this scene, not one of " + st.makes);
+  return here;
+}
+
 // Every name a scene or --study may use: the studies' names and their former names.
 std::vector<std::string> accepted_study_names(const ExperimentSpec& spec) {
   std::vector<std::string> names = study_names(spec);
@@ -709,6 +720,10 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
     nlohmann::ordered_json summary = {{"experiment", name}, {"studies", ran}};
     for (auto& [k, v] : ctx.summary.items()) summary[k] = v;
     apply_published(published, summary, scene->to_json(), ran);
+    std::vector<std::string> made;  // the papers' items the studies that ran made under this scene
+    for (const std::string& r : ran)
+      for (const auto& item : made_items(makes_here(*find_study(spec, r), *scene))) made.push_back(item);
+    apply_figure_verdicts(summary, made);
     summary["timing"]["wall_s"] = wall;
     summary["timing"]["study_wall_s"] = study_wall;
     out->write("summary.json", summary.dump(2) + "\n");
@@ -728,7 +743,8 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
     run["studies"] = ran;
     run["study_list"] = nlohmann::ordered_json::array();  // every study of the experiment: what it makes, its files
     for (const auto& st : spec.studies)
-      run["study_list"].push_back({{"name", st.name}, {"makes", st.makes}, {"files", st.files},
+      run["study_list"].push_back({{"name", st.name}, {"makes", st.makes}, {"made", made_items(makes_here(st, *scene))},
+                                   {"files", st.files},
                                    {"ran", std::find(ran.begin(), ran.end(), st.name) != ran.end()}});
     run["threads"] = threads;
     run["ranks"] = mpi::size();

@@ -116,6 +116,9 @@ struct Study {
   std::function<StudyPlan(const Scene&)> plan = {};  // --plan and the count checks (none: not estimated)
   std::function<void(Schema&)> keys = {};  // declares the scene keys only this study reads (shared ones: ExperimentSpec)
   std::vector<std::string> aliases = {};   // former names, still accepted (with a note on stderr) for one release
+  // Where the figures it makes depend on the scene (003: Fig 5.3 is the harmonic scene's energies,
+  // Figs 5.5 and 5.6 the free particle's): the part of `makes` this scene makes ("" for none).
+  std::function<std::string(const Scene&)> makes_under = {};
 };
 
 struct ExperimentSpec {

@@ -18,7 +18,15 @@ namespace {
 using json = nlohmann::ordered_json;
 
 const std::vector<std::string> kFields = {"study", "figure", "value", "where", "summary", "compare", "requires", "expect",
-                                          "note", "test"};
+                                          "note", "test", "kind", "chosen"};
+const std::vector<std::string> kKinds = {"printed", "scanning", "authors_code", "convention", "sample"};
+
+bool is_claim(const std::string& compare) { return compare == "above" || compare == "below"; }
+
+// A statement of the text rather than a figure or table: "004 Sec. 1.4", "000 eq. (16)".
+bool is_text_item(const std::string& figure) {
+  return figure.size() > 4 && (figure.compare(4, 4, "Sec.") == 0 || figure.compare(4, 3, "eq.") == 0);
+}
 
 [[noreturn]] void fail(const std::filesystem::path& file, const std::string& key, const std::string& what) {
   throw PublishedError(file.string() + ": [" + key + "]: " + what);
@@ -118,25 +126,48 @@ std::vector<Published> read_published(const std::filesystem::path& file) {
     }
     if (p.expect == "differs" && (p.note.empty() || p.test.empty()))
       fail(file, key, "a known discrepancy (expect = \"differs\") needs its note and the ctest test that shows it");
+    if (const std::string kd = text(*t, "kind", file, key, false); !kd.empty()) {
+      if (std::find(kKinds.begin(), kKinds.end(), kd) == kKinds.end())
+        fail(file, key, "kind is \"printed\", \"scanning\", \"authors_code\", \"convention\" or \"sample\"");
+      p.kind = kd;
+    }
+    if ((p.kind == "convention" || p.kind == "sample") && p.note.empty())
+      fail(file, key, "a " + p.kind + " needs its note (what the paper leaves open)");
+    if (const auto c = (*t)["chosen"]) {
+      const auto* ct = c.as_table();
+      if (!ct || ct->empty()) fail(file, key, "chosen is a table of scene keys and their printed values");
+      for (const auto& [sk, sv] : *ct) p.chosen[std::string(sk.str())] = scalar(sv, file, key);
+      if (p.note.empty()) fail(file, key, "a chosen parameter needs its note (why not the printed value)");
+    }
     const auto value = (*t)["value"];
-    if (!value) fail(file, key, "missing 'value'");
-    if (const auto* vt = value.as_table()) {
+    const auto compare_node = (*t)["compare"];
+    const bool claim = compare_node && compare_node.as_table() && compare_node.as_table()->size() == 1 &&
+                       is_claim(std::string(compare_node.as_table()->cbegin()->first.str()));
+    if (claim && value) fail(file, key, "a claim ({ above = x } or { below = x }) has no 'value': the bound is x");
+    if (!value && !claim) fail(file, key, "missing 'value'");
+    if (claim) {
+      // (set below, with the bound)
+    } else if (const auto* vt = value.as_table()) {
       p.value = json::object();
       for (const auto& [param, v] : *vt) p.value[std::string(param.str())] = scalar(v, file, key);
     } else {
       p.value = scalar(*value.node(), file, key);
     }
-    if (const auto c = (*t)["compare"]) {
+    if (const auto c = compare_node) {
+      const char* forms = "compare is { rel = x }, { abs = x } or { order = x } with a finite x >= 0, or a claim "
+                          "{ above = x } or { below = x } with a finite x";
       const auto* ct = c.as_table();
-      if (!ct || ct->size() != 1) fail(file, key, "compare is { rel = x }, { abs = x } or { order = x }");
+      if (!ct || ct->size() != 1) fail(file, key, forms);
       const auto first = ct->cbegin();
       p.compare = std::string(first->first.str());
       const auto tv = first->second.value<double>();
-      if ((p.compare != "rel" && p.compare != "abs" && p.compare != "order") || !tv || !(*tv >= 0) || !std::isfinite(*tv))
-        fail(file, key, "compare is { rel = x }, { abs = x } or { order = x } with a finite x >= 0");
+      if ((p.compare != "rel" && p.compare != "abs" && p.compare != "order" && !claim) || !tv || !std::isfinite(*tv) ||
+          (!claim && !(*tv >= 0)))
+        fail(file, key, forms);
       p.tolerance = *tv;
+      if (claim) p.value = std::string(p.compare == "above" ? "> " : "< ") + json(*tv).dump();
       const auto numeric = [](const json& v) { return v.is_number(); };
-      if (!(p.value.is_number() ||
+      if (!claim && !(p.value.is_number() ||
             (p.value.is_object() && std::all_of(p.value.begin(), p.value.end(), numeric))))
         fail(file, key, "a compared value is a number or a table of numbers");
       if (p.compare == "rel" && p.value.is_number() && p.value.get<double>() == 0.0)
@@ -163,6 +194,11 @@ std::optional<json> compare_published(const Published& e, const json& summary, c
   if (!e.figure.empty()) c["figure"] = e.figure;
   c["where"] = e.where, c["published"] = e.value, c["reproduced"] = reproduced ? *reproduced : json(nullptr);
   if (!e.compare.empty()) c["compare"] = {{e.compare, e.tolerance}};
+  if (e.kind != "printed") c["kind"] = e.kind;
+  for (const auto& [key, printed] : e.chosen.items()) {
+    const json* used = json_at(scene, key);
+    c["chosen"][key] = {{"printed", printed}, {"used", used ? *used : json(nullptr)}};
+  }
   const auto done = [&](const std::string& verdict, const std::string& reason) {
     c["verdict"] = verdict;
     if (!reason.empty()) c["reason"] = reason;
@@ -176,7 +212,13 @@ std::optional<json> compare_published(const Published& e, const json& summary, c
   // by its value. A parameter the run did not compute (a method the scene does not name) is listed.
   std::vector<std::pair<std::string, std::pair<double, const json*>>> pairs;
   json missing = json::array();
-  if (e.value.is_number() && reproduced) {
+  if (is_claim(e.compare) && reproduced) {  // the bound against the value, or every value of a table
+    if (reproduced->is_object()) {
+      for (const auto& [rk, rv] : reproduced->items()) pairs.push_back({rk, {e.tolerance, &rv}});
+    } else {
+      pairs.push_back({"", {e.tolerance, reproduced}});
+    }
+  } else if (e.value.is_number() && reproduced) {
     pairs.push_back({"", {e.value.get<double>(), reproduced}});
   } else if (e.value.is_object()) {
     json published = json::object();
@@ -207,14 +249,15 @@ std::optional<json> compare_published(const Published& e, const json& summary, c
   if (e.value.is_object() && missing.size() == e.value.size())
     return done("not computed", "this scene computes " + e.summary + " for none of the published parameters");
   if (e.compare.empty()) return done("reported", "");
-  bool within = true;
-  json diff = e.value.is_number() ? json() : json::object();
+  bool within = !pairs.empty();
+  json diff = pairs.size() == 1 && pairs[0].first.empty() ? json() : json::object();
   for (const auto& [param, pr] : pairs) {
     const auto& [pub, rep] = pr;
     // A reproduced value that is not a finite number is never within any tolerance.
     const double r = rep->is_number() ? rep->get<double>() : std::nan("");
-    const double d = difference(e.compare, pub, r);
-    within = within && std::isfinite(d) && std::abs(d) <= e.tolerance;
+    const double d = is_claim(e.compare) ? r - pub : difference(e.compare, pub, r);  // (a claim: from its bound)
+    within = within && std::isfinite(d) &&
+             (e.compare == "above" ? d > 0 : e.compare == "below" ? d < 0 : std::abs(d) <= e.tolerance);
     const json dj = std::isfinite(d) ? json(d) : json(nullptr);
     if (param.empty()) diff = dj;
     else diff[param] = dj;
@@ -233,6 +276,53 @@ void apply_published(const std::vector<Published>& entries, json& summary, const
     if (verdict != "not comparable" && verdict != "not computed") summary["published"][e.key] = (*c)["published"];
     summary["comparisons"][e.key] = std::move(*c);
   }
+}
+
+json figure_verdict(const json& comparisons, const std::string& figure) {
+  json f = json::object();
+  std::vector<std::string> reproduced, differs, unexpected, reported, not_comparable, conventions;
+  json chosen = json::object();
+  for (const auto& [key, c] : comparisons.items()) {
+    if (c.value("figure", "") != figure) continue;
+    const std::string v = c.value("verdict", "");
+    if (c.value("kind", "printed") == "convention") {
+      conventions.push_back(key);
+    } else if (v == "reproduced" || v == "differs") {
+      (v == "reproduced" ? reproduced : differs).push_back(key);
+      if (v == "differs" && c.value("expect", "reproduced") != "differs") unexpected.push_back(key);
+      if (c.contains("chosen"))
+        for (const auto& [sk, ch] : c["chosen"].items()) chosen[sk] = ch;
+    } else if (v == "reported") {
+      reported.push_back(key);
+    } else if (v == "not comparable") {
+      not_comparable.push_back(key);
+    }
+  }
+  std::string verdict;
+  if (!reproduced.empty() && differs.empty())
+    verdict = chosen.empty() ? "reproduced" : "reproduced with a chosen parameter";
+  else if (!reproduced.empty())
+    verdict = "partly reproduced";
+  else if (!differs.empty())
+    verdict = "differs";
+  else
+    verdict = not_comparable.empty() ? "no printed value" : "not comparable";
+  f["verdict"] = verdict;
+  const auto list = [&](const char* name, const std::vector<std::string>& keys) {
+    if (!keys.empty()) f[name] = keys;
+  };
+  list("reproduced", reproduced), list("differs", differs), list("unexpected", unexpected);
+  list("reported", reported), list("not_comparable", not_comparable), list("conventions", conventions);
+  if (!chosen.empty()) f["chosen"] = chosen;
+  return f;
+}
+
+void apply_figure_verdicts(json& summary, const std::vector<std::string>& made) {
+  json figures = json::object();  // (built apart: adding to summary moves its members)
+  const json none = json::object();
+  const json& comparisons = summary.contains("comparisons") ? summary["comparisons"] : none;
+  for (const std::string& item : made) figures[item] = figure_verdict(comparisons, item);
+  summary["figures"] = std::move(figures);
 }
 
 std::vector<std::string> made_items(const std::string& makes) {
@@ -274,7 +364,7 @@ void resolve_figures(std::vector<Published>& entries, const std::filesystem::pat
       if (items.size() > 1)
         fail(file, p.key, "figure = ? (study " + p.study + " makes " + makes + ": say which of them it belongs to)");
       if (items.size() == 1) p.figure = items[0];
-    } else if (std::find(items.begin(), items.end(), p.figure) == items.end()) {
+    } else if (std::find(items.begin(), items.end(), p.figure) == items.end() && !is_text_item(p.figure)) {
       fail(file, p.key, "figure = \"" + p.figure + "\" is not one the study " + p.study + " makes (" +
                             (items.empty() ? std::string("none of the papers' figures") : makes) + ")");
     }

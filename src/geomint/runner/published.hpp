@@ -7,12 +7,26 @@
 //   value = { "10" = 8.95e-6, "20" = 1.39e-7 }   # a table keyed by a parameter (here N), or one number
 //   where = "001 Table 1, N = 10, 20"     # seed, figure / table / equation
 //   figure = "001 Table 1"                # the figure, table or section of the paper it belongs to: one
-//                                         # the study makes (Study::makes); may be left out where the study
-//                                         # makes exactly one (or none: a quantity beyond the figures)
+//                                         # the study makes (Study::makes), or a statement of the text
+//                                         # ("004 Sec. 1.4", "000 eq. (16)"); may be left out where the
+//                                         # study makes exactly one (or none: a quantity beyond the figures)
 //   summary = "reproduced.p_err"          # the reproduced value in summary.json (dotted path; for a
 //                                         # table, an object with the parameters as keys)
 //   compare = { rel = 0.03 }              # or { abs = 1e-13 }, { order = 0.1 } (|difference| <= 0.1);
-//                                         # without compare the value is reported, not compared
+//                                         # without compare the value is reported, not compared;
+//                                         # a printed qualitative claim ("the cuts lie in p2 < 0") is
+//                                         # { above = x } or { below = x }: the measured quantity
+//                                         # (every value of a table) lies above or below x; no `value`
+//   kind = "printed"                      # where the value comes from: "printed" (default), "scanning"
+//                                         # (printed, but the scanned text may have garbled it),
+//                                         # "authors_code" (not printed: the code published with the
+//                                         # paper gives it), "convention" (a convention the paper leaves
+//                                         # open, computed beside the one compared: never an erratum),
+//                                         # "sample" (printed of one random sample the paper does not
+//                                         # give, e.g. the trajectory of a random start: the reproduction's
+//                                         # sample may differ without contradicting the paper)
+//   chosen = { "lj.h" = 0.2 }             # a parameter the reproduction sets otherwise than printed
+//                                         # (scene key = the printed value; the note says why)
 //   requires = { "long_run.periods" = 100000.0 }   # scene values under which it is comparable
 //   expect = "differs"                    # a known discrepancy (default: "reproduced")
 //   note = "..."                          # why the reproduction differs, if it does
@@ -21,12 +35,15 @@
 // After the studies ran, every entry of a study that ran is set against the
 // summary: summary.comparisons.<key> holds figure, where, published, reproduced, difference,
 // compare, verdict and note. The verdict is "reproduced" or "differs" (by the
-// tolerance), "reported" (no compare), "not comparable" (the scene differs
+// tolerance, or the claim's bound), "reported" (no compare), "not comparable" (the scene differs
 // from `requires`) or "not computed" (the study ran without computing it, e.g.
 // for other methods); a value table with a parameter the run did not compute
 // is an internal error. summary.published.<key> is the published value of every
 // entry but those not comparable or not computed. The regression tests require
 // every comparison of the quick scenes to be made.
+//
+// Then each figure or table a study made under the run's scene gets one verdict from its own
+// comparisons only (figure_verdict), in summary.figures."<item>".
 #include <filesystem>
 #include <functional>
 #include <optional>
@@ -47,8 +64,10 @@ struct Published {
   std::string figure;                // "004 Fig. 5": the item of the paper (paper/papers.toml) it belongs to
   std::string expect = "reproduced";
   nlohmann::ordered_json value;     // a number, or an object of numbers keyed by a parameter
-  std::string compare;              // "rel", "abs", "order" or "" (reported only)
-  double tolerance = 0;
+  std::string compare;              // "rel", "abs", "order", "above", "below" (a claim) or "" (reported only)
+  double tolerance = 0;             // (the bound of a claim)
+  std::string kind = "printed";     // "printed", "scanning", "authors_code", "convention" or "sample"
+  nlohmann::ordered_json chosen = nlohmann::ordered_json::object();  // scene key -> the printed value
   nlohmann::ordered_json requires_ = nlohmann::ordered_json::object();  // dotted scene key -> value
 };
 
@@ -64,6 +83,25 @@ std::optional<nlohmann::ordered_json> compare_published(const Published& entry, 
 // Sets summary.published and summary.comparisons from every entry of a study that ran.
 void apply_published(const std::vector<Published>& entries, nlohmann::ordered_json& summary,
                      const nlohmann::ordered_json& scene, const std::vector<std::string>& studies_ran);
+
+// The verdict of one figure or table from its comparisons (summary.comparisons entries whose figure
+// it is), in the report's vocabulary:
+//   "reproduced"                 every compared value (a number, an order or a claim) within tolerance;
+//   "reproduced with a chosen parameter"   so, but at least one with a parameter set otherwise than
+//                                printed (`chosen`);
+//   "partly reproduced"          some within tolerance, some not;
+//   "differs"                    none within tolerance (each explained in the errata, or a regression);
+//   "not comparable"             nothing compared, something not comparable under this scene;
+//   "no printed value"           nothing compared: the paper prints no number or claim for it (its
+//                                shape is compared by eye), only reported values if any.
+// Conventions (kind = "convention") are listed, never judged. The object holds the verdict and the
+// keys by outcome: reproduced, differs (unexpected: those expected to reproduce), reported,
+// not_comparable, conventions, chosen (scene key -> {printed, used}).
+nlohmann::ordered_json figure_verdict(const nlohmann::ordered_json& comparisons, const std::string& figure);
+
+// summary.figures: figure_verdict of every item in `made` (the items the studies that ran made under
+// the scene, in order).
+void apply_figure_verdicts(nlohmann::ordered_json& summary, const std::vector<std::string>& made);
 
 // The items of the papers a study makes (Study::makes), as paper/papers.toml names them:
 // "003 Figs 5.2, 5.4" -> {"003 Fig. 5.2", "003 Fig. 5.4"}; "001 Table 1" -> {"001 Table 1"};
