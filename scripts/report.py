@@ -341,9 +341,13 @@ def short_value(c):
         rep_text = f"${number(rep['min'], 'sci3')}$--${number(rep['max'], 'sci3')}$" if rep else "not computed"
     else:
         rep_text = value_text(rep)
-    pub_text = tex_escape(pub) if isinstance(pub, str) else value_text(pub) if not isinstance(pub, dict) or len(pub) <= 2 \
-        else f"{len(pub)} values"
-    label = "authors' code" if c.get("kind") == "authors_code" else "printed"
+    claim = {k: v for k, v in (c.get("compare") or {}).items() if k in ("above", "below")}
+    if claim:  # a printed claim: its rule
+        (rule, bound), = claim.items()
+        pub_text = f"${'>' if rule == 'above' else '<'} {bound:g}$"
+    else:
+        pub_text = value_text(pub) if not isinstance(pub, dict) or len(pub) <= 2 else f"{len(pub)} values"
+    label = "authors' code" if c.get("kind") == "authors_code" else "claim" if claim else "printed"
     return f"{label} {pub_text}, reproduced {rep_text}"
 
 
@@ -356,7 +360,7 @@ def ledger_tex(runs, papers, tests):
             if st.get("ran"):
                 for item in st.get("made", []):
                     paper_id, _, item_name = item.partition(" ")
-                    makers.setdefault((paper_id, item_name), []).append((name, st))
+                    makers.setdefault((paper_id, item_name), {}).setdefault(name, []).append(st)
     out = ["% The reproduction ledger (scripts/report.py from paper/papers.toml, run.json and summary.json).",
            r"{\scriptsize\begin{longtable}{@{}>{\raggedright}p{0.07\linewidth}>{\raggedright}p{0.08\linewidth}"
            r">{\raggedright}p{0.25\linewidth}>{\raggedright}p{0.25\linewidth}>{\raggedright\arraybackslash}p{0.27\linewidth}@{}}",
@@ -368,18 +372,18 @@ def ledger_tex(runs, papers, tests):
             if "left_out" in item:
                 out.append(f"{where} & --- & left out: {tex_escape(item['left_out'])} & & \\\\")
                 continue
-            done = makers.get((paper["id"], item["name"]), [])
+            done = makers.get((paper["id"], item["name"]), {})
             if not done:
                 raise SystemExit(f"report.py: no run made [{paper['id']}] {item['name']} (papers.toml lists it)")
             figure = f"{paper['id']} {item['name']}"
             verdicts, values, commands, tests_cited, scripts = [], [], [], [], []
-            for name, st in done:
+            for name, studies in done.items():  # one verdict per run: its own figure's comparisons
                 summary = runs[name]["summary"]
                 experiment = summary.get("experiment", name)
                 scene = runs[name]["run"].get("scene_file", "")
-                commands.append(code(f"build/bin/{experiment} --study {st['name']}" +
+                commands.append(code(f"build/bin/{experiment} " + " ".join(f"--study {st['name']}" for st in studies) +
                                      ("" if name == experiment else f" --scene {scene}")))
-                scripts += figure_scripts(name, st["files"])
+                scripts += [s for st in studies for s in figure_scripts(name, st["files"]) if s not in scripts]
                 tests_cited.append(f"{experiment}.studies")
                 f = (summary.get("figures") or {}).get(figure)
                 if f is None:
@@ -393,7 +397,7 @@ def ledger_tex(runs, papers, tests):
                 elif f.get("differs"):
                     verdict += r" (Section~\ref{sec:errata})"
                 verdicts.append(verdict)
-                for key in (f.get("reproduced", []) + f.get("differs", []))[:2]:
+                for key in (f.get("differs", []) + f.get("reproduced", []))[:2]:  # (what differs first)
                     values.append(short_value(comparisons[key]))
                     if comparisons[key].get("test"):
                         tests_cited.append(comparisons[key]["test"])
