@@ -122,6 +122,11 @@ def tex_escape(text):
     return "".join(repl.get(c, c) for c in str(text))
 
 
+def prose(text):
+    """Escaped text whose paths and names (a/b/c.hpp, share_p2_negative) may break after / and _."""
+    return re.sub(r"(/|\\_)(?=\w)", r"\1\\allowbreak{}", tex_escape(text))
+
+
 def is_number(v):
     return isinstance(v, (int, float)) and not isinstance(v, bool)
 
@@ -207,7 +212,7 @@ def results_tex(runs, tex_files, draft):
 def value_text(v):
     """A published or reproduced value: a number, or a table of them keyed by a parameter."""
     if isinstance(v, dict):  # keyed by a name, or by a number written as %.17g (shown as %g)
-        return "; ".join(f"{tex_escape(key_text(k))}: {value_text(x)}" for k, x in v.items())
+        return "; ".join(f"{prose(key_text(k))}: {value_text(x)}" for k, x in v.items())
     if is_number(v):
         return "$" + (number(v, "sci3") or tex_escape(v)) + "$" if math.isfinite(v) else tex_escape(v)
     return "not computed" if v is None else tex_escape(v)
@@ -220,9 +225,20 @@ def key_text(k):
         return k
 
 
+def longtable(size, *fractions):
+    """The opening of a longtable of ragged-right columns whose widths are these fractions of the line,
+    their padding (2 tabcolsep between two columns) included, so that the table never runs past the margin."""
+    n = len(fractions)
+    pad = f"{2 * (n - 1) / n:.4f}"
+    cols = "".join(f">{{\\raggedright\\arraybackslash}}p{{\\dimexpr{f}\\linewidth-{pad}\\tabcolsep\\relax}}"
+                   for f in fractions)
+    return f"{{\\{size}\\begin{{longtable}}{{@{{}}{cols}@{{}}}}"
+
+
 def code(text):
     """Typewriter text that may break after its dots, slashes and underscores."""
-    return r"\texttt{" + re.sub(r"(\.|/|\\_)", r"\1\\allowbreak{}", tex_escape(text)) + "}"
+    broken = re.sub(r"(\.|/|\\_)", r"\1\\allowbreak{}", tex_escape(text))
+    return r"\texttt{" + re.sub(r"(?<=[a-z0-9])(?=[A-Z])", r"\\allowbreak{}", broken) + "}"  # (and in CamelCase)
 
 
 def comparisons_tex(runs):
@@ -232,8 +248,7 @@ def comparisons_tex(runs):
         if not comparisons:
             continue
         out += [f"\\subsection*{{\\texttt{{{tex_escape(name)}}}}}",
-                r"{\footnotesize\begin{longtable}{@{}p{0.2\linewidth}p{0.24\linewidth}p{0.12\linewidth}"
-                r"p{0.12\linewidth}p{0.1\linewidth}p{0.12\linewidth}@{}}",
+                longtable("footnotesize", 0.2, 0.26, 0.13, 0.13, 0.12, 0.16),
                 r"\toprule quantity & where published & published & reproduced & difference & verdict\\ \midrule",
                 r"\endhead"]
         for key, c in comparisons.items():
@@ -241,7 +256,7 @@ def comparisons_tex(runs):
             verdict = c["verdict"] + (f" ({tex_escape(how)})" if how else "")
             if c.get("expect", "reproduced") != "reproduced":
                 verdict += r", expected: " + tex_escape(c["expect"])
-            out.append(f"\\texttt{{{tex_escape(key)}}} & {tex_escape(c['where'])} & {value_text(c.get('published'))} & "
+            out.append(f"{code(key)} & {prose(c['where'])} & {value_text(c.get('published'))} & "
                        f"{value_text(c.get('reproduced'))} & {value_text(c.get('difference'))} & {verdict}\\\\")
             remarks = [c[k] for k in ("reason", "note") if c.get(k)]
             if remarks:
@@ -286,8 +301,8 @@ def errata_tex(runs, tests):
                     raise SystemExit(f"report.py: {name}: {key} names the test '{test}', which ctest does not list")
                 source = "The authors' code gives" if c.get("kind") == "authors_code" else "Printed"
                 items.append(f"\\item \\textbf{{{tex_escape(c['where'])}.}} {source}: {value_text(c.get('published'))}; "
-                             f"reproduced: {value_text(c.get('reproduced'))} (\\texttt{{{tex_escape(name)}}}, "
-                             f"\\texttt{{{tex_escape(key)}}}, verdict: {c['verdict']}). {tex_escape(c.get('note', ''))}" +
+                             f"reproduced: {value_text(c.get('reproduced'))} ({code(name)}, "
+                             f"{code(key)}, verdict: {c['verdict']}). {tex_escape(c.get('note', ''))}" +
                              (f" Shown by {code('ctest -R ' + test)}." if test else ""))
         out += [f"\\subsection*{{{title}}}", ERRATA_INTRO[title]]
         out += [r"\begin{enumerate}"] + items + [r"\end{enumerate}"] if items else ["None."]
@@ -300,15 +315,14 @@ def methods_tex(methods):
             return "---"
         return r"$\infty$" if v == "inf" or (is_number(v) and math.isinf(v)) else "$" + FORMATS["sig4"](v) + "$"
     out = ["% The method registry (geomint-methods --json; scripts/report.py).",
-           r"{\footnotesize\begin{longtable}{@{}p{0.2\linewidth}p{0.1\linewidth}p{0.07\linewidth}p{0.08\linewidth}"
-           r"p{0.08\linewidth}p{0.14\linewidth}p{0.25\linewidth}@{}}",
+           longtable("footnotesize", 0.2, 0.11, 0.08, 0.09, 0.09, 0.16, 0.27),
            r"\toprule method & family & order & bound $h|\lambda|$ & bound $\omega h$ & properties & defined in\\ \midrule",
            r"\endhead"]
     for m in methods:
         order = str(m["order"]) + (f" ({m['kernel_order']})" if m["kernel_order"] != m["order"] else "")
-        out.append(f"\\texttt{{{tex_escape(m['name'])}}} & {tex_escape(m['family'])} & {order} & {bound(m.get('real_bound'))} & "
-                   f"{bound(m.get('oscillatory_bound'))} & {tex_escape(', '.join(m['properties']))} & "
-                   f"{tex_escape(m['citation'])}\\\\")
+        out.append(f"{code(m['name'])} & {tex_escape(m['family'])} & {order} & {bound(m.get('real_bound'))} & "
+                   f"{bound(m.get('oscillatory_bound'))} & {prose(', '.join(m['properties']))} & "
+                   f"{prose(m['citation'])}\\\\")
     out += [r"\bottomrule", r"\end{longtable}}"]
     return "\n".join(out) + "\n"
 
@@ -362,15 +376,14 @@ def ledger_tex(runs, papers, tests):
                     paper_id, _, item_name = item.partition(" ")
                     makers.setdefault((paper_id, item_name), {}).setdefault(name, []).append(st)
     out = ["% The reproduction ledger (scripts/report.py from paper/papers.toml, run.json and summary.json).",
-           r"{\scriptsize\begin{longtable}{@{}>{\raggedright}p{0.07\linewidth}>{\raggedright}p{0.08\linewidth}"
-           r">{\raggedright}p{0.25\linewidth}>{\raggedright}p{0.25\linewidth}>{\raggedright\arraybackslash}p{0.27\linewidth}@{}}",
+           longtable("scriptsize", 0.07, 0.1, 0.23, 0.28, 0.32),
            r"\toprule paper & in this report & verdict & its own values & rerun, figure, test\\ \midrule",
            r"\endhead"]
     for paper in papers["paper"]:
         for item in paper["item"]:
             where = f"{{[{paper['id']}]}} {tex_escape(item['name'])}"  # (braced: not \\[dimen])
             if "left_out" in item:
-                out.append(f"{where} & --- & left out: {tex_escape(item['left_out'])} & & \\\\")
+                out.append(f"{where} & --- & left out: {prose(item['left_out'])} & & \\\\")
                 continue
             done = makers.get((paper["id"], item["name"]), {})
             if not done:
@@ -408,7 +421,7 @@ def ledger_tex(runs, papers, tests):
                     if t not in tests:
                         raise SystemExit(f"report.py: the ledger cites the test '{t}', which ctest does not list")
             label = item.get("label", "")
-            shown = (f"{'Table' if label.startswith('tab:') else 'Figure'}~\\ref{{{label}}}, p.~\\pageref{{{label}}}"
+            shown = (f"{'Table' if label.startswith('tab:') else 'Fig.'}~\\ref{{{label}}}, p.~\\pageref{{{label}}}"
                      if label else "")
             rerun = "; ".join(commands) + ("; " + ", ".join(code(f"figures/{g}") for g in scripts) if scripts else "") + \
                 "; " + ", ".join(code(t) for t in dict.fromkeys(tests_cited))
@@ -436,11 +449,11 @@ def machine_tex(runs):
     for run in runs.values():
         b, m = run["run"].get("build", {}), run["run"].get("machine", {})
         line = (f"{tex_escape(m.get('cpu', 'an unrecorded CPU'))} ({m.get('logical_cores', '?')} logical cores); "
-                f"{tex_escape(b.get('compiler', '?'))}, \\texttt{{{tex_escape(b.get('cxx_flags', ''))}}}; commit "
+                f"{tex_escape(b.get('compiler', '?'))}, {code(b.get('cxx_flags', ''))}; commit "
                 f"\\texttt{{{tex_escape(b.get('git_commit', '?')[:12])}}}{' (with local changes)' if b.get('git_dirty') else ''}")
         seen.setdefault(line, []).append(run["run"].get("threads"))
-    lines = [f"{line}, {', '.join(sorted({str(t) for t in threads}))} threads" for line, threads in seen.items()]
-    return "% The machine and build of the runs (run.json).\n" + r"\\ ".join(lines) + "\n"
+    lines = [f"{line}; runs on {' or '.join(sorted({str(t) for t in threads}))} threads" for line, threads in seen.items()]
+    return "% The machine and build of the runs (run.json).\n{\\sloppy " + r"\\ ".join(lines) + "\\par}\n"
 
 
 def sentence(test_name):
@@ -473,8 +486,7 @@ def hard_cases_tex(junit, hard=None):
     passed = sum(status == "run" for _, _, status in cases)
     out = ["% The hard cases and their results (ctest -L hardcase --output-junit; scripts/report.py).",
            f"In this run {passed} of {len(cases)} hard cases passed.",
-           r"{\footnotesize\begin{longtable}{@{}>{\raggedright}p{0.4\linewidth}>{\raggedright}p{0.38\linewidth}"
-           r"p{0.08\linewidth}r@{}}",
+           longtable("footnotesize", 0.42, 0.4, 0.09, 0.09),
            r"\toprule test & what it asserts & result & time (s)\\ \midrule", r"\endhead"]
     for _, kind in HARD_KINDS:
         if kind not in kinds:
@@ -482,8 +494,7 @@ def hard_cases_tex(junit, hard=None):
         out.append(rf"\multicolumn{{4}}{{@{{}}l}}{{\emph{{{tex_escape(kind)} ({len(kinds[kind])})}}}}\\")
         for name, time, status in kinds[kind]:
             result = {"run": "passed", "fail": "FAILED"}.get(status, tex_escape(status))
-            shown = re.sub(r"(?<=[a-z0-9.])(?=[A-Z])", r"\\allowbreak{}", tex_escape(name))  # breaks between words
-            out.append(f"\\texttt{{{shown}}} & {tex_escape(sentence(name))} & {result} & {float(time):.2f}\\\\")
+            out.append(f"{code(name)} & {tex_escape(sentence(name))} & {result} & {float(time):.2f}\\\\")
     out += [r"\bottomrule", r"\end{longtable}}"]
     return "\n".join(out) + "\n"
 
@@ -493,8 +504,7 @@ def quick_tex(tests, quick_root):
     tolerance bands with which each published comparison is applied to its run (QUICK/<id>/summary.json)."""
     props = {t["name"]: {p["name"]: p["value"] for p in t.get("properties", [])} for t in tests}
     out = ["% The quick scenes of the tests and their tolerance bands (scripts/report.py).",
-           r"{\footnotesize\begin{longtable}{@{}>{\raggedright}p{0.3\linewidth}p{0.15\linewidth}p{0.15\linewidth}"
-           r"p{0.14\linewidth}p{0.14\linewidth}@{}}",
+           longtable("footnotesize", 0.3, 0.18, 0.18, 0.17, 0.17),
            r"\toprule quantity & published & quick run & band & verdict\\ \midrule", r"\endhead"]
     for t in tests:
         if not t["name"].endswith(".quick_run"):
