@@ -1,0 +1,119 @@
+"""The number and text formats of the reproduction report (scripts/report.py): LaTeX of a number in
+each format of \\result[fmt], escaped prose, typewriter names that break, the opening of a longtable."""
+import math
+import re
+
+NA = None  # a value that cannot be shown
+
+
+def sci(x, digits=2):
+    """m\\times10^{e} with `digits` significant digits."""
+    if x == 0:
+        return "0"
+    mant, exp = f"{x:.{digits - 1}e}".split("e")
+    return mant if int(exp) == 0 else rf"{mant}\times10^{{{int(exp)}}}"
+
+
+def sig(x, n):
+    """Fixed notation with n significant digits, trailing zeros kept; large integers unrounded."""
+    if x == 0:
+        return "0"
+    return f"{x:.{max(0, n - 1 - math.floor(math.log10(abs(x))))}f}"
+
+
+def sci_or_sig(x, n):
+    """Scientific below 1e-3 and from 1e4, else n significant digits."""
+    return "0" if x == 0 else sci(x, n) if abs(x) < 1e-3 or abs(x) >= 1e4 else sig(x, n)
+
+
+def grouped(x):
+    n = int(round(x))
+    return f"{n:,}".replace(",", r"\,") if abs(n) >= 10000 else f"{n}"
+
+
+def tolerance(x):
+    mant, exp = f"{x:.1e}".split("e")
+    return f"10^{{{int(exp)}}}" if mant == "1.0" else sci(x)
+
+
+FORMATS = {  # name -> math-mode text of a finite number
+    "general": lambda x: "0" if x == 0 else sci(x) if abs(x) < 1e-3 or abs(x) >= 1e4 else sig(x, 4),
+    "order": lambda x: f"{x:.3f}",
+    "porder": lambda x: f"{x:.0f}" if float(x).is_integer() else f"{x:.3f}",
+    "dorder": lambda x: f"{x:+.3f}",
+    "int": grouped,
+    "intplain": lambda x: f"{int(round(x))}",
+    "err": lambda x: "0" if x == 0 else sci(x) if abs(x) < 1e-3 or abs(x) >= 1e4 else sig(x, 2),
+    "sci": sci,
+    "sci1": lambda x: sci(x, 1),
+    "sci01": lambda x: "0" if x == 0 else sci(x) if abs(x) < 1e-2 else sig(x, 2),
+    "fixed3": lambda x: f"{x:.3f}",
+    "fixed5": lambda x: f"{x:.5f}",
+    "sig3": lambda x: sig(x, 3),
+    "sig4": lambda x: sig(x, 4),
+    "sig5": lambda x: sig(x, 5),
+    "sig7": lambda x: sig(x, 7),
+    "sci3": lambda x: sci_or_sig(x, 3),
+    "sci4": lambda x: sci_or_sig(x, 4),
+    "us": lambda x: sig(x * 1e6, 2) if x > 0 else NA,
+    "tol": tolerance,
+    "ns": lambda x: f"{x:.1f}",
+    "ns3": lambda x: sig(x, 3) if x > 0 else NA,
+    "percent": lambda x: "0\\,\\%" if x == 0 else sig(100 * x, 3) + "\\,\\%",
+    "ratio": lambda x: f"{x:.1f}",
+    "seconds": lambda x: f"{x:.2g}" if abs(x) < 100 else f"{x:.0f}",
+    "plain": lambda x: f"{x:g}",
+}
+def tex_escape(text):
+    repl = {"\\": r"\textbackslash{}", "&": r"\&", "%": r"\%", "$": r"\$", "#": r"\#", "_": r"\_", "{": r"\{",
+            "}": r"\}", "~": r"\textasciitilde{}", "^": r"\textasciicircum{}", "<": r"\textless{}",
+            ">": r"\textgreater{}", "|": r"\textbar{}"}
+    return "".join(repl.get(c, c) for c in str(text))
+
+
+def prose(text):
+    """Escaped text whose paths and names (a/b/c.hpp, share_p2_negative) may break after / and _."""
+    return re.sub(r"(/|\\_)(?=\w)", r"\1\\allowbreak{}", tex_escape(text))
+
+
+def is_number(v):
+    return isinstance(v, (int, float)) and not isinstance(v, bool)
+
+
+def number(v, fmt):
+    """Math-mode text of a number in a format, or None if it has none (null, NaN, inf, out of domain)."""
+    if not is_number(v) or not math.isfinite(v):
+        return None
+    return FORMATS[fmt](v)
+
+
+def value_text(v):
+    """A published or reproduced value: a number, or a table of them keyed by a parameter."""
+    if isinstance(v, dict):  # keyed by a name, or by a number written as %.17g (shown as %g)
+        return "; ".join(f"{prose(key_text(k))}: {value_text(x)}" for k, x in v.items())
+    if is_number(v):
+        return "$" + (number(v, "sci3") or tex_escape(v)) + "$" if math.isfinite(v) else tex_escape(v)
+    return "not computed" if v is None else tex_escape(v)
+
+
+def key_text(k):
+    try:
+        return f"{float(k):g}"
+    except ValueError:
+        return k
+
+
+def longtable(size, *fractions):
+    """The opening of a longtable of ragged-right columns whose widths are these fractions of the line,
+    their padding (2 tabcolsep between two columns) included, so that the table never runs past the margin."""
+    n = len(fractions)
+    pad = f"{2 * (n - 1) / n:.4f}"
+    cols = "".join(f">{{\\raggedright\\arraybackslash}}p{{\\dimexpr{f}\\linewidth-{pad}\\tabcolsep\\relax}}"
+                   for f in fractions)
+    return f"{{\\{size}\\begin{{longtable}}{{@{{}}{cols}@{{}}}}"
+
+
+def code(text):
+    """Typewriter text that may break after its dots, slashes and underscores."""
+    broken = re.sub(r"(\.|/|\\_)", r"\1\\allowbreak{}", tex_escape(text))
+    return r"\texttt{" + re.sub(r"(?<=[a-z0-9])(?=[A-Z])", r"\\allowbreak{}", broken) + "}"  # (and in CamelCase)
