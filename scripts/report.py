@@ -196,7 +196,7 @@ def errata_tex(runs, tests):
     return "\n".join(out) + "\n"
 
 
-def methods_tex(methods):
+def methods_tex(methods, cites=None):
     def bound(v):
         if v is None:
             return "---"
@@ -209,7 +209,7 @@ def methods_tex(methods):
         order = str(m["order"]) + (f" ({m['kernel_order']})" if m["kernel_order"] != m["order"] else "")
         out.append(f"{code(m['name'])} & {tex_escape(m['family'])} & {order} & {bound(m.get('real_bound'))} & "
                    f"{bound(m.get('oscillatory_bound'))} & {prose(', '.join(m['properties']))} & "
-                   f"{prose(m['citation'])}\\\\")
+                   f"{prose(m['citation'])}{(cites or {}).get(m['name'], '')}\\\\")
     out += [r"\bottomrule", r"\end{longtable}}"]
     return "\n".join(out) + "\n"
 
@@ -318,17 +318,30 @@ def ledger_tex(runs, papers, tests):
 
 
 def bibliography_tex(papers):
-    out = ["% The papers (paper/papers.toml; scripts/report.py).", r"\begin{thebibliography}{000}"]
-    for p in papers["paper"]:
+    """The four papers ([000] ...) and the other works (paper/papers.toml [[reference]], cited as
+    \\cite{key})."""
+    out = ["% The papers and the works they rely on (paper/papers.toml; scripts/report.py).",
+           r"\begin{thebibliography}{BDH96}"]
+    for p in papers["paper"] + papers.get("reference", []):
         ids = [f"doi:\\href{{https://doi.org/{p['doi']}}}{{{tex_escape(p['doi'])}}}" if "doi" in p else "",
                f"arXiv:\\href{{https://arxiv.org/abs/{p['arxiv']}}}{{{p['arxiv']}}}" if "arxiv" in p else ""]
-        entry = f"\\bibitem[{p['id']}]{{paper{p['id']}}} {tex_escape(p['authors'])}, \\emph{{{tex_escape(p['title'])}}}, " \
-                f"{tex_escape(p['venue'])}, {p['year']}. " + ", ".join(i for i in ids if i) + "."
+        label, key = (p["id"], f"paper{p['id']}") if "id" in p else (p["label"], p["key"])
+        entry = f"\\bibitem[{tex_escape(label)}]{{{key}}} {tex_escape(p['authors'])}, \\emph{{{tex_escape(p['title'])}}}, " \
+                f"{tex_escape(p['venue'])}, {p['year']}." + (" " + ", ".join(i for i in ids if i) + "." if any(ids) else "")
         if "code" in p:
             entry += f" The authors' code: \\url{{https://{p['code']}}}, commit \\texttt{{{p['code_commit']}}}."
         out.append(entry)
     out.append(r"\end{thebibliography}")
     return "\n".join(out) + "\n"
+
+
+def method_citations(papers):
+    """Registry name -> the \\cite of the works that define it (paper/papers.toml [[reference]] methods)."""
+    cites = {}
+    for r in (papers or {}).get("reference", []):
+        for m in r.get("methods", []):
+            cites.setdefault(m, []).append(r["key"])
+    return {m: f" \\cite{{{','.join(keys)}}}" for m, keys in cites.items()}
 
 
 def machine_tex(runs):
@@ -461,18 +474,24 @@ def main():
     results, missing = results_tex(runs, tex, args.draft)
     files = {"results.tex": results, "comparisons.tex": comparisons_tex(runs), "errata.tex": errata_tex(runs, tests),
              "machine.tex": machine_tex(runs)}
+    papers = tomllib.loads(pathlib.Path(args.papers).read_text(encoding="utf-8")) if args.papers else None
     if args.methods:
-        files["methods.tex"] = methods_tex(json.loads(pathlib.Path(args.methods).read_text(encoding="utf-8")))
+        files["methods.tex"] = methods_tex(json.loads(pathlib.Path(args.methods).read_text(encoding="utf-8")),
+                                           method_citations(papers))
     if args.quick:
         files["quick.tex"] = quick_tex(ctest, args.quick)
     if args.junit:
         hard = {t["name"] for t in ctest for p in t.get("properties", []) if p["name"] == "LABELS"
                 and "hardcase" in p["value"]} if ctest else None
         files["hardcases.tex"] = hard_cases_tex(pathlib.Path(args.junit).read_text(encoding="utf-8"), hard)
-    if args.papers:
-        papers = tomllib.loads(pathlib.Path(args.papers).read_text(encoding="utf-8"))
+    if papers:
         files["ledger.tex"] = ledger_tex(runs, papers, tests)
         files["bibliography.tex"] = bibliography_tex(papers)
+        known = {r["key"] for r in papers.get("reference", [])} | {f"paper{p['id']}" for p in papers["paper"]}
+        for path in tex:  # every \cite of the report names a work of papers.toml
+            for keys in re.findall(r"\\cite\{([^}]*)\}", path.read_text(encoding="utf-8")):
+                missing += [f"{path.name}: \\cite{{{k}}} (no [[reference]] key {k} in {args.papers})"
+                            for k in keys.split(",") if k.strip() not in known]
     out.mkdir(parents=True, exist_ok=True)
     for name, text in files.items():
         write(out / name, text)

@@ -6,7 +6,8 @@ and its values from its own figure's comparisons (summary.json "figures", made b
 from another figure of the same study ([004] Fig. 5 from Fig. 4's) or of another scene ([003] Figs 5.5
 and 5.6, the free particle's, from the harmonic scene's Fig. 5.3). Also: the errata chapter lists an
 open convention and an authors'-code value in their own sections, never as errata or as published,
-and report.py refuses a results directory that is not its paper scene's run.
+and report.py refuses a results directory that is not its paper scene's run, and a \\cite of a work
+that paper/papers.toml does not list.
 """
 import json
 import pathlib
@@ -127,6 +128,12 @@ def main():
     expect("norm" in conventions and "norm" not in only_errata, "the open convention is listed as an erratum")
     expect("The authors' code gives" in code and "Printed: $1.33" not in errata, "an authors' code value shows as printed")
     expect("side5" not in only_errata and "side5" in errata, "an observation of a sample is listed as an erratum")
+    # every \cite names a work of papers.toml (its [[reference]] keys, or paperNNN)
+    cites = work / "cites.tex"
+    cites.write_text("\\cite{paper004} \\cite{nowhere1999}\n")
+    cited = subprocess.run(report + [str(cites)], capture_output=True, text=True)
+    expect(cited.returncode != 0 and "nowhere1999" in cited.stderr and "paper004" not in cited.stderr,
+           f"an unknown \\cite key passes: exit {cited.returncode}, {cited.stderr.strip()}")
     # a reviewer's rerun (--set) in a paper run's directory is refused, naming the directory
     run = json.loads((results / "ti_drift" / "run.json").read_text())
     run["overrides"] = ["ensemble.size=8"]
