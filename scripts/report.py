@@ -44,6 +44,7 @@ import pathlib
 import re
 import sys
 import tomllib
+from xml.etree import ElementTree
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 from paper_runs import why_not_paper_run  # noqa: E402
@@ -372,29 +373,49 @@ HARD_KINDS = [(r"^regression\.Cli\.", "Refusals by the command line (exit 2 befo
               ("", "Stability bounds, instability and divergence")]
 
 
+RELATIONS = {"<": "$<$", "<=": r"$\le$", ">": "$>$", ">=": r"$\ge$"}
+
+
+def case_rows(output):
+    """The measured values and bounds a test recorded (tests/hard_case.hpp: lines HARDCASE {json}), as rows."""
+    rows = []
+    for line in re.findall(r"^HARDCASE (\{.*\})$", output or "", re.M):
+        c = json.loads(line)
+        measured = "---" if c["measured"] is None else f"${number(c['measured'], 'general')}$"
+        bound = (f"${number(c['bound'], 'general')} \\pm {number(c['tolerance'], 'general')}$" if c["relation"] == "near"
+                 else f"{RELATIONS[c['relation']]} ${number(c['bound'], 'general')}$")
+        rows.append(f"\\quad {prose(c['what'])} & {measured} & {bound} & \\\\")
+    return rows
+
+
 def hard_cases_tex(junit, hard=None):
-    """The hard cases of the last ctest run (ctest -L hardcase --output-junit FILE), by kind; with `hard`
-    (the names of the tests labelled hardcase), not the fixtures the run needed (the quick runs)."""
-    cases = [c for c in re.findall(r'<testcase name="([^"]+)"[^>]*time="([^"]+)" status="([^"]+)"', junit)
-             if hard is None or c[0] in hard]
+    """The hard cases of the last ctest run (ctest -L hardcase --output-junit FILE), by kind, each with the
+    measured values and bounds it recorded; with `hard` (the names of the tests labelled hardcase), not the
+    fixtures the run needed (the quick runs)."""
+    cases = [(c.get("name"), c.get("time"), c.get("status"), c.findtext("system-out"))
+             for c in ElementTree.fromstring(junit).iter("testcase") if hard is None or c.get("name") in hard]
     if not cases:
         raise SystemExit("report.py: the JUnit file lists no test")
     kinds = {}
     for case in cases:
         kind = next(k for pattern, k in HARD_KINDS if re.search(pattern, case[0]))
         kinds.setdefault(kind, []).append(case)
-    passed = sum(status == "run" for _, _, status in cases)
+    passed = sum(status == "run" for _, _, status, _ in cases)
+    recorded = sum(bool(case_rows(output)) for *_, output in cases)
     out = ["% The hard cases and their results (ctest -L hardcase --output-junit; scripts/report.py).",
-           f"In this run {passed} of {len(cases)} hard cases passed.",
-           longtable("footnotesize", 0.42, 0.4, 0.09, 0.09),
-           r"\toprule test & what it asserts & result & time (s)\\ \midrule", r"\endhead"]
+           f"In this run {passed} of {len(cases)} hard cases passed. Of these cases, {recorded} record each measured "
+           "value with the bound it is held to (rows below their test); the others are described by their names.",
+           longtable("footnotesize", 0.52, 0.14, 0.2, 0.14),
+           r"\toprule test, and what it measured & measured & bound & result, time (s)\\ \midrule", r"\endhead"]
     for _, kind in HARD_KINDS:
         if kind not in kinds:
             continue
         out.append(rf"\multicolumn{{4}}{{@{{}}l}}{{\emph{{{tex_escape(kind)} ({len(kinds[kind])})}}}}\\")
-        for name, time, status in kinds[kind]:
+        for name, time, status, output in kinds[kind]:
             result = {"run": "passed", "fail": "FAILED"}.get(status, tex_escape(status))
-            out.append(f"{code(name)} & {tex_escape(sentence(name))} & {result} & {float(time):.2f}\\\\")
+            out.append(f"\\multicolumn{{3}}{{@{{}}p{{0.84\\linewidth}}}}{{{code(name)}: {tex_escape(sentence(name))}}} & "
+                       f"{result}, {float(time):.2f}\\\\")
+            out += case_rows(output)
     out += [r"\bottomrule", r"\end{longtable}}"]
     return "\n".join(out) + "\n"
 

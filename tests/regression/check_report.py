@@ -57,7 +57,9 @@ def main() -> int:
     command = [sys.executable, str(script), str(results), str(work), "--methods", str(methods),
                "--papers", str(source / "paper" / "papers.toml")]
     junit = work / "junit.xml"  # a ctest JUnit report: a passed and a failed hard case, and a fixture
-    junit.write_text('<testsuite><testcase name="Suite.StaysBounded" classname="x" time="0.5" status="run"/>'
+    junit.write_text('<testsuite><testcase name="Suite.StaysBounded" classname="x" time="0.5" status="run">'
+                     '<system-out>[ RUN ]\nHARDCASE {"what":"max |z|","measured":0.5,"relation":"&lt;=","bound":1.0}\n'
+                     '</system-out></testcase>'
                      '<testcase name="Suite.DivergesBeyondTheBound" classname="x" time="1.5" status="fail"/>'
                      '<testcase name="exp.quick_run" classname="x" time="2.5" status="run"/></testsuite>',
                      encoding="utf-8")
@@ -79,8 +81,10 @@ def main() -> int:
         if key.replace("_", "\\_") not in quick.replace("\\allowbreak{}", "") or c["verdict"] not in quick:
             problems.append(f"quick.tex: no row for {run0}'s comparison {key} with its verdict")
     hard = (work / "hardcases.tex").read_text(encoding="utf-8") if (work / "hardcases.tex").is_file() else ""
-    if "Stays Bounded & passed" not in hard or "Diverges beyond the Bound & FAILED" not in hard:
+    if "Stays Bounded} & passed" not in hard or "Diverges beyond the Bound} & FAILED" not in hard:
         problems.append("hardcases.tex does not list the JUnit report's tests with their results")
+    if r"max \textbar{}z\textbar{} & $0.5000$ & $\le$ $1.000$" not in hard:
+        problems.append("hardcases.tex does not show a case's measured value and bound (HARDCASE line)")
     if "quick" in hard:
         problems.append("hardcases.tex lists a fixture that is not labelled hardcase")
     for name in ("results.tex", "comparisons.tex", "errata.tex", "methods.tex", "ledger.tex", "bibliography.tex",
