@@ -373,17 +373,19 @@ HARD_KINDS = [(r"^regression\.Cli\.", "Refusals by the command line (exit 2 befo
               ("", "Stability bounds, instability and divergence")]
 
 
-RELATIONS = {"<": "$<$", "<=": r"$\le$", ">": "$>$", ">=": r"$\ge$"}
+RELATIONS = {"<": "$<$", "<=": r"$\le$", ">": "$>$", ">=": r"$\ge$", "==": "$=$"}
 
 
 def case_rows(output):
     """The measured values and bounds a test recorded (tests/hard_case.hpp: lines HARDCASE {json}), as rows."""
+    def num(x):  # (an exit code or an iteration count as an integer)
+        return str(int(x)) if float(x).is_integer() and abs(x) < 1e6 else number(x, "general")
     rows = []
     for line in re.findall(r"^HARDCASE (\{.*\})$", output or "", re.M):
         c = json.loads(line)
-        measured = "---" if c["measured"] is None else f"${number(c['measured'], 'general')}$"
-        bound = (f"${number(c['bound'], 'general')} \\pm {number(c['tolerance'], 'general')}$" if c["relation"] == "near"
-                 else f"{RELATIONS[c['relation']]} ${number(c['bound'], 'general')}$")
+        measured = "---" if c["measured"] is None else f"${num(c['measured'])}$"
+        bound = (f"${num(c['bound'])} \\pm {num(c['tolerance'])}$" if c["relation"] == "near"
+                 else f"{RELATIONS[c['relation']]} ${num(c['bound'])}$")
         rows.append(f"\\quad {prose(c['what'])} & {measured} & {bound} & \\\\")
     return rows
 

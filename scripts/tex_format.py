@@ -68,7 +68,7 @@ def tex_escape(text):
     repl = {"\\": r"\textbackslash{}", "&": r"\&", "%": r"\%", "$": r"\$", "#": r"\#", "_": r"\_", "{": r"\{",
             "}": r"\}", "~": r"\textasciitilde{}", "^": r"\textasciicircum{}", "<": r"\textless{}",
             ">": r"\textgreater{}", "|": r"\textbar{}"}
-    return "".join(repl.get(c, c) for c in str(text))
+    return re.sub(r"-(?=-)", "-{}", "".join(repl.get(c, c) for c in str(text)))  # (--set, not an en dash)
 
 
 def prose(text):

@@ -1,7 +1,8 @@
 #pragma once
 // One measured quantity of a hard case and the bound it is held to: asserted, and written as a line
 //   HARDCASE {"what": "...", "measured": x, "relation": "<=", "bound": b}
-// of the test's output ({"relation": "near", "bound": target, "tolerance": t} for |x - target| <= t).
+// of the test's output (relation <, <=, >, >= or ==; {"relation": "near", "bound": target, "tolerance": t}
+// for |x - target| <= t).
 // ctest's JUnit report (make paper: paper/generated/hardcases.xml) keeps the output, and the report's
 // hard-cases chapter shows each case's bound and measured value from these lines.
 #include <gtest/gtest.h>
@@ -23,7 +24,8 @@ inline ::testing::AssertionResult hard_case(const std::string& what, double meas
   if (relation == "near") line["tolerance"] = tolerance;
   std::printf("HARDCASE %s\n", line.dump().c_str());
   std::fflush(stdout);
-  const bool holds = relation == "<"    ? measured < bound
+  const bool holds = relation == "=="   ? measured == bound
+                     : relation == "<"  ? measured < bound
                      : relation == "<=" ? measured <= bound
                      : relation == ">"  ? measured > bound
                      : relation == ">=" ? measured >= bound

@@ -18,6 +18,8 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "../hard_case.hpp"
+
 inline std::filesystem::path results_dir(const std::string& experiment) {
   return std::filesystem::path(GEOMINT_TEST_RESULTS) / experiment;
 }
@@ -135,7 +137,7 @@ inline void expect_exit(const std::string& experiment, int code, const std::stri
   const fs::path out = fs::path(GEOMINT_TEST_RESULTS) / (experiment + "-refused-" + std::to_string(::getpid()));
   fs::remove_all(out), fs::remove_all(out.string() + ".partial");
   const BinaryOutcome r = run_binary(experiment, "--quick --out " + out.string() + " " + args);
-  EXPECT_EQ(r.code, code) << args << "\n" << r.err;
+  EXPECT_CASE("exit code with " + args, r.code, "==", code) << r.err;
   if (code == 2) EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
   const std::string last = r.err.substr(r.err.rfind('\n', r.err.size() - 2) + 1);
   for (const auto& n : needles) EXPECT_NE(last.find(n), std::string::npos) << "missing '" << n << "' in: " << r.err;

@@ -18,6 +18,8 @@ TEST(HardCase, HoldsOnlyOnTheSideOfItsBoundThatItNames) {
   EXPECT_TRUE(hard_case("a", 1.5, ">", 1.0));
   EXPECT_FALSE(hard_case("a", 1.0, ">", 1.0));
   EXPECT_TRUE(hard_case("a", 1.0, ">=", 1.0));
+  EXPECT_TRUE(hard_case("exit code", 2, "==", 2));
+  EXPECT_FALSE(hard_case("exit code", 1, "==", 2));
   EXPECT_TRUE(hard_case("order", 3.95, "near", 4.0, 0.1));
   EXPECT_FALSE(hard_case("order", 3.85, "near", 4.0, 0.1));
   EXPECT_FALSE(hard_case("a", std::nan(""), "<", 1.0));  // a NaN never holds
