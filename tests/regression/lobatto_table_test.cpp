@@ -55,10 +55,12 @@ TEST(LobattoTable, DeclaredOrdersOnTheOscillatorAndNonlinearSystems) {
 TEST(LobattoTable, StabilityBoundAndRunsAroundIt) {
   const auto& r = summary()["reproduced"];
   const double bound = method_info("lobatto").oscillatory_bound;  // 001 eq. (10)
-  EXPECT_NEAR(r["stability_bound"].get<double>(), bound, 1e-9);
+  EXPECT_CASE_NEAR("h omega at which the spectral radius leaves 1 (bisection), against (10)",
+                   r["stability_bound"].get<double>(), bound, 1e-9);
   EXPECT_EQ(summary()["published"]["stability_bound"].get<double>(), bound);
-  EXPECT_EQ(r["bound_runs"]["0.98999999999999999"]["diverged_at_step"].get<long>(), -1);
-  EXPECT_GT(r["bound_runs"]["1.01"]["diverged_at_step"].get<long>(), 0);
+  EXPECT_CASE("run at 0.99 x the bound: step of divergence (-1: none)",
+              r["bound_runs"]["0.98999999999999999"]["diverged_at_step"].get<long>(), "==", -1);
+  EXPECT_CASE("run at 1.01 x the bound: step of divergence", r["bound_runs"]["1.01"]["diverged_at_step"].get<long>(), ">", 0);
 }
 
 TEST(LobattoTable, NonlinearMapsAreSymplectic) {

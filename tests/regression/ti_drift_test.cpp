@@ -54,8 +54,9 @@ TEST(TiDrift, SimplifiedMethodCoincidesWithTiOnTheOscillator) {
 
 TEST(TiDrift, StabilityBoundOfTakahashiImada) {
   // Bisection on the spectral radius against the registry's bound (the published one: Published.TiDrift).
-  EXPECT_NEAR(summary()["reproduced"]["ti_stability_bound"].get<double>(),
-              geomint::method_info("takahashi_imada").oscillatory_bound, 1e-9);
+  EXPECT_CASE_NEAR("omega h at which the spectral radius of TI's one-step matrix leaves 1 (bisection)",
+                   summary()["reproduced"]["ti_stability_bound"].get<double>(),
+                   geomint::method_info("takahashi_imada").oscillatory_bound, 1e-9);
 }
 
 TEST(TiDrift, ShiftedEnergyDriftsAtThePredictedRate) {
@@ -124,8 +125,9 @@ TEST(TiDrift, LennardJonesPrintedStepIsUnstable) {
   for (const auto& row : summary()["lj"]["scan"])
     if (row["h"].get<double>() == printed) {
       scanned = true;
-      EXPECT_EQ(row["diverged"].get<int>(), row["runs"].get<int>());
       EXPECT_GT(row["runs"].get<int>(), 0);
+      EXPECT_CASE("runs of the scan at the printed h = 0.2 that diverge (of " + std::to_string(row["runs"].get<int>()) +
+                      ")", row["diverged"].get<int>(), "==", row["runs"].get<int>());
     }
   EXPECT_TRUE(scanned) << "the scan does not include the printed step";
   bool run_step_stable = false;
@@ -147,7 +149,8 @@ TEST(TiDrift, ShiftedEnergyRemovesTheOscillationOfH) {
 TEST(TiDrift, StormerVerletGrowsLinearlyOnItsBound) {
   // 004 Sect. 1.4 prints "stable only for omega h <= 2" (erratum sv_stable_at_bound): at omega h = 2 the
   // double root -1 makes the solution grow linearly, max |z_n| ~ n.
-  EXPECT_NEAR(summary()["oscillator"]["sv_growth_exponent_at_bound"].get<double>(), 1.0, 0.1);
+  EXPECT_CASE_NEAR("growth exponent of max |z_n| of Stormer-Verlet at omega h = 2",
+                   summary()["oscillator"]["sv_growth_exponent_at_bound"].get<double>(), 1.0, 0.1);
 }
 
 TEST(TiDrift, TiEnergyErrorFromRestIsUnbounded) {
@@ -156,9 +159,11 @@ TEST(TiDrift, TiEnergyErrorFromRestIsUnbounded) {
   // below its closed form x^3 / (12 - x)^3 (the unit test TakahashiImada.FromRestTheEnergyErrorIsUnbounded
   // follows it to the closed form over a longer run).
   const auto& f = summary()["oscillator"]["from_rest"];
-  EXPECT_LE(f["max_rel_H_err"].get<double>(), f["closed_form"].get<double>() * (1 + 1e-9));
-  EXPECT_GT(f["max_rel_H_err"].get<double>(), 10.0);
-  EXPECT_LT(summary()["oscillator"]["largest_step"]["ti"]["max_rel_H_err"].get<double>(), 1.0);  // from q0 = 0
+  EXPECT_CASE("TI from p0 = 0 at the largest step: max relative error of H (bound: its closed form)",
+              f["max_rel_H_err"].get<double>(), "<=", f["closed_form"].get<double>() * (1 + 1e-9));
+  EXPECT_CASE("TI from p0 = 0 at the largest step: max relative error of H", f["max_rel_H_err"].get<double>(), ">", 10.0);
+  EXPECT_CASE("TI from q0 = 0 at the largest step: max relative error of H",
+              summary()["oscillator"]["largest_step"]["ti"]["max_rel_H_err"].get<double>(), "<", 1.0);
 }
 
 TEST(TiDrift, Sect33RemainderIsOrderSeven) {
