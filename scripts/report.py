@@ -19,6 +19,7 @@ into OUT_DIR:
                     value the run may not have (null or absent, e.g. an equal wall time that the
                     runs' times do not reach) is shown as ---.
                       \\ifresult{run}{key}{A}{B}   A if the run has the value (not null), else B
+                      \\verdict{run}{004 Fig. 5}   the verdict of a figure or table (summary.json "figures")
   comparisons.tex   per run, its published quantities (summary.json "comparisons", made by the
                     executable from experiments/<name>/published.toml) against the reproduction.
   errata.tex        every comparison published.toml expects to differ: what was published, what
@@ -56,6 +57,7 @@ ROOT = pathlib.Path(__file__).resolve().parent.parent
 TEXT_FORMATS = ("text", "vec")
 LOOKUP = re.compile(r"\\result(range)?(?:\[([^\]]*)\])?\{([^}]*)\}\{([^}]*)\}")
 HAS = re.compile(r"\\ifresult\{([^}]*)\}\{([^}]*)\}")  # \ifresult{run}{key}{if it has a value}{if not}
+VERDICT = re.compile(r"\\verdict\{([^}]*)\}\{([^}]*)\}")  # \verdict{run}{004 Fig. 5}: summary.json figures
 
 
 def at(tree, key):
@@ -98,7 +100,9 @@ def results_tex(runs, tex_files, draft):
              r"{\@nameuse{geomint@#1@#2@#3@#4}}}",
              r"\newcommand{\result}[3][general]{\geomint@value{#2}{#1}{#3}{v}}",
              r"\newcommand{\resultrange}[3][general]{\geomint@value{#2}{#1}{#3}{r}}",
-             r"\newcommand{\ifresult}[4]{\@ifundefined{geomint@has@#1@#2}{#4}{#3}}"]
+             r"\newcommand{\ifresult}[4]{\@ifundefined{geomint@has@#1@#2}{#4}{#3}}",
+             r"\newcommand{\verdict}[2]{\@ifundefined{geomint@verdict@#1@#2}{\PackageError{report}"
+             r"{no verdict of #2 in the run #1}{Run make paper}}{\@nameuse{geomint@verdict@#1@#2}}}"]
     missing, seen = [], set()
     for path in tex_files:
         text = re.sub(r"(?<!\\)%.*", "", path.read_text(encoding="utf-8"))  # (not in LaTeX comments)
@@ -106,6 +110,13 @@ def results_tex(runs, tex_files, draft):
             run, key = m.group(1), m.group(2)
             if run in runs and at(runs[run]["summary"], key) is not None:
                 lines.append(f"\\@namedef{{geomint@has@{run}@{key}}}{{}}")
+        for m in VERDICT.finditer(text):  # a figure's verdict, computed by its run from its own comparisons
+            run, item = m.group(1), m.group(2)
+            verdict = ((runs.get(run, {}).get("summary", {}).get("figures") or {}).get(item) or {}).get("verdict")
+            if verdict is None:
+                missing.append(f"{path.name}: {m.group(0)}")
+            else:
+                lines.append(f"\\@namedef{{geomint@verdict@{run}@{item}}}{{\\emph{{{tex_escape(verdict)}}}}}")
         for m in LOOKUP.finditer(text):
             ranged, fmt, run, key = bool(m.group(1)), m.group(2) or "general", m.group(3), m.group(4)
             if (run, key, fmt, ranged) in seen or "#" in run + key + fmt:  # (a macro's own parameters)

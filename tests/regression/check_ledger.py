@@ -134,6 +134,15 @@ def main():
     cited = subprocess.run(report + [str(cites)], capture_output=True, text=True)
     expect(cited.returncode != 0 and "nowhere1999" in cited.stderr and "paper004" not in cited.stderr,
            f"an unknown \\cite key passes: exit {cited.returncode}, {cited.stderr.strip()}")
+    # the text looks a figure's verdict up (\verdict{run}{item}); an item the run did not judge stops the script
+    verdicts = work / "verdicts.tex"
+    verdicts.write_text("\\verdict{ti_drift}{004 Fig. 5}\n")
+    subprocess.run(report + [str(verdicts)], check=True, capture_output=True, text=True)
+    expect("{\\emph{partly reproduced}}" in (out / "results.tex").read_text(encoding="utf-8"),
+           "\\verdict{ti_drift}{004 Fig. 5} is not defined as its run's verdict")
+    verdicts.write_text("\\verdict{ti_drift}{004 Fig. 9}\n")
+    judged = subprocess.run(report + [str(verdicts)], capture_output=True, text=True)
+    expect(judged.returncode != 0 and "004 Fig. 9" in judged.stderr, "a verdict the run did not compute passes")
     # a reviewer's rerun (--set) in a paper run's directory is refused, naming the directory
     run = json.loads((results / "ti_drift" / "run.json").read_text())
     run["overrides"] = ["ensemble.size=8"]
