@@ -226,15 +226,6 @@ def methods_tex(methods, cites=None):
     return "\n".join(out) + "\n"
 
 
-def made_items(makes):
-    """The (paper, item) pairs a study's "makes" names: "003 Figs 5.2, 5.4" -> ("003", "Fig. 5.2"), ..."""
-    m = re.match(r"(\d{3}) (Figs?|Tables?|Sec)\.? ([\d., ]+)", makes)
-    if not m:
-        return []
-    kind = {"Fig": "Fig.", "Figs": "Fig.", "Table": "Table", "Tables": "Table", "Sec": "Sec."}[m.group(2)]
-    return [(m.group(1), f"{kind} {n.strip().rstrip('.')}") for n in m.group(3).split(",") if n.strip()]
-
-
 def figure_scripts(run, files):
     """The figure scripts of a run (figures/<run>_*.gp) that read one of a study's files."""
     found = []
