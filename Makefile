@@ -117,7 +117,7 @@ paper: figures scaling $(DEPS_STAMP)/paper.stamp paper/generated/hardcases.xml
 	  --papers paper/papers.toml --tests paper/generated/tests.json --quick $(BUILD)/test-results \
 	  --junit paper/generated/hardcases.xml --paper-scenes $(foreach sc,$(PAPER_SCENES),$(call id_of,$(sc))=$(sc))
 	cd paper && latexmk -pdf -interaction=nonstopmode -halt-on-error main.tex
-	python3 scripts/check_pdf.py paper/main.pdf --log paper/main.log
+	python3 scripts/check_pdf.py paper/main.pdf --log paper/main.log --tex paper/sections/*.tex paper/sections/cost/*.tex paper/generated/*.tex
 
 bench: $(DEPS_STAMP)/build.stamp $(DEPS_STAMP)/figures.stamp $(BUILD)/CMakeCache.txt
 	cmake --build $(BUILD) -j $(JOBS) --target geomint_bench geomint_energy_map_bench

@@ -49,7 +49,7 @@ from xml.etree import ElementTree
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 from paper_runs import why_not_paper_run  # noqa: E402
-from tex_format import FORMATS, code, is_number, key_text, longtable, number, prose, tex_escape, value_text  # noqa: E402
+from tex_format import FORMATS, code, is_number, key_text, longtable, number, prose, quote_tex, tex_escape, value_text  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 
@@ -159,7 +159,7 @@ def comparisons_tex(runs):
                        f"{value_text(c.get('reproduced'))} & {value_text(c.get('difference'))} & {verdict}\\\\")
             remarks = [c[k] for k in ("reason", "note") if c.get(k)]
             if remarks:
-                out.append(r"\multicolumn{6}{@{}p{0.95\linewidth}@{}}{\emph{" + tex_escape(" ".join(remarks)) + r"}}\\")
+                out.append(r"\multicolumn{6}{@{}p{0.95\linewidth}@{}}{\emph{" + prose(" ".join(remarks)) + r"}}\\")
         out += [r"\bottomrule", r"\end{longtable}}"]
     return "\n".join(out) + "\n"
 
@@ -168,11 +168,12 @@ ERRATA_SECTIONS = [  # (title, the comparisons it lists)
     ("Errata", lambda c: c.get("expect") == "differs" and c.get("kind", "printed") in ("printed", "authors_code")),
     ("Possible scanning errors", lambda c: c.get("expect") == "differs" and c.get("kind") == "scanning"),
     ("Conventions the papers leave open", lambda c: c.get("kind") == "convention"),
-    ("Values from the authors' code", lambda c: c.get("kind") == "authors_code"),
+    ("Values from the authors' code", lambda c: c.get("kind") == "authors_code" and c.get("expect") != "differs"),
     ("Observations of a sample the papers do not give", lambda c: c.get("kind") == "sample"),
 ]
 ERRATA_INTRO = {
-    "Errata": "A printed statement that derivation and a test contradict.",
+    "Errata": "A printed statement that derivation and a test contradict, quoted as the text of the paper here "
+              "gives it (that text has no page numbers: section, equation or caption instead).",
     "Possible scanning errors": "A printed statement that does not hold as the scanned text gives it, where "
                                 "the scan may have garbled it: flagged, not charged to the paper.",
     "Conventions the papers leave open": "A choice the paper does not state; the report computes both and "
@@ -198,10 +199,13 @@ def errata_tex(runs, tests):
                 test = c.get("test", "")
                 if test and tests is not None and test not in tests:
                     raise SystemExit(f"report.py: {name}: {key} names the test '{test}', which ctest does not list")
-                source = "The authors' code gives" if c.get("kind") == "authors_code" else "Printed"
-                items.append(f"\\item \\textbf{{{tex_escape(c['where'])}.}} {source}: {value_text(c.get('published'))}; "
-                             f"reproduced: {value_text(c.get('reproduced'))} ({code(name)}, "
-                             f"{code(key)}, verdict: {c['verdict']}). {tex_escape(c.get('note', ''))}" +
+                source = {"authors_code": "The authors' code gives", "convention": "Compared with"}.get(
+                    c.get("kind"), "Printed")
+                verdict = "" if c.get("kind") == "convention" else f", verdict: {c['verdict']}"
+                quotes = "".join(f" {prose(q['at'])}: ``{quote_tex(q['text'])}''" for q in c.get("quotes", []))
+                items.append(f"\\item \\textbf{{{prose(c['where'])}.}}{quotes} {source}: "
+                             f"{value_text(c.get('published'))}; reproduced: {value_text(c.get('reproduced'))} "
+                             f"({code(name)}, {code(key)}{verdict}). {prose(c.get('note', ''))}" +
                              (f" Shown by {code('ctest -R ' + test)}." if test else ""))
         out += [f"\\subsection*{{{title}}}", ERRATA_INTRO[title]]
         out += [r"\begin{enumerate}"] + items + [r"\end{enumerate}"] if items else ["None."]
@@ -220,7 +224,7 @@ def methods_tex(methods, cites=None):
     for m in methods:
         order = str(m["order"]) + (f" ({m['kernel_order']})" if m["kernel_order"] != m["order"] else "")
         out.append(f"{code(m['name'])} & {tex_escape(m['family'])} & {order} & {bound(m.get('real_bound'))} & "
-                   f"{bound(m.get('oscillatory_bound'))} & {prose(', '.join(m['properties']))} & "
+                   f"{bound(m.get('oscillatory_bound'))} & {', '.join(code(p) for p in m['properties'])} & "
                    f"{prose(m['citation'])}{(cites or {}).get(m['name'], '')}\\\\")
     out += [r"\bottomrule", r"\end{longtable}}"]
     return "\n".join(out) + "\n"
@@ -378,6 +382,12 @@ HARD_KINDS = [(r"^regression\.Cli\.", "Refusals by the command line (exit 2 befo
 RELATIONS = {"<": "$<$", "<=": r"$\le$", ">": "$>$", ">=": r"$\ge$", "==": "$=$"}
 
 
+def shorten(text, n):
+    """The first line of a message, cut to n characters."""
+    line = text.splitlines()[0] if text else ""
+    return line if len(line) <= n else line[: n - 1].rstrip() + "\u2026"
+
+
 def case_rows(output):
     """The measured values and bounds a test recorded (tests/hard_case.hpp: lines HARDCASE {json}), as rows."""
     def num(x):  # (an exit code or an iteration count as an integer)
@@ -385,6 +395,13 @@ def case_rows(output):
     rows = []
     for line in re.findall(r"^HARDCASE (\{.*\})$", output or "", re.M):
         c = json.loads(line)
+        if c["relation"] == "names":  # a refusal: its message, and what it must name
+            said = ("accepted" if c["measured"] is None else  # (the message, its paths relative to the source)
+                    "refused: ``" + code(shorten(c["measured"].replace(str(ROOT) + os.sep, ""), 160)) + "''")
+            needles = ", ".join("``" + code(n) + "''" for n in c["bound"])
+            rows.append(f"\\multicolumn{{3}}{{@{{}}p{{0.84\\linewidth}}}}{{\\quad {prose(c['what'])}: {said} "
+                        f"(must name {needles})}} & \\\\")
+            continue
         measured = "---" if c["measured"] is None else f"${num(c['measured'])}$"
         bound = (f"${num(c['bound'])} \\pm {num(c['tolerance'])}$" if c["relation"] == "near"
                  else f"{RELATIONS[c['relation']]} ${num(c['bound'])}$")
@@ -405,10 +422,13 @@ def hard_cases_tex(junit, hard=None):
         kind = next(k for pattern, k in HARD_KINDS if re.search(pattern, case[0]))
         kinds.setdefault(kind, []).append(case)
     passed = sum(status == "run" for _, _, status, _ in cases)
-    recorded = sum(bool(case_rows(output)) for *_, output in cases)
+    silent = [name for name, _, status, output in cases if status == "run" and not case_rows(output)]
+    if silent:  # (every hard case that passed shows what it measured: tests/hard_case.hpp)
+        raise SystemExit("report.py: hard cases that passed recording no measured value and bound: " + ", ".join(silent))
     out = ["% The hard cases and their results (ctest -L hardcase --output-junit; scripts/report.py).",
-           f"In this run {passed} of {len(cases)} hard cases passed. Of these cases, {recorded} record each measured "
-           "value with the bound it is held to (rows below their test); the others are described by their names.",
+           f"In this run {passed} of {len(cases)} hard cases passed. Each that passed records what it measured "
+           "and the bound it is held to (the rows below its test): a value and a relation, or, for a refusal, "
+           "the message and what it must name.",
            longtable("footnotesize", 0.52, 0.14, 0.2, 0.14),
            r"\toprule test, and what it measured & measured & bound & result, time (s)\\ \midrule", r"\endhead"]
     for _, kind in HARD_KINDS:
@@ -439,7 +459,7 @@ def quick_tex(tests, quick_root):
         waiting = sorted(n for n, p in props.items() if set(p.get("FIXTURES_REQUIRED", [])) & set(fixtures))
         scene = next((a for a in t.get("command", []) if a.endswith(".toml")), "?")
         scene = os.path.relpath(scene, ROOT) if os.path.isabs(scene) else scene
-        out.append(rf"\multicolumn{{5}}{{@{{}}p{{0.95\linewidth}}@{{}}}}{{\textbf{{{tex_escape(run_id)}}}: "
+        out.append(rf"\multicolumn{{5}}{{@{{}}p{{0.95\linewidth}}@{{}}}}{{\textbf{{{code(run_id)}}}: "
                    rf"{code(scene)}, waited on by {len(waiting)} tests}}\\")
         summary = pathlib.Path(quick_root) / run_id / "summary.json"
         comparisons = json.loads(summary.read_text(encoding="utf-8")).get("comparisons", {}) if summary.is_file() else {}

@@ -2,6 +2,7 @@
 each format of \\result[fmt], escaped prose, typewriter names that break, the opening of a longtable."""
 import math
 import re
+import unicodedata
 
 NA = None  # a value that cannot be shown
 
@@ -71,9 +72,52 @@ def tex_escape(text):
     return re.sub(r"-(?=-)", "-{}", "".join(repl.get(c, c) for c in str(text)))  # (--set, not an en dash)
 
 
+UNICODE_MATH = {"ω": r"\omega", "β": r"\beta", "α": r"\alpha", "√": r"\surd", "→": r"\to", "≤": r"\le", "≥": r"\ge",
+                "−": "-", "‹": "<", "›": ">", "′": "'"}
+ACCENTS = {"\u0302": r"\hat", "\u0303": r"\tilde", "\u0304": r"\bar", "\u0307": r"\dot"}
+
+
+def quote_tex(text):
+    """A paper's words as its text here gives them: $...$ and $$...$$ (the LaTeX of the converted papers)
+    as math, the rest escaped; Greek letters and symbols typed as Unicode (the OCR'd papers) as math."""
+    out = []
+    for i, part in enumerate(re.split(r"(\$\$.*?\$\$|\$.*?\$)", unicodedata.normalize("NFC", text))):
+        if i % 2:
+            out.append("$" + part.strip("$").strip() + "$")
+        else:
+            for j, piece in enumerate(re.split(r"(\w[\u0300-\u036f])", part)):  # a letter with an accent
+                if j % 2:
+                    out.append(f"${ACCENTS.get(piece[1], '')}{{{piece[0]}}}$")
+                else:
+                    out.append("".join(f"${UNICODE_MATH[c]}$" if UNICODE_MATH.get(c, "").startswith("\\")
+                                       else tex_escape(UNICODE_MATH.get(c, c)) for c in piece))
+    return "".join(out)
+
+
+# In free text (published.toml's notes, the registry's citations): a file (a/b.hpp, fig9.csv), a name
+# with an underscore (se_compensated_energy_rms, cost.phase.h_max) or a test's (Lobatto.EquationTwelve),
+# and a symbol with a one-letter subscript (p_x, H_0, Psi_{h,E}).
+NAME = re.compile(r"(?<![\w/.\\{])(?:(?P<file>(?:[\w.-]+/)*[\w-]+\.(?:csv|hpp|cpp|toml|json|py|gp|txt)\b)"
+                  r"|(?P<sym>[A-Za-z]+_(?:\{[^{}\s]*\}|[A-Za-z0-9](?![\w])))"
+                  r"|(?P<name>(?:\w+\.)*\w*[A-Za-z]\w*_\w+(?:\.\w+)*|(?:\w+\.)+[A-Z][a-z]\w*[A-Z]\w*))")
+GREEK = {"alpha", "beta", "gamma", "delta", "epsilon", "lambda", "mu", "phi", "psi", "omega", "sigma", "theta",
+         "Phi", "Psi", "Omega", "Lambda", "Delta", "Gamma", "Sigma", "Theta"}
+
+
 def prose(text):
-    """Escaped text whose paths and names (a/b/c.hpp, share_p2_negative) may break after / and _."""
-    return re.sub(r"(/|\\_)(?=\w)", r"\1\\allowbreak{}", tex_escape(text))
+    """Escaped free text: files and names with an underscore as code, symbols with a one-letter subscript as
+    math; what is left may break after a slash."""
+    out, at = [], 0
+    for m in NAME.finditer(str(text)):
+        out.append(re.sub(r"/(?=\w)", r"/\\allowbreak{}", tex_escape(text[at:m.start()])))
+        if m.group("sym"):
+            base, sub = m.group("sym").split("_", 1)
+            out.append(f"${chr(92) + base if base in GREEK else base}_{{{sub.strip('{}')}}}$")
+        else:
+            out.append(code(m.group(0)))
+        at = m.end()
+    out.append(re.sub(r"/(?=\w)", r"/\\allowbreak{}", tex_escape(str(text)[at:])))
+    return "".join(out)
 
 
 def is_number(v):

@@ -5,8 +5,8 @@ The reproduction ledger (scripts/report.py) from a fixture of summaries: every r
 and its values from its own figure's comparisons (summary.json "figures", made by the runner), never
 from another figure of the same study ([004] Fig. 5 from Fig. 4's) or of another scene ([003] Figs 5.5
 and 5.6, the free particle's, from the harmonic scene's Fig. 5.3). Also: the errata chapter lists an
-open convention and an authors'-code value in their own sections, never as errata or as published,
-and report.py refuses a results directory that is not its paper scene's run, and a \\cite of a work
+open convention and an authors'-code value in their own sections, never as errata or as published, an
+erratum with the paper's words it quotes, and report.py refuses a results directory that is not its paper scene's run, and a \\cite of a work
 that paper/papers.toml does not list.
 """
 import json
@@ -28,6 +28,8 @@ FIXTURE = {  # run id -> (experiment, scene file, {study: items made}, compariso
                             note="another trajectory", test="x.Side"),
         "one_side5": comparison("004 Fig. 5", "> 0.8", 0.9258, "reproduced"),
         "norm": comparison("004 Fig. 4", 2, 2.31, "differs", kind="convention", note="the norm is not stated"),
+        "bounded14": comparison("004 Sec. 1.4", 1, 1.18e6, "differs", expect="differs", note="from rest", test="x.Rest",
+                                quotes=[{"at": "004 Sect. 1.4", "text": "remains bounded (converges to one) when ωh → 2 √ 3."}]),
     }),
     "measure_cloud": ("measure_cloud", "experiments/measure_cloud/measure_cloud.toml", {"energies": ["003 Fig. 5.3"]}, {
         "kmod3": comparison("003 Fig. 5.3", "< 0.00063", {"M": 4.02e-6, "T": 8.06e-6}, "reproduced"),
@@ -128,6 +130,8 @@ def main():
     expect("norm" in conventions and "norm" not in only_errata, "the open convention is listed as an erratum")
     expect("The authors' code gives" in code and "Printed: $1.33" not in errata, "an authors' code value shows as printed")
     expect("side5" not in only_errata and "side5" in errata, "an observation of a sample is listed as an erratum")
+    expect(r"004 Sect. 1.4: ``remains bounded (converges to one) when $\omega$h $\to$ 2 $\surd$ 3.''" in only_errata,
+           "an erratum does not quote the paper's words (with its Unicode symbols as math)")
     # every \cite names a work of papers.toml (its [[reference]] keys, or paperNNN)
     cites = work / "cites.tex"
     cites.write_text("\\cite{paper004} \\cite{nowhere1999}\n")

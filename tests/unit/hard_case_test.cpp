@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
 #include <string>
 
 #include "../hard_case.hpp"
@@ -32,6 +33,26 @@ TEST(HardCase, WritesTheLineTheReportReads) {
   const std::string out = testing::internal::GetCapturedStdout();
   EXPECT_EQ(out, "HARDCASE {\"what\":\"spectral radius at 0.99 x the bound\",\"measured\":0.93,\"relation\":\"<=\","
                  "\"bound\":1.0}\n");
+}
+
+TEST(HardCase, ARefusalHoldsOnlyWhenRefusedWithAMessageNamingEveryNeedle) {
+  using geomint::test::refusal_case;
+  using geomint::test::refusal_of;
+  const auto refuse = [] { throw std::invalid_argument("dt = -1: the step must be positive"); };
+  EXPECT_TRUE(refusal_case("a negative step", refusal_of(refuse), {"dt", "positive"}));
+  EXPECT_FALSE(refusal_case("a negative step", refusal_of(refuse), {"dt", "finite"}));  // a needle it does not name
+  EXPECT_FALSE(refusal_case("a negative step", refusal_of([] {}), {"dt"}));             // accepted
+  EXPECT_EQ(refusal_of<std::invalid_argument>(refuse), "dt = -1: the step must be positive");
+  EXPECT_THROW(refusal_of<std::out_of_range>(refuse), std::invalid_argument);  // another type is not a refusal
+}
+
+TEST(HardCase, WritesTheRefusalLineTheReportReads) {
+  testing::internal::CaptureStdout();
+  (void)geomint::test::refusal_case("a NaN step", std::string("dt = nan"), {"dt"});
+  (void)geomint::test::refusal_case("a NaN step", std::nullopt, {"dt"});
+  EXPECT_EQ(testing::internal::GetCapturedStdout(),
+            "HARDCASE {\"what\":\"a NaN step\",\"measured\":\"dt = nan\",\"relation\":\"names\",\"bound\":[\"dt\"]}\n"
+            "HARDCASE {\"what\":\"a NaN step\",\"measured\":null,\"relation\":\"names\",\"bound\":[\"dt\"]}\n");
 }
 
 }  // namespace hard_case_test

@@ -9,6 +9,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "../hard_case.hpp"
 #include "geomint/integrators/explicit_euler.hpp"
 #include "geomint/core/integrate.hpp"
 #include "geomint/integrators/runge_kutta4.hpp"
@@ -127,8 +128,10 @@ TEST(MethodRegistry, FindsByNameOrLabelAndNamesTheValidNames) {
 TEST(MethodRegistry, WithMethodBindsByNameAndRefusesWhatCannotStepTheSystem) {
   const auto z = with_method("se", HarmonicOscillator{}, [](const auto& m) { return integrate(m, make_state(1.0, 0.5), 0.1, 1); });
   EXPECT_DOUBLE_EQ(z.p[0], 0.4);  // as SymplecticEuler.PqOneStepOnOscillator
-  EXPECT_THROW(with_method("no_such_method", HarmonicOscillator{}, [](const auto&) { return 0; }), std::invalid_argument);
-  EXPECT_THROW(with_method("lobatto", transformed, [](const auto&) { return 0; }), std::invalid_argument);  // not mechanical
+  EXPECT_REFUSAL_OF(std::invalid_argument, "an unknown method name",
+                    with_method("no_such_method", HarmonicOscillator{}, [](const auto&) { return 0; }), {"no_such_method"});
+  EXPECT_REFUSAL_OF(std::invalid_argument, "Lobatto on a system that is not mechanical",  // (a transformed H)
+                    with_method("lobatto", transformed, [](const auto&) { return 0; }), {"lobatto"});
   const auto names = methods_for<Transformed>();  // non-separable H: symplectic Euler and the explicit methods
   EXPECT_NE(std::find(names.begin(), names.end(), "symplectic_euler_qp"), names.end());
   EXPECT_EQ(std::find(names.begin(), names.end(), "stormer_verlet"), names.end());

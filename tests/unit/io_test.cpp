@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "../hard_case.hpp"
 #include "geomint/io/atomic_file.hpp"
 #include "geomint/io/csv.hpp"
 #include "geomint/sweep/parallel_map.hpp"
@@ -60,10 +61,10 @@ TEST(Csv, NumbersAreWrittenAsPrintfWrites) {
 
 TEST(Csv, RejectsRowsOfTheWrongWidth) {
   Csv csv({"a", "b"});
-  EXPECT_THROW(csv.row(1.0), std::logic_error);
+  EXPECT_REFUSAL_OF(std::logic_error, "one cell for two columns", csv.row(1.0), {"fewer cells"});
   Csv csv2({"a"});
-  EXPECT_THROW(csv2.row(1.0, 2.0), std::logic_error);
-  EXPECT_THROW(csv2.row("x,y"), std::logic_error);
+  EXPECT_REFUSAL_OF(std::logic_error, "two cells for one column", csv2.row(1.0, 2.0), {"more cells"});
+  EXPECT_REFUSAL_OF(std::logic_error, "a cell with a comma", csv2.row("x,y"), {"quoting"});
 }
 
 TEST(OutputDir, WritesAtomicallyAndLeavesNoTemporaries) {
@@ -82,16 +83,17 @@ TEST(OutputDir, WritesAtomicallyAndLeavesNoTemporaries) {
 }
 
 TEST(OutputDir, RejectsUnwritableDirectories) {
-  EXPECT_THROW(OutputDir("/proc/self/geomint-out"), OutputError);
+  EXPECT_REFUSAL_OF(OutputError, "--out under /proc/self", OutputDir("/proc/self/geomint-out"),
+                    {"/proc/self/geomint-out", "cannot create"});
   const fs::path file = fs::temp_directory_path() / ("geomint_io_file_" + std::to_string(::getpid()));
   std::ofstream(file) << "x";
-  EXPECT_THROW(OutputDir(file / "sub"), OutputError);  // parent is a file
+  EXPECT_REFUSAL_OF(OutputError, "--out under a file", OutputDir(file / "sub"), {"cannot create"});
   fs::remove(file);
   if (::geteuid() != 0) {  // permission bits do not stop root
     const fs::path ro = fs::temp_directory_path() / ("geomint_io_ro_" + std::to_string(::getpid()));
     fs::create_directories(ro);
     ::chmod(ro.c_str(), 0555);
-    EXPECT_THROW(OutputDir{ro}, OutputError);
+    EXPECT_REFUSAL_OF(OutputError, "--out a read-only directory", OutputDir{ro}, {"not writable"});
     ::chmod(ro.c_str(), 0755);
     fs::remove_all(ro);
   }
@@ -155,18 +157,22 @@ TEST(ResultsDir, RefusesToReplaceWhatIsNotAResultsDirectoryOfTheExperiment) {
   const fs::path home = t.root / "home";
   fs::create_directories(home);
   std::ofstream(home / "precious.txt") << "x";
-  EXPECT_THROW(ResultsDir(home, "exp", false), OutputError);
-  EXPECT_THROW(ResultsDir(t.root / "home/", "exp", false), OutputError);  // with a trailing slash
+  EXPECT_REFUSAL_OF(OutputError, "--out a directory of a user's files", ResultsDir(home, "exp", false),
+                    {"not a results directory"});
+  EXPECT_REFUSAL_OF(OutputError, "the same with a trailing slash", ResultsDir(t.root / "home/", "exp", false),
+                    {"not a results directory"});
   EXPECT_TRUE(fs::exists(home / "precious.txt"));
   EXPECT_FALSE(fs::exists(t.root / "home.partial"));
   finished_run(t.root / "other", "other_exp", {"a.csv"});
-  EXPECT_THROW(ResultsDir(t.root / "other", "exp", false), OutputError);  // another experiment's results
-  EXPECT_THROW(ResultsDir("/", "exp", false), OutputError);
+  EXPECT_REFUSAL_OF(OutputError, "--out another experiment's results", ResultsDir(t.root / "other", "exp", false),
+                    {"not a results directory of exp"});
+  EXPECT_REFUSAL_OF(OutputError, "--out /", ResultsDir("/", "exp", false), {"root directory"});
   fs::create_directories(t.root / "empty");
   EXPECT_NO_THROW(ResultsDir(t.root / "empty", "exp", false).discard());  // an empty directory may be replaced
   fs::create_directories(t.root / "x.partial");  // a staging name holding a user's files
   std::ofstream(t.root / "x.partial" / "notes.txt") << "x";
-  EXPECT_THROW(ResultsDir(t.root / "x", "exp", false), OutputError);
+  EXPECT_REFUSAL_OF(OutputError, "a staging directory x.partial holding a user's file", ResultsDir(t.root / "x", "exp", false),
+                    {"x.partial"});
 }
 
 TEST(ResultsDir, ResumeKeepsTheInterruptedRunAndDropsItsTemporaries) {

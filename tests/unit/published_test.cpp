@@ -6,6 +6,7 @@
 #include <fstream>
 #include <string>
 
+#include "../hard_case.hpp"
 #include "geomint/runner/published.hpp"
 #include "temp_paths.hpp"
 
@@ -84,21 +85,27 @@ TEST(Published, ReadsTheEntriesInFileOrder) {
 }
 
 TEST(Published, RejectsMalformedEntries) {
-  EXPECT_NE(error_of("[a]\nstudy = \"s\"\nvalue = 1\nwhere = \"w\"\n").find("missing 'summary'"), std::string::npos);
-  EXPECT_NE(error_of("[a]\nstudy = \"s\"\nvalue = 1\nwhere = \"w\"\nsummary = \"x\"\ncolour = 1\n").find("unknown field"),
-            std::string::npos);
-  EXPECT_NE(error_of("[a]\nstudy = \"s\"\nvalue = 0\nwhere = \"w\"\nsummary = \"x\"\ncompare = { rel = 0.1 }\n")
-                .find("!= 0"),
-            std::string::npos);
-  EXPECT_NE(error_of("[a]\nstudy = \"s\"\nvalue = 1\nwhere = \"w\"\nsummary = \"x\"\ncompare = { near = 0.1 }\n")
-                .find("compare is"),
-            std::string::npos);
-  EXPECT_NE(error_of("[a]\nstudy = \"s\"\nvalue = 1\nwhere = \"w\"\nsummary = \"x\"\nexpect = \"maybe\"\n").find("expect"),
-            std::string::npos);
-  EXPECT_NE(error_of("[a]\nstudy = \"s\"\nvalue = 1\nwhere = \"w\"\nsummary = \"x\"\nexpect = \"differs\"\nnote = \"n\"\n")
-                .find("ctest test"),
-            std::string::npos);  // a known discrepancy names the test that shows it
-  EXPECT_NE(error_of("[a\n").find("not valid TOML"), std::string::npos);
+  const auto refused = [](const std::string& what, const std::string& text, const std::string& needle) {
+    EXPECT_REFUSAL_OF(PublishedError, what, read_published(published_file(text)), {needle});
+  };
+  const std::string entry = "[a]\nstudy = \"s\"\nvalue = 1\nwhere = \"w\"\n";
+  refused("an entry without a summary key", entry, "missing 'summary'");
+  refused("an unknown field", entry + "summary = \"x\"\ncolour = 1\n", "unknown field");
+  refused("a relative tolerance on a published 0",
+          "[a]\nstudy = \"s\"\nvalue = 0\nwhere = \"w\"\nsummary = \"x\"\ncompare = { rel = 0.1 }\n", "!= 0");
+  refused("an unknown comparison", entry + "summary = \"x\"\ncompare = { near = 0.1 }\n", "compare is");
+  refused("an unknown expectation", entry + "summary = \"x\"\nexpect = \"maybe\"\n", "expect");
+  // a known discrepancy names the test that shows it
+  refused("a discrepancy without its test", entry + "summary = \"x\"\nexpect = \"differs\"\nnote = \"n\"\n", "ctest test");
+  refused("a file that is not TOML", "[a\n", "not valid TOML");
+  // an erratum quotes the paper's words it contradicts
+  const std::string differs = entry + "summary = \"x\"\nexpect = \"differs\"\nnote = \"n\"\ntest = \"t\"\n";
+  refused("a printed statement that differs, without quotes", differs, "needs quotes");
+  refused("a quotation without its place", differs + "quotes = [{ text = \"words\" }]\n", "quotes is a list");
+  refused("quotes that are not a list", differs + "quotes = \"words\"\n", "quotes is a list");
+  EXPECT_EQ(error_of(differs + "quotes = [{ at = \"004 Sect. 1.4\", text = \"words\" }]\n"), "");
+  EXPECT_EQ(error_of(entry + "summary = \"x\"\nkind = \"convention\"\nexpect = \"differs\"\nnote = \"n\"\ntest = \"t\"\n"),
+            "");  // (a convention quotes what it likes)
 }
 
 TEST(Published, VerdictsByTolerance) {
@@ -210,7 +217,7 @@ TEST(Published, EachEntryBelongsToAFigureItsStudyMakes) {
   EXPECT_NE(resolved("figure = \"004 Fig. 6\"\n").find("not one the study ensemble makes"), std::string::npos);
 }
 
-TEST(Published, ClaimsAreComparedWithTheirBound) {
+TEST(Published, ClaimsAreComparedAboveOrBelowTheirThreshold) {
   const auto e = read_published(published_file(R"(
 [side]
 study = "table1"

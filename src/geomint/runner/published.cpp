@@ -18,7 +18,7 @@ namespace {
 using json = nlohmann::ordered_json;
 
 const std::vector<std::string> kFields = {"study", "figure", "value", "where", "summary", "compare", "requires", "expect",
-                                          "note", "test", "kind", "chosen"};
+                                          "note", "test", "kind", "chosen", "quotes"};
 const std::vector<std::string> kKinds = {"printed", "scanning", "authors_code", "convention", "sample"};
 
 bool is_claim(const std::string& compare) { return compare == "above" || compare == "below"; }
@@ -133,6 +133,18 @@ std::vector<Published> read_published(const std::filesystem::path& file) {
     }
     if ((p.kind == "convention" || p.kind == "sample") && p.note.empty())
       fail(file, key, "a " + p.kind + " needs its note (what the paper leaves open)");
+    if (const auto q = (*t)["quotes"]) {  // [{ at = "Sect. 1.4", text = "the paper's words" }, ...]
+      const char* form = "quotes is a list of { at = \"where in the paper\", text = \"its words\" }";
+      const auto* qa = q.as_array();
+      if (!qa || qa->empty()) fail(file, key, form);
+      for (const auto& item : *qa) {
+        const auto* qt = item.as_table();
+        if (!qt || qt->size() != 2 || !(*qt)["at"].is_string() || !(*qt)["text"].is_string()) fail(file, key, form);
+        p.quotes.push_back({{"at", *(*qt)["at"].value<std::string>()}, {"text", *(*qt)["text"].value<std::string>()}});
+      }
+    }
+    if (p.expect == "differs" && (p.kind == "printed" || p.kind == "scanning") && p.quotes.empty())
+      fail(file, key, "a printed statement that differs needs quotes: the paper's words it contradicts");
     if (const auto c = (*t)["chosen"]) {
       const auto* ct = c.as_table();
       if (!ct || ct->empty()) fail(file, key, "chosen is a table of scene keys and their printed values");
@@ -195,6 +207,7 @@ std::optional<json> compare_published(const Published& e, const json& summary, c
   c["where"] = e.where, c["published"] = e.value, c["reproduced"] = reproduced ? *reproduced : json(nullptr);
   if (!e.compare.empty()) c["compare"] = {{e.compare, e.tolerance}};
   if (e.kind != "printed") c["kind"] = e.kind;
+  if (!e.quotes.empty()) c["quotes"] = e.quotes;
   for (const auto& [key, printed] : e.chosen.items()) {
     const json* used = json_at(scene, key);
     c["chosen"][key] = {{"printed", printed}, {"used", used ? *used : json(nullptr)}};

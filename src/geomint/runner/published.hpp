@@ -69,6 +69,7 @@ struct Published {
   std::string kind = "printed";     // "printed", "scanning", "authors_code", "convention" or "sample"
   nlohmann::ordered_json chosen = nlohmann::ordered_json::object();  // scene key -> the printed value
   nlohmann::ordered_json requires_ = nlohmann::ordered_json::object();  // dotted scene key -> value
+  nlohmann::ordered_json quotes = nlohmann::ordered_json::array();  // [{"at", "text"}]: the paper's words, verbatim
 };
 
 // The entries of a published.toml, in file order; throws PublishedError naming the file and the entry.

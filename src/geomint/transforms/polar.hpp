@@ -3,9 +3,9 @@
 // coordinates of the plane and the momentum map it induces (000 eq. (41)).
 // Convention: theta is measured from +y towards +x, x = r sin(theta),
 // y = r cos(theta), so that (72) and (73) describe the same pendulum (gravity
-// along +y, U = -m g y = -m g r cos(theta)); then theta = atan2(x, y), as in
-// the first half of (63). (The second half of (63) prints x = r cos(theta),
-// the other convention.)
+// along +y, U = -m g y = -m g r cos(theta)); then theta = atan2(x, y) (C's
+// order of arguments), as in the first half of (63). (The second half of (63),
+// written for the free mass, prints x = r cos(theta), the other convention.)
 #include <cmath>
 
 #include "geomint/core/state.hpp"
