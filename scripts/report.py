@@ -259,6 +259,25 @@ def short_value(c):
     return f"{label} {pub_text}, reproduced {rep_text}"
 
 
+LEDGER_LINES = 6  # the most lines a ledger cell may take, and its characters per line at \scriptsize (one
+LEDGER_CHARS = {"verdict": 17 * 5 // 6, "values": 27 * 5 // 6, "rerun": 35 * 5 // 6}  # line in 6 kept for breaks)
+
+
+def visible(tex):
+    """The characters a LaTeX fragment prints (roughly: commands and braces dropped, a reference as 'R12')."""
+    tex = re.sub(r"\\(?:page)?ref\{[^}]*\}", "R12", tex)
+    return re.sub(r"\\[a-zA-Z@]+\*?|[{}$]", "", re.sub(r"\\([^a-zA-Z@])", r"\1", tex))
+
+
+def ledger_cell(cell, text, where):
+    """A cell of the ledger's row `where`, refused if it would run past LEDGER_LINES lines (details go to the
+    experiment's section)."""
+    if len(visible(text)) > LEDGER_LINES * LEDGER_CHARS[cell]:
+        raise SystemExit(f"report.py: the ledger's {cell} cell of {visible(where)} would run past {LEDGER_LINES} "
+                         f"lines: {visible(text)}")
+    return text
+
+
 def ledger_tex(runs, papers, tests):
     """One row per item of the papers, with the verdict its own run computed (summary.json "figures")
     from that item's own comparisons."""
@@ -270,14 +289,14 @@ def ledger_tex(runs, papers, tests):
                     paper_id, _, item_name = item.partition(" ")
                     makers.setdefault((paper_id, item_name), {}).setdefault(name, []).append(st)
     out = ["% The reproduction ledger (scripts/report.py from paper/papers.toml, run.json and summary.json).",
-           longtable("scriptsize", 0.07, 0.1, 0.23, 0.28, 0.32),
+           longtable("scriptsize", 0.07, 0.1, 0.18, 0.28, 0.37),
            r"\toprule paper & in this report & verdict & its own values & rerun, figure, test\\ \midrule",
            r"\endhead"]
     for paper in papers["paper"]:
         for item in paper["item"]:
             where = f"{{[{paper['id']}]}} {tex_escape(item['name'])}"  # (braced: not \\[dimen])
-            if "left_out" in item:
-                out.append(f"{where} & --- & left out: {prose(item['left_out'])} & & \\\\")
+            if "left_out" in item:  # (why, in the values' column)
+                out.append(f"{where} & --- & left out & {ledger_cell('values', prose(item['left_out']), where)} & \\\\")
                 continue
             done = makers.get((paper["id"], item["name"]), {})
             if not done:
@@ -291,7 +310,6 @@ def ledger_tex(runs, papers, tests):
                 commands.append(code(f"build/bin/{experiment} " + " ".join(f"--study {st['name']}" for st in studies) +
                                      ("" if name == experiment else f" --scene {scene}")))
                 scripts += [s for st in studies for s in figure_scripts(name, st["files"]) if s not in scripts]
-                tests_cited.append(f"{experiment}.studies")
                 f = (summary.get("figures") or {}).get(figure)
                 if f is None:
                     raise SystemExit(f"report.py: {name}: summary.json has no verdict for {figure}")
@@ -310,6 +328,9 @@ def ledger_tex(runs, papers, tests):
                         tests_cited.append(comparisons[key]["test"])
                 if f["verdict"] == "no printed value":
                     values.append("the paper prints no value or claim: shape compared by eye")
+            own = [g for g in scripts if re.search(rf"fig{re.sub(r'[^0-9]', '', item['name'])}(?![0-9])", g)]
+            scripts = own or scripts  # (a study's scripts that draw this figure, where their names say so)
+            tests_cited = tests_cited or [f"{runs[name]['summary'].get('experiment', name)}.studies" for name in done]
             if tests is not None:
                 for t in tests_cited:
                     if t not in tests:
@@ -319,7 +340,9 @@ def ledger_tex(runs, papers, tests):
                      if label else "")
             rerun = "; ".join(commands) + ("; " + ", ".join(code(f"figures/{g}") for g in scripts) if scripts else "") + \
                 "; " + ", ".join(code(t) for t in dict.fromkeys(tests_cited))
-            out.append(f"{where} & {shown} & {'; '.join(verdicts)} & {'; '.join(values)} & {rerun}\\\\")
+            cells = {cell: ledger_cell(cell, text, where) for cell, text in
+                     (("verdict", "; ".join(verdicts)), ("values", "; ".join(values)), ("rerun", rerun))}
+            out.append(f"{where} & {shown} & {cells['verdict']} & {cells['values']} & {cells['rerun']}\\\\")
     out += [r"\bottomrule", r"\end{longtable}}"]
     return "\n".join(out) + "\n"
 

@@ -6,7 +6,7 @@ and its values from its own figure's comparisons (summary.json "figures", made b
 from another figure of the same study ([004] Fig. 5 from Fig. 4's) or of another scene ([003] Figs 5.5
 and 5.6, the free particle's, from the harmonic scene's Fig. 5.3). Also: the errata chapter lists an
 open convention and an authors'-code value in their own sections, never as errata or as published, an
-erratum with the paper's words it quotes, and report.py refuses a results directory that is not its paper scene's run, and a \\cite of a work
+erratum with the paper's words it quotes, no ledger cell past 6 lines, and report.py refuses a results directory that is not its paper scene's run, and a \\cite of a work
 that paper/papers.toml does not list.
 """
 import json
@@ -147,6 +147,16 @@ def main():
     verdicts.write_text("\\verdict{ti_drift}{004 Fig. 9}\n")
     judged = subprocess.run(report + [str(verdicts)], capture_output=True, text=True)
     expect(judged.returncode != 0 and "004 Fig. 9" in judged.stderr, "a verdict the run did not compute passes")
+    # a ledger cell that would run past 6 lines stops the script, naming it (details go to the experiment's section)
+    summary_file = results / "ti_drift" / "summary.json"
+    kept = summary_file.read_text()
+    summary = json.loads(kept)
+    summary["comparisons"]["sigma4"]["test"] = "regression.TiDrift." + "AVeryLongTestName" * 12
+    summary_file.write_text(json.dumps(summary))
+    long_cell = subprocess.run(report, capture_output=True, text=True)
+    expect(long_cell.returncode != 0 and "rerun cell of [004] Fig. 4" in long_cell.stderr,
+           f"a ledger cell of 8 lines passes: exit {long_cell.returncode}, {long_cell.stderr.strip()}")
+    summary_file.write_text(kept)
     # a reviewer's rerun (--set) in a paper run's directory is refused, naming the directory
     run = json.loads((results / "ti_drift" / "run.json").read_text())
     run["overrides"] = ["ensemble.size=8"]
