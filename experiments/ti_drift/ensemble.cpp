@@ -156,6 +156,7 @@ json ensemble_summary(const Context& ctx, const HH& hhk, const Run& run, const S
   ensemble["mu_first"] = {{"t", ts.at(1)}, {"mu", mus.at(1)}};
   ensemble["mu_late"] = spread_of(mu_late);
   ensemble["mu_final_stderr"] = standard_error_of_mean(sigmas.back(), static_cast<double>(M));
+  ensemble["mu_final_in_stderr"] = mus.back() / ensemble["mu_final_stderr"].get<double>();  // how far from zero
   ensemble["sigma_rel_stderr"] = standard_error_of_deviation(1.0, static_cast<double>(M));
   ensemble["sigma_exponent_from_hundredth"] = power_law_exponent(ts, sigmas, t_fit / 10);  // a window ten times longer
   // sigma^2 = c + D t of a random walk: D at t_end, and the slope of sigma^2 over the fit window.
