@@ -54,7 +54,7 @@ from tex_format import FORMATS, code, is_number, key_text, longtable, number, pr
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 
 
-TEXT_FORMATS = ("text", "vec")
+TEXT_FORMATS = ("text", "vec", "tverdict")
 LOOKUP = re.compile(r"\\result(range)?(?:\[([^\]]*)\])?\{([^}]*)\}\{([^}]*)\}")
 HAS = re.compile(r"\\ifresult\{([^}]*)\}\{([^}]*)\}")  # \ifresult{run}{key}{if it has a value}{if not}
 VERDICT = re.compile(r"\\verdict\{([^}]*)\}\{([^}]*)\}")  # \verdict{run}{004 Fig. 5}: summary.json figures
@@ -85,6 +85,8 @@ def lookup_text(run, key, fmt, ranged):
             f"\\ensuremath{{{a}}}--\\ensuremath{{{b}}}"
     if fmt == "text":
         return tex_escape(v) if isinstance(v, str) else None
+    if fmt == "tverdict":  # a timing's verdict against its reference (runner/timing.hpp), short
+        return f"({TIMING_VERDICTS[v]})" if v in TIMING_VERDICTS else None
     if fmt == "vec":
         ok = isinstance(v, list) and v and all(is_number(x) and math.isfinite(x) for x in v)
         return f"\\ensuremath{{({', '.join(f'{x:g}' for x in v)})}}" if ok else None
@@ -259,6 +261,8 @@ def short_value(c):
     return f"{label} {pub_text}, reproduced {rep_text}"
 
 
+TIMING_VERDICTS = {"reference": "ref.", "indistinguishable": r"$\approx$", "faster": "faster", "slower": "slower",
+                   "contradicts the work": "flagged"}
 LEDGER_LINES = 6  # the most lines a ledger cell may take, and its characters per line at \scriptsize (one
 LEDGER_CHARS = {"verdict": 17 * 5 // 6, "values": 27 * 5 // 6, "rerun": 35 * 5 // 6}  # line in 6 kept for breaks)
 

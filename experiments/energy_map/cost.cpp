@@ -57,13 +57,19 @@ void check_cost(const Scene& s) {
 }
 
 StudyPlan plan_cost(const Scene& s) {
-  double per_start = 0;  // steps of one start at every step size
-  for (double dt : s.reals("cost.dt")) per_start += std::round(s.real("cost.t_end") / dt);
-  const double repeats = static_cast<double>(s.integer("timing.repeats"));
   const double starts = static_cast<double>(s.real_rows("cost.starts").size());
-  const double steps = 2 * starts * per_start * (1 + repeats);  // both systems: the untimed run and the timed ones
-  return {steps, steps, starts * static_cast<double>(s.reals("cost.dt").size()) * 2 * 200.0, kScalarNsPerStep,
-          std::string("one call per timed run (runs lengthened to >= 10 ms not counted); ") + kNsNote};
+  double steps = 0;
+  std::vector<TimedCall> calls;  // per system and step: every start in turn
+  for (double dt : s.reals("cost.dt")) {
+    const double n = std::round(s.real("cost.t_end") / dt);
+    steps += 2 * starts * n;  // (the untimed runs, both systems)
+    calls.insert(calls.end(), 2, TimedCall{starts * n, kScalarNsPerStep});
+  }
+  StudyPlan p{steps, steps, starts * static_cast<double>(s.reals("cost.dt").size()) * 2 * 200.0, kScalarNsPerStep,
+              std::string("the untimed runs, then the timing protocol; ") + kNsNote};
+  const TimedPlan timed = timing_plan(calls, static_cast<double>(s.integer("timing.repeats")));
+  p.timed_seconds = timed.seconds, p.timed_steps = timed.steps;
+  return p;
 }
 
 // Per start: where it lies, the reference's own error, the fitted orders and the ranges of eps per
@@ -120,7 +126,7 @@ void cost_ratios(json& cost, std::size_t ns) {
 
 // The energy errors (50): one untimed run per system, step and start (split across threads and ranks);
 // the wall time: per system and step one timed function integrates every start in turn (serial, one
-// thread), a start's share its time over the number of starts (the loop's time per step does not depend
+// thread; all of them timed together under the timing protocol), a start's share its time over the number of starts (the loop's time per step does not depend
 // on the start: its only branch is the divergence test). One set per start.
 std::vector<WorkPrecisionSet> timed_sets(const Scene& s, const std::vector<std::vector<double>>& starts,
                                          const std::function<EnergyMapParams(double)>& params) {
@@ -131,17 +137,21 @@ std::vector<WorkPrecisionSet> timed_sets(const Scene& s, const std::vector<std::
     return energy_map_scalar(systems[c], params(dts[d]), starts[i][0], starts[i][1]);
   });
   std::vector<WorkPrecisionSet> sets(ns, WorkPrecisionSet("eq. (50) over [0, cost.t_end] against H_0 = H(z_0)"));
-  for (std::size_t d = 0; d < nd; ++d)  // (both systems at one step back to back: a busy spell hits both alike)
-    for (std::size_t c = 0; c < 2; ++c) {
-      const EnergyMapParams P = params(dts[d]);
-      const RunTime t = time_runs(static_cast<int>(s.integer("timing.repeats")), [&] {
-        for (const auto& x : starts) do_not_optimize(energy_map_scalar(systems[c], P, x[0], x[1]).eps);
+  InterleavedTiming timing(static_cast<int>(s.integer("timing.repeats")));  // every system and step together
+  std::vector<EnergyMapParams> P;
+  for (std::size_t d = 0; d < nd; ++d) P.push_back(params(dts[d]));
+  for (std::size_t d = 0; d < nd; ++d)
+    for (std::size_t c = 0; c < 2; ++c)
+      timing.add([&, c, d] {
+        for (const auto& x : starts) do_not_optimize(energy_map_scalar(systems[c], P[d], x[0], x[1]).eps);
       });
-      const double n = static_cast<double>(ns);
-      const RunTime share{t.min_s / n, t.median_s / n, t.max_s / n, t.repeats, t.inner};  // (the same spread)
+  const std::vector<RunTime> times = timing.run();
+  for (std::size_t d = 0; d < nd; ++d)
+    for (std::size_t c = 0; c < 2; ++c) {
+      const RunTime share = times[2 * d + c].scaled(1 / static_cast<double>(ns));  // (the same spread)
       for (std::size_t i = 0; i < ns; ++i)  // symplectic Euler (42): one gradient of U per step
-        sets[i].add({coordinates_name(systems[c]), dts[d], static_cast<double>(P.steps), share,
-                     static_cast<double>(P.steps), eps[(c * nd + d) * ns + i].eps});
+        sets[i].add({coordinates_name(systems[c]), dts[d], static_cast<double>(P[d].steps), share,
+                     static_cast<double>(P[d].steps), eps[(c * nd + d) * ns + i].eps});
     }
   return sets;
 }

@@ -24,17 +24,19 @@ void check_timing(const Scene& s) {
 
 StudyPlan plan_timing(const Scene& s) {
   const GridCount n = grid_count(s);
-  const double repeats = static_cast<double>(s.integer("timing.repeats"));
-  // the kernel's sample (only when the map study does not run in the same process: an upper bound), both systems
-  const double kernel = 2 * repeats * std::min(static_cast<double>(s.integer("timing.kernel_batches")), n.batches) *
+  // the timing protocol over both systems: the kernel's sample (only when the map study does not run in the
+  // same process: an upper bound; on every thread) and the scalar loop
+  const double kernel = std::min(static_cast<double>(s.integer("timing.kernel_batches")), n.batches) *
                         kEnergyMapBatch * n.steps;
-  const double scalar = 2 * repeats * std::min(static_cast<double>(s.integer("timing.scalar_points")), n.points) *
+  const double scalar = std::min(static_cast<double>(s.integer("timing.scalar_points")), n.points) *
                         static_cast<double>(s.integer("timing.scalar_steps"));
-  const double steps = kernel + scalar, bytes = n.batches * kEnergyMapBatch * 2 * sizeof(double);
-  const double ns = steps > 0 ? (kernel * kKernelNsPerStep + scalar * kScalarNsPerStep) / steps : 0;
-  return {steps, steps, bytes, ns,
-          std::string("one call per timed run (runs lengthened to >= 10 ms not counted); the kernel sample only "
-                      "without the map study; ") + kNsNote};
+  StudyPlan p{0, 0, n.batches * kEnergyMapBatch * 2 * sizeof(double), kScalarNsPerStep,
+              std::string("the timing protocol; the kernel sample only without the map study; ") + kNsNote};
+  const TimedPlan timed = timing_plan({{kernel, kKernelNsPerStep}, {kernel, kKernelNsPerStep}, {scalar, kScalarNsPerStep},
+                                       {scalar, kScalarNsPerStep}},
+                                      static_cast<double>(s.integer("timing.repeats")));
+  p.timed_seconds = timed.seconds, p.timed_steps = timed.steps;
+  return p;
 }
 
 // The batched kernel on the batches batch(0), ..., batch(count - 1) of the grid, in parallel.
@@ -57,14 +59,18 @@ void time_scalar_loop(Context& ctx, const MapSetup& g, int repeats, json& scalar
       std::min<std::int64_t>(s.integer("timing.scalar_points"), static_cast<std::int64_t>(g.npoints)));
   EnergyMapParams Ps = g.P;
   Ps.steps = s.integer("timing.scalar_steps");
-  for (const auto c : {Coordinates::cartesian, Coordinates::polar}) {
-    const RunTime t = time_runs(repeats, [&] {
+  InterleavedTiming timing(repeats);  // the two coordinate systems together
+  for (const auto c : {Coordinates::cartesian, Coordinates::polar})
+    timing.add([&, c] {
       for (std::size_t i = 0; i < nsc; ++i) {
         const std::size_t at = i * (g.npoints / nsc);
         const auto r = energy_map_scalar(c, Ps, g.x0[at], g.y0[at]);
         do_not_optimize(r.eps);
       }
     });
+  const std::vector<RunTime> times = timing.run();
+  for (const auto c : {Coordinates::cartesian, Coordinates::polar}) {
+    const RunTime& t = times[c == Coordinates::cartesian ? 0 : 1];
     scalar_ns[coordinates_name(c)] = 1e9 * t.seconds() / (static_cast<double>(nsc) * static_cast<double>(Ps.steps));
     scalar_spread[coordinates_name(c)] = t.spread();
   }
@@ -98,7 +104,7 @@ void run_timing(Context& ctx, const MapCost& map) {
   json kernel_spread = nullptr;  // the sample's spread; the map's wall time is one run, not repeated
   std::string kernel_method = "map: wall time of the batched kernel in the map study of this run, times threads, over "
                               "the trajectory-steps it computed (the map is one long run, not a repeated measurement: "
-                              "no minimum over repeats and no spread)";
+                              "no median over repeats and no spread)";
   if (!map.ran) {
     ctx.progress("cost: batched kernel on a sample of batches");
     const auto count = std::min<std::size_t>(static_cast<std::size_t>(s.integer("timing.kernel_batches")), g.nbatches);
@@ -109,19 +115,20 @@ void run_timing(Context& ctx, const MapCost& map) {
       trajectories += std::min<std::size_t>(kEnergyMapBatch, g.npoints - batches[i] * kEnergyMapBatch);
     }
     kernel_spread = json::object();
-    for (const auto c : {Coordinates::cartesian, Coordinates::polar}) {
-      const RunTime t = time_runs(repeats, [&] {
+    InterleavedTiming sample(repeats);  // the two coordinate systems together
+    for (const auto c : {Coordinates::cartesian, Coordinates::polar})
+      sample.add([&, c] {
         do_not_optimize(run_batches(kernels.front().run, c, g, count, [&](std::size_t b) { return batches[b]; }));
       });
-      (c == Coordinates::cartesian ? wall_cart : wall_polar) = t.seconds();
-      kernel_spread[coordinates_name(c)] = t.spread();
-    }
+    const std::vector<RunTime> times = sample.run();
+    wall_cart = times[0].seconds(), wall_polar = times[1].seconds();
+    kernel_spread["cartesian"] = times[0].spread(), kernel_spread["polar"] = times[1].spread();
     steps_cart = steps_polar = static_cast<double>(trajectories) * static_cast<double>(g.P.steps);
     timing["kernel_sample"] = {{"batches", count}, {"trajectories", trajectories},
                                {"wall_s", {{"cartesian", wall_cart}, {"polar", wall_polar}}}};
     kernel_method = "sample: the map study did not run in this process; wall time of the batched kernel on "
                     "timing.kernel_batches batches of the grid (evenly spaced, t_max/dt steps each; runs after "
-                    "an untimed warm-up; the minimum over timing.repeats runs), times threads, over their trajectory-steps";
+                    "the timing protocol, the median over timing.repeats rounds), times threads, over their trajectory-steps";
   }
   const double ns_cart = 1e9 * wall_cart * ctx.threads / steps_cart;
   const double ns_polar = 1e9 * wall_polar * ctx.threads / steps_polar;

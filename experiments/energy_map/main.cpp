@@ -10,6 +10,7 @@
 // two coordinate systems on a few starts, study `cost`)                                cost.cpp
 // Here: the studies, and the scene keys that several of them read.
 #include "energy_map.hpp"
+#include "geomint/runner/timing.hpp"
 
 using namespace geomint;
 using namespace geomint::energy_map;
@@ -32,8 +33,7 @@ Schema shared_keys() {
             "step of symplectic Euler (000 Fig. 6: 0.2); dt sqrt(k/m) below its oscillatory bound (geomint-methods)")
       .real("t_max", positive(), "end time (000 Fig. 6: 50 000); a multiple of dt")
       .real("divergence.blowup", positive(), "|H_j - H_0| above this marks a run diverged")
-      .integer("timing.repeats", at_least(1),
-               "timed runs (>= 10 ms each) per measurement; the minimum is the estimate, the spread is reported");
+      .integer("timing.repeats", at_least(1), kTimingRepeatsHelp);
   return s;
 }
 

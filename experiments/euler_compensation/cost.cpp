@@ -20,7 +20,7 @@
 namespace geomint::euler_compensation {
 namespace {
 
-// The set "energy": counting runs in parallel, then every (h, method) timed in that order.
+// The set "energy": counting runs in parallel, then every (h, method) timed together (runner/timing.hpp).
 WorkPrecisionSet energy_set(const Scene& s, const State& z0) {
   const double t_end = s.real("convergence.t_end"), k = s.real("oscillator.k");
   const int repeats = static_cast<int>(s.integer("timing.repeats"));
@@ -34,10 +34,11 @@ WorkPrecisionSet energy_set(const Scene& s, const State& z0) {
     const std::int64_t n = steps_to(t_end, hs[i]);
     for (std::size_t m = 0; m < methods.size(); ++m) {
       const EnergyRun& r = counted[i][m];
-      energy.add({label_of(methods[m]), hs[i], static_cast<double>(n), oscillator_method_time(methods[m], k, z0, hs[i], n, repeats),
-                  static_cast<double>(r.force_evals), r.max_err});
+      energy.add({label_of(methods[m]), hs[i], static_cast<double>(n), {}, static_cast<double>(r.force_evals), r.max_err},
+                 oscillator_method_timed(methods[m], k, z0, hs[i], n));
     }
   }
+  energy.time(repeats);
   return energy;
 }
 
@@ -57,16 +58,26 @@ void run_cost(Context& ctx) {
   ctx.progress("cost: ns per step");
   const double h8 = s.real("oscillator.h"), k = s.real("oscillator.k");
   const std::int64_t n_ns = s.integer("timing.steps");
-  for (const auto& m : methods) {  // a run of its own, not the set's: the step of Fig 8 over timing.steps steps
-    const RunTime t = oscillator_method_time(m, k, z0, h8, n_ns, repeats);
-    cost["ns_per_step"][label_of(m)] = 1e9 * t.seconds() / static_cast<double>(n_ns);
-    cost["ns_per_step_spread"][label_of(m)] = t.spread();
+  InterleavedTiming timing(repeats);  // runs of their own, not the set's: the step of Fig 8 over timing.steps steps
+  for (const auto& m : methods) timing.add(oscillator_method_timed(m, k, z0, h8, n_ns));
+  const std::vector<RunTime> times = timing.run();
+  std::vector<std::string> labels;
+  std::vector<RunTime> per_step;
+  std::vector<double> work;  // force evaluations per step, from the set's runs
+  for (std::size_t i = 0; i < methods.size(); ++i) {
+    const std::string label = label_of(methods[i]);
+    labels.push_back(label), per_step.push_back(times[i].scaled(1e9 / static_cast<double>(n_ns)));
+    for (const auto& r : energy.records())
+      if (r.method == label) {
+        work.push_back(r.evals / r.steps);
+        break;
+      }
+    cost["ns_per_step"][label] = per_step.back().seconds();
+    cost["ns_per_step_spread"][label] = per_step.back().spread();
   }
-  const json ns = cost["ns_per_step"];  // (a copy: cost grows below)
-  for (const auto& m : methods)  // ns per step relative to the first method of timing.methods
-    cost["relative_ns_per_step"][label_of(m)] = ns[label_of(m)].get<double>() / ns[label_of(methods[0])].get<double>();
+  // ns per step relative to the first method of timing.methods
+  cost["relative_ns_per_step"] = relative_timings(labels, per_step, work);
   // Where the work-precision curves of the first two methods cross (null: not in the measured range).
-  const auto labels = energy.methods();
   const auto a = labels.size() > 1 ? energy.runs(labels[0]) : std::vector<CostRun>{};
   const auto b = labels.size() > 1 ? energy.runs(labels[1]) : std::vector<CostRun>{};
   const auto cross = a.empty() || b.empty() ? std::nullopt : crossover(a, b);  // (crossover needs runs on both)
@@ -80,18 +91,22 @@ void run_cost(Context& ctx) {
 }
 
 StudyPlan plan_cost(const Scene& s) {
-  const double methods = static_cast<double>(s.texts("timing.methods").size());
-  const double repeats = static_cast<double>(s.integer("timing.repeats"));
-  const double counted = methods * steps_to_each(s.real("convergence.t_end"), s.reals("timing.h"));
-  const double steps = counted * (1 + repeats) + methods * repeats * static_cast<double>(s.integer("timing.steps"));
-  return {steps, counted * kEvalsPerStep, methods * static_cast<double>(s.reals("timing.h").size()) * 8 * kCellBytes,
-          kOscillatorNs, std::string("timed runs of < 10 ms are repeated to 10 ms (not counted); ") + kOscillatorNsNote};
+  const auto methods = s.texts("timing.methods");
+  const double counted = static_cast<double>(methods.size()) * steps_to_each(s.real("convergence.t_end"), s.reals("timing.h"));
+  std::vector<TimedCall> calls;  // the set's runs, then a run of timing.steps per method
+  for (double h : s.reals("timing.h")) calls.insert(calls.end(), methods.size(), TimedCall{s.real("convergence.t_end") / h, kOscillatorNs});
+  calls.insert(calls.end(), methods.size(), TimedCall{static_cast<double>(s.integer("timing.steps")), kOscillatorNs});
+  StudyPlan p{counted, counted * kEvalsPerStep, static_cast<double>(calls.size()) * 8 * kCellBytes, kOscillatorNs,
+              std::string("counting runs, then the timing protocol; ") + kOscillatorNsNote};
+  const TimedPlan timed = timing_plan(calls, static_cast<double>(s.integer("timing.repeats")));
+  p.timed_seconds = timed.seconds, p.timed_steps = timed.steps;
+  return p;
 }
 
 void keys(Schema& s) {
   s.texts("timing.methods", oscillator_method_choices(), 1, "methods of the cost study (registry names or labels)")
       .reals("timing.h", positive(), 3, "steps of the work-precision runs (to convergence.t_end)")
-      .integer("timing.repeats", at_least(1), "timed runs (>= 10 ms each) per measurement; the minimum is the estimate, the spread is reported")
+      .integer("timing.repeats", at_least(1), kTimingRepeatsHelp)
       .integer("timing.steps", at_least(1), "steps of the run that measures ns per step");
 }
 

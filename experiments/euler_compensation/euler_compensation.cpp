@@ -54,12 +54,11 @@ std::vector<EnergyRun> oscillator_runs(const std::vector<std::string>& methods, 
   return runs;
 }
 
-RunTime oscillator_method_time(const std::string& method, double k, const State& z0, double h, std::int64_t n,
-                               int repeats) {
-  const Oscillator osc;
-  if (!compensated(method)) return MethodsOn<Oscillator>::time(method, osc, std::span(&z0, 1), h, n, repeats);
-  const auto m = CompensatedSymplecticEuler::bind(osc, k);
-  return time_runs(repeats, [&] { do_not_optimize(integrate_inlined(m, z0, h, n)); });
+std::function<void()> oscillator_method_timed(const std::string& method, double k, const State& z0, double h,
+                                              std::int64_t n) {
+  static const Oscillator osc;  // (outlives the call it returns)
+  if (!compensated(method)) return MethodsOn<Oscillator>::timed(method, osc, {z0}, h, n);
+  return [m = CompensatedSymplecticEuler::bind(osc, k), z0, h, n] { do_not_optimize(integrate_inlined(m, z0, h, n)); };
 }
 
 std::vector<std::string> oscillator_method_choices() {

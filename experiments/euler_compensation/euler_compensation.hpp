@@ -4,6 +4,7 @@
 // oscillator of Figs 8-9 with and without the compensating transformation (82), its checks and its
 // --plan constants.
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <tuple>
 #include <vector>
@@ -42,9 +43,10 @@ struct EnergyRun {
 };
 
 // One convergence run of each method to t = N h, counting force evaluations.
-// The wall time of n steps of a method of Figs 8-9 from z0 (runner/timing.hpp).
-RunTime oscillator_method_time(const std::string& method, double k, const State& z0, double h, std::int64_t n,
-                               int repeats);
+// A call that runs n steps of a method of Figs 8-9 from z0, every call inlined: a configuration to time
+// (runner/timing.hpp).
+std::function<void()> oscillator_method_timed(const std::string& method, double k, const State& z0, double h,
+                                              std::int64_t n);
 std::vector<EnergyRun> oscillator_runs(const std::vector<std::string>& methods, const State& z0, double h, double k,
                                        std::int64_t n);
 

@@ -42,24 +42,30 @@ void run_cost(Context& ctx) {
       std::int64_t evals = 0;
       const double err =
           phase_distance(MethodsOn<Counting<NonlinearPendulum>>::integrate(m, {pend, &evals}, pz0, h, n), pref);
-      const RunTime t = MethodsOn<NonlinearPendulum>::time(m, pend, std::span(&pz0, 1), h, n, repeats);
-      set.add({label_of(m), h, static_cast<double>(n), t, static_cast<double>(evals), err});
+      set.add({label_of(m), h, static_cast<double>(n), {}, static_cast<double>(evals), err},
+              MethodsOn<NonlinearPendulum>::timed(m, pend, {pz0}, h, n));
     }
+  set.time(repeats);
   ctx.write("cost_pendulum.csv", set.csv());
   json cost = {{"pendulum", set.summary(s.reals("timing.error_targets"))}, {"method", cost_method_text(repeats)}};
   // ns per step on the pendulum relative to the first of timing.methods
-  cost["relative_ns_per_step"] = WorkPrecisionSet::relative_ns_per_step(cost["pendulum"]);
+  cost["relative_ns_per_step"] = set.relative_ns_per_step();
   merge(ctx.summary, "cost", cost);  // (long_run_cost adds its sets beside, in either order, or alone)
 }
 
 StudyPlan plan_cost(const Scene& s) {
   const double t_end = s.real("nonlinear.t_end");
-  const double methods = static_cast<double>(s.texts("timing.methods").size());
-  const double repeats = static_cast<double>(s.integer("timing.repeats"));
+  const auto methods = s.texts("timing.methods");
   double steps = 0;
-  for (double h : s.reals("nonlinear.h")) steps += methods * (1 + repeats) * t_end / h;  // a counting run, the timed runs
-  return {steps, steps / (1 + repeats) * kPendulumEvals, methods * static_cast<double>(s.reals("nonlinear.h").size()) * 8 * kCellBytes,
-          kPendulumNs, "timed runs of < 10 ms are repeated to 10 ms (not counted); ns per step: Lobatto on the pendulum (paper-scene summary cost.pendulum)"};
+  std::vector<TimedCall> calls;
+  for (std::size_t m = 0; m < methods.size(); ++m)
+    for (double h : s.reals("nonlinear.h")) steps += t_end / h, calls.push_back(TimedCall{t_end / h, kPendulumNs});
+  StudyPlan p{steps, steps * kPendulumEvals, static_cast<double>(calls.size()) * 8 * kCellBytes, kPendulumNs,
+              "a counting run per method and h, then the timing protocol; ns per step: Lobatto on the pendulum "
+              "(paper-scene summary cost.pendulum)"};
+  const TimedPlan timed = timing_plan(calls, static_cast<double>(s.integer("timing.repeats")));
+  p.timed_seconds = timed.seconds, p.timed_steps = timed.steps;
+  return p;
 }
 
 void keys(Schema& s) {

@@ -74,27 +74,34 @@ struct Sets {
   WorkPrecisionSet energy{"largest energy error max_j |H(z_j) - H(z_0)| over the run, against H(z_0)"};
 };
 
-// Wall time of the same runs without observation, serial (runner/timing.hpp). Writes
+// Wall time of the same runs without observation, under the timing protocol (runner/timing.hpp). Writes
 // cost_long_run_phase.csv and cost_long_run_energy.csv.
 Sets time_and_write(Context& ctx, const Oscillator& o, const std::vector<std::string>& methods,
                     const std::vector<double>& hs, double periods, int repeats, const std::vector<Measured>& measured) {
   const auto& [osc, A, T, z0] = o;
   const std::size_t nh = hs.size();
   Sets sets;
+  // The time per step on the oscillator does not depend on where the step is taken: it is measured on a
+  // segment of long_run_cost.timing_steps steps (at most the run), all segments timed together, and the
+  // run's wall time is its n steps at that rate (every time of the segment scaled by n / n_timed).
+  InterleavedTiming timing(repeats);
+  std::vector<double> scale;
+  for (std::size_t task = 0; task < measured.size(); ++task) {
+    const double h = hs[task % nh];
+    const std::int64_t n = steps_of(periods, T, h);
+    const std::int64_t n_timed = std::min<std::int64_t>(n, ctx.scene.integer("long_run_cost.timing_steps"));
+    timing.add(MethodsOn<HarmonicOscillator>::timed(methods[task / nh], osc, {z0}, h, n_timed));
+    scale.push_back(static_cast<double>(n) / static_cast<double>(n_timed));
+  }
+  const std::vector<RunTime> times = timing.run();
   for (std::size_t task = 0; task < measured.size(); ++task) {
     const std::string& m = methods[task / nh];
     const double h = hs[task % nh];
-    const std::int64_t n = steps_of(periods, T, h);
-    // The time per step on the oscillator does not depend on where the step is taken: it is measured
-    // on a segment of long_run_cost.timing_steps steps (at most the run), and the run's wall time is
-    // its n steps at that rate (every time of the segment scaled by n / n_timed; the spread is its own).
-    const std::int64_t n_timed = std::min<std::int64_t>(n, ctx.scene.integer("long_run_cost.timing_steps"));
-    RunTime t = MethodsOn<HarmonicOscillator>::time(m, osc, std::span(&z0, 1), h, n_timed, repeats);
-    const double scale = static_cast<double>(n) / static_cast<double>(n_timed);
-    t.min_s *= scale, t.median_s *= scale, t.max_s *= scale;
+    const double n = static_cast<double>(steps_of(periods, T, h));
+    const RunTime t = times[task].scaled(scale[task]);
     const Measured& r = measured[task];
-    sets.phase.add({label_of(m), h, static_cast<double>(n), t, static_cast<double>(r.evals), r.phase});
-    sets.energy.add({label_of(m), h, static_cast<double>(n), t, static_cast<double>(r.evals), r.energy});
+    sets.phase.add({label_of(m), h, n, t, static_cast<double>(r.evals), r.phase});
+    sets.energy.add({label_of(m), h, n, t, static_cast<double>(r.evals), r.energy});
   }
   ctx.write("cost_long_run_phase.csv", sets.phase.csv());
   ctx.write("cost_long_run_energy.csv", sets.energy.csv());
@@ -141,16 +148,21 @@ void run_long_run_cost(Context& ctx) {
 StudyPlan plan_long_run_cost(const Scene& s) {
   const double periods = s.real("long_run.periods"), T = period_of(s);
   const double methods = static_cast<double>(s.texts("long_run_cost.methods").size());
-  const double repeats = static_cast<double>(s.integer("timing.repeats"));
   const double timed = static_cast<double>(s.integer("long_run_cost.timing_steps"));
-  double counted = 0, steps = 0;
+  double counted = 0;
+  std::vector<TimedCall> calls;
   for (double h : s.reals("long_run_cost.h")) {
     const double n = periods * T / h;
-    counted += methods * n, steps += methods * (n + repeats * std::min(n, timed));
+    counted += methods * n;
+    calls.insert(calls.end(), s.texts("long_run_cost.methods").size(), TimedCall{std::min(n, timed), kOscillatorNs});
   }
-  return {steps, counted * kOscillatorEvals,
-          methods * static_cast<double>(s.reals("long_run_cost.h").size()) * 9 * kCellBytes, kOscillatorNs,
-          "ns per step: Lobatto on the oscillator (paper-scene summary cost.long_run_phase)"};
+  StudyPlan p{counted, counted * kOscillatorEvals,
+              methods * static_cast<double>(s.reals("long_run_cost.h").size()) * 9 * kCellBytes, kOscillatorNs,
+              "the runs, then the timing protocol on their segments; ns per step: Lobatto on the oscillator "
+              "(paper-scene summary cost.long_run_phase)"};
+  const TimedPlan protocol = timing_plan(calls, static_cast<double>(s.integer("timing.repeats")));
+  p.timed_seconds = protocol.seconds, p.timed_steps = protocol.steps;
+  return p;
 }
 
 void keys(Schema& s) {

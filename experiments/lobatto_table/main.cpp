@@ -14,6 +14,7 @@
 // The compared methods are registry names (methods/registry.hpp); CSV columns and summary keys carry
 // their labels. Here: the studies, and the scene keys that several of them read.
 #include "lobatto_table.hpp"
+#include "geomint/runner/timing.hpp"
 
 using namespace geomint;
 using namespace geomint::lobatto_table;
@@ -31,7 +32,7 @@ Schema shared_keys() {
       .real("nonlinear.pendulum_q0", any_finite(), "initial angle of L = qdot^2/2 + cos q (p(0) = 0)")
       .real("reference.rtol", tolerance(), "tolerances of the odeint Bulirsch-Stoer reference")
       .real("reference.atol", tolerance(), "")
-      .integer("timing.repeats", at_least(1), "timed runs (>= 10 ms each) per measurement; the minimum is the estimate, the spread is reported");
+      .integer("timing.repeats", at_least(1), kTimingRepeatsHelp);
   return s;
 }
 

@@ -4,7 +4,7 @@
 // error max_j |H(z_j) - H_0| over the run. Methods: Phi^(4) of each scene discretization (phi4_<label>)
 // and Phi^(0) of cost.discretization (phi0_<label>) over order_study.h, and the classical RK4 on (3.8)
 // (rk4) over cost.rk4_h; every run from cloud.center with N = floor(T/h) steps, T = energies.t_end.
-// Costs: wall time (time_runs: the minimum of timing.repeats runs of >= 10 ms) and evaluations (Newton
+// Costs: wall time (the timing protocol of runner/timing.hpp, every run together) and evaluations (Newton
 // iterations of Psi_{h,E}, each the discrete momentum with its 2x2 Jacobian; 4 evaluations of (3.8)
 // per RK4 step). Besides, what is not a cost (reproduced, orders, ranges): per discretization the
 // Newton iterations per step at h, the errors at T for the steps that end there and the order of the
@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <map>
 #include <string>
 #include <vector>
@@ -30,12 +31,13 @@ namespace geomint::measure_cloud {
 namespace {
 
 // One timed run: its label in the sets, its step, its trajectory (z_0 .. z_n; Newton iterations for
-// Phi^(ell)), its evaluations and its time.
+// Phi^(ell)), its evaluations, the run again (to time) and its time.
 struct TimedRun {
   std::string method;
   double h;
   Trajectory tr;
   double evals;
+  std::function<void()> again;
   RunTime time;
 };
 
@@ -65,28 +67,26 @@ Trajectory run_rk4(const NonholonomicParticle& sys, double h, const Point4& z0, 
 
 std::string phi_label(int ell, Discretization d) { return "phi" + std::to_string(ell) + "_" + discretization_name(d); }
 
-// Phi^(ell) of d at the step h to T = energies.t_end, timed.
+// Phi^(ell) of d at the step h to T = energies.t_end (timed by timed_runs).
 TimedRun timed_phi(const Scene& s, const PhiStudy& p, Discretization d, int ell, double h) {
   const std::int64_t n = steps_within(s.real("energies.t_end"), h);  // n h <= T: the error is taken there
-  Trajectory tr;
-  const RunTime rt = time_runs(static_cast<int>(s.integer("timing.repeats")), [&] {
-    tr = run_phi(d, p.sys, h, ell, p.z0, n);
-    do_not_optimize(tr.z.back());
-  });
-  return {phi_label(ell, d), h, tr, static_cast<double>(tr.iterations), rt};
+  Trajectory tr = run_phi(d, p.sys, h, ell, p.z0, n);
+  const double evals = static_cast<double>(tr.iterations);
+  return {phi_label(ell, d), h, std::move(tr), evals, [&p, d, h, ell, n] {
+            do_not_optimize(run_phi(d, p.sys, h, ell, p.z0, n).z.back());
+          }, {}};
 }
 
-// The classical RK4 on (3.8) at the step h to T = energies.t_end, timed; its evaluations of (3.8) counted.
+// The classical RK4 on (3.8) at the step h to T = energies.t_end (timed by timed_runs); its evaluations of
+// (3.8) counted.
 TimedRun timed_rk4(const Scene& s, const PhiStudy& p, double h) {
   const std::int64_t n = steps_within(s.real("energies.t_end"), h);
-  Trajectory tr;
   std::int64_t evals = 0;
-  const RunTime rt = time_runs(static_cast<int>(s.integer("timing.repeats")), [&] {
-    evals = 0;
-    tr = run_rk4(p.sys, h, p.z0, n, &evals);
-    do_not_optimize(tr.z.back());
-  });
-  return {"rk4", h, tr, static_cast<double>(evals), rt};
+  Trajectory tr = run_rk4(p.sys, h, p.z0, n, &evals);
+  return {"rk4", h, std::move(tr), static_cast<double>(evals), [&p, h, n] {
+            std::int64_t uncounted = 0;
+            do_not_optimize(run_rk4(p.sys, h, p.z0, n, &uncounted).z.back());
+          }, {}};
 }
 
 // Every run, in the order of the sets' rows: Phi^(4) of each discretization, Phi^(0) of cmp, RK4.
@@ -99,6 +99,11 @@ std::vector<TimedRun> timed_runs(Context& ctx, const PhiStudy& p, Discretization
   ctx.progress("cost: Phi^(0) and RK4");
   for (double h : s.reals("order_study.h")) runs.push_back(timed_phi(s, p, cmp, 0, h));
   for (double h : s.reals("cost.rk4_h")) runs.push_back(timed_rk4(s, p, h));
+  ctx.progress("cost: timed runs");
+  InterleavedTiming timing(static_cast<int>(s.integer("timing.repeats")));  // every run together
+  for (const TimedRun& r : runs) timing.add(r.again);
+  const std::vector<RunTime> times = timing.run();
+  for (std::size_t k = 0; k < runs.size(); ++k) runs[k].time = times[k];
   return runs;
 }
 
@@ -220,12 +225,22 @@ void run_cost(Context& ctx) {
   report_cost(ctx, sets, ns_at_h);
 }
 StudyPlan plan_cost(const Scene& s) {
-  const double T = s.real("energies.t_end"), runs = static_cast<double>(s.integer("timing.repeats")) + 1;
+  const double T = s.real("energies.t_end");
   const double M = static_cast<double>(s.texts("methods").size());
   double steps = 0, kept = 0;
-  for (double h : s.reals("order_study.h")) steps += (M + 1) * runs * step_count_within(T, h), kept += 2 * (step_count_within(T, h) + 1);
-  for (double h : s.reals("cost.rk4_h")) steps += runs * step_count_within(T, h), kept += step_count_within(T, h) + 1;
-  return make_plan(steps, kept * kPointBytes, 119000, "steps: a lower bound (timed runs last at least 10 ms each)");
+  std::vector<TimedCall> calls;  // the timed runs: Phi^(4) of each method and Phi^(0) at each h, RK4 at each of its steps
+  for (double h : s.reals("order_study.h")) {
+    steps += (M + 1) * step_count_within(T, h), kept += 2 * (step_count_within(T, h) + 1);
+    calls.insert(calls.end(), static_cast<std::size_t>(M) + 1, TimedCall{step_count_within(T, h), 119000});
+  }
+  for (double h : s.reals("cost.rk4_h")) {
+    steps += step_count_within(T, h), kept += step_count_within(T, h) + 1;
+    calls.push_back(TimedCall{step_count_within(T, h), 119000});
+  }
+  StudyPlan p = make_plan(steps, kept * kPointBytes, 119000, "the runs, then the timing protocol");
+  const TimedPlan timed = timing_plan(calls, static_cast<double>(s.integer("timing.repeats")));
+  p.timed_seconds = timed.seconds, p.timed_steps = timed.steps;
+  return p;
 }
 
 void check_cost(const Scene& s) {
@@ -239,7 +254,7 @@ void check_cost(const Scene& s) {
 }
 
 void keys(Schema& s) {
-  s.integer("timing.repeats", at_least(1), "timed runs of >= 10 ms each (the minimum is the estimate)")
+  s.integer("timing.repeats", at_least(1), kTimingRepeatsHelp)
       .text("cost.discretization", method_choices(),
             "the discrete Lagrangian (5.1) of Phi^(4) and Phi^(0) in the comparison with RK4")
       .reals("cost.rk4_h", positive(), 3, "steps of the classical RK4 on (3.8), the baseline that preserves neither")

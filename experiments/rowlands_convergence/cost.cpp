@@ -53,16 +53,17 @@ void cost_with(Context& ctx, const Sys& sys) {
   for (std::size_t task = 0; task < counts.size(); ++task) {
     const double h = hs[task % nh];
     const std::int64_t n = steps_to(t_end, h);
-    const RunTime t = MethodsOn<Sys>::time(methods[task / nh], sys, std::span(&z0, 1), h, n, repeats);  // (the dispatch outside the clock)
-    phase.add({label_of(methods[task / nh]), h, static_cast<double>(n), t, static_cast<double>(counts[task].evals),
-               counts[task].phase});
+    phase.add({label_of(methods[task / nh]), h, static_cast<double>(n), {}, static_cast<double>(counts[task].evals),
+               counts[task].phase},
+              MethodsOn<Sys>::timed(methods[task / nh], sys, {z0}, h, n));  // (the dispatch outside the clock)
   }
+  phase.time(repeats);
   ctx.write("cost_phase.csv", phase.csv());
   json cost = {{"phase", phase.summary(s.reals("timing.error_targets"))},
                {"method", timing_method_text(repeats) + "; from initial[0] to t_end (pre- and postprocessing once, every "
                                                         "call inlined); ns_per_step at the smallest h"}};
   // ns per step relative to the first method of timing.methods
-  cost["relative_ns_per_step"] = WorkPrecisionSet::relative_ns_per_step(cost["phase"]);
+  cost["relative_ns_per_step"] = phase.relative_ns_per_step();
   ctx.summary["cost"] = cost;
   scene_summary(ctx);
 }
@@ -73,16 +74,21 @@ void run_cost(Context& ctx) {
 
 StudyPlan plan_cost(const Scene& s) {
   const double methods = static_cast<double>(s.texts("timing.methods").size());
-  const double repeats = static_cast<double>(s.integer("timing.repeats"));
   const double counted = methods * steps_to_each(s.real("t_end"), s.reals("h"));
-  return {counted * (1 + repeats), counted * kEvalsPerStep, methods * static_cast<double>(s.reals("h").size()) * 8 * kCellBytes,
-          kNsPerStep, "timed runs of < 10 ms are repeated to 10 ms (not counted); ns per step: the processed Rowlands method "
-          "(paper-scene summary timing)"};
+  std::vector<TimedCall> calls;  // the timed configurations: a run per method and h
+  for (std::size_t m = 0; m < s.texts("timing.methods").size(); ++m)
+    for (double h : s.reals("h")) calls.push_back(TimedCall{s.real("t_end") / h, kNsPerStep});
+  StudyPlan p{counted, counted * kEvalsPerStep, methods * static_cast<double>(s.reals("h").size()) * 8 * kCellBytes,
+              kNsPerStep, "a counting run per method and h, then the timing protocol; ns per step: the processed "
+              "Rowlands method (paper-scene summary timing)"};
+  const TimedPlan timed = timing_plan(calls, static_cast<double>(s.integer("timing.repeats")));
+  p.timed_seconds = timed.seconds, p.timed_steps = timed.steps;
+  return p;
 }
 
 void keys(Schema& s) {
   s.texts("timing.methods", pendulum_method_choices(), 1, "methods of the cost study (registry names or labels)")
-      .integer("timing.repeats", at_least(1), "timed runs (>= 10 ms each) per measurement; the minimum is the estimate, the spread is reported")
+      .integer("timing.repeats", at_least(1), kTimingRepeatsHelp)
       .reals("timing.error_targets", positive(), 1,
              "phase errors for which the wall time and the force evaluations to reach them are reported");
 }

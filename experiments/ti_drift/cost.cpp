@@ -25,24 +25,23 @@
 namespace geomint::ti_drift {
 namespace {
 
-// The runs of one method into `set`: evals by a counting run, the wall time by timed runs, error(z_end) of
-// the processed end state by a run of its own (as before the one shape: the same numbers).
+// The runs of one method into `set`: evals by a counting run, error(z_end) of the processed end state by a
+// run of its own, and a run to time (WorkPrecisionSet::time, with every other method's).
 template <class Sys, class Err>
 void add_runs(WorkPrecisionSet& set, const Scene& s, const std::string& method, const Sys& sys,
               const typename Sys::State& z0, const Err& error) {
   const double T = s.real("work_precision.t_end");
-  const int repeats = static_cast<int>(s.integer("timing.repeats"));
   for (double h : s.reals("work_precision.h")) {
     const std::int64_t n = steps_to(T, h);
     std::int64_t evals = 0;
     const Counting<Sys> counted{sys, &evals};
     MethodsOn<Counting<Sys>>::integrate(method, counted, z0, h, n);
-    const RunTime rt = MethodsOn<Sys>::time(method, sys, std::span(&z0, 1), h, n, repeats);
     const double err = error(MethodsOn<Sys>::integrate(method, sys, z0, h, n));
     if (!std::isfinite(err))
       throw NumericalFailure(method + " at h = " + format_double(h) + ": the error at t = " +
                              format_double(T) + " is not finite");
-    set.add({label_of(method), h, static_cast<double>(n), rt, static_cast<double>(evals), err});
+    set.add({label_of(method), h, static_cast<double>(n), {}, static_cast<double>(evals), err},
+            MethodsOn<Sys>::timed(method, sys, {z0}, h, n));
   }
 }
 
@@ -85,12 +84,15 @@ void run_cost(Context& ctx) {
     add_runs(oscillator, s, m, kOscillator, osc0, [&](const Z1& z) {
       return std::hypot(z.p[0] - osc_end.p[0], kOscillator.w * (z.q[0] - osc_end.q[0]));
     });
+  ctx.progress("cost: timed runs");
+  const int repeats = static_cast<int>(s.integer("timing.repeats"));
+  henon_heiles.time(repeats), oscillator.time(repeats);
   ctx.write("cost_henon_heiles.csv", henon_heiles.csv());
   ctx.write("cost_oscillator.csv", oscillator.csv());
 
   json cost = {{"henon_heiles", henon_heiles.summary(targets)},
                {"oscillator", oscillator.summary(targets)},
-               {"method", timing_method_text(static_cast<int>(s.integer("timing.repeats"))) +
+               {"method", timing_method_text(repeats) +
                               "; one run from the start to work_precision.t_end, processing included, every call inlined"},
                {"reference", {{"oscillator", "exact solution"},
                               {"henon_heiles_tol", tol / 100},
@@ -113,16 +115,21 @@ void check_cost(const Scene& s) {
 }
 
 StudyPlan plan_cost(const Scene& s) {
-  // per method, problem and step: a counting run, an error run and timing.repeats timed runs (each repeated up to
-  // 10 ms: the steps here are a lower bound); the odeint reference not counted
-  const double T = s.real("work_precision.t_end"), runs = 2 + static_cast<double>(s.integer("timing.repeats"));
+  // per method, problem and step: a counting run and an error run, then the timing protocol over the runs;
+  // the odeint reference not counted
+  const double T = s.real("work_precision.t_end");
   StudyPlan p;
+  std::vector<TimedCall> calls;
   for (const auto& m : s.texts("work_precision.methods"))
-    for (double h : s.reals("work_precision.h"))
-      p.steps += 2 * runs * T / h, p.force_evals += 2 * runs * T / h * static_cast<double>(evals_per_step(m));
+    for (double h : s.reals("work_precision.h")) {
+      p.steps += 2 * 2 * T / h, p.force_evals += 2 * 2 * T / h * static_cast<double>(evals_per_step(m));
+      calls.insert(calls.end(), 2, TimedCall{T / h, kNsPerStepHH});  // (Henon-Heiles and the oscillator)
+    }
   p.memory_bytes = 1e5;
   p.ns_per_step = kNsPerStepHH;
-  p.note = "a lower bound (timed runs last at least 10 ms); " + std::string(kNsNote);
+  const TimedPlan timed = timing_plan(calls, static_cast<double>(s.integer("timing.repeats")));
+  p.timed_seconds = timed.seconds, p.timed_steps = timed.steps;
+  p.note = "counting and error runs, then the timing protocol; " + std::string(kNsNote);
   return p;
 }
 

@@ -1,6 +1,7 @@
 // Cost (study `kernel_timing`, formerly `timing`; its summary keys stay summary.timing.*): ns per step of
 // each named method's kernel (no processing, as Figs 2-6 use them) on Henon-Heiles k, from the ensemble's
 // first start (runner/timing.hpp); and the ensembles' lane kernels of Figs 4 and 6 against the scalar method.
+#include <algorithm>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -10,6 +11,7 @@
 #include "geomint/methods/registry.hpp"
 #include "geomint/methods/scene_methods.hpp"
 #include "geomint/runner/timing.hpp"
+#include "geomint/runner/timing_report.hpp"
 #include "geomint/sweep/ensemble_kernels.hpp"
 #include "geomint/sweep/lanes_timing.hpp"
 #include "henon_heiles_starts.hpp"
@@ -24,15 +26,19 @@ template <class Sys>
 json lanes_timing(const Sys& sys, const std::vector<typename Sys::State>& starts, double h, std::int64_t n, int repeats) {
   const double steps = static_cast<double>(starts.size()) * static_cast<double>(n);
   const LanesTiming t = time_lanes(sys, starts, h, n, repeats);
-  const RunTime& scalar = t.scalar;
-  json out = {{"trajectories", starts.size()}, {"steps", n}, {"scalar_ns_per_step", 1e9 * scalar.seconds() / steps},
-              {"scalar_spread", scalar.spread()}};
+  const RunTime scalar = t.scalar.scaled(1e9 / steps);  // ns per trajectory-step
+  json out = {{"trajectories", starts.size()}, {"steps", n}, {"scalar_ns_per_step", scalar.seconds()},
+              {"scalar", to_json(scalar)}, {"scalar_spread", scalar.spread()}};
   for (const auto& [name, k] : t.kernels) {
-    out["kernels"][name] = {{"ns_per_step", 1e9 * k.seconds() / steps}, {"spread", k.spread()},
-                            {"speedup_vs_scalar", scalar.seconds() / k.seconds()}};
-    if (!out.contains("isa"))  // the one the ensembles use (the best)
-      out["isa"] = name, out["ns_per_step"] = 1e9 * k.seconds() / steps, out["spread"] = k.spread(),
-      out["speedup_vs_scalar"] = scalar.seconds() / k.seconds();
+    const RunTime lanes = k.scaled(1e9 / steps);
+    const TimeRatio speedup = time_ratio(scalar, lanes);  // (the same arithmetic per trajectory-step: the same work)
+    out["kernels"][name] = {{"ns_per_step", lanes.seconds()},  {"spread", lanes.spread()}, {"time", to_json(lanes)},
+                            {"speedup_vs_scalar", speedup.median}, {"speedup_interval", {{"min", speedup.lo}, {"max", speedup.hi}}},
+                            {"against_scalar", timing_verdict(time_ratio(lanes, scalar), 1, 1)}};
+    if (!out.contains("isa"))  // the one the ensembles use (the widest lanes)
+      out["isa"] = name, out["ns_per_step"] = lanes.seconds(), out["spread"] = lanes.spread(),
+      out["speedup_vs_scalar"] = speedup.median, out["speedup_interval"] = out["kernels"][name]["speedup_interval"],
+      out["against_scalar"] = out["kernels"][name]["against_scalar"];
   }
   return out;
 }
@@ -45,20 +51,28 @@ void timing_with(Context& ctx, const HH& hhk) {
   const double h = s.real("h");
   const std::int64_t n = s.integer("timing.steps");
   const int repeats = static_cast<int>(s.integer("timing.repeats"));
+  const auto methods = s.texts("timing.methods");
+  InterleavedTiming timing(repeats);
+  for (const auto& m : methods) timing.add(MethodsOn<HH>::timed(m, hhk, {z}, h, n, Bind::kernel));
+  const std::vector<RunTime> times = timing.run();
   json ns_per_step, runs, spread;
-  for (const auto& m : s.texts("timing.methods")) {
-    const RunTime t = MethodsOn<HH>::time(m, hhk, std::span(&z, 1), h, n, repeats, Bind::kernel);
-    ns_per_step[label_of(m)] = 1e9 * t.seconds() / static_cast<double>(n);
-    spread[label_of(m)] = t.spread();
-    runs[label_of(m)] = to_json(t);
+  std::vector<std::string> labels;
+  std::vector<RunTime> per_step;
+  std::vector<double> work;
+  for (std::size_t k = 0; k < methods.size(); ++k) {
+    const std::string label = label_of(methods[k]);
+    labels.push_back(label), per_step.push_back(times[k].scaled(1e9 / static_cast<double>(n)));
+    work.push_back(static_cast<double>(evals_per_step(methods[k])));
+    ns_per_step[label] = per_step.back().seconds();
+    spread[label] = per_step.back().spread();
+    runs[label] = to_json(times[k]);
   }
   merge(ctx.summary, "timing",
       {{"ns_per_step", ns_per_step},
-       {"spread", spread},  // (max - min) / min over the timed runs
+       {"spread", spread},  // interquartile range / median over the rounds
        {"runs", runs},
-       {"method", "minimum of " + std::to_string(repeats) + " timed runs (after a warm-up; each run repeats the " +
-                      std::to_string(n) + " steps until it lasts at least 10 ms), single thread, every call inlined; "
-                      "spread = (max - min) / min; fig4_wall_s, fig6_wall_s: the ensembles on --threads threads, one run"}});
+       {"method", timing_method_text(repeats) + "; a run is " + std::to_string(n) + " steps of a method's kernel, "
+                  "every call inlined; fig4_wall_s, fig6_wall_s: the ensembles on --threads threads, one run"}});
   // The ensembles of Figs 4 and 6 in SIMD lanes against the scalar method: their first kEnsembleLanes starts.
   std::vector<Z2> hh_starts;
   std::vector<Z18> lj_starts;
@@ -70,10 +84,11 @@ void timing_with(Context& ctx, const HH& hhk) {
                              "Figs 4 and 6), simplified Takahashi-Imada unprocessed: scalar, one trajectory after another "
                              "(integrate, every call inlined), against each lane kernel this CPU runs (all lanes at once, the "
                              "same bits); single thread, the timing method above"}}}});
-  if (ns_per_step.contains("sv")) {  // per step, relative to Stormer-Verlet
-    json relative;
-    for (const auto& [label, ns] : ns_per_step.items()) relative[label] = double(ns) / double(ns_per_step["sv"]);
-    merge(ctx.summary, "timing", {{"relative_to_sv", relative}});
+  const auto sv = std::find(labels.begin(), labels.end(), "sv");
+  if (sv != labels.end()) {  // per step, relative to Stormer-Verlet (the force evaluations per step as the work)
+    const std::size_t i = static_cast<std::size_t>(sv - labels.begin());
+    std::swap(labels[0], labels[i]), std::swap(per_step[0], per_step[i]), std::swap(work[0], work[i]);
+    merge(ctx.summary, "timing", {{"relative_to_sv", relative_timings(labels, per_step, work)}});
   }
 }
 
@@ -82,13 +97,21 @@ void run_timing(Context& ctx) {
 }
 
 StudyPlan plan_timing(const Scene& s) {
-  const double n = static_cast<double>(s.integer("timing.steps")), r = static_cast<double>(s.integer("timing.repeats"));
+  // the timing protocol over the methods' kernels, then over the scalar method and the lane kernels this CPU
+  // runs for Figs 4 and 6 (the Lennard-Jones scalar run planned at the lanes' rate: a lower bound)
+  const double n = static_cast<double>(s.integer("timing.steps")), lanes = static_cast<double>(kEnsembleLanes);
+  const double lj_n = static_cast<double>(s.integer("timing.lj_steps"));
+  const std::size_t kernels = simplified_ti_lanes_kernels<LJ>().size();
+  std::vector<TimedCall> calls(s.texts("timing.methods").size(), TimedCall{n, kNsPerStepHH});
+  calls.push_back(TimedCall{lanes * n, kNsPerStepHH});
+  calls.insert(calls.end(), kernels, TimedCall{lanes * n, kNsPerStepLanesHH});
+  calls.insert(calls.end(), 1 + kernels, TimedCall{lanes * lj_n, kNsPerStepLanesLJ});
   StudyPlan p;
-  for (const auto& m : s.texts("timing.methods"))
-    p.steps += (r + 1) * n, p.force_evals += (r + 1) * n * static_cast<double>(evals_per_step(m));
   p.memory_bytes = 1e4;
   p.ns_per_step = kNsPerStepHH;
-  p.note = "a lower bound (each timed run lasts at least 10 ms); " + std::string(kNsNote);
+  const TimedPlan timed = timing_plan(calls, static_cast<double>(s.integer("timing.repeats")));
+  p.timed_seconds = timed.seconds, p.timed_steps = timed.steps;
+  p.note = "the timing protocol; " + std::string(kNsNote);
   return p;
 }
 

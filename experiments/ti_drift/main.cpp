@@ -17,6 +17,7 @@
 #include <utility>
 
 #include "ti_drift.hpp"
+#include "geomint/runner/timing.hpp"
 
 using namespace geomint;
 using namespace geomint::ti_drift;
@@ -43,8 +44,7 @@ Schema shared_keys() {
       .real("checkpoint.interval", non_negative(), "seconds between checkpoint saves (0: after every round); a SIGKILL loses at most this much work")
       .integer("lj.seed", non_negative(), "seed; trajectory i uses its own stream (seed, i)")
       .real("lj.perturbation", non_negative(), "each coordinate of the 3 x 3 grid perturbed uniformly by at most this (004: 0.01)")
-      .integer("timing.repeats", at_least(1),
-               "timed runs per method and step, each of at least 10 ms (the minimum is the estimate, the spread reported)");
+      .integer("timing.repeats", at_least(1), kTimingRepeatsHelp);
   return s;
 }
 

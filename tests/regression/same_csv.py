@@ -1,11 +1,11 @@
 #!/usr/bin/env python3
 """same_csv.py A B: exit 0 if the CSV files A and B have the same header and rows, the wall-time
-columns of a work-precision set (wall_s, wall_median_s, wall_spread: cost_*.csv,
+columns of a work-precision set (wall_s, wall_q1_s, wall_q3_s, wall_spread: cost_*.csv,
 analysis/work_precision_set.hpp) aside; every other cell must be the same text."""
 import csv
 import sys
 
-WALL = {"wall_s", "wall_median_s", "wall_spread"}
+WALL = {"wall_s", "wall_q1_s", "wall_q3_s", "wall_spread"}
 
 
 def cells(path):

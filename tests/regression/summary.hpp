@@ -75,8 +75,8 @@ inline CsvFile read_csv(const std::filesystem::path& file) {
   return csv;
 }
 
-// The largest value of the wall_spread column of a timing CSV, (max - min) / min of each timed
-// measurement (runner/timing.hpp); each one must be finite and >= 0.
+// The largest value of the wall_spread column of a timing CSV, interquartile range / median of each
+// timed measurement (runner/timing.hpp); each one must be finite and >= 0.
 inline double largest_spread(const CsvFile& t) {
   const std::size_t c = t.column("wall_spread");
   double largest = 0;
@@ -89,9 +89,9 @@ inline double largest_spread(const CsvFile& t) {
 }
 
 // A work-precision set's CSV (cost_<set>.csv, analysis/work_precision_set.hpp) without its wall-time
-// columns (wall_s, wall_median_s, wall_spread), which differ from run to run: the cells to compare.
+// columns (wall_s, wall_q1_s, wall_q3_s, wall_spread), which differ from run to run: the cells to compare.
 inline CsvFile without_wall_times(const CsvFile& t) {
-  const auto wall = [](const std::string& c) { return c == "wall_s" || c == "wall_median_s" || c == "wall_spread"; };
+  const auto wall = [](const std::string& c) { return c.starts_with("wall_"); };
   CsvFile out;
   std::vector<std::size_t> keep;
   for (std::size_t i = 0; i < t.names.size(); ++i)

@@ -140,8 +140,9 @@ WorkPrecisionSet two_methods() {
   for (const char* m : {"a", "b"})
     for (double w : {1e-4, 1e-3, 1e-2, 1e-1}) {
       const bool is_a = m == std::string("a");
-      RunTime t;
-      t.min_s = is_a ? w : w / 2, t.median_s = 1.5 * t.min_s, t.max_s = 2 * t.min_s, t.repeats = 3, t.inner = 1;
+      RunTime t;  // the estimate (the median) w or w / 2, its interquartile range once the median
+      t.median_s = is_a ? w : w / 2, t.q1_s = 0.75 * t.median_s, t.q3_s = 1.75 * t.median_s;
+      t.min_s = 0.5 * t.median_s, t.max_s = 2 * t.median_s, t.repeats = 7, t.inner = 1;
       set.add({m, 1 / w, 1e3 * w, t, (is_a ? 2 : 4) * 1e3 * w, is_a ? 1e-4 / w : 1e-6 / (w * w)});
     }
   return set;
@@ -165,15 +166,40 @@ TEST(WorkPrecisionSet, SummaryInTheOneShape) {
   EXPECT_EQ(a["min_err"].get<double>(), 1e-4 / 1e-1);
   EXPECT_NEAR(a["ns_per_step"].get<double>() / (1e9 * 1e-1 / 100), 1, 1e-13);  // at the smallest h (largest w)
   EXPECT_EQ(b["evals_per_step"].get<double>(), 4.0);
-  EXPECT_EQ(b["ns_per_step_spread"].get<double>(), 1.0);
-  EXPECT_EQ(s["spread"]["max"].get<double>(), 1.0);
+  EXPECT_DOUBLE_EQ(b["ns_per_step_spread"].get<double>(), 1.0);
+  EXPECT_DOUBLE_EQ(s["spread"]["max"].get<double>(), 1.0);
   EXPECT_EQ(s["spread"]["measurements"], 8);
 }
 
 TEST(WorkPrecisionSet, CsvHasOneRowPerRecord) {
   const Csv csv = two_methods().csv();
   EXPECT_EQ(csv.rows(), 8u);
-  EXPECT_EQ(csv.str().substr(0, csv.str().find('\n')), "method,h,steps,wall_s,wall_median_s,wall_spread,force_evals,err");
+  EXPECT_EQ(csv.str().substr(0, csv.str().find('\n')),
+            "method,h,steps,wall_s,wall_q1_s,wall_q3_s,wall_spread,force_evals,err");
+}
+
+// Each method's time per step at its smallest h against the first's, with the force evaluations per
+// step as the work: b at half a's time per step but spreads of 100 %: indistinguishable.
+TEST(WorkPrecisionSet, RelativeTimePerStepKnowsTheNoise) {
+  const auto r = two_methods().relative_ns_per_step();
+  EXPECT_EQ(r["reference"], "a");
+  EXPECT_DOUBLE_EQ(r["by_method"]["b"]["ratio"].get<double>(), 0.5);
+  EXPECT_DOUBLE_EQ(r["by_method"]["b"]["interval"]["min"].get<double>(), 0.75 * 0.5 / 1.75);
+  EXPECT_EQ(r["by_method"]["b"]["verdict"], "indistinguishable");
+}
+
+// Records added with a run are timed together by time(); a record timed by its caller keeps its time.
+TEST(WorkPrecisionSet, TimesTheRecordsAddedWithARun) {
+  WorkPrecisionSet set("e");
+  int calls = 0;
+  RunTime given;
+  given.median_s = 42;
+  set.add({"a", 0.1, 10, given, 10, 1e-3});
+  set.add({"b", 0.1, 10, {}, 10, 1e-3}, [&] { ++calls; });
+  set.time(7);
+  EXPECT_EQ(set.records()[0].wall.median_s, 42);
+  EXPECT_EQ(set.records()[1].wall.repeats, 7);
+  EXPECT_GE(calls, 1 + 1 + 7);  // a warm-up, a calibration run, the rounds
 }
 
 TEST(OrderTable, FitsEachSeriesPerInitialConditionInOneShape) {

@@ -1,13 +1,11 @@
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <cmath>
 #include <stdexcept>
 #include <vector>
 
 #include "geomint/observables/error_norms.hpp"
 #include "geomint/observables/order_fit.hpp"
-#include "geomint/runner/timing.hpp"
 
 using namespace geomint;
 
@@ -55,30 +53,6 @@ TEST(ErrorSeries, MaxAndRmsOfEquation50) {
   s.add(NAN);
   s.add(1.0);
   EXPECT_TRUE(std::isnan(s.max_abs()));  // a failed run never reports a small error
-}
-
-// The timing method (runner/timing.hpp): the warm-up call calibrates the calls per timed run so
-// that each timed run lasts at least min_run_s; the statistics are ordered. (Counts, not times,
-// are asserted.)
-TEST(TimeRuns, CalibratesCallsPerRunAndOrdersTheStatistics) {
-  long calls = 0;
-  const auto busy = [&] {
-    ++calls;
-    const auto start = std::chrono::steady_clock::now();
-    while (std::chrono::steady_clock::now() - start < std::chrono::microseconds(200)) {}
-  };
-  const RunTime t = time_runs(5, busy, 0.01);
-  EXPECT_EQ(t.repeats, 5);
-  EXPECT_GE(t.inner, 2);     // a 0.2 ms call is repeated to fill 10 ms
-  EXPECT_LE(t.inner, 50);    // ceil(10 ms / >= 0.2 ms)
-  EXPECT_EQ(calls, 1 + 5 * t.inner);
-  EXPECT_GE(t.min_s, 200e-6);
-  EXPECT_LE(t.min_s, t.median_s);
-  EXPECT_LE(t.median_s, t.max_s);
-  EXPECT_DOUBLE_EQ(t.seconds(), t.min_s);
-  EXPECT_DOUBLE_EQ(t.spread(), (t.max_s - t.min_s) / t.min_s);
-  const RunTime once = time_runs(1, busy, 0);  // a run already long enough: one call per run
-  EXPECT_EQ(once.inner, 1);
 }
 
 }  // namespace order_fit_test

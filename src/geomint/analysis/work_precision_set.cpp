@@ -1,6 +1,7 @@
 #include "geomint/analysis/work_precision_set.hpp"
 
 #include <algorithm>
+#include <stdexcept>
 #include <utility>
 
 #include "geomint/runner/summary.hpp"
@@ -22,10 +23,19 @@ std::vector<CostRun> WorkPrecisionSet::runs(const std::string& method) const {
   return by_decreasing_h(out);
 }
 
+void WorkPrecisionSet::time(int repeats) {
+  InterleavedTiming timing(repeats);
+  std::vector<std::size_t> which;
+  for (std::size_t k = 0; k < records_.size(); ++k)
+    if (timed_[k]) timing.add(timed_[k]), which.push_back(k);
+  const std::vector<RunTime> times = timing.run();
+  for (std::size_t i = 0; i < which.size(); ++i) records_[which[i]].wall = times[i];
+}
+
 Csv WorkPrecisionSet::csv() const {
-  Csv out({"method", "h", "steps", "wall_s", "wall_median_s", "wall_spread", "force_evals", "err"});
+  Csv out({"method", "h", "steps", "wall_s", "wall_q1_s", "wall_q3_s", "wall_spread", "force_evals", "err"});
   for (const auto& r : records_)
-    out.row(r.method, r.h, r.steps, r.wall.seconds(), r.wall.median_s, r.wall.spread(), r.evals, r.err);
+    out.row(r.method, r.h, r.steps, r.wall.seconds(), r.wall.q1_s, r.wall.q3_s, r.wall.spread(), r.evals, r.err);
   return out;
 }
 
@@ -43,8 +53,9 @@ nlohmann::ordered_json WorkPrecisionSet::summary(const std::vector<double>& targ
       const CostRun& finest = c.back();
       m["min_err"] = std::min_element(c.begin(), c.end(), [](const auto& a, const auto& b) { return a.err < b.err; })->err;
       m["ns_per_step"] = 1e9 * finest.wall_s / finest.steps;
-      for (const auto& r : records_)
-        if (r.method == labels[k] && r.h == finest.h) m["ns_per_step_spread"] = r.wall.spread();
+      const RunTime per_step = finest_run(labels[k]).wall.scaled(1e9 / finest.steps);
+      m["ns_per_step_q1"] = per_step.q1_s, m["ns_per_step_q3"] = per_step.q3_s;
+      m["ns_per_step_spread"] = per_step.spread();
       m["evals_per_step"] = finest.evals / finest.steps;
     }
     m["err_at_equal_wall"] = wall ? or_null(error_at_cost(c, *wall, &CostRun::wall_s)) : json(nullptr);
@@ -63,15 +74,23 @@ nlohmann::ordered_json WorkPrecisionSet::summary(const std::vector<double>& targ
           {"spread", spreads.to_json()}};
 }
 
-nlohmann::ordered_json WorkPrecisionSet::relative_ns_per_step(const nlohmann::ordered_json& summary) {
-  const auto& by = summary.at("by_method");
-  const double first = by.at(summary.at("methods").at(0).get<std::string>()).at("ns_per_step").get<double>();
-  nlohmann::ordered_json out = nlohmann::ordered_json::object();
-  for (const auto& m : summary.at("methods")) {
-    const std::string label = m.get<std::string>();
-    out[label] = by.at(label).at("ns_per_step").get<double>() / first;
+const WorkPrecisionRecord& WorkPrecisionSet::finest_run(const std::string& method) const {
+  const WorkPrecisionRecord* finest = nullptr;
+  for (const auto& r : records_)
+    if (r.method == method && (!finest || r.h < finest->h)) finest = &r;
+  if (!finest) throw std::logic_error("WorkPrecisionSet: no run of " + method);
+  return *finest;
+}
+
+nlohmann::ordered_json WorkPrecisionSet::relative_ns_per_step() const {
+  std::vector<RunTime> per_step;
+  std::vector<double> work;
+  const auto labels = methods();
+  for (const auto& m : labels) {
+    const WorkPrecisionRecord& r = finest_run(m);
+    per_step.push_back(r.wall.scaled(1 / r.steps)), work.push_back(r.evals / r.steps);
   }
-  return out;
+  return relative_timings(labels, per_step, work);
 }
 
 }  // namespace geomint

@@ -5,6 +5,7 @@
 // One CSV (csv()), one summary (summary()) and one rule for "at equal cost" (equal_cost()), drawn by
 // figures/cost.gpi. Costs and errors are interpolated in log-log between measured runs, never
 // extrapolated (analysis/work_precision.hpp).
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -19,7 +20,7 @@ namespace geomint {
 struct WorkPrecisionRecord {
   std::string method;  // registry label
   double h = 0, steps = 0;
-  RunTime wall;        // of one run; its estimate (RunTime::seconds) is the run's wall time
+  RunTime wall;        // of one run; its estimate (RunTime::seconds, the median) is the run's wall time
   double evals = 0;    // force evaluations of one run
   double err = 0;      // the error of the run
 };
@@ -29,24 +30,32 @@ class WorkPrecisionSet {
   // `error`: what the error of a run is, in words (summary "error").
   explicit WorkPrecisionSet(std::string error) : error_(std::move(error)) {}
 
-  void add(WorkPrecisionRecord r) { records_.push_back(std::move(r)); }
+  void add(WorkPrecisionRecord r) { records_.push_back(std::move(r)), timed_.emplace_back(); }
+  // A record whose wall time is measured by time(): `run` is one run of it (MethodsOn<Sys>::timed).
+  void add(WorkPrecisionRecord r, std::function<void()> run) { records_.push_back(std::move(r)), timed_.push_back(std::move(run)); }
+  // Times the records added with a run, all in one interleaved measurement (runner/timing.hpp).
+  void time(int repeats);
   const std::vector<WorkPrecisionRecord>& records() const { return records_; }
   std::vector<std::string> methods() const;                    // in the order first added
   std::vector<CostRun> runs(const std::string& method) const;  // its measurable runs, by decreasing h
 
-  // One row per record: method,h,steps,wall_s,wall_median_s,wall_spread,force_evals,err.
+  // One row per record: method,h,steps,wall_s,wall_q1_s,wall_q3_s,wall_spread,force_evals,err (wall_s the median).
   Csv csv() const;
   // {error, methods, targets, equal_wall_s, equal_evals (equal_cost), by_method: {label: {runs, min_err,
-  // ns_per_step, ns_per_step_spread, evals_per_step (of its run at the smallest h), err_at_equal_wall,
+  // ns_per_step, ns_per_step_q1, ns_per_step_q3, ns_per_step_spread, evals_per_step (of its run at the
+  // smallest h), err_at_equal_wall,
   // err_at_equal_evals, wall_s_to, evals_to (per target; null where the measured steps do not reach it)}},
   // spread (of every timed run: runner/timing_report.hpp)}.
   nlohmann::ordered_json summary(const std::vector<double>& targets) const;
-  // {label: its ns_per_step / that of the first method added}, from a summary() of this shape.
-  static nlohmann::ordered_json relative_ns_per_step(const nlohmann::ordered_json& summary);
+  // Each method's time per step at its smallest h against the first method's (relative_timings,
+  // runner/timing_report.hpp), the force evaluations per step as the work.
+  nlohmann::ordered_json relative_ns_per_step() const;
 
  private:
   std::string error_;
   std::vector<WorkPrecisionRecord> records_;
+  std::vector<std::function<void()>> timed_;  // (empty for a record timed by its caller)
+  const WorkPrecisionRecord& finest_run(const std::string& method) const;  // its run at the smallest h
 };
 
 }  // namespace geomint

@@ -1,5 +1,6 @@
 #include "geomint/io/run_info.hpp"
 
+#include <cstdlib>
 #include <ctime>
 #include <fstream>
 #include <string>
@@ -38,6 +39,12 @@ nlohmann::ordered_json machine_info() {
       break;
     }
   return {{"cpu", model}, {"logical_cores", std::thread::hardware_concurrency()}};
+}
+
+nlohmann::ordered_json load_average() {
+  double load[3];
+  if (::getloadavg(load, 3) != 3) return nullptr;
+  return {load[0], load[1], load[2]};
 }
 
 }  // namespace geomint

@@ -15,5 +15,7 @@ nlohmann::ordered_json build_info();
 
 // The machine half: the CPU model (/proc/cpuinfo "model name"; "unknown" elsewhere) and its logical cores.
 nlohmann::ordered_json machine_info();
+// The machine's load averages over 1, 5 and 15 minutes (getloadavg), or null where unknown.
+nlohmann::ordered_json load_average();
 
 }  // namespace geomint

@@ -34,9 +34,10 @@ struct MethodsOn {
   // The same, calling observe(j, z_j) for j = 0..n (core/integrate.hpp).
   static Z integrate(std::string_view method, const Sys& sys, const Z& z0, double h, std::int64_t n,
                      const Observer& observe, Bind bind = Bind::method);
-  // The wall time of n steps from each of `starts`, each step inlined (runner/timing.hpp).
-  static RunTime time(std::string_view method, const Sys& sys, std::span<const Z> starts, double h, std::int64_t n,
-                      int repeats, Bind bind = Bind::method);
+  // A call that runs n steps from each of `starts`, each step inlined: a configuration to time
+  // (runner/timing.hpp, InterleavedTiming). `sys` must outlive it.
+  static std::function<void()> timed(std::string_view method, const Sys& sys, std::vector<Z> starts, double h,
+                                     std::int64_t n, Bind bind = Bind::method);
 };
 
 // One step of a method by name as a one-step map (core/integrate.hpp), for the analyses that take a

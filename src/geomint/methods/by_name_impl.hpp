@@ -49,12 +49,12 @@ auto MethodsOn<Sys>::integrate(std::string_view method, const Sys& sys, const Z&
 }
 
 template <class Sys>
-RunTime MethodsOn<Sys>::time(std::string_view method, const Sys& sys, std::span<const Z> starts, double h,
-                             std::int64_t n, int repeats, Bind bind) {
-  return detail::with_bound(bind, method, sys, [&](const auto& m) {
-    return time_runs(repeats, [&] {
+std::function<void()> MethodsOn<Sys>::timed(std::string_view method, const Sys& sys, std::vector<Z> starts, double h,
+                                            std::int64_t n, Bind bind) {
+  return detail::with_bound(bind, method, sys, [&](const auto& m) -> std::function<void()> {
+    return [m, starts = std::move(starts), h, n] {
       for (const Z& z : starts) do_not_optimize(integrate_inlined(m, z, h, n));
-    });
+    };
   });
 }
 

@@ -463,7 +463,7 @@ void check_plan(const Study& st, const StudyPlan& p, const std::vector<std::stri
 // n tasks gives each rank ceil(n / ranks) of them (distributed_map's cyclic split), run ceil(share /
 // threads) deep on its threads: wall = (steps / n) ns_per_step ceil(share / threads). A study without
 // tasks runs on every rank alike: steps ns_per_step / threads. Every rank holds every result: the
-// memory is per rank.
+// memory is per rank. Timed runs add their own time (StudyPlan::timed_seconds).
 nlohmann::ordered_json plan_json(const std::vector<const Study*>& studies, const std::vector<StudyPlan>& plans, int ranks,
                                  int threads) {
   nlohmann::ordered_json j = {{"ranks", ranks}, {"threads", threads}, {"studies", nlohmann::ordered_json::array()}};
@@ -473,11 +473,12 @@ nlohmann::ordered_json plan_json(const std::vector<const Study*>& studies, const
     const StudyPlan& p = plans[i];
     const bool has = static_cast<bool>(studies[i]->plan), estimated = has && p.ns_per_step > 0, split = has && p.tasks > 0;
     const double share = split ? std::ceil(p.tasks / ranks) : 0;
-    const double wall = split ? p.steps / p.tasks * p.ns_per_step * 1e-9 * std::ceil(share / threads)
-                              : p.steps * p.ns_per_step * 1e-9 / threads;
+    const double wall = (split ? p.steps / p.tasks * p.ns_per_step * 1e-9 * std::ceil(share / threads)
+                               : p.steps * p.ns_per_step * 1e-9 / threads) +
+                        p.timed_seconds;
     total += estimated ? wall : 0, all = all && estimated;
     const auto value = [](bool known, double v) { return known ? nlohmann::ordered_json(v) : nlohmann::ordered_json(); };
-    j["studies"].push_back({{"study", studies[i]->name}, {"makes", studies[i]->makes}, {"steps", value(has, p.steps)},
+    j["studies"].push_back({{"study", studies[i]->name}, {"makes", studies[i]->makes}, {"steps", value(has, p.steps + p.timed_steps)},
                             {"force_evals", value(has, p.force_evals)}, {"memory_bytes", value(has, p.memory_bytes)},
                             {"tasks", value(split, p.tasks)}, {"tasks_per_rank", value(split, share)},
                             {"wall_s", value(estimated, wall)}, {"note", p.note}});
@@ -548,6 +549,7 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
   if (!mpi::is_root()) std::cout.rdbuf(nullptr), std::cerr.rdbuf(nullptr);  // rank 0 speaks for the job
   const std::string experiment_dir = find_experiment_dir(spec.name, built_from);
   const auto start = std::chrono::system_clock::now();
+  const nlohmann::ordered_json load_before = load_average();  // (timings on a shared machine: its load, run.json)
   const auto t0 = std::chrono::steady_clock::now();
   const std::string name = spec.name;
   for (const Study& st : spec.studies)
@@ -753,6 +755,7 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
     run["rank_busy_s"] = mpi::all_gather(std::span<const double>(&busy, 1));  // each rank's time in distributed tasks
     run["rank_exchange_s"] = mpi::all_gather(std::span<const double>(&exchange, 1));  // and in exchanging their results
     run["checkpoint_write_s"] = checkpoint_write_seconds();
+    run["load_average"] = {{"before", load_before}, {"after", load_average()}};  // 1, 5, 15 minutes
     run["start_utc"] = utc_iso8601(start);
     run["end_utc"] = utc_iso8601(std::chrono::system_clock::now());
     run["wall_s"] = wall;

@@ -104,6 +104,9 @@ struct StudyPlan {
   std::string note;         // what the estimate rests on
   double tasks = 0;         // independent tasks of about equal cost, split across MPI ranks and threads
                             // (distributed_map, checkpointed_map); 0: the study runs alike on every rank
+  // The wall time and the steps of the runs it times under the timing protocol (runner/timing.hpp,
+  // timing_plan), one after another on one thread; their steps are not in `steps`.
+  double timed_seconds = 0, timed_steps = 0;
 };
 
 struct Study {

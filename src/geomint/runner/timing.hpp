@@ -1,24 +1,35 @@
 #pragma once
-// Wall-clock timing for the cost figures and summary.json (never for pass/fail).
+// Wall-clock timing for the cost figures and summary.json (never for pass/fail): one protocol for
+// every cost and timing study and for the benchmarks' reporting.
 //
-// The timing method of every cost study: one untimed warm-up call of f, which also calibrates
-// `inner`, the number of calls per timed run, so that a timed run lasts at least `min_run_s`
-// (10 ms by default: well above the clock's resolution and a scheduler tick's jitter); then
-// `repeats` timed runs. A run's time is its wall time over `inner`. The minimum is the estimate
-// (the least disturbed run), the spread (max - min) / min says how disturbed the others were.
+// Each configuration (a method at a step, a kernel, ...) gets one untimed warm-up call, then its calls
+// per timed run are calibrated so that a run lasts at least the floor (kTimingFloorS, 20 ms: well
+// above the clock's resolution and a scheduler tick's jitter). Then `repeats` rounds (at least
+// kTimingRepeats in the paper scenes) each time one run of every configuration, in an order rotated
+// by one per round (A B C, B C A, C A B, ...): a burst of load on a shared machine hits every
+// configuration alike. A run's time is its wall time over its calls; a configuration reports the
+// median of its runs (the estimate), their quartiles and minimum. Two configurations compare as a
+// ratio with an interval from the quartiles (time_ratio); where the interval holds 1 they are
+// indistinguishable.
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <functional>
+#include <string>
 #include <utility>
 #include <vector>
 
 #include <nlohmann/json.hpp>
 
 #include "geomint/core/integrate.hpp"
-#include "geomint/observables/ensemble_statistics.hpp"
 
 namespace geomint {
+
+inline constexpr double kTimingFloorS = 0.02;  // the shortest timed run
+inline constexpr int kTimingRepeats = 7;       // the fewest rounds of the protocol (paper scenes)
+inline constexpr const char* kTimingRepeatsHelp =
+    "rounds of the timing protocol (runner/timing.hpp): each configuration timed once per round in runs of >= 20 ms, "
+    "interleaved; the median is the estimate, the interquartile range the spread (paper scenes: >= 7)";
 
 // Keeps the compiler from discarding a computation whose result is unused.
 template <class T>
@@ -26,44 +37,83 @@ inline void do_not_optimize(const T& value) {
   asm volatile("" : : "r"(&value) : "memory");
 }
 
-// The wall time of one call of a timed function, over `repeats` timed runs of `inner` calls.
+// The wall time of one call of a timed configuration, over `repeats` timed runs of `inner` calls.
 struct RunTime {
-  double min_s = 0, median_s = 0, max_s = 0;  // seconds per call
+  double min_s = 0, q1_s = 0, median_s = 0, q3_s = 0, max_s = 0;  // seconds per call
   int repeats = 0;
   std::int64_t inner = 0;  // calls per timed run
-  double seconds() const { return min_s; }  // the estimate
-  double spread() const { return min_s > 0 ? (max_s - min_s) / min_s : 0; }
+  double seconds() const { return median_s; }  // the estimate
+  // the interquartile range relative to the median
+  double spread() const { return median_s > 0 ? (q3_s - q1_s) / median_s : 0; }
+  RunTime scaled(double factor) const;  // per 1/factor of a call (e.g. per step)
 };
 
-inline nlohmann::ordered_json to_json(const RunTime& t) {
-  return {{"min_s", t.min_s}, {"median_s", t.median_s}, {"max_s", t.max_s},
-          {"spread", t.spread()}, {"repeats", t.repeats}, {"inner", t.inner}};
+nlohmann::ordered_json to_json(const RunTime& t);
+
+// The quantile q of the sorted non-empty `v`, interpolated linearly between order statistics.
+double sorted_quantile(const std::vector<double>& v, double q);
+
+// The statistics of the per-call times of `repeats` runs (not sorted).
+RunTime run_time_of(std::vector<double> per_call, std::int64_t inner);
+
+// Times configurations under the protocol of the header comment.
+class InterleavedTiming {
+ public:
+  explicit InterleavedTiming(int repeats, double floor_s = kTimingFloorS) : repeats_(repeats), floor_s_(floor_s) {}
+  // A configuration; its index in run()'s result. f must stay callable until run() returns.
+  std::size_t add(std::function<void()> f);
+  std::vector<RunTime> run() const;
+  std::size_t size() const { return configs_.size(); }
+
+ private:
+  int repeats_;
+  double floor_s_;
+  std::vector<std::function<void()>> configs_;
+};
+
+// A configuration to plan: the steps of one call and their time per step.
+struct TimedCall {
+  double steps = 0, ns_per_step = 0;
+};
+// What timing configurations under the protocol with `repeats` rounds takes: each a warm-up, a calibration
+// (about two runs) and its rounds, each run at least the floor (a short call repeated to fill it).
+struct TimedPlan {
+  double seconds = 0, steps = 0;
+};
+inline TimedPlan timing_plan(const std::vector<TimedCall>& calls, double repeats) {
+  TimedPlan p;
+  for (const TimedCall& c : calls) {
+    const double call_s = c.steps * c.ns_per_step * 1e-9;
+    const double calls_per_run = call_s >= kTimingFloorS || call_s <= 0 ? 1 : std::ceil(kTimingFloorS / call_s);
+    p.seconds += (repeats + 3) * std::max(kTimingFloorS, call_s);
+    p.steps += (repeats + 3) * calls_per_run * c.steps;
+  }
+  return p;
 }
 
-// The timing method of the header comment. repeats >= 1.
-template <class F>
-RunTime time_runs(int repeats, const F& f, double min_run_s = 0.01) {
-  using clock = std::chrono::steady_clock;
-  const auto since = [](clock::time_point start) {
-    return std::chrono::duration<double>(clock::now() - start).count();
-  };
-  const auto warm = clock::now();
-  f();
-  const double once = since(warm);
-  RunTime r;
-  r.repeats = std::max(repeats, 1);
-  r.inner = once >= min_run_s ? 1 : static_cast<std::int64_t>(std::ceil(min_run_s / std::max(once, 1e-9)));
-  std::vector<double> t;
-  for (int k = 0; k < r.repeats; ++k) {
-    const auto start = clock::now();
-    for (std::int64_t i = 0; i < r.inner; ++i) f();
-    t.push_back(since(start) / static_cast<double>(r.inner));
-  }
-  r.min_s = *std::min_element(t.begin(), t.end());
-  r.max_s = *std::max_element(t.begin(), t.end());
-  r.median_s = median(std::move(t));
-  return r;
-}
+// One configuration alone under the protocol.
+RunTime time_runs(int repeats, const std::function<void()>& f, double floor_s = kTimingFloorS);
+
+// The ratio a / b of two timings: the ratio of the medians, and an interval [q1_a / q3_b, q3_a / q1_b]
+// from the quartiles. `indistinguishable` when the interval holds 1.
+struct TimeRatio {
+  double median = 0, lo = 0, hi = 0;
+  bool indistinguishable = true;
+};
+TimeRatio time_ratio(const RunTime& a, const RunTime& b);
+nlohmann::ordered_json to_json(const TimeRatio& r);
+
+// What a timing says of a configuration a against b, given the work per step of each (force evaluations,
+// or operations): "faster" or "slower" where the interval excludes 1, "indistinguishable" where it holds
+// it, and "contradicts the work" where a does strictly more work than b and yet times faster (or less and
+// slower): a measurement error until shown otherwise, never a finding.
+std::string timing_verdict(const TimeRatio& a_over_b, double work_a, double work_b);
+
+// Each timing against the first (the reference): {reference, by_method: {label: {ratio (of the medians),
+// interval: {min, max} (time_ratio), verdict (timing_verdict, with work[k] the work per call)}}}. Labels,
+// times and work are parallel lists.
+nlohmann::ordered_json relative_timings(const std::vector<std::string>& labels, const std::vector<RunTime>& times,
+                                        const std::vector<double>& work);
 
 // n steps of eq. (23) (pre once, post once) with every call in the loop inlined: each method is
 // timed with its step inlined, however many other methods the executable instantiates.

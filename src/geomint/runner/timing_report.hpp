@@ -1,7 +1,7 @@
 #pragma once
-// How a cost study reports the timing method of runner/timing.hpp (time_runs) in summary.json:
-// the method in words, and the spread (max - min) / min of the timed runs it made, so that every
-// minimum comes with how disturbed the other repeats were.
+// How a cost study reports the timing protocol of runner/timing.hpp in summary.json: the protocol in
+// words, and the spread (interquartile range / median) of the timed runs it made, so that every median
+// comes with how disturbed the repeats were.
 #include <algorithm>
 #include <string>
 #include <vector>
@@ -13,11 +13,13 @@
 
 namespace geomint {
 
-// The timing method of time_runs in words, for summary.json's timing.method.
+// The timing protocol (runner/timing.hpp) in words, for summary.json's timing.method.
 inline std::string timing_method_text(int repeats) {
-  return "minimum over " + std::to_string(repeats) +
-         " timed runs (timing.repeats) of at least 10 ms each, the calls per run calibrated by one untimed "
-         "warm-up call; steady_clock, single thread; spread = (max - min) / min over the runs";
+  return "median over " + std::to_string(repeats) + " rounds (timing.repeats) of one timed run of at least " +
+         std::to_string(static_cast<int>(kTimingFloorS * 1000)) + " ms per configuration, the configurations "
+         "interleaved in an order rotated each round, the calls per run calibrated after an untimed warm-up call; "
+         "steady_clock, single thread; spread = interquartile range / median; a ratio of two timings with an "
+         "interval from their quartiles";
 }
 
 // The spreads of every timed measurement of a study: their largest and median value and how many.

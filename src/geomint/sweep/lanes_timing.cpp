@@ -11,15 +11,18 @@ LanesTiming time_lanes(const Sys& sys, const std::vector<typename Sys::State>& s
                        int repeats) {
   using Z = typename Sys::State;
   const auto method = simplified_ti_method(sys, false);
-  LanesTiming out{time_runs(repeats, [&] {
-                    for (const Z& z : starts) do_not_optimize(integrate_inlined(method, z, h, n));
-                  }),
-                  {}};
-  for (const auto& k : simplified_ti_lanes_kernels<Sys>())
-    out.kernels.push_back({k.name, time_runs(repeats, [&] {
-                             do_not_optimize(simplified_ti_lanes(sys, k.steps, std::span<const Z>(starts), h, n, n,
-                                                                 [](int, std::int64_t, const Z&) {}));
-                           })});
+  InterleavedTiming timing(repeats);  // the scalar method and each kernel, interleaved
+  timing.add([&] {
+    for (const Z& z : starts) do_not_optimize(integrate_inlined(method, z, h, n));
+  });
+  const auto kernels = simplified_ti_lanes_kernels<Sys>();
+  for (const auto& k : kernels)
+    timing.add([&] {
+      do_not_optimize(simplified_ti_lanes(sys, k.steps, std::span<const Z>(starts), h, n, n, [](int, std::int64_t, const Z&) {}));
+    });
+  const std::vector<RunTime> t = timing.run();
+  LanesTiming out{t.front(), {}};
+  for (std::size_t i = 0; i < kernels.size(); ++i) out.kernels.push_back({kernels[i].name, t[i + 1]});
   return out;
 }
 

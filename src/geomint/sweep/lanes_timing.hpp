@@ -17,10 +17,11 @@ struct LanesTiming {
     std::string name;  // "AVX-512", "AVX2", "SSE2"
     RunTime time;      // all lanes at once
   };
-  std::vector<Kernel> kernels;  // each lane kernel this CPU runs, best first
+  std::vector<Kernel> kernels;  // each lane kernel this CPU runs, widest lanes first
 };
 
-// n steps of h from each of `starts` (at most kEnsembleLanes), `repeats` timed runs of each.
+// n steps of h from each of `starts` (at most kEnsembleLanes), the scalar method and every kernel timed
+// together under the timing protocol with `repeats` rounds.
 // For LennardJones<9>, HenonHeilesT<true> and HenonHeilesT<false>.
 template <class Sys>
 LanesTiming time_lanes(const Sys& sys, const std::vector<typename Sys::State>& starts, double h, std::int64_t n,

@@ -1,0 +1,126 @@
+// The timing protocol of runner/timing.hpp.
+#include "geomint/runner/timing.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <stdexcept>
+
+namespace geomint {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+  return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// The wall time of `inner` calls of f.
+double timed_run(const std::function<void()>& f, std::int64_t inner) {
+  const auto start = Clock::now();
+  for (std::int64_t i = 0; i < inner; ++i) f();
+  return seconds_since(start);
+}
+
+// Calls per run so that a run of f lasts at least floor_s: from an untimed warm-up call, then doubled
+// (at least) until a timed run reaches the floor.
+std::int64_t calibrated_calls(const std::function<void()>& f, double floor_s) {
+  const double once = timed_run(f, 1);  // the warm-up
+  std::int64_t inner = once >= floor_s ? 1 : static_cast<std::int64_t>(std::ceil(floor_s / std::max(once, 1e-9)));
+  for (double t = timed_run(f, inner); t < floor_s; t = timed_run(f, inner))
+    inner = std::max(2 * inner, static_cast<std::int64_t>(std::ceil(static_cast<double>(inner) * floor_s / std::max(t, 1e-9))));
+  return inner;
+}
+
+}  // namespace
+
+RunTime RunTime::scaled(double factor) const {
+  RunTime r = *this;
+  for (double* x : {&r.min_s, &r.q1_s, &r.median_s, &r.q3_s, &r.max_s}) *x *= factor;
+  return r;
+}
+
+nlohmann::ordered_json to_json(const RunTime& t) {
+  return {{"median_s", t.median_s}, {"q1_s", t.q1_s}, {"q3_s", t.q3_s}, {"min_s", t.min_s}, {"max_s", t.max_s},
+          {"spread", t.spread()}, {"repeats", t.repeats}, {"inner", t.inner}};
+}
+
+double sorted_quantile(const std::vector<double>& v, double q) {
+  if (v.empty()) throw std::invalid_argument("sorted_quantile: no values");
+  const double at = q * static_cast<double>(v.size() - 1);
+  const auto lo = static_cast<std::size_t>(std::floor(at));
+  const std::size_t hi = std::min(lo + 1, v.size() - 1);
+  return v[lo] + (at - static_cast<double>(lo)) * (v[hi] - v[lo]);
+}
+
+RunTime run_time_of(std::vector<double> per_call, std::int64_t inner) {
+  std::sort(per_call.begin(), per_call.end());
+  RunTime r;
+  r.repeats = static_cast<int>(per_call.size()), r.inner = inner;
+  r.min_s = per_call.front(), r.max_s = per_call.back();
+  r.q1_s = sorted_quantile(per_call, 0.25), r.median_s = sorted_quantile(per_call, 0.5);
+  r.q3_s = sorted_quantile(per_call, 0.75);
+  return r;
+}
+
+std::size_t InterleavedTiming::add(std::function<void()> f) {
+  configs_.push_back(std::move(f));
+  return configs_.size() - 1;
+}
+
+std::vector<RunTime> InterleavedTiming::run() const {
+  const std::size_t n = configs_.size();
+  const int repeats = std::max(repeats_, 1);
+  std::vector<std::int64_t> inner(n);
+  for (std::size_t c = 0; c < n; ++c) inner[c] = calibrated_calls(configs_[c], floor_s_);
+  std::vector<std::vector<double>> per_call(n);
+  for (int round = 0; round < repeats; ++round)
+    for (std::size_t k = 0; k < n; ++k) {  // (rotated by one per round)
+      const std::size_t c = (k + static_cast<std::size_t>(round)) % n;
+      per_call[c].push_back(timed_run(configs_[c], inner[c]) / static_cast<double>(inner[c]));
+    }
+  std::vector<RunTime> out;
+  for (std::size_t c = 0; c < n; ++c) out.push_back(run_time_of(std::move(per_call[c]), inner[c]));
+  return out;
+}
+
+RunTime time_runs(int repeats, const std::function<void()>& f, double floor_s) {
+  InterleavedTiming t(repeats, floor_s);
+  t.add(f);
+  return t.run().front();
+}
+
+TimeRatio time_ratio(const RunTime& a, const RunTime& b) {
+  TimeRatio r;
+  r.median = a.median_s / b.median_s;
+  r.lo = a.q1_s / b.q3_s, r.hi = a.q3_s / b.q1_s;
+  r.indistinguishable = !(r.hi < 1 || r.lo > 1);
+  return r;
+}
+
+nlohmann::ordered_json to_json(const TimeRatio& r) {
+  return {{"median", r.median}, {"lo", r.lo}, {"hi", r.hi}, {"indistinguishable", r.indistinguishable}};
+}
+
+std::string timing_verdict(const TimeRatio& a_over_b, double work_a, double work_b) {
+  if (a_over_b.indistinguishable) return "indistinguishable";
+  const bool faster = a_over_b.hi < 1;
+  if ((faster && work_a > work_b) || (!faster && work_a < work_b)) return "contradicts the work";
+  return faster ? "faster" : "slower";
+}
+
+nlohmann::ordered_json relative_timings(const std::vector<std::string>& labels, const std::vector<RunTime>& times,
+                                        const std::vector<double>& work) {
+  if (labels.empty() || times.size() != labels.size() || work.size() != labels.size())
+    throw std::invalid_argument("relative_timings: labels, times and work differ in length");
+  nlohmann::ordered_json out = {{"reference", labels.front()}, {"by_method", nlohmann::ordered_json::object()}};
+  for (std::size_t k = 0; k < labels.size(); ++k) {
+    const TimeRatio r = time_ratio(times[k], times.front());
+    out["by_method"][labels[k]] = {{"ratio", r.median},
+                                   {"interval", {{"min", r.lo}, {"max", r.hi}}},
+                                   {"verdict", k == 0 ? "reference" : timing_verdict(r, work[k], work.front())}};
+  }
+  return out;
+}
+
+}  // namespace geomint

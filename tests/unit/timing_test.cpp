@@ -1,0 +1,116 @@
+// The timing protocol (runner/timing.hpp): calibrated runs of at least the floor, rounds interleaved in a
+// rotated order, medians and quartiles, and ratios whose verdict knows the noise and the work. (Counts,
+// orders and synthetic timings are asserted, never a measured time.)
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <string>
+#include <vector>
+
+#include "geomint/runner/timing.hpp"
+
+using namespace geomint;
+
+namespace timing_test {  // the file's scope (the tests build as one translation unit)
+
+namespace {
+
+// A synthetic timing: its median and quartiles.
+RunTime timing(double q1, double median, double q3) {
+  RunTime t;
+  t.min_s = q1 * 0.9, t.q1_s = q1, t.median_s = median, t.q3_s = q3, t.max_s = q3 * 1.1, t.repeats = 7, t.inner = 1;
+  return t;
+}
+
+}  // namespace
+
+TEST(TimingProtocol, CalibratesEachRunToTheFloorAndOrdersTheStatistics) {
+  long calls = 0;
+  const auto busy = [&] {
+    ++calls;
+    const auto start = std::chrono::steady_clock::now();
+    while (std::chrono::steady_clock::now() - start < std::chrono::microseconds(200)) {}
+  };
+  const RunTime t = time_runs(7, busy, 0.01);
+  EXPECT_EQ(t.repeats, 7);
+  EXPECT_GE(t.inner, 2);   // a 0.2 ms call is repeated towards 10 ms
+  EXPECT_LE(t.inner, 50);  // ceil(10 ms / >= 0.2 ms)
+  EXPECT_GE(calls, 1 + 8 * t.inner);  // a warm-up, at least one calibration run, the 7 timed runs
+  EXPECT_GE(t.min_s, 200e-6);
+  EXPECT_LE(t.min_s, t.q1_s);
+  EXPECT_LE(t.q1_s, t.median_s);
+  EXPECT_LE(t.median_s, t.q3_s);
+  EXPECT_LE(t.q3_s, t.max_s);
+  EXPECT_DOUBLE_EQ(t.seconds(), t.median_s);
+  EXPECT_DOUBLE_EQ(t.spread(), (t.q3_s - t.q1_s) / t.median_s);
+}
+
+TEST(TimingProtocol, InterleavesTheConfigurationsInAnOrderRotatedEachRound) {
+  std::string order;
+  InterleavedTiming t(4, 0);  // (a floor of 0: one call per run)
+  for (char c : std::string("ABC")) t.add([&order, c] { order += c; });
+  const auto times = t.run();
+  ASSERT_EQ(times.size(), 3u);
+  // each: a warm-up call and a calibration run; then the rounds A B C, B C A, C A B, A B C
+  EXPECT_EQ(order, "AABBCC" "ABC" "BCA" "CAB" "ABC");
+  for (const RunTime& r : times) {
+    EXPECT_EQ(r.repeats, 4);
+    EXPECT_EQ(r.inner, 1);
+  }
+}
+
+TEST(TimingProtocol, QuartilesInterpolateBetweenOrderStatistics) {
+  const RunTime r = run_time_of({7, 1, 6, 2, 5, 3, 4}, 3);
+  EXPECT_DOUBLE_EQ(r.min_s, 1);
+  EXPECT_DOUBLE_EQ(r.q1_s, 2.5);
+  EXPECT_DOUBLE_EQ(r.median_s, 4);
+  EXPECT_DOUBLE_EQ(r.q3_s, 5.5);
+  EXPECT_DOUBLE_EQ(r.max_s, 7);
+  EXPECT_DOUBLE_EQ(r.spread(), 0.75);
+  EXPECT_EQ(r.inner, 3);
+  const RunTime per_step = r.scaled(0.5);
+  EXPECT_DOUBLE_EQ(per_step.q3_s, 2.75);
+  EXPECT_DOUBLE_EQ(per_step.spread(), 0.75);  // (scaling keeps the spread)
+}
+
+TEST(TimingProtocol, ARatioIsIndistinguishableWhereTheQuartilesOverlap) {
+  const TimeRatio overlap = time_ratio(timing(50, 60, 110), timing(40, 45.5, 70));  // 1.32 by medians, spreads of ~100 %
+  EXPECT_NEAR(overlap.median, 60 / 45.5, 1e-15);
+  EXPECT_NEAR(overlap.lo, 50.0 / 70, 1e-15);
+  EXPECT_NEAR(overlap.hi, 110.0 / 40, 1e-15);
+  EXPECT_TRUE(overlap.indistinguishable);
+  EXPECT_EQ(timing_verdict(overlap, 1, 1), "indistinguishable");
+  const TimeRatio apart = time_ratio(timing(58, 60, 62), timing(44, 45.5, 47));
+  EXPECT_FALSE(apart.indistinguishable);
+  EXPECT_EQ(timing_verdict(apart, 2, 1), "slower");
+  EXPECT_EQ(timing_verdict(time_ratio(timing(44, 45.5, 47), timing(58, 60, 62)), 1, 2), "faster");
+}
+
+TEST(TimingProtocol, AMethodDoingMoreWorkTimedFasterIsFlagged) {
+  const TimeRatio faster = time_ratio(timing(44, 45.5, 47), timing(58, 60, 62));
+  EXPECT_EQ(timing_verdict(faster, 2, 1), "contradicts the work");  // twice the force evaluations, yet faster
+  EXPECT_EQ(timing_verdict(time_ratio(timing(58, 60, 62), timing(44, 45.5, 47)), 1, 2), "contradicts the work");
+  EXPECT_EQ(timing_verdict(faster, 1, 1), "faster");  // the same work: a finding
+}
+
+TEST(TimingProtocol, RelativeTimingsAgainstTheFirst) {
+  const auto r = relative_timings({"sv", "ti"}, {timing(44, 45.5, 47), timing(40, 60, 110)}, {1, 2});
+  EXPECT_EQ(r["reference"], "sv");
+  EXPECT_EQ(r["by_method"]["sv"]["verdict"], "reference");
+  EXPECT_NEAR(r["by_method"]["ti"]["ratio"].get<double>(), 60 / 45.5, 1e-15);
+  EXPECT_EQ(r["by_method"]["ti"]["verdict"], "indistinguishable");
+  EXPECT_NEAR(r["by_method"]["ti"]["interval"]["min"].get<double>(), 40.0 / 47, 1e-15);
+  EXPECT_EQ(relative_timings({"sv", "ti"}, {timing(44, 45.5, 47), timing(50, 60, 110)}, {1, 2})["by_method"]["ti"]["verdict"],
+            "slower");
+  EXPECT_THROW(relative_timings({"sv"}, {}, {1}), std::invalid_argument);
+}
+
+TEST(TimingProtocol, PlansItsOwnTime) {
+  // 3 configurations, 7 rounds: (7 + 3) runs each of at least the floor; a call longer than the floor lengthens its
+  // runs, a shorter one is repeated to fill it: calls of 1 ms (1000 steps of 1 us) 20 to a run
+  const TimedPlan p = timing_plan({{1000, 1000}, {1, 1000}, {50000, 1000}}, 7);
+  EXPECT_DOUBLE_EQ(p.seconds, 10 * (kTimingFloorS + kTimingFloorS + 0.05));
+  EXPECT_DOUBLE_EQ(p.steps, 10 * (20 * 1000 + 20000 * 1 + 50000));
+}
+
+}  // namespace timing_test
