@@ -52,9 +52,14 @@ void check_map(const Scene& s);
 
 // ---- plans (--plan, and the counts checked before any work): counts in double from the scene ----
 
-// Measured on the machine of the paper-scene results (summary.json timing, 2 threads): the batched kernel
-// 0.47 (Cartesian) and 1.05 (polar) ns per trajectory-step and core; the scalar loop about 20-29 ns per step.
-constexpr double kKernelNsPerStep = 0.76;  // mean of the two batched kernels
+// The batched kernel's ns per trajectory-step and core, the mean of the Cartesian and polar kernels, for the
+// instruction set it runs on this CPU (paper-scene summary.json timing.ns_per_step_per_core, 2 threads):
+// AVX-512 0.47 and 1.05 (an AVX-512 machine), AVX2 2.15 and 3.21 (an AVX2 EPYC), SSE2 4.37 and 6.71 (make
+// bench on the AVX-512 machine). The scalar loop: about 20-29 ns per step.
+inline double kernel_ns_per_step() {
+  const std::string isa = energy_map_kernels().front().isa;
+  return isa == "avx512" ? 0.76 : isa == "avx2" ? 2.68 : 5.54;
+}
 constexpr double kScalarNsPerStep = 25.0;  // the scalar loop (energy_map_scalar, symplectic Euler step loops)
 constexpr const char* kNsNote = "ns per step measured from the paper-scene summary.json timing";
 

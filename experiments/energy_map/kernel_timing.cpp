@@ -32,7 +32,7 @@ StudyPlan plan_timing(const Scene& s) {
                         static_cast<double>(s.integer("timing.scalar_steps"));
   StudyPlan p{0, 0, n.batches * kEnergyMapBatch * 2 * sizeof(double), kScalarNsPerStep,
               std::string("the timing protocol; the kernel sample only without the map study; ") + kNsNote};
-  const TimedPlan timed = timing_plan({{kernel, kKernelNsPerStep}, {kernel, kKernelNsPerStep}, {scalar, kScalarNsPerStep},
+  const TimedPlan timed = timing_plan({{kernel, kernel_ns_per_step()}, {kernel, kernel_ns_per_step()}, {scalar, kScalarNsPerStep},
                                        {scalar, kScalarNsPerStep}},
                                       static_cast<double>(s.integer("timing.repeats")));
   p.timed_seconds = timed.seconds, p.timed_steps = timed.steps;

@@ -65,6 +65,9 @@ void expect_rejected(const std::string& args, const std::vector<std::string>& ne
 
 TEST(Cli, NegativeStep) { expect_rejected("--set decay.h=-1", {"decay.h", "-1", "> 0"}); }
 TEST(Cli, NanStep) { expect_rejected("--set decay.h=nan", {"decay.h", "nan", "finite"}); }
+TEST(Cli, RefusesARunPlannedBeyondMaxSeconds) {  // (the quick scene's plan: seconds)
+  expect_rejected("--max-seconds 0.001", {"the plan estimates", "over --max-seconds 0.001"});
+}
 TEST(Cli, UnknownKey) { expect_rejected("--set nosuch.key=1", {"nosuch.key", "unknown key"}); }
 TEST(Cli, StepBeyondStabilityBound) { expect_rejected("--set decay.h=2.5", {"decay.h", "2.5", "unstable for h > 2"}); }
 TEST(Cli, OscillatorStepAtStabilityBound) { expect_rejected("--set oscillator.h=2", {"oscillator.h", "symplectic_euler_pq is unstable for h omega >= 2"}); }

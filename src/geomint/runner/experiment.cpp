@@ -585,6 +585,10 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
                                    "With --plan: the estimate for this many MPI ranks of --threads threads each "
                                    "(default: the ranks of this job; 1 without mpirun)")
                         ->check(CLI::Range(1, 1 << 24));
+  double max_seconds = 0;
+  app.add_option("--max-seconds", max_seconds,
+                 "Refuse, before any work, a run whose --plan estimates more wall time than this (0: no limit)")
+      ->check(CLI::Range(0.0, 1e12));
   bool resume = false;
   app.add_flag("--resume", resume,
                "Continue an interrupted run from the checkpoint in --out (experiments that write checkpoints)");
@@ -662,8 +666,11 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
       check_plan(*st, plans.back(), read);
     }
     scene->restrict_reads({});
+    const nlohmann::ordered_json plan = plan_json(studies, plans, plan_ranks > 0 ? plan_ranks : mpi::size(), threads);
+    if (max_seconds > 0 && plan["wall_s"].get<double>() > max_seconds)
+      throw SceneError("the plan estimates " + fmt_seconds(plan["wall_s"].get<double>()) + " of wall time, over --max-seconds " +
+                       format_double(max_seconds) + " (see --plan)");
     if (plan_only) {
-      const nlohmann::ordered_json plan = plan_json(studies, plans, plan_ranks > 0 ? plan_ranks : mpi::size(), threads);
       if (as_json)
         std::cout << plan.dump(2) << '\n';
       else
