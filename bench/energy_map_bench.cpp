@@ -9,6 +9,7 @@
 //   BM_EnergyMapKernel/<isa>/<coordinates>  the batch kernels of energy_map_kernels()
 //   BM_EnergyMapScalar/<coordinates>        energy_map_scalar (the straightforward scalar loop)
 //   BM_EnergyMapOdeint/cartesian            Boost.Odeint symplectic_euler, p-first arrangement
+//   BM_ClockCalibration                      a dependent chain of integer additions: the cycle time
 //
 // Before any benchmark runs, the odeint loop is checked against
 // energy_map_scalar on a regular trajectory (relative difference in eps
@@ -203,7 +204,26 @@ void BM_EnergyMapOdeint(benchmark::State& state) {
   set_counters(state, out);
 }
 
+// The clock, calibrated in the same run: a dependent chain of integer additions, one cycle of latency each on
+// every x86-64 core, timed like the kernels. Its time per addition is the cycle time of the core the benchmarks
+// ran on (turbo included), which turns their ns per trajectory-step into cycles (run_energy_map_bench.sh).
+void BM_ClockCalibration(benchmark::State& state) {
+  constexpr std::int64_t kAdds = 1 << 20;  // per iteration, in blocks of 16
+  std::uint64_t x = 0;
+  for (auto _ : state) {
+    for (std::int64_t i = 0; i < kAdds; i += 16)
+      asm volatile(  // (each addition waits for the previous one)
+          "add $1, %0\n\tadd $1, %0\n\tadd $1, %0\n\tadd $1, %0\n\tadd $1, %0\n\tadd $1, %0\n\tadd $1, %0\n\tadd $1, %0\n\t"
+          "add $1, %0\n\tadd $1, %0\n\tadd $1, %0\n\tadd $1, %0\n\tadd $1, %0\n\tadd $1, %0\n\tadd $1, %0\n\tadd $1, %0"
+          : "+r"(x));
+    benchmark::DoNotOptimize(x);
+  }
+  state.counters["time_per_add"] = benchmark::Counter(static_cast<double>(kAdds),
+                                                      benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
 void register_benchmarks() {
+  benchmark::RegisterBenchmark("BM_ClockCalibration", BM_ClockCalibration)->Unit(benchmark::kMillisecond);
   for (const auto& k : energy_map_kernels()) {
     for (const Coordinates c : {Coordinates::cartesian, Coordinates::polar}) {
       benchmark::RegisterBenchmark(("BM_EnergyMapKernel/" + k.isa + "/" + name(c)).c_str(), BM_EnergyMapKernel, k.run,

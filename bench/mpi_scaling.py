@@ -4,9 +4,11 @@
     bench/mpi_scaling.py BUILD OUT [--t-max T]
 
 Runs the map study of the paper scene (the 201 x 201 grid, t_max shortened to T: the same work per
-trajectory-step, a fifth of the time) with 1 and 2 ranks of 1 and 2 threads, back to back in one
-invocation (scripts/mpirun.sh, the project's mpirun line), so that the times compare as ratios,
-and checks that every run wrote the same map.csv. Then the cluster scene
+trajectory-step, a fifth of the time) with 1 and 2 ranks of 1 and 2 threads, each --repeats times (3),
+the configurations interleaved in one invocation (scripts/mpirun.sh, the project's mpirun line), so
+that the times compare as ratios of medians with their range, and checks that every run wrote the same
+map.csv with the same kernel (instruction set). A configuration with more workers than the machine
+has cores is marked oversubscribed. Then the cluster scene
 experiments/energy_map/fine.toml with 2 ranks for 2 steps (t_max = 2 dt): every exchange and
 checkpoint of the fine map at its full size (the same batches, rounds and records), almost no
 computation. OUT/summary.json gives per run the map's wall time, each rank's busy time (its share
@@ -29,6 +31,7 @@ import json
 import math
 import os
 import shutil
+import statistics
 import subprocess
 import sys
 import time
@@ -66,32 +69,50 @@ def main():
     ap.add_argument("build", type=Path)
     ap.add_argument("out", type=Path)
     ap.add_argument("--t-max", type=float, default=10000.0)
+    ap.add_argument("--repeats", type=int, default=3, help="runs of each configuration, interleaved (default 3)")
     args = ap.parse_args()
     work = args.out.with_name(args.out.name + ".runs")
     shutil.rmtree(work, ignore_errors=True)
     work.mkdir(parents=True)
 
-    runs, commands, maps = [], [], []
-    for ranks, threads in CONFIGS:
-        tag = f"{ranks}x{threads}"
-        print(f"mpi_scaling: map with {ranks} rank(s) x {threads} thread(s)", file=sys.stderr, flush=True)
-        cmd, run = run_map(args.build, work / tag, ranks, threads, args.t_max, work / f"{tag}.stderr")
-        commands.append(" ".join(cmd))
-        maps.append((work / tag / "map.csv").read_bytes())
-        runs.append({"ranks": ranks, "threads": threads, "cores": ranks * threads, "wall_s": run["study_wall_s"]["map"],
-                     "rank_busy_s": run["rank_busy_s"], "rank_exchange_s": run["rank_exchange_s"],
-                     "checkpoint_write_s": run["checkpoint_write_s"]})
+    # Every configuration args.repeats times, the configurations interleaved in an order rotated each round (as
+    # the timing protocol of runner/timing.hpp), so that a burst of load hits all of them alike.
+    measured, commands, maps, isas = {c: [] for c in CONFIGS}, [], [], set()
+    for k in range(args.repeats):
+        for ranks, threads in CONFIGS[k % len(CONFIGS):] + CONFIGS[:k % len(CONFIGS)]:
+            tag = f"{ranks}x{threads}"
+            print(f"mpi_scaling: round {k + 1}: map with {ranks} rank(s) x {threads} thread(s)", file=sys.stderr, flush=True)
+            cmd, run = run_map(args.build, work / tag, ranks, threads, args.t_max, work / f"{tag}.stderr")
+            if k == 0:
+                commands.append(" ".join(cmd))
+            maps.append((work / tag / "map.csv").read_bytes())
+            isas.add(json.loads((work / tag / "summary.json").read_text())["timing"]["kernel_isa"])
+            measured[(ranks, threads)].append(run)
     if any(m != maps[0] for m in maps):
         sys.exit("mpi_scaling: the configurations wrote different map.csv files")
-    base = runs[0]["wall_s"]
+    if len(isas) != 1:
+        sys.exit(f"mpi_scaling: the runs used different kernels ({', '.join(sorted(isas))})")
+    runs = []
+    for (ranks, threads), rs in measured.items():
+        walls = sorted(r["study_wall_s"]["map"] for r in rs)
+        typical = min(rs, key=lambda r: abs(r["study_wall_s"]["map"] - statistics.median(walls)))  # (its busy times)
+        runs.append({"ranks": ranks, "threads": threads, "cores": ranks * threads, "wall_s": statistics.median(walls),
+                     "wall_s_range": {"min": walls[0], "max": walls[-1]}, "repeats": len(walls),
+                     "oversubscribed": True if ranks * threads > os.cpu_count() else None,  # (null: not)
+                     "rank_busy_s": typical["rank_busy_s"], "rank_exchange_s": typical["rank_exchange_s"],
+                     "checkpoint_write_s": typical["checkpoint_write_s"]})
+    base, base_range = runs[0]["wall_s"], runs[0]["wall_s_range"]
     for r in runs:
         r["speedup"] = base / r["wall_s"]
+        r["speedup_range"] = {"min": base_range["min"] / r["wall_s_range"]["max"],
+                              "max": base_range["max"] / r["wall_s_range"]["min"]}
         r["efficiency"] = r["speedup"] / r["cores"]
 
     # The measured constants.
     paper = plan_steps(args.build, "experiments/energy_map/energy_map.toml")
     steps_here = paper["steps"] * args.t_max / 50000.0  # (the paper scene's plan is for t_max = 50 000)
-    c = base / steps_here  # s per trajectory-step and core, 1 rank x 1 thread
+    c = base / steps_here  # s per trajectory-step and core, 1 rank x 1 thread (the median run)
+    c_range = {k: v / steps_here for k, v in base_range.items()}
     two = next(r for r in runs if (r["ranks"], r["threads"]) == (2, 1))
     e = (base / 2) / max(two["rank_busy_s"])  # the split's own efficiency (busy time of the slower rank)
 
@@ -113,6 +134,7 @@ def main():
                            "wall_s": compute + X + W, "compute_s": compute, "exchange_s": X, "checkpoint_write_s": W,
                            "overhead_s": X + W,
                            "busy_fraction": fine["steps"] * c / (ranks * threads) / (2 * depth * t_batch),
+                           "wall_s_range": {k: compute * v / c + X + W for k, v in c_range.items()},
                            "core_hours": ranks * threads * (compute + X + W) / 3600})
     summary = {
         "experiment": "mpi_scaling",
@@ -120,7 +142,11 @@ def main():
         "map": {"scene": "experiments/energy_map/energy_map.toml", "t_max": args.t_max, "trajectory_steps": steps_here,
                 "batches": paper["tasks"]},
         "runs": runs,
-        "measured": {"ns_per_trajectory_step_core": c * 1e9, "split_efficiency_2_ranks": e,
+        "repeats": args.repeats,
+        "kernel_isa": isas.pop(),
+        "measured": {"ns_per_trajectory_step_core": c * 1e9,
+                     "ns_per_trajectory_step_core_range": {k: v * 1e9 for k, v in c_range.items()},
+                     "split_efficiency_2_ranks": e,
                      "imbalance_2_ranks": max(two["rank_busy_s"]) / (sum(two["rank_busy_s"]) / 2) - 1,
                      "fine_exchange_s": X, "fine_checkpoint_write_s": W,
                      "fine_exchange_rank_s": fine_run["rank_exchange_s"]},
@@ -138,7 +164,9 @@ def main():
                                                   indent=2) + "\n")
     shutil.rmtree(work)
     for r in runs:
-        print(f"{r['ranks']} x {r['threads']}: map {r['wall_s']:.3g} s, speed-up {r['speedup']:.2f}, "
+        print(f"{r['ranks']} x {r['threads']}: map {r['wall_s']:.3g} s (median of {r['repeats']}), speed-up {r['speedup']:.2f}"
+              f" ({r['speedup_range']['min']:.2f}-{r['speedup_range']['max']:.2f})"
+              f"{', oversubscribed' if r['oversubscribed'] else ''}, "
               f"busy {', '.join(f'{b:.3g}' for b in r['rank_busy_s'])} s")
     for p in projection:
         print(f"fine scene on {p['cores']} cores: {p['wall_s'] / 60:.3g} min ({p['core_hours']:.3g} core-hours)")

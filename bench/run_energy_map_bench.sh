@@ -9,10 +9,11 @@
 # BENCH_MIN_TIME seconds each) and bench/peers/energy_map_numpy.py (median of
 # NUMPY_REPEAT runs of NUMPY_N trajectories x 20000 steps) under Debian's
 # /usr/bin/python3, then prints per implementation and coordinate system: ns per
-# trajectory-step on one core, the ratio to the best batch kernel, and the
-# fraction of the hardware ceiling (the AVX-512 kernels' multiplies and FMAs on the two pipes of the
-# results' machine type at 4.1 GHz: 0.37 ns Cartesian, 0.66 ns polar; bench/README.md), and the eps of the
-# check points from every implementation. Build first:
+# trajectory-step on one core and in cycles (the clock calibrated in the same run by a dependent chain of
+# integer additions), the ratio to the best batch kernel, the fraction of each kernel's own ceiling in
+# cycles (its multiplies and FMAs on two pipes, counted in its object: AVX-512 1.5 cycles Cartesian, 2.7
+# polar; bench/README.md; not yet counted for AVX2 and SSE2), and the eps of the check points from every
+# implementation. Build first:
 #   cmake --build build --target geomint_energy_map_bench
 # QUICK=1 shortens everything (a smoke run, ~6 s; numpy keeps 4096 trajectories,
 # below which its per-step interpreter overhead dominates).
@@ -46,13 +47,19 @@ echo "== numpy: $HERE/peers/energy_map_numpy.py (${NUMPY_N} trajectories, median
 "$PY" - "$TMP/cpp.json" "$TMP/cpp.err" "$TMP/numpy.json" <<'EOF'
 import json, sys
 
-CEILING = {"cartesian": 0.37, "polar": 0.66}  # ns per trajectory-step of the AVX-512 kernels on Zen 5 at 4.1 GHz: multiplies/FMAs on two pipes (bench/README.md)
+# Cycles per trajectory-step that each kernel's multiplies and FMAs need on two multiply pipes, counted in its
+# compiled object (bench/README.md); None where not counted.
+CEILING_CYCLES = {("avx512", "cartesian"): 1.5, ("avx512", "polar"): 2.7}
 cpp = json.load(open(sys.argv[1]))
 numpy = json.load(open(sys.argv[3]))
 
 rows = []  # (implementation, coordinates, ns per step)
+ns_per_cycle = None  # the calibrated clock: ns per dependent integer addition, one cycle each
 for b in cpp["benchmarks"]:
     if b.get("run_type") == "aggregate" and b.get("aggregate_name") != "median":
+        continue
+    if b["run_name"] == "BM_ClockCalibration":
+        ns_per_cycle = b["time_per_add"] * 1e9
         continue
     parts = b["run_name"].split("/")  # BM_EnergyMapKernel/<isa>/<coords>, BM_EnergyMap{Scalar,Odeint}/<coords>
     kind, coords = parts[0], parts[-1]
@@ -63,19 +70,26 @@ for b in cpp["benchmarks"]:
 for coords, ns in numpy["ns_per_step"].items():
     rows.append(("numpy (vectorised over trajectories)", coords, ns))
 
+COORDS = ("cartesian", "polar")
 best = {c: min(ns for impl, cc, ns in rows if cc == c and impl.startswith("batch kernel"))
-        for c in CEILING if any(cc == c and impl.startswith("batch kernel") for impl, cc, ns in rows)}
+        for c in COORDS if any(cc == c and impl.startswith("batch kernel") for impl, cc, ns in rows)}
 ctx = cpp["context"]
 print(f"# {ctx.get('workload', '')}; {ctx.get('num_cpus')} CPUs at {ctx.get('mhz_per_cpu')} MHz, "
       f"load average {' '.join(f'{x:.2f}' for x in ctx.get('load_avg', []))}")
 print(f"# numpy {numpy['numpy']}: {numpy['trajectories']} trajectories x {numpy['steps']} steps, "
       f"median of {numpy['repeat']}; C++: median of repetitions, CPU time, one thread")
 w = max(len(r[0]) for r in rows)
-print(f"{'implementation':{w}s}  {'coordinates':11s}  {'ns/step/core':>12s}  {'x best kernel':>13s}  {'of ceiling':>10s}")
-for c in CEILING:
+print(f"# clock: {1 / ns_per_cycle:.3f} GHz, calibrated in this run (a dependent chain of integer additions, "
+      f"one cycle each: {ns_per_cycle:.4f} ns per addition)")
+print(f"{'implementation':{w}s}  {'coordinates':11s}  {'ns/step/core':>12s}  {'cycles/step':>11s}  "
+      f"{'x best kernel':>13s}  {'of own ceiling':>14s}")
+for c in COORDS:
     for impl, cc, ns in sorted((r for r in rows if r[1] == c), key=lambda r: r[2]):
         ratio = f"{ns / best[c]:12.2f}x" if c in best else f"{'-':>13s}"
-        print(f"{impl:{w}s}  {cc:11s}  {ns:12.3f}  {ratio}  {CEILING[c] / ns:10.1%}")
+        cycles = ns / ns_per_cycle
+        ceiling = CEILING_CYCLES.get((impl.split()[-1], c)) if impl.startswith("batch kernel") else None
+        own = f"{ceiling / cycles:14.1%}" if ceiling else f"{'not counted':>14s}"
+        print(f"{impl:{w}s}  {cc:11s}  {ns:12.3f}  {cycles:11.2f}  {ratio}  {own}")
 
 # eps of the check points: C++ lines "eps <coords> <impl> <x0> <y0> <eps>", numpy's JSON
 print(f"\n# eps (000 eq. (50)) after {numpy['steps']} steps at the check points")

@@ -35,7 +35,7 @@ set_start(cs) = int(cs[7:])
 COST_YLABEL(cs) = sprintf("ε from (x_0, y_0) = (%s, %s)", start_x(set_start(cs)), start_y(set_start(cs)))
 COST_NAME = 'energy_map_cost'
 COST_TITLE = sprintf("{/:Bold Cost:} energy error (50) of symplectic Euler, elastic pendulum, g = %s, one row per start at rest; h = %g … %g, t_{end} = %g\n" \
-                     . "wall time: scalar loop, minimum of %s runs of ≥ 10 ms, single thread; reference H_0 = H(z_0), its own error ≤ %s", \
+                     . "wall time: scalar loop, median of %s interleaved runs of ≥ 20 ms, single thread; reference H_0 = H(z_0), its own error ≤ %s", \
                      scene_num('pendulum.g'), H_MAX, H_MIN, T_END, scene_num('timing.repeats'), sci(REF_ERR))
 COST_EVALS = "force evaluations in one run (one gradient of U per step)"
 load 'figures/cost.gpi'

@@ -10,7 +10,7 @@ METHODS = summary_words('cost.energy.methods')
 LABEL(m) = method_key(m, "000")   # (figures/methods.gpi: the registry's title and 000's equations)
 STYLE(m) = m eq "se" ? LS_SE : m eq "se_compensated" ? LS_COMP : LS_RK4
 COST_NAME = 'euler_compensation_cost'
-COST_TITLE = sprintf("{/:Bold Cost:} energy error against computing effort, harmonic oscillator, one run to T = %g per step size h\nwall time: minimum of %s runs of at least 10 ms, single thread", T, scene_num('timing.repeats'))
+COST_TITLE = sprintf("{/:Bold Cost:} energy error against computing effort, harmonic oscillator, one run to T = %g per step size h\nwall time: median of %s interleaved runs of at least 20 ms, single thread", T, scene_num('timing.repeats'))
 COST_SETS = "energy"
 COST_XTICS = "1"       # (decades only: the runs span four decades of wall time)
 COST_YLABEL(cs) = "max_{t_j ∈ [0,T]} |H(q_j, p_j) − H_0|"

@@ -23,7 +23,7 @@ STYLE(m) = m eq "lobatto" ? LS_LOB : m eq "simpson" ? LS_SIMP : m eq "midpoint" 
          : m eq "odeint_rk4" ? LS_RK4 : m eq "odeint_rkf78" ? LS_RKF78 : 60 + word_index(METHODS, m)
 COST_NAME = 'lobatto_table_cost'
 COST_TITLE = sprintf("{/:Bold Cost:} phase-space error against computing effort, nonlinear pendulum L = q̇²/2 + cos q, q(0) = %s, p(0) = 0\n" \
-                     . "one run to t_{end} = %g per step size h; wall time: minimum of %s runs of ≥ 10 ms, single thread", \
+                     . "one run to t_{end} = %g per step size h; wall time: median of %s interleaved runs of ≥ 20 ms, single thread", \
                      scene_num('nonlinear.pendulum_q0'), T, scene_num('timing.repeats'))
 COST_SETS = "pendulum"
 COST_EVALS = "force evaluations in one run (U_q and U_{qq} calls)"

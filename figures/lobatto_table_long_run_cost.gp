@@ -24,7 +24,7 @@ LABEL(m) = method_key(m, "001")   # (figures/methods.gpi: the registry's title a
 STYLE(m) = m eq "lobatto" ? LS_LOB : m eq "simpson" ? LS_SIMP : m eq "midpoint" ? LS_MID : 60 + word_index(METHODS, m)
 COST_NAME = 'lobatto_table_long_run_cost'
 COST_TITLE = sprintf("{/:Bold Cost over the long run of Fig. 2:} oscillator m = 1, ω = 2π, q(0) = π/2, p(0) = 0, %g periods per run\n" \
-                     . "wall time: minimum of %s runs of ≥ 10 ms, single thread; reference: the closed form, its own error at t_N ≤ %s", \
+                     . "wall time: median of %s interleaved runs of ≥ 20 ms, single thread; reference: the closed form, its own error at t_N ≤ %s", \
                      PERIODS, scene_num('timing.repeats'), sci(REF_ERR))
 COST_SETS = "long_run_phase long_run_energy"
 COST_EVALS = "force evaluations in one run (U_q and U_{qq} calls)"

@@ -38,7 +38,7 @@ CMP = CMP[1:10] eq "conformal_" ? CMP[11:] : CMP
 COST_NAME = 'measure_cloud_cost'
 COST_TITLE = sprintf("{/:Bold Cost:} Φ^{(4)}_h, Φ^{(0)}_h and RK4, harmonic potential U = (x^2 + y^2)/2, one run from z_0 = %s to t_N = N h ≤ %g\n" \
                      . "wall time: %s; Φ^{(0)}_h with the discretization %s", \
-                     Z0, TEND, REPEATS > 1 ? sprintf("minimum of %d runs of ≥ 10 ms", REPEATS) : "one run of ≥ 10 ms", \
+                     Z0, TEND, REPEATS > 1 ? sprintf("median of %d interleaved runs of ≥ 20 ms", REPEATS) : "one run of ≥ 20 ms", \
                      CMP)
 COST_SETS = "trajectory energy"
 COST_YLABEL(cs) = cs eq "trajectory" ? "‖z_N − z_{ref}(t_N)‖_2" : "max_j |H(z_j) − H_0|"

@@ -26,7 +26,7 @@ PARAMS = sprintf("l = %s, m = %s, k = %s, g = %s, t_{max} = %g", \
 Z0 = sprintf("(x, y, p_x, p_y) = (%s, %s, %s, %s)", scene_num('initial.0.0'), scene_num('initial.0.1'), \
              scene_num('initial.0.2'), scene_num('initial.0.3'))
 COST_NAME = 'rowlands_convergence_cost'
-COST_TITLE = sprintf("{/:Bold Cost:} phase-space error against computing effort, planar elastic pendulum, %s\none run from %s with h = t_{max}/N; wall time: minimum of %s runs of ≥ 10 ms", \
+COST_TITLE = sprintf("{/:Bold Cost:} phase-space error against computing effort, planar elastic pendulum, %s\none run from %s with h = t_{max}/N; wall time: median of %s interleaved runs of ≥ 20 ms", \
                      PARAMS, Z0, scene_num('timing.repeats'))
 COST_SETS = "phase"
 COST_EVALS = "force evaluations in one run (U_q, or U_{qq}v)"

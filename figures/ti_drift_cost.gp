@@ -1,6 +1,6 @@
 # What the accuracy of Störmer–Verlet (1.3), Takahashi–Imada (1.4) and the simplified method (1.6)
 # costs (work-precision, not in 004): the global error at t = work_precision.t_end against the wall
-# time of one run (left; the minimum of timing.repeats timed runs of at least 10 ms each) and against
+# time of one run (left; the median of timing.repeats interleaved timed runs of at least 20 ms each) and against
 # the force evaluations of one run (right; gradients and Hessian–vector products, counted, processing
 # included), log-log, one colour per method. TI and the simplified method are processed by (1.5) as in
 # Fig. 1. Top row: Hénon–Heiles k = 3 from the start of Fig. 3, against an odeint Bulirsch–Stoer
@@ -26,7 +26,7 @@ set style line 703 lc rgb method_colour('simplified_takahashi_imada') lw 1.0 dt 
 STYLE(m) = m eq "sv" ? 701 : m eq "ti" ? 702 : m eq "sti" ? 703 : m eq "forest_ruth" ? LS_FR : LS_OTHER
 COST_NAME = 'ti_drift_cost'
 COST_TITLE = sprintf("{/:Bold Cost:} global error at t = %g against computing effort; top: Hénon–Heiles k = 3 (reference: odeint " \
-                     . "Bulirsch–Stoer at tolerances %s),\nbottom: harmonic oscillator (exact solution); wall time: minimum of %s runs of ≥ 10 ms", \
+                     . "Bulirsch–Stoer at tolerances %s),\nbottom: harmonic oscillator (exact solution); wall time: median of %s interleaved runs of ≥ 20 ms", \
                      T, sci(REF_TOL / 100), scene_num('timing.repeats'))
 COST_SETS = "henon_heiles oscillator"
 COST_EVALS = "force evaluations in one run (U_q, or U_{qq}v)"

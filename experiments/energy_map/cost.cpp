@@ -100,8 +100,15 @@ json start_facts(const std::vector<double>& x0, const ElasticPendulumParams& pen
 // target over the Cartesian one (wall time and evaluations) and which system is faster; over the starts,
 // how often either was faster and the range of the ratios of evaluations; the ratio of ns per step.
 void cost_ratios(json& cost, std::size_t ns) {
+  // ns per step: every start shares the timed function; the polar over the Cartesian, with the interval from
+  // the quartiles (runner/timing.hpp), which carries over to each start's ratio of wall times
+  const json by0 = cost["start_0"]["by_method"];
+  const auto step = [&](const char* m, const char* q) { return by0[m][q].get<double>(); };
+  const double step_ratio = step("polar", "ns_per_step") / step("cartesian", "ns_per_step");
+  const double step_lo = step("polar", "ns_per_step_q1") / step("cartesian", "ns_per_step_q3");
+  const double step_hi = step("polar", "ns_per_step_q3") / step("cartesian", "ns_per_step_q1");
   json per_start = json::array();
-  int polar_faster = 0, cartesian_faster = 0, compared = 0;
+  int polar_faster = 0, cartesian_faster = 0, indistinguishable = 0, compared = 0;
   double evals_lo = std::numeric_limits<double>::infinity(), evals_hi = 0;
   for (std::size_t i = 0; i < ns; ++i) {
     const json by = cost["start_" + std::to_string(i)]["by_method"];  // (a copy: cost grows below)
@@ -111,16 +118,22 @@ void cost_ratios(json& cost, std::size_t ns) {
     };
     const auto wc = to("cartesian", "wall_s_to"), wp = to("polar", "wall_s_to");
     const auto ec = to("cartesian", "evals_to"), ep = to("polar", "evals_to");
-    if (wc && wp) ++compared, (*wp < *wc ? polar_faster : cartesian_faster) += 1;
+    json faster = nullptr;
+    if (wc && wp) {
+      const double r = *wp / *wc, lo = r * step_lo / step_ratio, hi = r * step_hi / step_ratio;
+      faster = hi < 1 ? "polar" : lo > 1 ? "cartesian" : "indistinguishable";
+      ++compared, (hi < 1 ? polar_faster : lo > 1 ? cartesian_faster : indistinguishable) += 1;
+    }
     if (ec && ep) evals_lo = std::min(evals_lo, *ep / *ec), evals_hi = std::max(evals_hi, *ep / *ec);
     per_start.push_back({{"wall_ratio_polar_over_cartesian", wc && wp ? json(*wp / *wc) : json(nullptr)},
                          {"evals_ratio_polar_over_cartesian", ec && ep ? json(*ep / *ec) : json(nullptr)},
-                         {"faster", wc && wp ? json(*wp < *wc ? "polar" : "cartesian") : json(nullptr)}});
+                         {"faster", faster}});
   }
-  const json by0 = cost["start_0"]["by_method"];  // ns per step: every start shares the timed function
-  cost["ns_per_step_ratio_polar_over_cartesian"] = by0["polar"]["ns_per_step"].get<double>() / by0["cartesian"]["ns_per_step"].get<double>();
+  cost["ns_per_step_ratio_polar_over_cartesian"] = step_ratio;
+  cost["ns_per_step_ratio_interval"] = {{"min", step_lo}, {"max", step_hi}};
   cost["per_start"] = per_start;
   cost["compared"] = compared, cost["polar_faster"] = polar_faster, cost["cartesian_faster"] = cartesian_faster;
+  cost["indistinguishable"] = indistinguishable;
   cost["evals_ratio_range"] = evals_hi > 0 ? json{{"min", evals_lo}, {"max", evals_hi}} : json(nullptr);
 }
 

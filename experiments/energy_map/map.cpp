@@ -18,6 +18,7 @@
 #include "geomint/core/state.hpp"
 #include "geomint/methods/registry.hpp"
 #include "geomint/runner/checkpoint.hpp"
+#include "geomint/runner/summary.hpp"
 #include "geomint/sweep/energy_map_statistics.hpp"
 #include "geomint/systems/elastic_pendulum.hpp"
 #include "geomint/transforms/polar.hpp"
@@ -189,6 +190,7 @@ void write_map(Context& ctx, const MapSetup& g, const std::vector<Point>& points
   reproduced["printed_63_energy_mismatch"] = polar_mismatch(pendulum, rows, [](const PhaseState<2>& z) {
     return make_state<2>(polar_position_as_printed_63(z.q), Vec<2>(0.0, 0.0));  // (at rest: p = 0 in either)
   });
+  merge(ctx.summary, "timing", {{"kernel_isa", energy_map_kernels().front().isa}});  // (the kernel the map ran)
   ctx.summary["grid"] = {{"nx", g.xs.size()}, {"ny", g.ys.size()}, {"points", g.npoints}, {"steps", g.P.steps},
                          {"dx", spacing(g.xs)}, {"dy", spacing(g.ys)}};
   ctx.summary["pendulum"] = {{"dt_omega", dt * spring_frequency(pendulum)},

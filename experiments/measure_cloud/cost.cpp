@@ -147,6 +147,9 @@ json report_discretizations(Context& ctx, const PhiStudy& p, const WorkPrecision
   for (double hh : hs)
     if (std::abs(static_cast<double>(steps_within(T, hh)) * hh / T - 1) < 1e-9) h_at_T.push_back(hh);
   json ns_per_step, newton_at_h, err_at_T, order;
+  std::vector<std::string> names;  // Phi^(4) at h: each discretization's time per step against the first's
+  std::vector<RunTime> per_step;
+  std::vector<double> work;  // (Newton iterations per step)
   for (Discretization d : p.methods) {
     const char* name = discretization_name(d);
     std::vector<double> errs;  // in the order of hs
@@ -154,11 +157,15 @@ json report_discretizations(Context& ctx, const PhiStudy& p, const WorkPrecision
       if (r.method != phi_label(4, d)) continue;
       errs.push_back(r.err);
       if (std::find(h_at_T.begin(), h_at_T.end(), r.h) != h_at_T.end()) err_at_T[name].push_back(r.err);
-      if (r.h == p.h) ns_per_step[name] = 1e9 * r.wall.seconds() / r.steps, newton_at_h[name] = r.evals / r.steps;
+      if (r.h == p.h) {
+        ns_per_step[name] = 1e9 * r.wall.seconds() / r.steps, newton_at_h[name] = r.evals / r.steps;
+        names.push_back(name), per_step.push_back(r.wall.scaled(1e9 / r.steps)), work.push_back(r.evals / r.steps);
+      }
     }
     order[name] = fit_order(hs, errs, 0.0, "cost").order;
   }
   put_methods(ctx, "newton_iterations_per_step_phi4", newton_at_h);
+  if (!names.empty()) ctx.summary["cost"]["relative_ns_per_step_at_h"] = relative_timings(names, per_step, work);
   put(ctx, "reproduced", "cost_h_at_t_end", h_at_T);
   put(ctx, "reproduced", "cost_err_at_t_end", err_at_T);
   ctx.summary["orders"]["cost_error_phi4"] = order;
