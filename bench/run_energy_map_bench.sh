@@ -12,8 +12,8 @@
 # trajectory-step on one core and in cycles (the clock calibrated in the same run by a dependent chain of
 # integer additions), the ratio to the best batch kernel, the fraction of each kernel's own ceiling in
 # cycles (its multiplies and FMAs on two pipes, counted in its object: AVX-512 1.5 cycles Cartesian, 2.7
-# polar; bench/README.md; not yet counted for AVX2 and SSE2), and the eps of the check points from every
-# implementation. Build first:
+# polar, AVX2 3.125 and 5.4; bench/README.md; not yet counted for SSE2), and the eps of the check points from
+# every implementation. Build first:
 #   cmake --build build --target geomint_energy_map_bench
 # QUICK=1 shortens everything (a smoke run, ~6 s; numpy keeps 4096 trajectories,
 # below which its per-step interpreter overhead dominates).
@@ -49,7 +49,8 @@ import json, sys
 
 # Cycles per trajectory-step that each kernel's multiplies and FMAs need on two multiply pipes, counted in its
 # compiled object (bench/README.md); None where not counted.
-CEILING_CYCLES = {("avx512", "cartesian"): 1.5, ("avx512", "polar"): 2.7}
+CEILING_CYCLES = {("avx512", "cartesian"): 1.5, ("avx512", "polar"): 2.7,
+                  ("avx2", "cartesian"): 3.125, ("avx2", "polar"): 5.4}
 cpp = json.load(open(sys.argv[1]))
 numpy = json.load(open(sys.argv[3]))
 
