@@ -65,8 +65,10 @@ StudyPlan plan_cost(const Scene& s) {
     steps += 2 * starts * n;  // (the untimed runs, both systems)
     calls.insert(calls.end(), 2, TimedCall{starts * n, kScalarNsPerStep});
   }
-  StudyPlan p{steps, steps, starts * static_cast<double>(s.reals("cost.dt").size()) * 2 * 200.0, kScalarNsPerStep,
-              std::string("the untimed runs, then the timing protocol; ") + kNsNote};
+  StudyPlan p;
+  p.steps = steps, p.force_evals = steps, p.ns_per_step = kScalarNsPerStep;
+  p.memory_bytes = starts * static_cast<double>(s.reals("cost.dt").size()) * 2 * 200.0;
+  p.note = "the untimed runs, then the timing protocol; " + std::string(kNsNote);
   const TimedPlan timed = timing_plan(calls, static_cast<double>(s.integer("timing.repeats")));
   p.timed_seconds = timed.seconds, p.timed_steps = timed.steps;
   return p;

@@ -30,8 +30,9 @@ StudyPlan plan_timing(const Scene& s) {
                         kEnergyMapBatch * n.steps;
   const double scalar = std::min(static_cast<double>(s.integer("timing.scalar_points")), n.points) *
                         static_cast<double>(s.integer("timing.scalar_steps"));
-  StudyPlan p{0, 0, n.batches * kEnergyMapBatch * 2 * sizeof(double), kScalarNsPerStep,
-              std::string("the timing protocol; the kernel sample only without the map study; ") + kNsNote};
+  StudyPlan p;
+  p.memory_bytes = n.batches * kEnergyMapBatch * 2 * sizeof(double), p.ns_per_step = kScalarNsPerStep;
+  p.note = "the timing protocol; the kernel sample only without the map study; " + std::string(kNsNote);
   const TimedPlan timed = timing_plan({{kernel, kernel_ns_per_step()}, {kernel, kernel_ns_per_step()}, {scalar, kScalarNsPerStep},
                                        {scalar, kScalarNsPerStep}},
                                       static_cast<double>(s.integer("timing.repeats")));

@@ -96,8 +96,10 @@ StudyPlan plan_cost(const Scene& s) {
   std::vector<TimedCall> calls;  // the set's runs, then a run of timing.steps per method
   for (double h : s.reals("timing.h")) calls.insert(calls.end(), methods.size(), TimedCall{s.real("convergence.t_end") / h, kOscillatorNs});
   calls.insert(calls.end(), methods.size(), TimedCall{static_cast<double>(s.integer("timing.steps")), kOscillatorNs});
-  StudyPlan p{counted, counted * kEvalsPerStep, static_cast<double>(calls.size()) * 8 * kCellBytes, kOscillatorNs,
-              std::string("counting runs, then the timing protocol; ") + kOscillatorNsNote};
+  StudyPlan p;
+  p.steps = counted, p.force_evals = counted * kEvalsPerStep;
+  p.memory_bytes = static_cast<double>(calls.size()) * 8 * kCellBytes, p.ns_per_step = kOscillatorNs;
+  p.note = "counting runs, then the timing protocol; " + std::string(kOscillatorNsNote);
   const TimedPlan timed = timing_plan(calls, static_cast<double>(s.integer("timing.repeats")));
   p.timed_seconds = timed.seconds, p.timed_steps = timed.steps;
   return p;
