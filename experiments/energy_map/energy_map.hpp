@@ -56,6 +56,13 @@ void check_map(const Scene& s);
 // instruction set it runs on this CPU (paper-scene summary.json timing.ns_per_step_per_core, 2 threads):
 // AVX-512 0.47 and 1.05 (an AVX-512 machine), AVX2 2.15 and 3.21 (an AVX2 EPYC), SSE2 4.37 and 6.71 (make
 // bench on the AVX-512 machine). The scalar loop: about 20-29 ns per step.
+// The batched kernel's own ceiling in cycles per trajectory-step: its multiplies and FMAs on two multiply
+// pipes, counted in its compiled object (bench/README.md); 0 where not counted (SSE2).
+inline double kernel_ceiling_cycles(const std::string& isa, Coordinates c) {
+  const bool polar = c == Coordinates::polar;
+  return isa == "avx512" ? (polar ? 2.7 : 1.5) : isa == "avx2" ? (polar ? 5.4 : 3.125) : 0.0;
+}
+
 inline double kernel_ns_per_step() {
   const std::string isa = energy_map_kernels().front().isa;
   return isa == "avx512" ? 0.76 : isa == "avx2" ? 2.68 : 5.54;

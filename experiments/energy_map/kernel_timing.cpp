@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "energy_map.hpp"
+#include "geomint/runner/clock.hpp"
 #include "geomint/runner/timing.hpp"
 #include "geomint/runner/timing_report.hpp"
 #include "geomint/sweep/parallel_map.hpp"
@@ -77,8 +78,11 @@ void time_scalar_loop(Context& ctx, const MapSetup& g, int repeats, json& scalar
   }
 }
 
-// Each kernel against its target and the hardware ceiling (the scene's estimates).
+// Each kernel against its target, the AVX-512 ceiling the scene gives, and its own ceiling in cycles at the
+// clock calibrated in this run (kernel_ceiling_cycles; null where not counted).
 void against_targets(json& timing, const Scene& s, double ns_cart, double ns_polar) {
+  const double ns_cycle = ns_per_cycle(static_cast<int>(s.integer("timing.repeats")));
+  timing["clock_ghz"] = 1 / ns_cycle;
   for (const auto c : {Coordinates::cartesian, Coordinates::polar}) {
     const std::string name = coordinates_name(c);
     const double ns = c == Coordinates::cartesian ? ns_cart : ns_polar;
@@ -86,6 +90,10 @@ void against_targets(json& timing, const Scene& s, double ns_cart, double ns_pol
     timing["ceiling_ns"][name] = {{"min", ceiling[0]}, {"max", ceiling[1]}};
     timing["ceiling_fraction"][name] = {{"min", ceiling[0] / ns}, {"max", ceiling[1] / ns}};
     timing["target_verdict"][name] = ns <= s.real("timing.target." + name) ? "meets" : "misses";
+    const double own = kernel_ceiling_cycles(timing["kernel_isa"].get<std::string>(), c);
+    timing["cycles_per_step_per_core"][name] = ns / ns_cycle;
+    timing["own_ceiling_cycles"][name] = own > 0 ? json(own) : json(nullptr);
+    timing["own_ceiling_fraction"][name] = own > 0 ? json(own / (ns / ns_cycle)) : json(nullptr);
   }
 }
 

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "geomint/runner/clock.hpp"
+
 namespace geomint {
 namespace {
 
@@ -88,6 +90,23 @@ RunTime time_runs(int repeats, const std::function<void()>& f, double floor_s) {
   InterleavedTiming t(repeats, floor_s);
   t.add(f);
   return t.run().front();
+}
+
+double ns_per_cycle(int repeats) {
+#if defined(__x86_64__)
+  constexpr std::int64_t kAdds = 1 << 16;  // per call, in blocks of 8
+  std::uint64_t x = 0;
+  const RunTime t = time_runs(repeats, [&x] {
+    for (std::int64_t i = 0; i < kAdds; i += 8)
+      asm volatile("add $1, %0\n\tadd $1, %0\n\tadd $1, %0\n\tadd $1, %0\n\t"
+                   "add $1, %0\n\tadd $1, %0\n\tadd $1, %0\n\tadd $1, %0"
+                   : "+r"(x));  // (each addition waits for the previous one)
+  });
+  return 1e9 * t.seconds() / static_cast<double>(kAdds);
+#else
+  (void)repeats;
+  return std::nan("");
+#endif
 }
 
 TimeRatio time_ratio(const RunTime& a, const RunTime& b) {
