@@ -153,7 +153,8 @@ StudyPlan plan_pendulum(const Scene& s) {
   const double reference_ns = 190;
   p.memory_bytes = kept_samples(n, static_cast<double>(s.integer("samples"))) * (3 * 8 + 80);  // 3 series + the CSV rows
   p.ns_per_step = (n * kNsPerStepHH + static_cast<double>(kReferenceSteps) * reference_ns) / p.steps;
-  p.note = std::string(kNsNote) + "; the reference's steps: 190 ns";
+  p.note = kNsNote;
+  p.note += "; the reference's steps: 190 ns";
   return p;
 }
 
