@@ -28,6 +28,7 @@
 #include <boost/numeric/odeint/integrate/integrate_n_steps.hpp>
 #include <boost/numeric/odeint/stepper/symplectic_euler.hpp>
 
+#include "geomint/runner/clock.hpp"
 #include "geomint/sweep/energy_map.hpp"
 
 using namespace geomint;
@@ -204,20 +205,12 @@ void BM_EnergyMapOdeint(benchmark::State& state) {
   set_counters(state, out);
 }
 
-// The clock, calibrated in the same run: a dependent chain of integer additions, one cycle of latency each on
-// every x86-64 core, timed like the kernels. Its time per addition is the cycle time of the core the benchmarks
+// The clock, calibrated in the same run: a dependent chain of integer additions (runner/clock.hpp), one cycle
+// of latency each on every x86-64 core, timed like the kernels. Its time per addition is the cycle time of the core the benchmarks
 // ran on (turbo included), which turns their ns per trajectory-step into cycles (run_energy_map_bench.sh).
 void BM_ClockCalibration(benchmark::State& state) {
-  constexpr std::int64_t kAdds = 1 << 20;  // per iteration, in blocks of 16
-  std::uint64_t x = 0;
-  for (auto _ : state) {
-    for (std::int64_t i = 0; i < kAdds; i += 16)
-      asm volatile(  // (each addition waits for the previous one)
-          "add $1, %0\n\tadd $1, %0\n\tadd $1, %0\n\tadd $1, %0\n\tadd $1, %0\n\tadd $1, %0\n\tadd $1, %0\n\tadd $1, %0\n\t"
-          "add $1, %0\n\tadd $1, %0\n\tadd $1, %0\n\tadd $1, %0\n\tadd $1, %0\n\tadd $1, %0\n\tadd $1, %0\n\tadd $1, %0"
-          : "+r"(x));
-    benchmark::DoNotOptimize(x);
-  }
+  constexpr std::int64_t kAdds = 1 << 20;  // per iteration
+  for (auto _ : state) dependent_additions(kAdds);
   state.counters["time_per_add"] = benchmark::Counter(static_cast<double>(kAdds),
                                                       benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }

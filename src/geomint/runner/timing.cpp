@@ -92,16 +92,24 @@ RunTime time_runs(int repeats, const std::function<void()>& f, double floor_s) {
   return t.run().front();
 }
 
+void dependent_additions(std::int64_t n) {
+  std::uint64_t x = 0;
+  for (std::int64_t i = 0; i < n; i += 8) {
+#if defined(__x86_64__)
+    asm volatile("add $1, %0\n\tadd $1, %0\n\tadd $1, %0\n\tadd $1, %0\n\t"
+                 "add $1, %0\n\tadd $1, %0\n\tadd $1, %0\n\tadd $1, %0"
+                 : "+r"(x));  // (each addition waits for the previous one)
+#else
+    x += 8;
+#endif
+  }
+  do_not_optimize(x);
+}
+
 double ns_per_cycle(int repeats) {
 #if defined(__x86_64__)
-  constexpr std::int64_t kAdds = 1 << 16;  // per call, in blocks of 8
-  std::uint64_t x = 0;
-  const RunTime t = time_runs(repeats, [&x] {
-    for (std::int64_t i = 0; i < kAdds; i += 8)
-      asm volatile("add $1, %0\n\tadd $1, %0\n\tadd $1, %0\n\tadd $1, %0\n\t"
-                   "add $1, %0\n\tadd $1, %0\n\tadd $1, %0\n\tadd $1, %0"
-                   : "+r"(x));  // (each addition waits for the previous one)
-  });
+  constexpr std::int64_t kAdds = 1 << 16;
+  const RunTime t = time_runs(repeats, [] { dependent_additions(kAdds); });
   return 1e9 * t.seconds() / static_cast<double>(kAdds);
 #else
   (void)repeats;
