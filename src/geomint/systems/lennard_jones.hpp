@@ -57,8 +57,8 @@ struct LennardJones {
 #pragma GCC unroll 16
       for (int j = i + 1; j < N; ++j) {
         const T dx = q[2 * i] - q[2 * j], dy = q[2 * i + 1] - q[2 * j + 1];
-        const T iu = 1.0 / (dx * dx + dy * dy), iu4 = iu * iu * iu * iu;
-        const T c = 2 * eps * (6 * iu4 - 6 * iu4 * iu * iu * iu);  // 2 G'(u), G' = eps (-6 u^-7 + 6 u^-4)
+        const T iu = 1.0 / (dx * dx + dy * dy), iu2 = iu * iu, iu4 = iu2 * iu2;
+        const T c = (12 * eps) * iu4 * (1.0 - iu2 * iu);  // 2 G'(u) = 12 eps u^-4 (1 - u^-3), G' = eps (6 u^-4 - 6 u^-7)
         const T wx = c * dx, wy = c * dy;
         gx += wx, gy += wy, g[2 * j] -= wx, g[2 * j + 1] -= wy;
       }
