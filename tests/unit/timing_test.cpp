@@ -33,9 +33,10 @@ TEST(TimingProtocol, CalibratesEachRunToTheFloorAndOrdersTheStatistics) {
   };
   const RunTime t = time_runs(7, busy, 0.01);
   EXPECT_EQ(t.repeats, 7);
-  EXPECT_GE(t.inner, 2);   // a 0.2 ms call is repeated towards 10 ms
-  EXPECT_LE(t.inner, 50);  // ceil(10 ms / >= 0.2 ms)
-  EXPECT_GE(calls, 1 + 8 * t.inner);  // a warm-up, at least one calibration run, the 7 timed runs
+  EXPECT_GE(t.inner, 2);   // a 0.2 ms call is repeated towards 1.1 x 10 ms
+  EXPECT_LE(t.inner, 55);  // ceil(1.1 x 10 ms / >= 0.2 ms)
+  EXPECT_GE(t.min_s * static_cast<double>(t.inner), 0.01);  // no run below the floor (inner only grows)
+  EXPECT_GE(calls, 1 + 7 * 2);  // a warm-up, a probe, the 7 timed runs
   EXPECT_GE(t.min_s, 200e-6);
   EXPECT_LE(t.min_s, t.q1_s);
   EXPECT_LE(t.q1_s, t.median_s);
@@ -51,8 +52,9 @@ TEST(TimingProtocol, InterleavesTheConfigurationsInAnOrderRotatedEachRound) {
   for (char c : std::string("ABC")) t.add([&order, c] { order += c; });
   const auto times = t.run();
   ASSERT_EQ(times.size(), 3u);
-  // each: a warm-up call and a calibration run; then the rounds A B C, B C A, C A B, A B C
-  EXPECT_EQ(order, "AABBCC" "ABC" "BCA" "CAB" "ABC");
+  // each: a warm-up call (no probe: the call is not shorter than the floor); then the rounds A B C, B C A,
+  // C A B, A B C
+  EXPECT_EQ(order, "ABC" "ABC" "BCA" "CAB" "ABC");
   for (const RunTime& r : times) {
     EXPECT_EQ(r.repeats, 4);
     EXPECT_EQ(r.inner, 1);
@@ -106,11 +108,12 @@ TEST(TimingProtocol, RelativeTimingsAgainstTheFirst) {
 }
 
 TEST(TimingProtocol, PlansItsOwnTime) {
-  // 3 configurations, 7 rounds: (7 + 3) runs each of at least the floor; a call longer than the floor lengthens its
-  // runs, a shorter one is repeated to fill it: calls of 1 ms (1000 steps of 1 us) 20 to a run
+  // 3 configurations, 7 rounds, each after its warm-up call: calls shorter than the floor (1 ms: 1000 steps of
+  // 1 us; 1 us) a probe of floor / 8 and 7 runs of 1.1 x the floor; a longer call (50 ms) 7 runs of one call
   const TimedPlan p = timing_plan({{1000, 1000}, {1, 1000}, {50000, 1000}}, 7);
-  EXPECT_DOUBLE_EQ(p.seconds, 10 * (kTimingFloorS + kTimingFloorS + 0.05));
-  EXPECT_DOUBLE_EQ(p.steps, 10 * (20 * 1000 + 20000 * 1 + 50000));
+  const double f = kTimingFloorS, short_runs = f / 8 + 7 * 1.1 * f;
+  EXPECT_NEAR(p.seconds, (1e-3 + short_runs) + (1e-6 + short_runs) + 8 * 0.05, 1e-15);
+  EXPECT_NEAR(p.steps, (1000 + short_runs / 1e-6) + (1 + short_runs / 1e-6) + 8 * 50000, 1e-6);
 }
 
 }  // namespace timing_test

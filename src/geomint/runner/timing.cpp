@@ -24,14 +24,22 @@ double timed_run(const std::function<void()>& f, std::int64_t inner) {
   return seconds_since(start);
 }
 
-// Calls per run so that a run of f lasts at least floor_s: from an untimed warm-up call, then doubled
-// (at least) until a timed run reaches the floor.
+// The calls that last `seconds`, where `calls` took took_s (at least one).
+std::int64_t calls_for(double seconds, std::int64_t calls, double took_s) {
+  const double c = std::ceil(static_cast<double>(calls) * seconds / std::max(took_s, 1e-9));
+  return std::max<std::int64_t>(1, static_cast<std::int64_t>(c));
+}
+
+// Calls per run for a run of f of kTimingMargin times floor_s: after an untimed warm-up call, from a
+// probe run of at least floor_s / 8 (a call of at least floor_s: one call per run).
 std::int64_t calibrated_calls(const std::function<void()>& f, double floor_s) {
   const double once = timed_run(f, 1);  // the warm-up
-  std::int64_t inner = once >= floor_s ? 1 : static_cast<std::int64_t>(std::ceil(floor_s / std::max(once, 1e-9)));
-  for (double t = timed_run(f, inner); t < floor_s; t = timed_run(f, inner))
-    inner = std::max(2 * inner, static_cast<std::int64_t>(std::ceil(static_cast<double>(inner) * floor_s / std::max(t, 1e-9))));
-  return inner;
+  if (once >= floor_s) return 1;
+  const double probe_s = floor_s / 8;
+  std::int64_t k = static_cast<std::int64_t>(std::ceil(probe_s / std::max(once, 1e-9)));
+  double t = timed_run(f, k);
+  for (; t < probe_s; t = timed_run(f, k)) k = std::max(2 * k, calls_for(probe_s, k, t));
+  return calls_for(kTimingMargin * floor_s, k, t);
 }
 
 }  // namespace
@@ -79,7 +87,10 @@ std::vector<RunTime> InterleavedTiming::run() const {
   for (int round = 0; round < repeats; ++round)
     for (std::size_t k = 0; k < n; ++k) {  // (rotated by one per round)
       const std::size_t c = (k + static_cast<std::size_t>(round)) % n;
-      per_call[c].push_back(timed_run(configs_[c], inner[c]) / static_cast<double>(inner[c]));
+      double t = timed_run(configs_[c], inner[c]);
+      for (; t < floor_s_; t = timed_run(configs_[c], inner[c]))  // (never a run below the floor: a faster
+        inner[c] = calls_for(kTimingMargin * floor_s_, inner[c], t);  // machine lengthens it and runs it again)
+      per_call[c].push_back(t / static_cast<double>(inner[c]));
     }
   std::vector<RunTime> out;
   for (std::size_t c = 0; c < n; ++c) out.push_back(run_time_of(std::move(per_call[c]), inner[c]));

@@ -3,8 +3,9 @@
 // every cost and timing study and for the benchmarks' reporting.
 //
 // Each configuration (a method at a step, a kernel, ...) gets one untimed warm-up call, then its calls
-// per timed run are calibrated so that a run lasts at least the floor (kTimingFloorS, 20 ms: well
-// above the clock's resolution and a scheduler tick's jitter). Then `repeats` rounds (at least
+// per timed run are calibrated from a probe run of an eighth of the floor so that a run lasts
+// kTimingMargin times the floor (kTimingFloorS, 20 ms: well above the clock's resolution and a
+// scheduler tick's jitter); a run that still ends below the floor is lengthened and run again. Then `repeats` rounds (at least
 // kTimingRepeats in the paper scenes) each time one run of every configuration, in an order rotated
 // by one per round (A B C, B C A, C A B, ...): a burst of load on a shared machine hits every
 // configuration alike. A run's time is its wall time over its calls; a configuration reports the
@@ -26,6 +27,7 @@
 namespace geomint {
 
 inline constexpr double kTimingFloorS = 0.02;  // the shortest timed run
+inline constexpr double kTimingMargin = 1.1;   // a run is calibrated to this times the floor
 inline constexpr int kTimingRepeats = 7;       // the fewest rounds of the protocol (paper scenes)
 inline constexpr const char* kTimingRepeatsHelp =
     "rounds of the timing protocol (runner/timing.hpp): each configuration timed once per round in runs of >= 20 ms, "
@@ -75,8 +77,9 @@ class InterleavedTiming {
 struct TimedCall {
   double steps = 0, ns_per_step = 0;
 };
-// What timing configurations under the protocol with `repeats` rounds takes: each a warm-up, a calibration
-// (about two runs) and its rounds, each run at least the floor (a short call repeated to fill it).
+// What timing configurations under the protocol with `repeats` rounds takes: each a warm-up call, then
+// (a call shorter than the floor) a probe of an eighth of the floor and its rounds of kTimingMargin
+// times the floor, or (a longer call) its rounds of one call.
 struct TimedPlan {
   double seconds = 0, steps = 0;
 };
@@ -84,9 +87,9 @@ inline TimedPlan timing_plan(const std::vector<TimedCall>& calls, double repeats
   TimedPlan p;
   for (const TimedCall& c : calls) {
     const double call_s = c.steps * c.ns_per_step * 1e-9;
-    const double calls_per_run = call_s >= kTimingFloorS || call_s <= 0 ? 1 : std::ceil(kTimingFloorS / call_s);
-    p.seconds += (repeats + 3) * std::max(kTimingFloorS, call_s);
-    p.steps += (repeats + 3) * calls_per_run * c.steps;
+    const double rest_s = call_s >= kTimingFloorS ? repeats * call_s : kTimingFloorS / 8 + repeats * kTimingMargin * kTimingFloorS;
+    p.seconds += call_s + rest_s;
+    p.steps += c.steps + (call_s > 0 ? rest_s / call_s * c.steps : 0);
   }
   return p;
 }
