@@ -19,6 +19,7 @@ JOBS      ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_ARGS ?=
 EXPERIMENTS := $(notdir $(patsubst %/,%,$(dir $(wildcard experiments/*/main.cpp))))
 DEPS_STAMP := .deps
+UNCHECKED := figures/out/.unchecked   # figures rendered by make figures whose text is not yet checked
 
 .PHONY: all deps build test figures figure-runs figure-files scaling paper experiment bench methods-gpi clean FORCE
 all: build
@@ -74,7 +75,7 @@ $(RESULTS)/$(3)/run.json: $(BUILD)/bin/$(1) $(2) $(filter-out experiments/$(1)/q
 	  awk -v ns=$$$$(( $$$$(date +%s%N) - start )) 'BEGIN { printf "== $(3): %.1f s\n", ns / 1e9 }'
 FIGURES_$(3) := $(patsubst figures/%.gp,figures/out/%.pdf,$(wildcard figures/$(3)_*.gp))
 $$(FIGURES_$(3)): figures/out/%.pdf: figures/%.gp figures/common.gp figures/cost.gpi $(RESULTS)/$(3)/run.json
-	@tests/figures/render_figures.sh $(RESULTS)/$(3) figures/out $$<
+	@tests/figures/render_figures.sh --check-later $(UNCHECKED) $(RESULTS)/$(3) figures/out $$<
 ALL_FIGURES += $$(FIGURES_$(3)) $(RESULTS)/$(3)/run.json
 ALL_RUNS += $(RESULTS)/$(3)/run.json
 endef
@@ -86,14 +87,21 @@ FORCE:
 $(BUILD)/bin/%: ;   # made by `build`, before figure-files is asked for
 
 # The runs one after another (each uses every core, and times itself), then the figures rendered
-# in parallel; at the end each experiment's wall time (its run.json) and that of the whole make figures.
+# in parallel; at the end each experiment's wall time (its run.json), the rendering's and that of the
+# whole make figures.
 figures: build $(DEPS_STAMP)/figures.stamp
-	@start=$$(date +%s.%N); $(MAKE) --no-print-directory figure-runs && $(MAKE) --no-print-directory -j $(JOBS) figure-files && \
-	  python3 scripts/figure_times.py $(RESULTS) $$start $(foreach sc,$(PAPER_SCENES),$(call id_of,$(sc)))
+	@start=$$(date +%s.%N); $(MAKE) --no-print-directory figure-runs && render=$$(date +%s.%N) && \
+	  $(MAKE) --no-print-directory -j $(JOBS) figure-files && \
+	  python3 scripts/figure_times.py --rendering-from $$render $(RESULTS) $$start $(foreach sc,$(PAPER_SCENES),$(call id_of,$(sc)))
 
 figure-runs: $(ALL_RUNS)
 
+# Each figure rendered by its rule; the text of all of them checked at the end in one process (a figure
+# that fails is removed, so that the next make renders it again; a list left by an interrupted make is
+# checked by the next).
 figure-files: $(ALL_FIGURES)
+	@if [ -s $(UNCHECKED) ]; then \
+	  python3 tests/figures/check_figure_text.py --remove-failing $$(sort -u $(UNCHECKED)); rc=$$?; rm -f $(UNCHECKED); exit $$rc; fi
 
 # The report: the generated parts from the runs and from a run of the hard-case tests, with the quick runs they wait on (scripts/report.py
 # computes nothing), LaTeX, then a check of the PDF's text (no undefined reference, missing value, NaN; the contents and ledger in front).

@@ -1,11 +1,12 @@
 #!/usr/bin/env python3
 """The wall time of each paper scene's run, printed at the end of `make figures`.
 
-    scripts/figure_times.py RESULTS SINCE ID...
+    scripts/figure_times.py [--rendering-from T] RESULTS SINCE ID...
 
 Reads RESULTS/<id>/run.json (wall_s, threads, study_wall_s) of each id; SINCE is the time (seconds
 since the epoch) `make figures` started: a run.json older than that is marked as not rerun (its
-results were up to date). The last line is the wall time of this `make figures`, rendering included.
+results were up to date). T is when the rendering started (after the runs): its wall time is the
+line before the last. The last line is the wall time of this `make figures`, rendering included.
 """
 import json
 import sys
@@ -14,6 +15,9 @@ from pathlib import Path
 
 
 def main(argv):
+    rendering_from = None
+    if argv[:1] == ["--rendering-from"] and len(argv) > 1:
+        rendering_from, argv = float(argv[1]), argv[2:]
     if len(argv) < 3:
         sys.exit(__doc__)
     results, since, ids = Path(argv[0]), float(argv[1]), argv[2:]
@@ -36,8 +40,11 @@ def main(argv):
     print("== wall time per experiment (run.json)")
     for i, wall, fresh, note in rows:
         print(f"   {i:<{width}}  {wall:>7} s  {fresh:<12} {note}")
+    now = time.time()
     print(f"   {'runs of this make':<{width}}  {total:7.1f} s")
-    print(f"== make figures: {time.time() - since:.1f} s")
+    if rendering_from is not None:
+        print(f"   {'rendering':<{width}}  {now - rendering_from:7.1f} s")
+    print(f"== make figures: {now - since:.1f} s")
 
 
 if __name__ == "__main__":

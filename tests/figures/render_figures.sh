@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Render gnuplot figure scripts and check them.
 #
-#   tests/figures/render_figures.sh [--only-available] RESULTS_DIR OUT_DIR SCRIPT...
+#   tests/figures/render_figures.sh [--only-available] [--check-later LIST] RESULTS_DIR OUT_DIR SCRIPT...
 #
 # Runs, from the repository root (two levels above this file, so that the scripts'
 # `load 'figures/common.gp'` works), for each SCRIPT:
@@ -12,13 +12,23 @@
 # a word of the PDF leaves the canvas or overlaps another (check_figure_text.py;
 # needs pdftotext from poppler-utils, which scripts/install-deps.sh figures installs).
 # All scripts are tried; the exit status is 1 if any failed, 2 on a usage error.
+# --check-later LIST appends each rendered PDF to the file LIST instead of checking its text, for one
+# check_figure_text.py --remove-failing over all of them (make figures: one Python start, not one per figure).
 # --only-available skips (and names) each script whose input CSVs, as its
 # "# Input:" line lists them, are not all in RESULTS_DIR: a run of some of the
 # studies (--study) renders the figures of those studies only.
 set -u
 
 only_available=0
-if [ "${1:-}" = "--only-available" ]; then only_available=1; shift; fi
+check_later=""
+while [ $# -gt 0 ]; do
+    case "$1" in
+        --only-available) only_available=1; shift ;;
+        --check-later) [ $# -ge 2 ] || { echo "render_figures: --check-later needs a file" >&2; exit 2; }
+                       check_later=$2; shift 2 ;;
+        *) break ;;
+    esac
+done
 
 if [ $# -lt 3 ]; then
     echo "usage: $0 RESULTS_DIR OUT_DIR SCRIPT..." >&2
@@ -33,6 +43,7 @@ done
 
 # Paths are relative to the caller's directory; make them absolute before cd.
 abspath() { case "$1" in /*) printf '%s\n' "$1" ;; *) printf '%s\n' "$PWD/$1" ;; esac; }
+[ -z "$check_later" ] || check_later=$(abspath "$check_later")
 results=$(abspath "$1")
 out=$(abspath "$2")
 shift 2
@@ -85,7 +96,9 @@ for script in "${scripts[@]}"; do
             for ext in pdf png; do
                 [ -s "$out/$name.$ext" ] || why="${why:+$why; }$out/$name.$ext missing or empty"
             done
-            if [ -z "$why" ] && ! python3 tests/figures/check_figure_text.py "$out/$name.pdf" >"$log"; then
+            if [ -z "$why" ] && [ -n "$check_later" ]; then
+                printf '%s\n' "$out/$name.pdf" >> "$check_later"   # (one short line: an atomic append)
+            elif [ -z "$why" ] && ! python3 tests/figures/check_figure_text.py "$out/$name.pdf" >"$log"; then
                 sed "s|^|  $name: |" "$log" >&2
                 why="text off the canvas or overlapping"
             fi
