@@ -140,10 +140,11 @@ void cost_ratios(json& cost, std::size_t ns) {
 }
 
 // The energy errors (50): one untimed run per system, step and start (split across threads and ranks);
-// the wall time: per system and step one timed function integrates every start in turn (serial, one
-// thread; all of them timed together under the timing protocol), a start's share its time over the number of starts (the loop's time per step does not depend
-// on the start: its only branch is the divergence test). One set per start.
-std::vector<WorkPrecisionSet> timed_sets(const Scene& s, const std::vector<std::vector<double>>& starts,
+// the wall time: per system and step one timed function integrates every start in turn (one thread; all
+// of them timed together under the timing protocol, up to `workers` at a time), a start's share its time
+// over the number of starts (the loop's time per step does not depend on the start: its only branch is
+// the divergence test). One set per start.
+std::vector<WorkPrecisionSet> timed_sets(const Scene& s, int workers, const std::vector<std::vector<double>>& starts,
                                          const std::function<EnergyMapParams(double)>& params) {
   const auto dts = s.reals("cost.dt");
   const std::size_t ns = starts.size(), nd = dts.size();
@@ -152,7 +153,7 @@ std::vector<WorkPrecisionSet> timed_sets(const Scene& s, const std::vector<std::
     return energy_map_scalar(systems[c], params(dts[d]), starts[i][0], starts[i][1]);
   });
   std::vector<WorkPrecisionSet> sets(ns, WorkPrecisionSet("eq. (50) over [0, cost.t_end] against H_0 = H(z_0)"));
-  InterleavedTiming timing(static_cast<int>(s.integer("timing.repeats")));  // every system and step together
+  InterleavedTiming timing(static_cast<int>(s.integer("timing.repeats")), kTimingFloorS, workers);  // every system and step together
   std::vector<EnergyMapParams> P;
   for (std::size_t d = 0; d < nd; ++d) P.push_back(params(dts[d]));
   for (std::size_t d = 0; d < nd; ++d)
@@ -179,7 +180,7 @@ void run_cost(Context& ctx) {
   const auto dts = s.reals("cost.dt");
   const double t_end = s.real("cost.t_end");
   const ElasticPendulumParams pendulum{s.real("pendulum.l"), s.real("pendulum.m"), s.real("pendulum.k"), s.real("pendulum.g")};
-  const auto sets = timed_sets(s, starts, [&](double dt) {
+  const auto sets = timed_sets(s, ctx.threads, starts, [&](double dt) {
     return EnergyMapParams{pendulum.l, pendulum.m, pendulum.k, pendulum.g, dt, steps_to(t_end, dt), s.real("divergence.blowup")};
   });
   json start_list = json::array(), cost;
@@ -198,7 +199,7 @@ void run_cost(Context& ctx) {
                                    {"error", "eq. (50) over [0, cost.t_end] against H_0 = H(z_0), per start"}};
   cost["method"] = "the scalar loop energy_map_scalar in both systems (not the batched kernels); per system and step "
                    "one timed function runs every start of cost.starts in turn, a start's wall time is its share; " +
-                   timing_method_text(static_cast<int>(s.integer("timing.repeats"))) +
+                   timing_method_text(static_cast<int>(s.integer("timing.repeats")), ctx.threads) +
                    "; force evaluations: one gradient of U per step; ns_per_step at the smallest h";
   cost_ratios(cost, starts.size());
   ctx.summary["cost"] = cost;

@@ -21,7 +21,7 @@ namespace geomint::euler_compensation {
 namespace {
 
 // The set "energy": counting runs in parallel, then every (h, method) timed together (runner/timing.hpp).
-WorkPrecisionSet energy_set(const Scene& s, const State& z0) {
+WorkPrecisionSet energy_set(const Scene& s, const State& z0, int workers) {
   const double t_end = s.real("convergence.t_end"), k = s.real("oscillator.k");
   const int repeats = static_cast<int>(s.integer("timing.repeats"));
   const auto methods = s.texts("timing.methods");
@@ -38,7 +38,7 @@ WorkPrecisionSet energy_set(const Scene& s, const State& z0) {
                  oscillator_method_timed(methods[m], k, z0, hs[i], n));
     }
   }
-  energy.time(repeats);
+  energy.time(repeats, workers);
   return energy;
 }
 
@@ -48,17 +48,17 @@ void run_cost(Context& ctx) {
   const int repeats = static_cast<int>(s.integer("timing.repeats"));
   const auto methods = s.texts("timing.methods");
   ctx.progress("cost: work-precision runs");
-  const WorkPrecisionSet energy = energy_set(s, z0);
+  const WorkPrecisionSet energy = energy_set(s, z0, ctx.threads);
   ctx.write("cost_energy.csv", energy.csv());
   // (the paper quotes no target error: the set's wall_s_to and evals_to are empty)
   json cost = {{"energy", energy.summary({})},
-               {"method", timing_method_text(repeats) + "; the set's runs from (q0, p0) to convergence.t_end, the "
+               {"method", timing_method_text(repeats, ctx.threads) + "; the set's runs from (q0, p0) to convergence.t_end, the "
                                                         "transformation (41) once before and once after; ns_per_step "
                                                         "at oscillator.h over timing.steps steps"}};
   ctx.progress("cost: ns per step");
   const double h8 = s.real("oscillator.h"), k = s.real("oscillator.k");
   const std::int64_t n_ns = s.integer("timing.steps");
-  InterleavedTiming timing(repeats);  // runs of their own, not the set's: the step of Fig 8 over timing.steps steps
+  InterleavedTiming timing(repeats, kTimingFloorS, ctx.threads);  // runs of their own, not the set's: the step of Fig 8 over timing.steps steps
   for (const auto& m : methods) timing.add(oscillator_method_timed(m, k, z0, h8, n_ns));
   const std::vector<RunTime> times = timing.run();
   std::vector<std::string> labels;

@@ -45,9 +45,9 @@ void run_cost(Context& ctx) {
       set.add({label_of(m), h, static_cast<double>(n), {}, static_cast<double>(evals), err},
               MethodsOn<NonlinearPendulum>::timed(m, pend, {pz0}, h, n));
     }
-  set.time(repeats);
+  set.time(repeats, ctx.threads);
   ctx.write("cost_pendulum.csv", set.csv());
-  json cost = {{"pendulum", set.summary(s.reals("timing.error_targets"))}, {"method", cost_method_text(repeats)}};
+  json cost = {{"pendulum", set.summary(s.reals("timing.error_targets"))}, {"method", cost_method_text(repeats, ctx.threads)}};
   // ns per step on the pendulum relative to the first of timing.methods
   cost["relative_ns_per_step"] = set.relative_ns_per_step();
   merge(ctx.summary, "cost", cost);  // (long_run_cost adds its sets beside, in either order, or alone)

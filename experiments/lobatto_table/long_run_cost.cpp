@@ -84,7 +84,7 @@ Sets time_and_write(Context& ctx, const Oscillator& o, const std::vector<std::st
   // The time per step on the oscillator does not depend on where the step is taken: it is measured on a
   // segment of long_run_cost.timing_steps steps (at most the run), all segments timed together, and the
   // run's wall time is its n steps at that rate (every time of the segment scaled by n / n_timed).
-  InterleavedTiming timing(repeats);
+  InterleavedTiming timing(repeats, kTimingFloorS, ctx.threads);
   std::vector<double> scale;
   for (std::size_t task = 0; task < measured.size(); ++task) {
     const double h = hs[task % nh];
@@ -142,7 +142,7 @@ void run_long_run_cost(Context& ctx) {
   // (long_run_cost.error_targets are phase errors: the energy set has none)
   merge(ctx.summary, "cost", {{"long_run_phase", sets.phase.summary(s.reals("long_run_cost.error_targets"))},
                               {"long_run_energy", sets.energy.summary({})},
-                              {"method", cost_method_text(repeats)}});
+                              {"method", cost_method_text(repeats, ctx.threads)}});
 }
 
 StudyPlan plan_long_run_cost(const Scene& s) {

@@ -100,7 +100,7 @@ std::vector<TimedRun> timed_runs(Context& ctx, const PhiStudy& p, Discretization
   for (double h : s.reals("order_study.h")) runs.push_back(timed_phi(s, p, cmp, 0, h));
   for (double h : s.reals("cost.rk4_h")) runs.push_back(timed_rk4(s, p, h));
   ctx.progress("cost: timed runs");
-  InterleavedTiming timing(static_cast<int>(s.integer("timing.repeats")));  // every run together
+  InterleavedTiming timing(static_cast<int>(s.integer("timing.repeats")), kTimingFloorS, ctx.threads);  // every run together
   for (const TimedRun& r : runs) timing.add(r.again);
   const std::vector<RunTime> times = timing.run();
   for (std::size_t k = 0; k < runs.size(); ++k) runs[k].time = times[k];
@@ -201,7 +201,7 @@ void report_cost(Context& ctx, const Sets& sets, const json& ns_per_step_at_h) {
   json& cost = ctx.summary["cost"];
   cost["trajectory"] = sets.trajectory.summary({s.real("cost.target_err")});
   cost["energy"] = sets.energy.summary({s.real("cost.target_energy_err")});
-  cost["method"] = timing_method_text(static_cast<int>(s.integer("timing.repeats"))) +
+  cost["method"] = timing_method_text(static_cast<int>(s.integer("timing.repeats")), ctx.threads) +
                    "; one run from cloud.center to energies.t_end; ns_per_step at the smallest h (by_method) and, "
                    "for Phi^(4), at the scene's h (ns_per_step_at_h)";
   cost["ns_per_step_at_h"] = ns_per_step_at_h;

@@ -86,13 +86,13 @@ void run_cost(Context& ctx) {
     });
   ctx.progress("cost: timed runs");
   const int repeats = static_cast<int>(s.integer("timing.repeats"));
-  henon_heiles.time(repeats), oscillator.time(repeats);
+  henon_heiles.time(repeats, ctx.threads), oscillator.time(repeats, ctx.threads);
   ctx.write("cost_henon_heiles.csv", henon_heiles.csv());
   ctx.write("cost_oscillator.csv", oscillator.csv());
 
   json cost = {{"henon_heiles", henon_heiles.summary(targets)},
                {"oscillator", oscillator.summary(targets)},
-               {"method", timing_method_text(repeats) +
+               {"method", timing_method_text(repeats, ctx.threads) +
                               "; one run from the start to work_precision.t_end, processing included, every call inlined"},
                {"reference", {{"oscillator", "exact solution"},
                               {"henon_heiles_tol", tol / 100},

@@ -3,7 +3,10 @@
 // orders and synthetic timings are asserted, never a measured time.)
 #include <gtest/gtest.h>
 
+#include <array>
+#include <atomic>
 #include <chrono>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -59,6 +62,29 @@ TEST(TimingProtocol, InterleavesTheConfigurationsInAnOrderRotatedEachRound) {
     EXPECT_EQ(r.repeats, 4);
     EXPECT_EQ(r.inner, 1);
   }
+}
+
+TEST(TimingProtocol, ConcurrentRoundsTimeEachConfigurationOncePerRound) {
+  // Two workers (two configurations at a time where the cores time alike, else one): whichever, every
+  // configuration gets its warm-up call and one run per round, and a failing one fails the measurement.
+  std::array<std::atomic<int>, 5> calls{};
+  InterleavedTiming t(6, 0, 2);  // (a floor of 0: one call per run)
+  for (std::size_t c = 0; c < calls.size(); ++c) t.add([&calls, c] { ++calls[c]; });
+  const auto times = t.run();
+  ASSERT_EQ(times.size(), calls.size());
+  for (std::size_t c = 0; c < calls.size(); ++c) {
+    EXPECT_EQ(calls[c].load(), 1 + 6) << "configuration " << c;
+    EXPECT_EQ(times[c].repeats, 6);
+  }
+  const TimingConcurrency used = timing_concurrency(2, kTimingRepeats);
+  EXPECT_TRUE(used.workers == 1 || used.workers == 2);
+  EXPECT_EQ(used.workers == 2, used.slowdown <= kConcurrentSlowdown);
+  EXPECT_EQ(timing_concurrency(1, kTimingRepeats).workers, 1);  // (nothing measured for one worker)
+
+  InterleavedTiming failing(3, 0, 2);
+  failing.add([] {});
+  failing.add([] { throw std::runtime_error("Newton iteration left the domain"); });
+  EXPECT_THROW(failing.run(), std::runtime_error);
 }
 
 TEST(TimingProtocol, QuartilesInterpolateBetweenOrderStatistics) {

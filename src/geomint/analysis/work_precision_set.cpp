@@ -23,8 +23,8 @@ std::vector<CostRun> WorkPrecisionSet::runs(const std::string& method) const {
   return by_decreasing_h(out);
 }
 
-void WorkPrecisionSet::time(int repeats) {
-  InterleavedTiming timing(repeats);
+void WorkPrecisionSet::time(int repeats, int workers) {
+  InterleavedTiming timing(repeats, kTimingFloorS, workers);
   std::vector<std::size_t> which;
   for (std::size_t k = 0; k < records_.size(); ++k)
     if (timed_[k]) timing.add(timed_[k]), which.push_back(k);

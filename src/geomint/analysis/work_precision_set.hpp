@@ -33,8 +33,9 @@ class WorkPrecisionSet {
   void add(WorkPrecisionRecord r) { records_.push_back(std::move(r)), timed_.emplace_back(); }
   // A record whose wall time is measured by time(): `run` is one run of it (MethodsOn<Sys>::timed).
   void add(WorkPrecisionRecord r, std::function<void()> run) { records_.push_back(std::move(r)), timed_.push_back(std::move(run)); }
-  // Times the records added with a run, all in one interleaved measurement (runner/timing.hpp).
-  void time(int repeats);
+  // Times the records added with a run, all in one interleaved measurement (runner/timing.hpp), up to
+  // `workers` runs at a time where the cores time alike.
+  void time(int repeats, int workers = 1);
   const std::vector<WorkPrecisionRecord>& records() const { return records_; }
   std::vector<std::string> methods() const;                    // in the order first added
   std::vector<CostRun> runs(const std::string& method) const;  // its measurable runs, by decreasing h

@@ -24,6 +24,7 @@
 #include "geomint/io/run_info.hpp"
 #include "geomint/runner/checkpoint.hpp"
 #include "geomint/runner/published.hpp"
+#include "geomint/runner/timing.hpp"
 #include "geomint/sweep/mpi.hpp"
 
 namespace geomint {
@@ -763,6 +764,7 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
     run["rank_exchange_s"] = mpi::all_gather(std::span<const double>(&exchange, 1));  // and in exchanging their results
     run["checkpoint_write_s"] = checkpoint_write_seconds();
     run["load_average"] = {{"before", load_before}, {"after", load_average()}};  // 1, 5, 15 minutes
+    run["timing_concurrency"] = timing_concurrency_record();  // (runner/timing.hpp; null: no cost study timed)
     run["start_utc"] = utc_iso8601(start);
     run["end_utc"] = utc_iso8601(std::chrono::system_clock::now());
     run["wall_s"] = wall;

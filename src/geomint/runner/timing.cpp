@@ -2,9 +2,15 @@
 #include "geomint/runner/timing.hpp"
 
 #include <algorithm>
+#include <atomic>
+#include <barrier>
 #include <chrono>
 #include <cmath>
+#include <exception>
+#include <map>
+#include <mutex>
 #include <stdexcept>
+#include <thread>
 
 #include "geomint/runner/clock.hpp"
 
@@ -78,23 +84,130 @@ std::size_t InterleavedTiming::add(std::function<void()> f) {
   return configs_.size() - 1;
 }
 
-std::vector<RunTime> InterleavedTiming::run() const {
-  const std::size_t n = configs_.size();
-  const int repeats = std::max(repeats_, 1);
+namespace {
+
+// workers - 1 threads besides the calling one, kept for a whole measurement (a thread started for each
+// round may begin on a busy core and be moved only later): run(job) calls job(0) here and job(w) on
+// thread w, all starting together, and returns when every one has ended, rethrowing the first exception.
+class Pool {
+ public:
+  explicit Pool(int workers) : workers_(std::max(workers, 1)), start_(workers_), done_(workers_) {
+    for (int w = 1; w < workers_; ++w)
+      threads_.emplace_back([this, w] {
+        for (start_.arrive_and_wait(); !stop_; start_.arrive_and_wait()) call(w), done_.arrive_and_wait();
+      });
+  }
+  ~Pool() {
+    stop_ = true;
+    if (workers_ > 1) start_.arrive_and_wait();
+  }
+  int workers() const { return workers_; }
+  void run(const std::function<void(int)>& job) {
+    job_ = &job, error_ = nullptr;
+    if (workers_ > 1) start_.arrive_and_wait();
+    call(0);
+    if (workers_ > 1) done_.arrive_and_wait();
+    if (error_) std::rethrow_exception(error_);
+  }
+
+ private:
+  void call(int w) {
+    try {
+      (*job_)(w);
+    } catch (...) {
+      const std::lock_guard<std::mutex> lock(error_mutex_);
+      if (!error_) error_ = std::current_exception();
+    }
+  }
+  int workers_;
+  std::barrier<> start_, done_;
+  std::atomic<bool> stop_{false};
+  const std::function<void(int)>* job_ = nullptr;
+  std::exception_ptr error_;
+  std::mutex error_mutex_;
+  std::vector<std::jthread> threads_;  // (last: joined before the barriers go)
+};
+
+// f(0), ..., f(count - 1) on the pool's threads, each index once, in increasing order of start.
+void parallel_for(Pool& pool, std::size_t count, const std::function<void(std::size_t)>& f) {
+  std::atomic<std::size_t> next{0};
+  pool.run([&](int) {
+    for (std::size_t k = next++; k < count; k = next++) f(k);
+  });
+}
+
+// The protocol on `workers` cores at a time (the caller has checked that they time alike).
+std::vector<RunTime> run_rounds(const std::vector<std::function<void()>>& configs, int repeats, double floor_s,
+                                int workers) {
+  const std::size_t n = configs.size();
+  Pool pool(std::min<int>(workers, static_cast<int>(n)));
   std::vector<std::int64_t> inner(n);
-  for (std::size_t c = 0; c < n; ++c) inner[c] = calibrated_calls(configs_[c], floor_s_);
+  parallel_for(pool, n, [&](std::size_t c) { inner[c] = calibrated_calls(configs[c], floor_s); });
   std::vector<std::vector<double>> per_call(n);
   for (int round = 0; round < repeats; ++round)
-    for (std::size_t k = 0; k < n; ++k) {  // (rotated by one per round)
+    parallel_for(pool, n, [&](std::size_t k) {  // (rotated by one per round)
       const std::size_t c = (k + static_cast<std::size_t>(round)) % n;
-      double t = timed_run(configs_[c], inner[c]);
-      for (; t < floor_s_; t = timed_run(configs_[c], inner[c]))  // (never a run below the floor: a faster
-        inner[c] = calls_for(kTimingMargin * floor_s_, inner[c], t);  // machine lengthens it and runs it again)
+      double t = timed_run(configs[c], inner[c]);
+      for (; t < floor_s; t = timed_run(configs[c], inner[c]))  // (never a run below the floor: a faster
+        inner[c] = calls_for(kTimingMargin * floor_s, inner[c], t);  // machine lengthens it and runs it again)
       per_call[c].push_back(t / static_cast<double>(inner[c]));
-    }
+    });
   std::vector<RunTime> out;
   for (std::size_t c = 0; c < n; ++c) out.push_back(run_time_of(std::move(per_call[c]), inner[c]));
   return out;
+}
+
+// Bound by the throughput of the multiply and add units, not by their latency: 32 independent chains of
+// x = a x + b (16 of two doubles where the compiler pairs them), more than latency times units.
+void fp_throughput_loop() {
+  double x[32];
+  for (int k = 0; k < 32; ++k) x[k] = k;
+  for (int i = 0; i < 1 << 12; ++i)
+    for (double& v : x) v = 0.999999 * v + 1e-7;
+  for (const double& v : x) do_not_optimize(v);
+}
+
+std::mutex concurrency_mutex;
+std::map<int, TimingConcurrency> concurrency_measured;  // by requested workers
+
+}  // namespace
+
+TimingConcurrency timing_concurrency(int workers, int repeats) {
+  if (workers <= 1) return {};
+  const std::lock_guard<std::mutex> lock(concurrency_mutex);
+  if (const auto it = concurrency_measured.find(workers); it != concurrency_measured.end()) return it->second;
+  // Per round, one run of the loop alone (the other threads waiting), then one on every thread at once
+  // (the slowest counts), each of at least the floor.
+  Pool pool(workers);
+  const std::int64_t inner = calibrated_calls(fp_throughput_loop, kTimingFloorS);
+  std::vector<double> alone, beside, each(static_cast<std::size_t>(workers));
+  for (int round = 0; round < std::max(repeats, kTimingRepeats); ++round) {
+    alone.push_back(timed_run(fp_throughput_loop, inner));
+    pool.run([&](int w) { each[static_cast<std::size_t>(w)] = timed_run(fp_throughput_loop, inner); });
+    beside.push_back(*std::max_element(each.begin(), each.end()));
+  }
+  TimingConcurrency c;
+  c.slowdown = run_time_of(beside, inner).seconds() / run_time_of(alone, inner).seconds();
+  c.workers = c.slowdown <= kConcurrentSlowdown ? workers : 1;
+  return concurrency_measured[workers] = c;
+}
+
+nlohmann::ordered_json to_json(const TimingConcurrency& c) { return {{"workers", c.workers}, {"slowdown", c.slowdown}}; }
+
+nlohmann::ordered_json timing_concurrency_record() {
+  const std::lock_guard<std::mutex> lock(concurrency_mutex);
+  if (concurrency_measured.empty()) return nullptr;
+  nlohmann::ordered_json out = nlohmann::ordered_json::array();
+  for (const auto& [requested, c] : concurrency_measured) {
+    out.push_back(to_json(c));
+    out.back()["requested"] = requested;
+  }
+  return out;
+}
+
+std::vector<RunTime> InterleavedTiming::run() const {
+  const int workers = workers_ > 1 && configs_.size() > 1 ? timing_concurrency(workers_, repeats_).workers : 1;
+  return run_rounds(configs_, std::max(repeats_, 1), floor_s_, workers);
 }
 
 RunTime time_runs(int repeats, const std::function<void()>& f, double floor_s) {

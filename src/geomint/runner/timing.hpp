@@ -12,6 +12,10 @@
 // median of its runs (the estimate), their quartiles and minimum. Two configurations compare as a
 // ratio with an interval from the quartiles (time_ratio); where the interval holds 1 they are
 // indistinguishable.
+// With workers > 1 (the cost studies, whose runs are independent single-thread calls) up to that
+// many configurations of a round run at a time, each on its own core, if the cores time alike
+// (timing_concurrency: a throughput-bound loop runs as fast beside the others as alone, within
+// kConcurrentSlowdown); otherwise, as on two hyperthreads of one core, one at a time.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -58,10 +62,26 @@ double sorted_quantile(const std::vector<double>& v, double q);
 // The statistics of the per-call times of `repeats` runs (not sorted).
 RunTime run_time_of(std::vector<double> per_call, std::int64_t inner);
 
+// Whether `workers` configurations may be timed at a time: the median time of `workers` copies at once of
+// a loop bound by the throughput of the floating-point units over the median time of one copy alone (the
+// protocol, both interleaved, at least kTimingRepeats rounds). On two hyperthreads of one core the loop
+// takes about twice as long beside the other; on separate cores as long. Measured once per process and
+// worker count.
+inline constexpr double kConcurrentSlowdown = 1.1;
+struct TimingConcurrency {
+  int workers = 1;        // those used: the requested count where slowdown <= kConcurrentSlowdown, else 1
+  double slowdown = 1;    // the loop's time beside the others over its time alone
+};
+TimingConcurrency timing_concurrency(int workers, int repeats);
+nlohmann::ordered_json to_json(const TimingConcurrency& c);
+// The measurements timing_concurrency made in this process (run.json timing_concurrency; null if none).
+nlohmann::ordered_json timing_concurrency_record();
+
 // Times configurations under the protocol of the header comment.
 class InterleavedTiming {
  public:
-  explicit InterleavedTiming(int repeats, double floor_s = kTimingFloorS) : repeats_(repeats), floor_s_(floor_s) {}
+  explicit InterleavedTiming(int repeats, double floor_s = kTimingFloorS, int workers = 1)
+      : repeats_(repeats), floor_s_(floor_s), workers_(workers) {}
   // A configuration; its index in run()'s result. f must stay callable until run() returns.
   std::size_t add(std::function<void()> f);
   std::vector<RunTime> run() const;
@@ -70,6 +90,7 @@ class InterleavedTiming {
  private:
   int repeats_;
   double floor_s_;
+  int workers_;
   std::vector<std::function<void()>> configs_;
 };
 
