@@ -96,12 +96,13 @@ figures: build $(DEPS_STAMP)/figures.stamp
 
 figure-runs: $(ALL_RUNS)
 
-# Each figure rendered by its rule; the text of all of them checked at the end in one process (a figure
+# Each figure rendered by its rule; the text of all of them checked at the end, 20 to a process (a figure
 # that fails is removed, so that the next make renders it again; a list left by an interrupted make is
 # checked by the next).
 figure-files: $(ALL_FIGURES)
 	@if [ -s $(UNCHECKED) ]; then \
-	  python3 tests/figures/check_figure_text.py --remove-failing $$(sort -u $(UNCHECKED)); rc=$$?; rm -f $(UNCHECKED); exit $$rc; fi
+	  sort -u $(UNCHECKED) | xargs -n 20 -P $(JOBS) python3 tests/figures/check_figure_text.py --remove-failing; \
+	  rc=$$?; rm -f $(UNCHECKED); [ $$rc = 0 ] || exit 1; fi
 
 # The report: the generated parts from the runs and from a run of the hard-case tests, with the quick runs they wait on (scripts/report.py
 # computes nothing), LaTeX, then a check of the PDF's text (no undefined reference, missing value, NaN; the contents and ledger in front).
