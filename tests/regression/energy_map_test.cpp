@@ -418,6 +418,18 @@ TEST(EnergyMap, ResumeRefusesADamagedCheckpoint) {
     const BinaryOutcome r = resume(out);
     EXPECT_RUN_REFUSED("--resume with the log cut to 1000 bytes", r.code, r.err, 2, {log.string()});
   }
+  // One flipped bit, in the preamble (the run id) or in a value of the second batch: refused, never resumed
+  // into another map.
+  for (const auto& [byte, needle] : {std::pair<std::size_t, const char*>{8, "another run"},
+                                     std::pair<std::size_t, const char*>{16 + 1040 + 8 + 3, "record 1"}}) {
+    const fs::path out = stopped_map("energy_map-ckpt-flip"), log = out.string() + ".partial/map.cartesian.checkpoint.log";
+    std::string bytes = read(log);
+    bytes[byte] = static_cast<char>(bytes[byte] ^ 0x10);
+    std::ofstream(log, std::ios::binary | std::ios::trunc) << bytes;
+    const BinaryOutcome r = resume(out);
+    EXPECT_RUN_REFUSED("--resume with one bit of the log flipped (byte " + std::to_string(byte) + ")", r.code, r.err, 2,
+                       {log.string(), needle});
+  }
 }
 
 // The checkpoint holds each finished batch once (O(grid), not rewritten in full each round): per batch a count and
@@ -427,8 +439,9 @@ TEST(EnergyMap, CheckpointHoldsEachBatchOnce) {
   const json c = json::parse(read(out.string() + ".partial/map.cartesian.checkpoint.json"));
   ASSERT_LT(kSmallMapRound, 36u);
   EXPECT_EQ(c["tasks_done"].get<std::size_t>(), kSmallMapRound);
-  EXPECT_EQ(c["log_bytes"].get<std::size_t>(), kSmallMapRound * (8u + 128u * 8u));
-  EXPECT_EQ(fs::file_size(out.string() + ".partial/map.cartesian.checkpoint.log"), kSmallMapRound * (8u + 128u * 8u));
+  // (a preamble of 16 bytes; per record its count, its values and its checksum)
+  EXPECT_EQ(c["log_bytes"].get<std::size_t>(), 16u + kSmallMapRound * (8u + 128u * 8u + 8u));
+  EXPECT_EQ(fs::file_size(out.string() + ".partial/map.cartesian.checkpoint.log"), 16u + kSmallMapRound * (8u + 128u * 8u + 8u));
   EXPECT_FALSE(fs::exists(out.string() + ".partial/map.polar.checkpoint.json"));
 }
 

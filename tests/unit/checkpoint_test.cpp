@@ -11,6 +11,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <limits>
 #include <optional>
 #include <span>
@@ -23,6 +24,7 @@
 #include <nlohmann/json.hpp>
 
 #include "../hard_case.hpp"
+#include "geomint/io/crc32c.hpp"
 #include "geomint/runner/checkpoint.hpp"
 #include "temp_paths.hpp"
 
@@ -126,8 +128,8 @@ TEST(Checkpoint, RoundTripHoldsEachTaskOnce) {
   EXPECT_EQ(h["study"], "tasks");
   EXPECT_EQ(h["scene"]["a"], 1.0);
   EXPECT_TRUE(h["build"].contains("git_commit"));
-  std::size_t bytes = 0;
-  for (const auto& r : straight()) bytes += 8 + 8 * r.size();  // a count and the values, once
+  std::size_t bytes = 16;                                          // the preamble, then per task
+  for (const auto& r : straight()) bytes += 8 + 8 * r.size() + 8;  // a count, the values and a checksum, once
   EXPECT_EQ(h["log_bytes"], bytes);
   EXPECT_EQ(fs::file_size(f.log()), bytes);
   // Read back whole: no task computed again.
@@ -237,6 +239,19 @@ TEST(Checkpoint, ResumeRefusesTamperedHeaders) {
   tampered("log_bytes", 8, "log_bytes");   // fewer bytes than the records counted
   tampered("tasks_done", 3, "log_bytes");  // fewer records than the bytes counted
   tampered("study", "other", "study");
+  tampered("run_id", "not-hex", "run_id");
+  tampered("log_crc32c", -1, "log_crc32c");
+  // a header that counts another run or other bytes: the log does not match it (the log named)
+  for (const auto& [field, value, needle] : {std::tuple<const char*, nlohmann::ordered_json, const char*>{
+                                                 "run_id", "0123456789abcdef", "another run"},
+                                             {"log_crc32c", 12345, "do not match log_crc32c"}}) {
+    stop_after_one_round();
+    const Fixture f(0, 1.0, false);
+    auto h = header_json(f.header());
+    h[field] = value;
+    write_header(f.header(), h);
+    expect_refused(f.log(), needle);
+  }
 }
 
 TEST(Checkpoint, ResumeRefusesACheckpointBeyondTheTasks) {
@@ -248,14 +263,56 @@ TEST(Checkpoint, ResumeRefusesACheckpointBeyondTheTasks) {
   expect_refused(header, "tasks_done");
 }
 
-TEST(Checkpoint, ResumeRefusesAValueThatIsNotFinite) {
+// The log: a preamble of 16 bytes; record 0 (task 0: one value) its count, value and checksum (24 bytes);
+// record 1 from byte 40, its first value at byte 48.
+constexpr std::size_t kRecord1 = 16 + 24, kRecord1Value = kRecord1 + 8;
+
+void rewrite(const fs::path& p, const std::string& bytes) { std::ofstream(p, std::ios::binary | std::ios::trunc) << bytes; }
+
+// The damage a log meets (a flipped bit, values zeroed with their counts kept, another run's log under the
+// header) is refused, naming the log and the record or the run.
+TEST(Checkpoint, ResumeRefusesADamagedLog) {
+  const auto damaged = [](const std::function<void(std::string&)>& damage, const std::string& needle) {
+    stop_after_one_round();
+    const fs::path log = Fixture(0, 1.0, false).log();
+    std::string bytes = read(log);
+    damage(bytes);
+    rewrite(log, bytes);
+    expect_refused(log, needle);
+  };
+  damaged([](std::string& b) { b[kRecord1Value + 2] ^= 0x01; }, "record 1 (task 1) does not match its checksum");
+  damaged([](std::string& b) { b[kRecord1Value + 7] ^= 0x40; }, "record 1 (task 1) does not match its checksum");  // an exponent bit
+  damaged([](std::string& b) { std::memset(b.data() + kRecord1Value, 0, 16); }, "record 1 (task 1) does not match");
+  damaged([](std::string& b) { b[kRecord1 - 1] ^= 0x01; }, "record 0 (task 0) does not match");  // its checksum
+  damaged([](std::string& b) { b[8] ^= 0x01; }, "the log of another run");
+  damaged([](std::string& b) { b[0] = 'G'; }, "does not begin as a checkpoint log");
+
+  // another run's log (the same tasks, stopped the same way) under this run's header
+  stop_after_one_round();
+  const std::string other = read(Fixture(0, 1.0, false).log());
   stop_after_one_round();
   const fs::path log = Fixture(0, 1.0, false).log();
-  std::string bytes = read(log);
+  ASSERT_NE(read(log), other);  // (the same records, another run id)
+  rewrite(log, other);
+  expect_refused(log, "the log of another run");
+}
+
+// A log forged with valid checksums still holds only finite values.
+TEST(Checkpoint, ResumeRefusesAValueThatIsNotFinite) {
+  stop_after_one_round();
+  const Fixture f(0, 1.0, false);
+  std::string bytes = read(f.log());
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  std::memcpy(bytes.data() + 8 + 8 + 8, &nan, 8);  // task 1's first value (task 0 holds one)
-  std::ofstream(log, std::ios::binary | std::ios::trunc) << bytes;
-  expect_refused(log, "task 1 is not finite");
+  std::memcpy(bytes.data() + kRecord1Value, &nan, 8);  // task 1's first value, its checksum and the header's made again
+  std::uint64_t length = 0;
+  std::memcpy(&length, bytes.data() + kRecord1, 8);
+  const std::uint64_t crc = crc32c(bytes.data() + kRecord1, 8 + 8 * length);
+  std::memcpy(bytes.data() + kRecord1 + 8 + 8 * length, &crc, 8);
+  rewrite(f.log(), bytes);
+  auto h = header_json(f.header());
+  h["log_crc32c"] = crc32c(bytes.data(), h["log_bytes"].get<std::size_t>());
+  write_header(f.header(), h);
+  expect_refused(f.log(), "task 1 is not finite");
 }
 
 // A task whose record is not finite is not saved (nor any after it): resumed, it is computed again.

@@ -19,6 +19,7 @@
 
 #include "../hard_case.hpp"
 #include "geomint/io/atomic_file.hpp"
+#include "geomint/io/crc32c.hpp"
 #include "geomint/io/csv.hpp"
 #include "geomint/sweep/parallel_map.hpp"
 
@@ -26,6 +27,17 @@ using namespace geomint;
 namespace fs = std::filesystem;
 
 namespace io_test {  // the file's scope (the tests build as one translation unit)
+
+// CRC-32C against its published check value (RFC 3720, B.4: "123456789" -> 0xE3069283) and the
+// iSCSI test vectors of 32 zero and 32 0xFF bytes; in pieces as in one.
+TEST(Crc32c, MatchesTheCheckValuesOfRfc3720) {
+  EXPECT_EQ(crc32c("123456789", 9), 0xE3069283u);
+  const std::string zeros(32, '\0'), ones(32, '\xFF');
+  EXPECT_EQ(crc32c(zeros.data(), 32), 0x8A9136AAu);
+  EXPECT_EQ(crc32c(ones.data(), 32), 0x62A8AB43u);
+  EXPECT_EQ(crc32c("6789", 4, crc32c("12345", 5)), 0xE3069283u);
+  EXPECT_EQ(crc32c(nullptr, 0), 0u);
+}
 
 TEST(Csv, HeaderRowsAndFullPrecision) {
   Csv csv({"name", "h", "n"});

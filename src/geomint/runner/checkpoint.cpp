@@ -5,10 +5,13 @@
 
 #include <cerrno>
 #include <chrono>
+#include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <random>
 
 #include "geomint/io/atomic_file.hpp"
+#include "geomint/io/crc32c.hpp"
 #include "geomint/io/run_info.hpp"
 #include "geomint/sweep/mpi.hpp"
 
@@ -19,7 +22,9 @@ using json = nlohmann::ordered_json;
 
 namespace {
 
-constexpr int kFormat = 1;  // of the header and the log (checkpoint.hpp)
+constexpr int kFormat = 2;  // of the header and the log (checkpoint.hpp)
+constexpr char kMagic[8] = {'g', 'e', 'o', 'm', 'i', 'n', 't', 'L'};  // the log's first 8 bytes
+constexpr std::size_t kPreamble = 16;                                // the magic and the run id
 const char* const kHeaderSuffix = ".checkpoint.json";
 const char* const kLogSuffix = ".checkpoint.log";
 
@@ -34,6 +39,29 @@ json scene_slice(const Scene& scene, const std::vector<std::string>& keys) {
     slice[key] = all.contains(at) ? all.at(at) : json(nullptr);
   }
   return slice;
+}
+
+std::uint64_t new_run_id() {
+  std::random_device device;
+  return (static_cast<std::uint64_t>(device()) << 32) ^ device();
+}
+
+std::string hex16(std::uint64_t v) {
+  char s[17];
+  std::snprintf(s, sizeof s, "%016llx", static_cast<unsigned long long>(v));
+  return s;
+}
+
+// A run id as the header writes it (16 hexadecimal digits), or nothing.
+std::optional<std::uint64_t> parse_hex16(const json& j) {
+  if (!j.is_string() || j.get<std::string>().size() != 16) return std::nullopt;
+  std::uint64_t v = 0;
+  for (const char c : j.get<std::string>()) {
+    const int d = c >= '0' && c <= '9' ? c - '0' : c >= 'a' && c <= 'f' ? c - 'a' + 10 : -1;
+    if (d < 0) return std::nullopt;
+    v = v << 4 | static_cast<std::uint64_t>(d);
+  }
+  return v;
 }
 
 std::string shown(const json& j) {
@@ -60,7 +88,8 @@ CheckpointLog::CheckpointLog(const Context& ctx, const CheckpointSpec& spec, std
     : name_(spec.name.empty() ? ctx.study : spec.name),
       header_(ctx.out.path() / (name_ + kHeaderSuffix)),
       log_(ctx.out.path() / (name_ + kLogSuffix)),
-      n_(n) {
+      n_(n),
+      run_id_(new_run_id()) {
   identity_ = {{"format", kFormat},       {"experiment", ctx.experiment},
                {"study", ctx.study},      {"name", name_},
                {"scene", scene_slice(ctx.scene, spec.keys)}, {"build", build_info()},
@@ -75,7 +104,7 @@ void CheckpointLog::refuse(const fs::path& file, const std::string& why) const {
 
 void CheckpointLog::reset() {
   fs::remove(header_), fs::remove(log_);
-  tasks_done_ = 0, log_bytes_ = 0;
+  tasks_done_ = 0, log_bytes_ = 0, log_crc_ = 0, run_id_ = new_run_id();
 }
 
 CheckpointLog::Records CheckpointLog::load(bool resume) {
@@ -109,7 +138,8 @@ CheckpointLog::Records CheckpointLog::load_here(bool resume) {
     refuse(header_, std::string("not JSON (") + e.what() + ")");
   }
   if (!h.is_object()) refuse(header_, "not a checkpoint header (not a JSON object)");
-  for (const char* field : {"format", "experiment", "study", "name", "scene", "build", "n", "tasks_done", "log_bytes"})
+  for (const char* field : {"format", "experiment", "study", "name", "scene", "build", "n", "run_id", "tasks_done",
+                            "log_bytes", "log_crc32c"})
     if (!h.contains(field)) refuse(header_, std::string("no field ") + field);
   if (h["format"] != identity_["format"])
     refuse(header_, "format is " + shown(h["format"]) + ", this binary reads format " + std::to_string(kFormat));
@@ -131,8 +161,15 @@ CheckpointLog::Records CheckpointLog::load_here(bool resume) {
                         "], the tasks of " + name_);
   if (!h["log_bytes"].is_number_unsigned())
     refuse(header_, "log_bytes is " + shown(h["log_bytes"]) + ": it must be a byte count");
+  const auto run_id = parse_hex16(h["run_id"]);
+  if (!run_id) refuse(header_, "run_id is " + shown(h["run_id"]) + ": it must be 16 hexadecimal digits");
+  if (!h["log_crc32c"].is_number_unsigned() || h["log_crc32c"].get<std::uint64_t>() > 0xFFFFFFFFu)
+    refuse(header_, "log_crc32c is " + shown(h["log_crc32c"]) + ": it must be a CRC-32C (an integer below 2^32)");
   const auto done = static_cast<std::size_t>(h["tasks_done"].get<std::uint64_t>());
   const auto bytes = h["log_bytes"].get<std::uint64_t>();
+  if (bytes < kPreamble)
+    refuse(header_, "log_bytes is " + std::to_string(bytes) + ": fewer than the log's preamble of " +
+                        std::to_string(kPreamble) + " bytes");
   std::error_code ec;
   const auto size = fs::exists(log_) ? fs::file_size(log_, ec) : 0;
   if (ec || size < bytes)
@@ -141,19 +178,47 @@ CheckpointLog::Records CheckpointLog::load_here(bool resume) {
   std::vector<char> raw(bytes);
   std::ifstream in(log_, std::ios::binary);
   if (!in.read(raw.data(), static_cast<std::streamsize>(bytes))) refuse(log_, "cannot be read");
-  std::size_t at = 0;
-  for (std::size_t k = 0; k < done; ++k) {
+  if (std::memcmp(raw.data(), kMagic, sizeof kMagic) != 0)
+    refuse(log_, "does not begin as a checkpoint log of format " + std::to_string(kFormat) + " does");
+  std::uint64_t log_run = 0;
+  std::memcpy(&log_run, raw.data() + sizeof kMagic, 8);
+  if (log_run != *run_id)
+    refuse(log_, "is the log of another run (run id " + hex16(log_run) + "), not of the run " +
+                     header_.filename().string() + " counts (run_id " + hex16(*run_id) + ")");
+  // A record at `at`: its count, values and checksum, if they lie within the first `bytes` bytes.
+  const auto record_end = [&](std::size_t at) -> std::optional<std::size_t> {
+    if (bytes - at < 16) return std::nullopt;
     std::uint64_t length = 0;
-    if (bytes - at < 8)
+    std::memcpy(&length, raw.data() + at, 8);
+    if (length > (bytes - at - 16) / 8) return std::nullopt;
+    return at + 16 + length * 8;
+  };
+  if (crc32c(raw.data(), bytes) != h["log_crc32c"].get<std::uint64_t>()) {
+    // the bytes changed since the header counted them: the first record that fails its own checksum
+    std::size_t at = kPreamble;
+    for (std::size_t k = 0; k < done; ++k) {
+      const auto end = record_end(at);
+      if (!end) break;
+      std::uint64_t stored = 0;
+      std::memcpy(&stored, raw.data() + *end - 8, 8);
+      if (crc32c(raw.data() + at, *end - 8 - at) != stored)
+        refuse(log_, "record " + std::to_string(k) + " (task " + std::to_string(k) +
+                         ") does not match its checksum: the log is damaged");
+      at = *end;
+    }
+    refuse(log_, "its first " + std::to_string(bytes) + " bytes (log_bytes) do not match log_crc32c of " +
+                     header_.filename().string() + ": the log is damaged or not the one the header counts");
+  }
+  std::size_t at = kPreamble;
+  for (std::size_t k = 0; k < done; ++k) {
+    const auto end = record_end(at);
+    if (!end)
       refuse(header_, "log_bytes is " + std::to_string(bytes) + ": the log's first " + std::to_string(bytes) +
-                          " bytes end after " + std::to_string(k) + " of the " + std::to_string(done) + " records (tasks_done)");
-    std::memcpy(&length, raw.data() + at, 8), at += 8;
-    if (length > (bytes - at) / 8)
-      refuse(header_, "log_bytes is " + std::to_string(bytes) + ": record " + std::to_string(k) + " of the log counts " +
-                          std::to_string(length) + " values, beyond it");
-    const std::size_t first = records.values.size();
+                          " bytes end within record " + std::to_string(k) + " of the " + std::to_string(done) +
+                          " records (tasks_done)");
+    const std::size_t length = (*end - at - 16) / 8, first = records.values.size();
     records.values.resize(first + length);
-    std::memcpy(records.values.data() + first, raw.data() + at, length * 8), at += length * 8;
+    std::memcpy(records.values.data() + first, raw.data() + at + 8, length * 8), at = *end;
     for (std::size_t i = first; i < records.values.size(); ++i)
       if (!std::isfinite(records.values[i]))
         refuse(log_, "value " + std::to_string(i - first) + " of task " + std::to_string(k) + " is not finite");
@@ -163,7 +228,8 @@ CheckpointLog::Records CheckpointLog::load_here(bool resume) {
     refuse(header_, "log_bytes is " + std::to_string(bytes) + ", but its " + std::to_string(done) +
                         " records (tasks_done) take " + std::to_string(at));
   if (size > bytes) fs::resize_file(log_, bytes);  // a round appended but not counted
-  tasks_done_ = done, log_bytes_ = bytes;
+  tasks_done_ = done, log_bytes_ = bytes, log_crc_ = static_cast<std::uint32_t>(h["log_crc32c"].get<std::uint64_t>());
+  run_id_ = *run_id;
   return records;
 }
 
@@ -179,20 +245,25 @@ void CheckpointLog::append(std::span<const double> values, std::span<const std::
     return;
   }
   const auto t0 = std::chrono::steady_clock::now();
-  std::vector<char> raw(lengths.size() * 8 + values.size() * 8);
+  const bool begins = log_bytes_ == 0;  // (a new log: its preamble first, over anything left there)
+  std::vector<char> raw((begins ? kPreamble : 0) + lengths.size() * 16 + values.size() * 8);
   std::size_t at = 0, v = 0;
+  if (begins) std::memcpy(raw.data(), kMagic, sizeof kMagic), std::memcpy(raw.data() + 8, &run_id_, 8), at = kPreamble;
   for (const std::size_t length : lengths) {
     const auto l = static_cast<std::uint64_t>(length);
+    const std::size_t record = at;
     std::memcpy(raw.data() + at, &l, 8), at += 8;
     std::memcpy(raw.data() + at, values.data() + v, length * 8), at += length * 8, v += length;
+    const std::uint64_t crc = crc32c(raw.data() + record, at - record);
+    std::memcpy(raw.data() + at, &crc, 8), at += 8;
   }
-  const int fd = ::open(log_.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC, 0644);
+  const int fd = ::open(log_.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC | (begins ? O_TRUNC : 0), 0644);
   if (fd < 0) throw OutputError("cannot write " + log_.string() + ": " + std::strerror(errno));
   write_all(fd, raw.data(), raw.size(), log_);
   if (::fsync(fd) != 0 || ::close(fd) != 0) throw OutputError("cannot write " + log_.string() + ": " + std::strerror(errno));
-  tasks_done_ += lengths.size(), log_bytes_ += raw.size();
+  tasks_done_ += lengths.size(), log_bytes_ += raw.size(), log_crc_ = crc32c(raw.data(), raw.size(), log_crc_);
   json h = identity_;
-  h["tasks_done"] = tasks_done_, h["log_bytes"] = log_bytes_;
+  h["run_id"] = hex16(run_id_), h["tasks_done"] = tasks_done_, h["log_bytes"] = log_bytes_, h["log_crc32c"] = log_crc_;
   write_file_atomic(header_, h.dump(1) + "\n");
   g_write_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }

@@ -5,16 +5,21 @@
 // --resume where it stopped, with the same results as a run straight through, for any thread count.
 //
 // Files (in ctx.out.path(), the staging directory DIR.partial; removed when the run commits):
-//   <name>.checkpoint.log   the finished tasks' records in task order, appended round by round: per
-//                           record a uint64 count L, then L doubles (the machine's byte order);
+//   <name>.checkpoint.log   a preamble of 16 bytes (the magic "geomintL" and the run's id, a random
+//                           uint64), then the finished tasks' records in task order, appended round by
+//                           round: per record a uint64 count L, L doubles and a uint64 holding the
+//                           CRC-32C (io/crc32c.hpp) of the count and the values (the machine's byte order);
 //   <name>.checkpoint.json  the header, written atomically after each append: format, experiment,
 //                           study, name, the scene keys the tasks depend on, the binary (build_info),
-//                           n, tasks_done and log_bytes, the part of the log that holds them in full.
+//                           n, run_id, tasks_done, log_bytes (the part of the log that holds them in
+//                           full) and log_crc32c (the CRC-32C of those bytes).
 // On --resume a header that is missing means nothing to resume, one of other scene values is
 // discarded (start over); one that cannot be used (not JSON, another format, another binary,
-// tasks_done beyond n, a log shorter than log_bytes, a value that is not finite) is refused with a
-// SceneError naming the file and the field (exit 2). A log longer than log_bytes (a run stopped in
-// the middle of an append) is cut back. Every write costs what is new: O(work) in all.
+// tasks_done beyond n, a log shorter than log_bytes, the log of another run, a log whose bytes do
+// not match log_crc32c, naming the first record that fails its own checksum, a value that is not
+// finite) is refused with a SceneError naming the file and the field or record (exit 2). A log
+// longer than log_bytes (a run stopped in the middle of an append) is cut back. Every write costs
+// what is new: O(work) in all.
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -76,6 +81,8 @@ class CheckpointLog {
   nlohmann::ordered_json identity_;  // the header less tasks_done and log_bytes
   std::size_t n_, tasks_done_ = 0;
   std::uint64_t log_bytes_ = 0;
+  std::uint64_t run_id_ = 0;   // of the run that began the log (a resumed run continues it)
+  std::uint32_t log_crc_ = 0;  // CRC-32C of the log's log_bytes_ bytes
 };
 
 // The tasks of a round of checkpointed_map for n tasks on `workers` threads (all ranks together):
