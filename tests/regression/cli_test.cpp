@@ -1,6 +1,9 @@
 // The interface contract on bad input: exit code 2 before any work, one line
 // naming the key or path, the value and what is allowed, nothing left in --out.
 #include <gtest/gtest.h>
+#include <fcntl.h>
+#include <sys/file.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -298,6 +301,102 @@ TEST(Cli, FormerStudyNamesAreAcceptedWithANote) {
     EXPECT_NE(r.err.find("study '" + former + "' is now called '" + now + "'"), std::string::npos) << experiment << ": " << r.err;
     EXPECT_EQ(run_binary(experiment, "--quick --plan --study " + now).err, "") << experiment;
   }
+}
+
+}  // namespace cli_test
+
+namespace cli_test {
+namespace {
+
+// Exit 2 with one line naming every needle, for a run of `binary` with `args` (no --quick added).
+void expect_refused_raw(const std::string& args, const std::vector<std::string>& needles, const std::string& binary = bin) {
+  const Outcome r = run(args, binary);
+  EXPECT_RUN_REFUSED(fs::path(binary).filename().string() + " " + args, r.code, r.err, 2, needles);
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+}
+
+}  // namespace
+
+// Scenes that would make the TOML parser recurse 50,000 deep, or read 2 MB, or block (a pipe), and paths the
+// system cannot resolve: refused before parsing, exit 2, one line naming the file and why.
+TEST(Cli, HostileScenesAreRefusedBeforeParsing) {
+  fs::create_directories(work);
+  const auto scene = [](const std::string& name, const std::string& text) {
+    std::ofstream(work / name) << text;
+    return (work / name).string();
+  };
+  std::string deep = "a", header = "[t", nest = "x = ";
+  for (int i = 0; i < 50000; ++i) deep += ".a", header += ".t";
+  nest += std::string(50000, '[') + std::string(50000, ']');
+  expect_refused_raw("--plan --scene " + scene("deep.toml", deep + " = 1\n"), {"deep.toml:1", "more than 32 dotted components"});
+  expect_refused_raw("--plan --scene " + scene("header.toml", header + "]\n"), {"header.toml:1", "more than 32 dotted components"});
+  expect_refused_raw("--plan --scene " + scene("nest.toml", nest + "\n"), {"nest.toml:1", "nested more than 32 deep"});
+  expect_refused_raw("--plan --scene " + scene("big.toml", std::string(2 << 20, '#')), {"big.toml", "over the 1048576 bytes"});
+  expect_refused_raw("--plan --scene /dev/zero", {"/dev/zero", "not a regular file"});
+  const fs::path fifo = work / "fifo.toml", loop = work / "loop.toml";
+  fs::remove(fifo), fs::remove(loop);
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0644), 0);
+  fs::create_symlink(loop.filename(), loop);
+  expect_refused_raw("--plan --scene " + fifo.string(), {"fifo.toml", "not a regular file"});
+  expect_refused_raw("--plan --scene " + loop.string(), {"loop.toml", "a loop of symbolic links"});
+  expect_refused_raw("--plan --scene " + scene("based.toml", "base = \"loop.toml\"\n"), {"based.toml: base = \"loop.toml\"", "a loop of symbolic links"});
+  expect_refused_raw("--plan --scene " + (work / std::string(300, 'n')).string(), {"too long"});
+  // a scene within the limits (keys of 32 components, arrays nested 32 deep) reaches the parser and the schema
+  std::string ok32 = "a";
+  for (int i = 1; i < 32; ++i) ok32 += ".a";
+  expect_refused_raw("--plan --scene " + scene("ok32.toml", ok32 + " = 1\n"), {"unknown key 'a.a.a"});
+}
+
+// --out paths that cannot become a results directory: refused before any work, naming why.
+TEST(Cli, HostileOutputPathsAreRefusedBeforeWork) {
+  fs::create_directories(work);
+  const fs::path dangling = work / "dangling", file = work / "a-file";
+  fs::remove(dangling);
+  fs::create_symlink("nowhere", dangling);
+  std::ofstream(file) << "x";
+  expect_refused_raw("--quick --out ''", {"--out", "an empty path"});
+  expect_refused_raw("--quick --out " + dangling.string(), {"dangling", "symbolic link"});
+  expect_refused_raw("--quick --out " + (file / "x").string(), {"a-file/x", "Not a directory"});
+  expect_refused_raw("--quick --out " + (work / std::string(250, 'n')).string(), {"with .partial it would exceed the 255"});
+  EXPECT_FALSE(fs::exists(file.string() + ".lock"));
+  EXPECT_EQ(fs::read_symlink(dangling), "nowhere");
+}
+
+// One run per results directory: while another process holds DIR.lock, a run on DIR exits 2 at once naming
+// it, and leaves that run's DIR.partial as it was; once the lock is free the run goes ahead.
+TEST(Cli, ASecondRunOnTheSameOutputIsRefusedAtOnce) {
+  const fs::path out = work / "locked", partial = work / "locked.partial", lock = work / "locked.lock";
+  fs::remove_all(out), fs::remove_all(partial);
+  fs::create_directories(partial);
+  std::ofstream(partial / ".geomint-staging") << "euler_compensation\n";
+  std::ofstream(partial / "decay.csv") << "the other run's\n";
+  const int fd = ::open(lock.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+  ASSERT_GE(fd, 0);
+  ASSERT_EQ(::flock(fd, LOCK_EX | LOCK_NB), 0);
+  ASSERT_EQ(::write(fd, "424242\n", 7), 7);
+  expect_refused_raw("--quick --study decay --out " + out.string(), {"another run (process 424242)", "locked.lock"});
+  EXPECT_EQ(file_text(partial / "decay.csv"), "the other run's\n");
+  ::close(fd);  // (the other run ends)
+  const Outcome r = run("--quick --study decay --out " + out.string());
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_TRUE(fs::exists(out / "run.json"));
+  EXPECT_FALSE(fs::exists(lock));  // (removed by the run that held it last)
+}
+
+// SIGTERM during a study that has no checkpoint stops the run with exit 3 (README: exit codes), DIR untouched
+// and its lock gone.
+TEST(Cli, SigtermWithoutACheckpointExitsThree) {
+  const fs::path out = work / "terminated";
+  fs::remove_all(out), fs::remove_all(out.string() + ".partial");
+  const std::string cmd = bin_of("ti_drift") + " --study cost --out " + out.string() + " >/dev/null 2>" +
+                          (work / "term.txt").string() + " & pid=$!; sleep 1; kill -TERM $pid; wait $pid";
+  fs::create_directories(work);
+  const int status = std::system(("bash -c '" + cmd + "'").c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 3) << file_text(work / "term.txt");
+  EXPECT_NE(file_text(work / "term.txt").find("interrupted: stopped"), std::string::npos) << file_text(work / "term.txt");
+  EXPECT_FALSE(fs::exists(out));
+  EXPECT_FALSE(fs::exists(out.string() + ".lock"));
 }
 
 }  // namespace cli_test

@@ -1,9 +1,12 @@
 #include "geomint/io/atomic_file.hpp"
 
 #include <fcntl.h>
+#include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <climits>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
@@ -102,14 +105,91 @@ void remove_temporaries(const fs::path& dir) {
   }
 }
 
+// Refuses a --out path that cannot become a results directory, before any work: a symbolic link (the
+// final rename would replace the link, not what it names), a parent that is not a writable directory,
+// a name too long for DIR.partial and DIR.lock, a path the system cannot resolve.
+void check_out_path(const fs::path& d, const std::string& given) {
+  const std::string out = "--out " + given + ": ";
+  if (d.filename().string().size() + std::string_view(".partial").size() > NAME_MAX)
+    throw OutputError(out + "the name " + d.filename().string().substr(0, 40) + "... is " +
+                      std::to_string(d.filename().string().size()) + " bytes; with .partial it would exceed the " +
+                      std::to_string(NAME_MAX) + " a name may have");
+  if (d.string().size() + 8 >= PATH_MAX)
+    throw OutputError(out + "the path is " + std::to_string(d.string().size()) + " bytes, beyond PATH_MAX (" +
+                      std::to_string(PATH_MAX) + ") with .partial");
+  struct stat st {};
+  if (::lstat(d.c_str(), &st) == 0) {
+    if (S_ISLNK(st.st_mode))
+      throw OutputError(out + "is a symbolic link; give the directory itself (the results replace DIR as a whole)");
+  } else if (errno != ENOENT) {
+    throw OutputError(out + std::strerror(errno));
+  }
+  const fs::path parent = d.parent_path();
+  if (::stat(parent.c_str(), &st) != 0)
+    throw OutputError(out + "its parent directory " + parent.string() + ": " + std::strerror(errno));
+  if (!S_ISDIR(st.st_mode)) throw OutputError(out + "its parent " + parent.string() + " is not a directory");
+  if (::access(parent.c_str(), W_OK | X_OK) != 0)
+    throw OutputError(out + "its parent directory " + parent.string() + " is not writable (" + std::strerror(errno) + ")");
+}
+
+// The process id a lock file names ("?" if none).
+std::string holder_of(int fd) {
+  char buf[32] = {};
+  const ssize_t n = ::pread(fd, buf, sizeof buf - 1, 0);
+  std::string pid(buf, n > 0 ? static_cast<std::size_t>(n) : 0);
+  while (!pid.empty() && (pid.back() == '\n' || pid.back() == ' ')) pid.pop_back();
+  return pid.empty() ? "?" : pid;
+}
+
 }  // namespace
 
+DirLock::DirLock(const fs::path& file) : file_(file) {
+  for (;;) {  // (until the lock is held on the file that is at the path: another run may remove it meanwhile)
+    fd_ = ::open(file_.c_str(), O_RDWR | O_CREAT | O_CLOEXEC, 0644);
+    if (fd_ < 0) throw OutputError("--out: cannot create the lock " + file_.string() + ": " + std::strerror(errno));
+    if (::flock(fd_, LOCK_EX | LOCK_NB) != 0) {
+      const std::string holder = holder_of(fd_);
+      ::close(fd_), fd_ = -1;
+      throw OutputError("--out: another run (process " + holder + ") is writing " +
+                        file_.parent_path().string() + "/" + file_.stem().string() + " (it holds " + file_.string() +
+                        "); wait for it to end, or give another --out");
+    }
+    struct stat held {}, at_path {};
+    if (::fstat(fd_, &held) == 0 && ::stat(file_.c_str(), &at_path) == 0 && held.st_ino == at_path.st_ino &&
+        held.st_dev == at_path.st_dev)
+      break;
+    ::close(fd_), fd_ = -1;
+  }
+  const std::string pid = std::to_string(::getpid()) + "\n";
+  if (::ftruncate(fd_, 0) != 0 || ::pwrite(fd_, pid.data(), pid.size(), 0) < 0) {}  // (the holder's id: for messages only)
+}
+
+DirLock& DirLock::operator=(DirLock&& o) noexcept {
+  if (this != &o) {
+    this->~DirLock();
+    file_ = std::move(o.file_), fd_ = o.fd_, o.fd_ = -1;
+  }
+  return *this;
+}
+
+DirLock::~DirLock() {
+  if (fd_ < 0) return;
+  ::unlink(file_.c_str());  // (while held: a run that opened it before checks the path and takes the new one)
+  ::close(fd_);
+  fd_ = -1;
+}
+
 ResultsDir::ResultsDir(const fs::path& dir, const std::string& experiment, bool resume) : experiment_(experiment) {
-  fs::path d = fs::absolute(dir).lexically_normal();
+  if (dir.empty()) throw OutputError("--out: an empty path; give the results directory");
+  std::error_code ec0;
+  fs::path d = fs::absolute(dir, ec0).lexically_normal();
+  if (ec0) throw OutputError("--out " + dir.string() + ": " + ec0.message());
   if (!d.has_filename()) d = d.parent_path();  // "DIR/"
   if (d == d.root_path()) throw OutputError("--out " + dir.string() + ": the root directory is never a results directory");
   final_ = d;
   staging_ = d.parent_path() / (d.filename().string() + ".partial");
+  check_out_path(final_, dir.string());
+  lock_ = DirLock(d.parent_path() / (d.filename().string() + ".lock"));
   check_replaceable(final_, experiment, "the directory");
   check_replaceable(staging_, experiment, "the staging directory");
   std::error_code ec;

@@ -39,6 +39,24 @@ class OutputDir {
 // or the staging marker), so that --out can never replace a user's files. With
 // `resume`, the staging directory of an interrupted run is kept (its checkpoint
 // is what --resume continues from); otherwise it is emptied.
+// Before that, the path is checked (not empty, not a symbolic link, its parent an existing writable
+// directory, names short enough for DIR.partial) and the run takes an exclusive lock on DIR.lock
+// (flock: the kernel releases it when the process ends, however it ends), so that a second run on
+// the same DIR is refused at once, naming the process that holds it, and never touches its
+// DIR.partial. The lock file is removed when the ResultsDir goes (a killed run's is reused).
+class DirLock {
+ public:
+  DirLock() = default;
+  explicit DirLock(const std::filesystem::path& file);  // throws OutputError if another process holds it
+  DirLock(DirLock&& o) noexcept : file_(std::move(o.file_)), fd_(o.fd_) { o.fd_ = -1; }
+  DirLock& operator=(DirLock&& o) noexcept;
+  ~DirLock();
+
+ private:
+  std::filesystem::path file_;
+  int fd_ = -1;
+};
+
 class ResultsDir {
  public:
   ResultsDir(const std::filesystem::path& dir, const std::string& experiment, bool resume);
@@ -55,6 +73,7 @@ class ResultsDir {
   std::filesystem::path final_, staging_;
   std::string experiment_;
   bool resumed_ = false;
+  DirLock lock_;
 };
 
 }  // namespace geomint

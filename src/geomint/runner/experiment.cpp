@@ -130,6 +130,7 @@ namespace {
 volatile std::sig_atomic_t g_stop = 0;
 std::atomic<int> g_stop_points{0};
 char g_stop_message[512], g_exit_message[512];  // composed before any signal can arrive
+char g_lock_file[4200];                          // DIR.lock (atomic_file.hpp), removed by a stop at once
 
 extern "C" void on_signal(int sig) {
   if (sig == SIGUSR1 || (g_stop_points.load() > 0 && !g_stop)) {
@@ -137,18 +138,23 @@ extern "C" void on_signal(int sig) {
     [[maybe_unused]] auto n = ::write(STDERR_FILENO, g_stop_message, std::strlen(g_stop_message));
     return;
   }
+  // No checkpoint to stop at (or a second signal): stop at once, DIR untouched, with the exit code of a
+  // stopped run (3: --resume runs the studies again from DIR.partial).
   [[maybe_unused]] auto n = ::write(STDERR_FILENO, g_exit_message, std::strlen(g_exit_message));
-  std::signal(sig, SIG_DFL);
-  std::raise(sig);
+  if (g_lock_file[0] != '\0') ::unlink(g_lock_file);  // (held by this process: no other run has it)
+  ::_exit(3);
 }
 
 void install_signal_handlers(const std::string& name, const ResultsDir& results) {
   std::snprintf(g_stop_message, sizeof g_stop_message,
                 "\n%s: interrupted: stopping at the next checkpoint (continue with --resume; a second "
                 "signal stops at once)\n", name.c_str());
-  std::snprintf(g_exit_message, sizeof g_exit_message, "\n%s: interrupted: stopped; %s is unchanged\n", name.c_str(),
-                results.final_path().c_str());
+  std::snprintf(g_exit_message, sizeof g_exit_message,
+                "\n%s: interrupted: stopped; %s is unchanged (--resume with the same arguments runs the studies again)\n",
+                name.c_str(), results.final_path().c_str());
+  std::snprintf(g_lock_file, sizeof g_lock_file, "%s.lock", results.final_path().c_str());
   if (!mpi::is_root()) g_stop_message[0] = g_exit_message[0] = '\0';  // (rank 0 speaks for the job)
+  if (!mpi::is_root()) g_lock_file[0] = '\0';                           // (and holds DIR's lock)
   struct sigaction sa {};
   sa.sa_handler = on_signal;
   sigemptyset(&sa.sa_mask);
@@ -686,6 +692,9 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
     refused = 2;
   } catch (const OutputError& e) {
     std::cerr << name << ": output error: " << e.what() << '\n';
+    refused = 2;
+  } catch (const std::filesystem::filesystem_error& e) {  // (a path the checks above did not foresee)
+    std::cerr << name << ": path error: " << e.what() << '\n';
     refused = 2;
   }
   if (mpi::all_max(refused) != 0) return 2;  // (DIR is rank 0's alone: the other ranks learn of its refusal here)

@@ -1,11 +1,14 @@
 #include "geomint/scene/scene.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <charconv>
 #include <cstdint>
 #include <cmath>
+#include <fstream>
 #include <limits>
 #include <sstream>
+#include <system_error>
 
 #include <toml++/toml.h>
 
@@ -222,6 +225,81 @@ std::optional<std::string> check(const Schema::Entry& e, const toml::node& node)
 namespace {
 
 constexpr int kMaxBaseDepth = 8;
+constexpr std::uintmax_t kMaxSceneBytes = 1 << 20;  // a scene file is read whole: the largest one read
+constexpr int kMaxKeyDepth = 32;                     // dotted components of a key, and nesting of [ and {
+
+// A path's problem in words (std::error_code from std::filesystem), for a refusal.
+std::string path_problem(const std::error_code& ec) {
+  if (ec == std::errc::too_many_symbolic_link_levels) return "a loop of symbolic links";
+  if (ec == std::errc::filename_too_long) return "the path is too long (a name over 255 bytes, or the whole over PATH_MAX)";
+  if (ec == std::errc::no_such_file_or_directory) return "no such file";
+  if (ec == std::errc::permission_denied) return "permission denied";
+  return ec.message();
+}
+
+// Refuses, before the TOML parser recurses into it, a scene whose keys have more than kMaxKeyDepth
+// dotted components or whose arrays and inline tables nest deeper than that: a scan of the text that
+// skips strings and comments, and counts a '.' as a key's separator where a key is written (at the
+// start of a line, in a [table] header, after '{' or ',' in an inline table, up to '=').
+void check_scene_shape(const std::string& text, const std::string& where) {
+  std::vector<char> open;  // the brackets open at this point
+  bool in_key = true;      // (a line starts with a key or a header)
+  int components = 1, line = 1;
+  const auto refuse = [&](const std::string& what) {
+    throw SceneError(where + ":" + std::to_string(line) + ": " + what);
+  };
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (c == '"' || c == '\'') {  // a string: skip to its end ("""...""" and '''...''' span lines)
+      const std::string quote = text.compare(i, 3, std::string(3, c)) == 0 ? std::string(3, c) : std::string(1, c);
+      std::size_t j = i + quote.size();
+      for (; j < text.size() && text.compare(j, quote.size(), quote) != 0; ++j) {
+        if (c == '"' && text[j] == '\\') ++j;  // (an escape in a basic string)
+        if (j < text.size() && text[j] == '\n') ++line;
+      }
+      i = std::min(text.size(), j + quote.size()) - 1;
+    } else if (c == '#') {
+      while (i + 1 < text.size() && text[i + 1] != '\n') ++i;
+    } else if (c == '\n') {
+      ++line;
+      if (open.empty()) in_key = true, components = 1;
+    } else if (c == '[' || c == '{') {
+      open.push_back(c);
+      if (open.size() > static_cast<std::size_t>(kMaxKeyDepth)) refuse("arrays or inline tables nested more than " + std::to_string(kMaxKeyDepth) + " deep");
+      if (c == '{' || in_key) in_key = true, components = 1;  // (an inline table's first key; a header's key)
+    } else if (c == ']' || c == '}') {
+      if (!open.empty()) open.pop_back();
+      if (open.empty() && c == ']') in_key = false;  // (the end of a header)
+    } else if (c == ',' && !open.empty() && open.back() == '{') {
+      in_key = true, components = 1;
+    } else if (c == '=') {
+      in_key = false;
+    } else if (c == '.' && in_key && ++components > kMaxKeyDepth) {
+      refuse("a key of more than " + std::to_string(kMaxKeyDepth) + " dotted components");
+    }
+  }
+}
+
+// The text of a scene file, checked as a path (who: how the user named it) and for its size and shape.
+std::string read_scene_text(const std::filesystem::path& file, const std::string& who) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(file, ec);
+  if (ec && ec != std::errc::no_such_file_or_directory) throw SceneError(who + ": " + path_problem(ec));
+  if (!std::filesystem::exists(status)) throw SceneError(who + ": no such file");
+  if (std::filesystem::is_directory(status)) throw SceneError(who + ": is a directory, not a scene file");
+  if (!std::filesystem::is_regular_file(status))
+    throw SceneError(who + ": is not a regular file (a device, a pipe or a socket), not a scene file");
+  const auto size = std::filesystem::file_size(file, ec);
+  if (ec) throw SceneError(who + ": " + path_problem(ec));
+  if (size > kMaxSceneBytes)
+    throw SceneError(who + ": is " + std::to_string(size) + " bytes, over the " + std::to_string(kMaxSceneBytes) +
+                     " bytes (1 MiB) a scene file may have");
+  std::ifstream in(file, std::ios::binary);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (!in && !in.eof()) throw SceneError(who + ": cannot be read");
+  check_scene_shape(text, file.string());
+  return text;
+}
 
 // Moves the value at dotted path `from` to `to` (an older spelling of a key).
 // Moves `from` to `to` (an older spelling); returns whether `from` was there.
@@ -265,14 +343,15 @@ struct Loaded {
   std::vector<std::filesystem::path> bases;
 };
 
-Loaded read_scene(const std::filesystem::path& file, const Schema& schema, std::vector<std::filesystem::path>& chain) {
+// `who`: how the user named the file ("--scene FILE", or the base of a scene).
+Loaded read_scene(const std::filesystem::path& file, const std::string& who, const Schema& schema,
+                  std::vector<std::filesystem::path>& chain) {
   const std::string where = file.string();
-  if (std::filesystem::is_directory(file)) throw SceneError("--scene " + where + ": is a directory, not a scene file");
-  if (!std::filesystem::is_regular_file(file)) throw SceneError("--scene " + where + ": no such file");
+  const std::string text = read_scene_text(file, who);
   Loaded out;
   toml::table own;
   try {
-    own = toml::parse_file(where);
+    own = toml::parse(text, where);
   } catch (const toml::parse_error& err) {
     const auto& b = err.source().begin;
     throw SceneError(where + ":" + std::to_string(b.line) + ":" + std::to_string(b.column) +
@@ -284,12 +363,15 @@ Loaded read_scene(const std::filesystem::path& file, const Schema& schema, std::
   if (const auto base = own["base"]; base) {
     if (!base.is_string()) throw SceneError(where + ": base must be a string naming the base scene file");
     const std::filesystem::path base_file = file.parent_path() / *base.value<std::string>();
-    const auto canonical = std::filesystem::weakly_canonical(base_file);
+    const std::string base_who = where + ": base = \"" + *base.value<std::string>() + "\" (" + base_file.string() + ")";
+    std::error_code ec;
+    const auto canonical = std::filesystem::weakly_canonical(base_file, ec);
+    if (ec) throw SceneError(base_who + ": " + path_problem(ec));
     for (const auto& seen : chain)
       if (seen == canonical) throw SceneError(where + ": base " + base_file.string() + " is already in the chain of bases");
     if (chain.size() >= kMaxBaseDepth) throw SceneError(where + ": more than " + std::to_string(kMaxBaseDepth) + " bases");
     chain.push_back(canonical);
-    out = read_scene(base_file, schema, chain);
+    out = read_scene(base_file, base_who, schema, chain);
     out.bases.insert(out.bases.begin(), base_file);
     own.erase("base");
   }
@@ -320,8 +402,10 @@ Scene Scene::load(const std::filesystem::path& file, const std::vector<std::stri
   Scene scene;
   scene.file_ = file;
   const std::string where = file.string();
-  std::vector<std::filesystem::path> chain{std::filesystem::weakly_canonical(file)};
-  Loaded loaded = read_scene(file, schema, chain);
+  std::error_code ec;
+  std::vector<std::filesystem::path> chain{std::filesystem::weakly_canonical(file, ec)};
+  if (ec) throw SceneError("--scene " + where + ": " + path_problem(ec));
+  Loaded loaded = read_scene(file, "--scene " + where, schema, chain);
   scene.table_ = std::make_shared<Table>(Table{std::move(loaded.table)});
   scene.origin_ = std::move(loaded.origin);
   scene.bases_ = std::move(loaded.bases);
