@@ -195,10 +195,15 @@ TEST(ResultsDir, ResumeKeepsTheInterruptedRunAndDropsItsTemporaries) {
     OutputDir(stopped.staging_path()).write("checkpoint.json", "{}\n");
     std::ofstream(stopped.staging_path() / ".checkpoint.json.tmp-12345") << "half";  // a killed writer's temporary
   }
-  ResultsDir resumed(dir, "exp", true);
-  EXPECT_TRUE(resumed.resumed());
-  EXPECT_TRUE(fs::exists(resumed.staging_path() / "checkpoint.json"));
-  EXPECT_FALSE(fs::exists(resumed.staging_path() / ".checkpoint.json.tmp-12345"));
+  {
+    const ResultsDir resumed(dir, "exp", true);
+    EXPECT_TRUE(resumed.resumed());
+    EXPECT_TRUE(fs::exists(resumed.staging_path() / "checkpoint.json"));
+    EXPECT_FALSE(fs::exists(resumed.staging_path() / ".checkpoint.json.tmp-12345"));
+    // (while it holds DIR, no second ResultsDir on it: runner's one run per results directory)
+    EXPECT_REFUSAL_OF(OutputError, "a second run on a results directory in use", ResultsDir(dir, "exp", false),
+                      {"another run (process", "res.lock"});
+  }
   ResultsDir fresh(dir, "exp", false);  // without --resume the interrupted run is dropped
   EXPECT_FALSE(fresh.resumed());
   EXPECT_FALSE(fs::exists(fresh.staging_path() / "checkpoint.json"));

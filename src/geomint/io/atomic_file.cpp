@@ -124,12 +124,16 @@ void check_out_path(const fs::path& d, const std::string& given) {
   } else if (errno != ENOENT) {
     throw OutputError(out + std::strerror(errno));
   }
-  const fs::path parent = d.parent_path();
+  fs::path parent = d.parent_path();  // (the nearest that exists: the others are created)
+  while (::stat(parent.c_str(), &st) != 0 && errno == ENOENT && parent != parent.root_path()) parent = parent.parent_path();
   if (::stat(parent.c_str(), &st) != 0)
     throw OutputError(out + "its parent directory " + parent.string() + ": " + std::strerror(errno));
-  if (!S_ISDIR(st.st_mode)) throw OutputError(out + "its parent " + parent.string() + " is not a directory");
+  if (!S_ISDIR(st.st_mode)) throw OutputError(out + parent.string() + " is not a directory");
   if (::access(parent.c_str(), W_OK | X_OK) != 0)
-    throw OutputError(out + "its parent directory " + parent.string() + " is not writable (" + std::strerror(errno) + ")");
+    throw OutputError(out + "the directory " + parent.string() + " is not writable (" + std::strerror(errno) + ")");
+  std::error_code ec;
+  fs::create_directories(d.parent_path(), ec);
+  if (ec) throw OutputError(out + "cannot create " + d.parent_path().string() + " (" + ec.message() + ")");
 }
 
 // The process id a lock file names ("?" if none).
