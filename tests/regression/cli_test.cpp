@@ -400,3 +400,21 @@ TEST(Cli, SigtermWithoutACheckpointExitsThree) {
 }
 
 }  // namespace cli_test
+
+namespace cli_test {
+
+// What a person reads: an argument with a newline or carriage return is refused and shown escaped on one line
+// (never two keys from one --set); an unknown --study is refused with --list-keys too; a TOML date is named as
+// one, a NUL inside a string shown escaped, and an integer written as a float is said to be one.
+TEST(Cli, RefusalsAreOneReadableLine) {
+  // (std::system runs /bin/sh: printf makes the newline and the carriage return)
+  expect_refused_raw("--quick --plan --set \"$(printf 'decay.h=0.2\\nanything=1')\"", {"--set decay.h=0.2\\nanything=1", "control character"});
+  expect_refused_raw("--quick --plan --study \"$(printf 'decay\\r')\"", {"--study decay\\r", "control character"});
+  expect_refused_raw("--list-keys --study nope", {"--study nope", "no such study"});
+  expect_refused_raw("--quick --plan --set decay.h=1979-05-27", {"decay.h = 1979-05-27 (a date or time)"});
+  expect_refused_raw("--quick --plan --set 'ensemble.seed=1e3'", {"ensemble.seed = 1000", "floating-point number", "write 1000"},
+                     bin_of("ti_drift"));
+  expect_refused_raw("--quick --plan --set 'pendulum.l=\"a\\u0000b\"'", {"pendulum.l = \"a\\x00b\""}, bin_of("energy_map"));
+}
+
+}  // namespace cli_test

@@ -608,6 +608,22 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
     std::cerr << name << ": " << e.what() << " (see --help)\n";
     return 2;
   }
+  // Arguments are shown in one line: one with a control character (a newline, a carriage return, a tab...)
+  // is refused, shown with the character escaped (a --set of two lines would otherwise set one key).
+  for (const auto& [option, values] : {std::pair<const char*, std::vector<std::string>>{"--set", overrides},
+                                       {"--study", only}, {"--scene", {scene_file}}, {"--out", {out_dir}}})
+    for (const auto& v : values)
+      if (std::any_of(v.begin(), v.end(), [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; })) {
+        std::cerr << name << ": " << option << " " << printable(v)
+                  << ": holds a control character (shown escaped); give one value per option, on one line\n";
+        return 2;
+      }
+  for (const auto& given : only)  // (also with --list-keys and --list-studies, which run nothing)
+    if (!find_study(spec, given)) {
+      std::cerr << name << ": --study " << given << ": no such study (the studies of " << name << ": "
+                << join(study_names(spec)) << ")\n";
+      return 2;
+    }
   if (as_json && !list_keys && !plan_only) {
     std::cerr << name << ": --json goes with --list-keys or --plan (see --help)\n";
     return 2;

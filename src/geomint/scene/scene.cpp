@@ -14,6 +14,20 @@
 
 namespace geomint {
 
+std::string printable(std::string_view s) {
+  static const char* const kHex = "0123456789abcdef";
+  std::string out;
+  for (const char c : s) {
+    const auto u = static_cast<unsigned char>(c);
+    if (c == '\n') out += "\\n";
+    else if (c == '\r') out += "\\r";
+    else if (c == '\t') out += "\\t";
+    else if (u < 0x20 || u == 0x7f) out += std::string("\\x") + kHex[u >> 4] + kHex[u & 15];
+    else out += c;
+  }
+  return out;
+}
+
 namespace {
 
 std::string fmt(double v) {
@@ -32,7 +46,12 @@ std::string repr(const toml::node& node) {
   }
   if (const auto* v = node.as_integer()) return std::to_string(v->get());
   if (const auto* v = node.as_boolean()) return v->get() ? "true" : "false";
-  if (const auto* v = node.as_string()) return '"' + v->get() + '"';
+  if (const auto* v = node.as_string()) return '"' + printable(v->get()) + '"';
+  if (node.is_date() || node.is_time() || node.is_date_time()) {  // (TOML's own notation, e.g. 1979-05-27)
+    std::ostringstream out;
+    node.visit([&](const auto& n) { out << n; });
+    return out.str() + " (a date or time)";
+  }
   if (const auto* arr = node.as_array()) {
     std::string out = "[";
     for (std::size_t i = 0; i < arr->size(); ++i) out += (i ? ", " : "") + repr(*arr->get(i));
@@ -167,6 +186,9 @@ std::optional<std::string> check(const Schema::Entry& e, const toml::node& node)
     case Schema::Type::real:
       return number_ok(node);
     case Schema::Type::integer:
+      if (node.is_floating_point())  // (1e3 and 1000.0 are floats in TOML)
+        return "must be an integer, " + e.bound.describe() + " (it is written as a floating-point number: TOML reads 1e3 "
+               "and 1000.0 as floats; write 1000)";
       if (!node.is_integer()) return "must be an integer, " + e.bound.describe();
       if (!e.bound.admits(static_cast<double>(*node.value<std::int64_t>()))) return "must be an integer, " + e.bound.describe();
       return std::nullopt;

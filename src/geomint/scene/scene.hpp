@@ -79,6 +79,8 @@ class Schema {
 
 // "a number", "a list of strings", ...: how --help and error messages name a type.
 std::string type_name(Schema::Type t);
+// s with its control characters escaped (\n, \r, \t, \xNN): a value or argument shown on one line.
+std::string printable(std::string_view s);
 // What a key admits, in words: the range of a number, the choices of a string.
 std::string allowed_values(const Schema::Entry& e);
 
