@@ -157,6 +157,7 @@ void write_map(Context& ctx, const MapSetup& g, const std::vector<Point>& points
   const Scene& s = ctx.scene;
   Csv map({"x0", "y0", "H0", "eps_cartesian", "eps_polar", "diverged_cartesian", "diverged_polar",
            "diverge_step_polar"});
+  map.flags({"diverged_cartesian", "diverged_polar"});  // (eps of a diverged run is NaN)
   std::int64_t agree = 0, counted = 0, both_alive = 0, polar_better = 0, cart_diverged = 0, polar_diverged = 0;
   const auto [l, m, k, gravity, dt, steps, blowup] = g.P;
   const ElasticPendulumParams pendulum{l, m, k, gravity};

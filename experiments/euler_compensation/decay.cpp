@@ -7,10 +7,16 @@ namespace geomint::euler_compensation {
 namespace {
 
 void check_decay(const Scene& s) {
-  for (const char* key : {"decay.alpha", "decay.printed_alpha"})
-    if (s.real("decay.h") * s.real(key) > method_info("explicit_euler").real_bound)
+  for (const char* key : {"decay.alpha", "decay.printed_alpha"}) {
+    const double h = s.real("decay.h"), alpha = s.real(key);
+    if (h * alpha > method_info("explicit_euler").real_bound)
       s.reject("decay.h", std::string("explicit Euler on y' = -alpha y is unstable for h > 2/alpha = ") +
-                              format_double(2.0 / s.real(key)) + " (alpha = " + key + ")");
+                              format_double(2.0 / alpha) + " (alpha = " + key + ")");
+    // ybar = ln(y) / alpha (15) needs y > 0: Euler's y_{j+1} = (1 - h alpha) y_j stays positive for h alpha < 1
+    if (!(h * alpha < 1))
+      s.reject("decay.h", std::string("ybar = ln(y)/alpha of (15) needs y > 0, and explicit Euler's y_{j+1} = (1 - h alpha) y_j "
+                                      "is positive only for h < 1/alpha = ") + format_double(1.0 / alpha) + " (alpha = " + key + ")");
+  }
 }
 
 void run_decay(Context& ctx) {
@@ -29,11 +35,11 @@ void run_decay(Context& ctx) {
 }
 
 void keys(Schema& s) {
-  s.real("decay.h", positive(), "step of explicit Euler (Fig 2); h alpha <= 2 (stability)")
+  s.real("decay.h", positive(), "step of explicit Euler (Fig 2); h alpha < 1 (ybar of (15) defined along the run)")
       .integer("decay.steps", at_least(1), "number of steps shown in Fig 2")
       .real("decay.printed_alpha", positive(),
             "alpha at which the transformed field (16) as printed, ybar' = -alpha, is checked against (15) "
-            "(they coincide at alpha = 1); h alpha <= 2");
+            "(they coincide at alpha = 1); h alpha < 1");
 }
 
 StudyPlan plan_decay(const Scene& s) { return plan_scalar(static_cast<double>(s.integer("decay.steps")), 2); }

@@ -13,6 +13,11 @@ void check_gompertz(const Scene& s) {
                                format_double(2.0 / s.real("gompertz.b")));
   if (std::log(s.real("gompertz.y0")) >= s.real("gompertz.a") / s.real("gompertz.b"))
     s.reject("gompertz.y0", "the transformation (18) needs 0 < y0 < e^{a/b}");
+  // (18) is defined below the equilibrium y* = e^{a/b} only; from y = y* e^{-u}, u > 0, Euler gives
+  // y (1 + h b u), above y* where 1 + h b u > e^u: for small u whenever h b > 1, never for h b <= 1
+  if (s.real("gompertz.h") * s.real("gompertz.b") > 1)
+    s.reject("gompertz.h", "the transformation (18) needs y < e^{a/b}, and explicit Euler overshoots the equilibrium "
+                           "e^{a/b} for h > 1/b = " + format_double(1.0 / s.real("gompertz.b")));
 }
 
 void run_gompertz(Context& ctx) {
@@ -25,7 +30,7 @@ void run_gompertz(Context& ctx) {
 }
 
 void keys(Schema& s) {
-  s.real("gompertz.h", positive(), "step of explicit Euler (Fig 3); h b <= 2 (stability at equilibrium)")
+  s.real("gompertz.h", positive(), "step of explicit Euler (Fig 3); h b <= 1 (the Euler iterates stay below the equilibrium, where (18) is defined)")
       .integer("gompertz.steps", at_least(1), "number of steps shown in Fig 3");
 }
 

@@ -72,6 +72,7 @@ Scan scan_steps(Context& ctx, const LJ& lj, json& reproduced) {
   });
   const auto [along_lo, along_hi] = std::minmax_element(along.begin(), along.end());
   Csv sc({"h", "trajectory", "max_H_err", "diverged", "diverge_step"});
+  sc.flags({"diverged"});
   json stable_h = json::array(), scan_summary = json::array();
   std::vector<double> stable;
   for (std::size_t k = 0; k < hs.size(); ++k) {

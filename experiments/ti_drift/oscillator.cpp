@@ -133,6 +133,7 @@ std::vector<Method> integrate_methods(Context& ctx, const Z1& z0, double T1) {
 void write_closed_forms(Context& ctx) {
   const double sv_eff_bound = 2 * method_info("stormer_verlet").oscillatory_bound;
   Csv cf({"omega_h", "sv_rel_H", "ti_rel_H", "ti_beyond_bound"});
+  cf.flags({"ti_beyond_bound"});
   for (int i = 1; i <= 400; ++i) {
     const double y = sv_eff_bound * i / 401.0;
     const bool beyond = !(y < method_info("takahashi_imada").oscillatory_bound);

@@ -418,3 +418,15 @@ TEST(Cli, RefusalsAreOneReadableLine) {
 }
 
 }  // namespace cli_test
+
+namespace cli_test {
+
+// Steps at which the transformed variable of Figs 2-3 is undefined along the Euler run (a NaN or -inf in the
+// CSV before): refused before any work, with the bound derived in decay.cpp and gompertz.cpp.
+TEST(Cli, StepsWhereTheTransformedVariableIsUndefinedAreRefused) {
+  expect_rejected("--study gompertz --set gompertz.h=4.0", {"gompertz.h = 4", "overshoots the equilibrium", "h > 1/b"});
+  expect_rejected("--study gompertz --set gompertz.h=2.01", {"gompertz.h = 2.01", "h > 1/b = 2"});
+  expect_rejected("--study decay --set decay.alpha=1e300 --set decay.h=1e-300", {"decay.h = 1e-300", "h < 1/alpha"});
+}
+
+}  // namespace cli_test

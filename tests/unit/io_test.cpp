@@ -71,6 +71,25 @@ TEST(Csv, NumbersAreWrittenAsPrintfWrites) {
   for (double v : values) ASSERT_EQ(format_double(v), printf17(v)) << std::hexfloat << v;
 }
 
+// A value that is not finite is kept only in a row a flag column marks; the first that is not is named.
+TEST(Csv, NonFiniteValuesOnlyInFlaggedRows) {
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  Csv flagged({"x", "eps", "diverged"});
+  flagged.flags({"diverged"});
+  flagged.row(1.0, 0.5, std::int64_t{0});
+  flagged.row(2.0, nan, std::int64_t{1});
+  flagged.row(3.0, -inf, 1.0);
+  EXPECT_EQ(flagged.unflagged_non_finite(), "");
+  flagged.row(4.0, inf, std::int64_t{0});
+  flagged.row(5.0, nan, std::int64_t{0});
+  EXPECT_EQ(flagged.unflagged_non_finite(), "row 4, column eps");  // (the first)
+  Csv plain({"t", "ybar"});
+  plain.row(0.0, 1.0);
+  plain.row(1.0, -inf);
+  EXPECT_EQ(plain.unflagged_non_finite(), "row 2, column ybar");
+  EXPECT_THROW(plain.flags({"nosuch"}), std::logic_error);
+}
+
 TEST(Csv, RejectsRowsOfTheWrongWidth) {
   Csv csv({"a", "b"});
   EXPECT_REFUSAL_OF(std::logic_error, "one cell for two columns", csv.row(1.0), {"fewer cells"});

@@ -1,5 +1,6 @@
 #include "geomint/io/csv.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <charconv>
 #include <stdexcept>
@@ -13,9 +14,18 @@ std::string format_double(double v) {
   return std::string(buf, end);
 }
 
-Csv::Csv(std::vector<std::string> columns) : width_(columns.size()) {
+Csv::Csv(std::vector<std::string> columns) : columns_(columns), flag_(columns.size(), false), width_(columns.size()) {
   for (std::size_t i = 0; i < columns.size(); ++i) text_ += (i ? "," : "") + columns[i];
   text_ += '\n';
+}
+
+Csv& Csv::flags(const std::vector<std::string>& columns) {
+  for (const auto& c : columns) {
+    const auto at = std::find(columns_.begin(), columns_.end(), c);
+    if (at == columns_.end()) throw std::logic_error("Csv: no flag column " + c);
+    flag_[static_cast<std::size_t>(at - columns_.begin())] = true;
+  }
+  return *this;
 }
 
 void Csv::separator() {
@@ -25,12 +35,15 @@ void Csv::separator() {
 
 Csv& Csv::operator<<(double v) {
   separator();
+  if (!std::isfinite(v) && row_non_finite_ < 0) row_non_finite_ = static_cast<std::ptrdiff_t>(cells_ - 1);
+  if (flag_[cells_ - 1] && v != 0) row_flagged_ = true;
   text_ += format_double(v);
   return *this;
 }
 
 Csv& Csv::operator<<(std::int64_t v) {
   separator();
+  if (flag_[cells_ - 1] && v != 0) row_flagged_ = true;
   text_ += std::to_string(v);
   return *this;
 }
@@ -45,7 +58,9 @@ Csv& Csv::operator<<(std::string_view s) {
 void Csv::end_row() {
   if (cells_ != width_) throw std::logic_error("Csv: row has fewer cells than columns");
   text_ += '\n';
-  cells_ = 0;
+  if (row_non_finite_ >= 0 && !row_flagged_ && unflagged_.empty())
+    unflagged_ = "row " + std::to_string(rows_ + 1) + ", column " + columns_[static_cast<std::size_t>(row_non_finite_)];
+  cells_ = 0, row_non_finite_ = -1, row_flagged_ = false;
   ++rows_;
 }
 

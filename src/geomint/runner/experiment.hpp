@@ -41,7 +41,12 @@ class Context {
   // times: "published", "reproduced", "orders", "timing", ...
   nlohmann::ordered_json summary = nlohmann::ordered_json::object();
 
-  void write(const std::string& name, const Csv& csv) { out.write(name, csv.str()); }
+  // (a value that is not finite in a row no flag column marks: NumericalFailure, nothing written)
+  void write(const std::string& name, const Csv& csv) {
+    if (!csv.unflagged_non_finite().empty())
+      throw NumericalFailure(name + ", " + csv.unflagged_non_finite() + ": not finite, in a row no flag column marks");
+    out.write(name, csv.str());
+  }
   // The entries of the experiment's published.toml, as the runner read and checked them before any
   // study ran (it sets them against the summary after the run: runner/published.hpp); and the entry
   // `key` (std::logic_error if there is none).
