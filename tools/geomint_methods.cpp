@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "geomint/methods/registry.hpp"
+#include "geomint/scene/scene.hpp"
 
 using namespace geomint;
 
@@ -117,9 +118,15 @@ void print_gnuplot() {
 
 int main(int argc, char** argv) {
   const std::string_view option = argc > 1 ? argv[1] : "";
-  if (argc > 2 || !(option.empty() || option == "--json" || option == "--names" || option == "--gnuplot" || option == "--help")) {
-    std::fprintf(stderr, "geomint-methods: unknown option '%s' (use --json, --names, --gnuplot or --help)\n",
-                 argv[argc > 2 ? 2 : 1]);
+  const auto known = [](std::string_view o) { return o == "--json" || o == "--names" || o == "--gnuplot" || o == "--help"; };
+  if (argc > 2) {
+    std::fprintf(stderr, "geomint-methods: one option at most, here %d (use one of --json, --names, --gnuplot, --help)\n",
+                 argc - 1);
+    return 2;
+  }
+  if (!option.empty() && !known(option)) {
+    std::fprintf(stderr, "geomint-methods: unknown option '%s' (use one of --json, --names, --gnuplot, --help)\n",
+                 printable(option).c_str());
     return 2;
   }
   if (option == "--help") {

@@ -36,7 +36,7 @@ constexpr Coordinates systems[] = {Coordinates::cartesian, Coordinates::polar};
 
 void check_cost(const Scene& s) {
   const ElasticPendulumParams p{s.real("pendulum.l"), s.real("pendulum.m"), s.real("pendulum.k"), s.real("pendulum.g")};
-  const double bound = method_info("symplectic_euler_pq").oscillatory_bound, omega = std::sqrt(p.k / p.m);
+  const double bound = method_info("symplectic_euler_pq").oscillatory_bound, omega = spring_frequency(s);
   const double t_end = s.real("cost.t_end");
   for (double dt : s.reals("cost.dt")) {
     if (!(dt * omega < bound))

@@ -36,10 +36,18 @@ MapSetup map_setup(const Scene& s) {
 
 const char* coordinates_name(Coordinates c) { return c == Coordinates::cartesian ? "cartesian" : "polar"; }
 
+double spring_frequency(const Scene& s) {
+  const double omega = std::sqrt(s.real("pendulum.k") / s.real("pendulum.m"));
+  if (!(std::isfinite(omega) && omega > 0))
+    s.reject("pendulum.k", "the spring's frequency sqrt(k/m) = " + format_double(omega) + " with pendulum.m = " +
+                               format_double(s.real("pendulum.m")) + " is not a finite positive number: k/m must be representable");
+  return omega;
+}
+
 void check_map(const Scene& s) {
   if (!(s.real("grid.x_max") >= s.real("grid.x_min"))) s.reject("grid.x_max", "must be >= grid.x_min");
   if (!(s.real("grid.y_max") >= s.real("grid.y_min"))) s.reject("grid.y_max", "must be >= grid.y_min");
-  const double dt = s.real("dt"), omega = std::sqrt(s.real("pendulum.k") / s.real("pendulum.m"));
+  const double dt = s.real("dt"), omega = spring_frequency(s);
   const double bound = method_info("symplectic_euler_pq").oscillatory_bound;
   if (!(dt * omega < bound))
     s.reject("dt", "symplectic Euler is unstable for dt sqrt(k/m) >= " + format_double(bound) +

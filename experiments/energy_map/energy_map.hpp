@@ -45,6 +45,8 @@ struct MapSetup {
 MapSetup map_setup(const Scene& s);
 
 const char* coordinates_name(Coordinates c);
+// sqrt(pendulum.k / pendulum.m), the spring's frequency that bounds the step; refuses one that is not finite and positive.
+double spring_frequency(const Scene& s);
 
 // The checks of the map's grid and step (the map and the timing study): x_max >= x_min, y_max >= y_min,
 // symplectic Euler stable at dt, t_max a multiple of dt.

@@ -430,3 +430,16 @@ TEST(Cli, StepsWhereTheTransformedVariableIsUndefinedAreRefused) {
 }
 
 }  // namespace cli_test
+
+namespace cli_test {
+
+// A frequency that overflows is named as such (not "dt < 0"); geomint-methods names what it got.
+TEST(Cli, OverflowingParametersAndToolOptionsAreNamed) {
+  expect_refused_raw("--quick --plan --set pendulum.k=1e300 --set pendulum.m=1e-300",
+                     {"pendulum.k = 1e+300", "sqrt(k/m) = inf", "not a finite positive number"}, bin_of("energy_map"));
+  expect_refused_raw("--list-keys --json", {"one option at most, here 2"}, bin_of("geomint-methods"));
+  expect_refused_raw("--list-keys", {"unknown option '--list-keys'", "--json, --names, --gnuplot, --help"},
+                     bin_of("geomint-methods"));
+}
+
+}  // namespace cli_test
