@@ -443,3 +443,30 @@ TEST(Cli, OverflowingParametersAndToolOptionsAreNamed) {
 }
 
 }  // namespace cli_test
+
+namespace cli_test {
+
+// Two runs on one --out at once: the second exits 2 at once naming the first's process, and the first ends
+// with its complete results (never its DIR.partial deleted under it).
+TEST(Cli, TwoConcurrentRunsOnOneOutput) {
+  const fs::path out = work / "concurrent";
+  fs::remove_all(out), fs::remove_all(out.string() + ".partial");
+  fs::create_directories(work);
+  const std::string first = bin_of("energy_map") + " --study map --set grid.nx=41 --set grid.ny=41 --out " + out.string();
+  const std::string cmd = first + " >/dev/null 2>" + (work / "first.txt").string() + " & pid=$!; " +
+                          "while [ ! -e " + out.string() + ".lock ] && kill -0 $pid 2>/dev/null; do sleep 0.01; done; " +
+                          bin_of("energy_map") + " --study map --out " + out.string() + " >/dev/null 2>" +
+                          (work / "second.txt").string() + "; second=$?; wait $pid; first=$?; exit $((first * 16 + second))";
+  const int status = std::system(("bash -c '" + cmd + "'").c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  const std::string second = file_text(work / "second.txt");
+  EXPECT_EQ(WEXITSTATUS(status) % 16, 2) << second;  // the second: refused
+  EXPECT_EQ(WEXITSTATUS(status) / 16, 0) << file_text(work / "first.txt");  // the first: done
+  EXPECT_NE(second.find("another run (process "), std::string::npos) << second;
+  EXPECT_EQ(std::count(second.begin(), second.end(), '\n'), 1) << second;
+  EXPECT_TRUE(fs::exists(out / "map.csv"));
+  EXPECT_TRUE(fs::exists(out / "run.json"));
+  EXPECT_FALSE(fs::exists(out.string() + ".partial"));
+}
+
+}  // namespace cli_test
