@@ -470,7 +470,8 @@ void check_plan(const Study& st, const StudyPlan& p, const std::vector<std::stri
 // n tasks gives each rank ceil(n / ranks) of them (distributed_map's cyclic split), run ceil(share /
 // threads) deep on its threads: wall = (steps / n) ns_per_step ceil(share / threads). A study without
 // tasks runs on every rank alike: steps ns_per_step / threads. Every rank holds every result: the
-// memory is per rank. Timed runs add their own time (StudyPlan::timed_seconds).
+// memory is per rank. Timed runs add their own time (StudyPlan::timed_seconds), and every study the
+// fixed cost of running at all (kStudyOverheadS).
 nlohmann::ordered_json plan_json(const std::vector<const Study*>& studies, const std::vector<StudyPlan>& plans, int ranks,
                                  int threads) {
   nlohmann::ordered_json j = {{"ranks", ranks}, {"threads", threads}, {"studies", nlohmann::ordered_json::array()}};
@@ -482,7 +483,7 @@ nlohmann::ordered_json plan_json(const std::vector<const Study*>& studies, const
     const double share = split ? std::ceil(p.tasks / ranks) : 0;
     const double wall = (split ? p.steps / p.tasks * p.ns_per_step * 1e-9 * std::ceil(share / threads)
                                : p.steps * p.ns_per_step * 1e-9 / threads) +
-                        p.timed_seconds;
+                        p.timed_seconds + kStudyOverheadS;
     total += estimated ? wall : 0, all = all && estimated;
     const auto value = [](bool known, double v) { return known ? nlohmann::ordered_json(v) : nlohmann::ordered_json(); };
     j["studies"].push_back({{"study", studies[i]->name}, {"makes", studies[i]->makes}, {"steps", value(has, p.steps + p.timed_steps)},
