@@ -170,13 +170,15 @@ DirLock::DirLock(const fs::path& file) : file_(file) {
 
 DirLock& DirLock::operator=(DirLock&& o) noexcept {
   if (this != &o) {
-    this->~DirLock();
+    release();
     file_ = std::move(o.file_), fd_ = o.fd_, o.fd_ = -1;
   }
   return *this;
 }
 
-DirLock::~DirLock() {
+DirLock::~DirLock() { release(); }
+
+void DirLock::release() noexcept {
   if (fd_ < 0) return;
   ::unlink(file_.c_str());  // (while held: a run that opened it before checks the path and takes the new one)
   ::close(fd_);

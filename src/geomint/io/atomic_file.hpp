@@ -53,6 +53,7 @@ class DirLock {
   ~DirLock();
 
  private:
+  void release() noexcept;  // removes and unlocks the file, if held
   std::filesystem::path file_;
   int fd_ = -1;
 };

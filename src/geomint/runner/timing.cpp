@@ -101,7 +101,6 @@ class Pool {
     stop_ = true;
     if (workers_ > 1) start_.arrive_and_wait();
   }
-  int workers() const { return workers_; }
   void run(const std::function<void(int)>& job) {
     job_ = &job, error_ = nullptr;
     if (workers_ > 1) start_.arrive_and_wait();
