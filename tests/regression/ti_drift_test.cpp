@@ -396,12 +396,13 @@ TEST(TiDrift, PlanOfThePaperSceneCountsEveryStudy) {
 }
 
 // Checkpoints (runner/checkpoint.hpp): the Fig. 4 ensemble and the Lennard-Jones ensemble of Fig. 6, stopped after one
-// round of trajectories (a batch of lanes) and resumed (on 1 thread), give the files of a run straight through.
+// round of trajectories (on 2 threads a round of two batches of lanes: four batches, two rounds) and resumed (on 1
+// thread), give the files of a run straight through.
 TEST(TiDrift, ResumedEnsembleGivesTheSameFiles) {
-  expect_resume_identical("ti_drift", "--quick --study ensemble --set ensemble.size=16 --set t_end=100000", 1, "ensemble");  // (two batches of lanes)
+  expect_resume_identical("ti_drift", "--quick --study ensemble --set ensemble.size=32 --set t_end=100000", 1, "ensemble");
 }
 TEST(TiDrift, ResumedLennardJonesEnsembleGivesTheSameFiles) {
-  expect_resume_identical("ti_drift", "--quick --study lj --set lj.t_end=100", 1, "lj");
+  expect_resume_identical("ti_drift", "--quick --study lj --set lj.size=32 --set lj.t_end=100", 1, "lj");
 }
 
 }  // namespace ti_drift_test

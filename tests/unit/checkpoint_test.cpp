@@ -429,11 +429,16 @@ TEST(DistributedMap, OneProcessIsTheParallelMap) {
 }
 
 // A round: n/32 tasks, but at least 4 per worker while 8 rounds remain (the fine map on 1024 cores: 4096 batches,
-// not 1252, of which 256 ranks x 4 threads would run 5 per rank, 2 deep on 4 threads: 61 % busy).
+// not 1252, of which 256 ranks x 4 threads would run 5 per rank, 2 deep on 4 threads: 61 % busy); a whole
+// number per worker (Fig. 6's 50 batches on 2 threads: rounds of 6, not 7, of which the 7th task ran alone),
+// and never fewer than the workers (8 batches on 2 threads ran one at a time).
 TEST(Checkpoint, DefaultRoundKeepsEveryWorkerBusy) {
   EXPECT_EQ(default_round(632, 2), 20u);       // the paper map on one machine: n/32
   EXPECT_EQ(default_round(40051, 1024), 4096u);
-  EXPECT_EQ(default_round(40051, 65536), 5007u);  // at most n/8: 8 rounds to stop at
+  EXPECT_EQ(default_round(50, 2), 6u);         // Fig. 6's ensemble: 50 batches of 8 trajectories
+  EXPECT_EQ(default_round(8, 2), 2u);
+  EXPECT_EQ(default_round(3, 4), 3u);
+  EXPECT_EQ(default_round(40051, 65536), 40051u);  // every task at once: one task's time, as 8 rounds of n/8 would take 8
   EXPECT_EQ(default_round(9, 2), 2u);
   EXPECT_EQ(default_round(0, 4), 1u);
 }

@@ -87,9 +87,12 @@ class CheckpointLog {
 
 // The tasks of a round of checkpointed_map for n tasks on `workers` threads (all ranks together):
 // n/32 (a stop point every 3 % of the work), but at least 4 per worker as long as that leaves 8
-// rounds, so that the uneven end of a round (tasks are whole) idles few workers of a large job.
+// rounds, so that the uneven end of a round (tasks are whole) idles few workers of a large job;
+// then a whole number of tasks per worker, and never fewer tasks than workers (a round of fewer
+// takes as long as a round of `workers` tasks: more rounds, no earlier stop point).
 inline std::size_t default_round(std::size_t n, std::size_t workers) {
-  return std::max<std::size_t>({1, (n + 31) / 32, std::min(4 * workers, (n + 7) / 8)});
+  const std::size_t r = std::max((n + 31) / 32, std::min(4 * workers, (n + 7) / 8));
+  return std::max<std::size_t>(1, r >= workers ? r - r % workers : std::min(workers, n));
 }
 
 // The wall time this process spent writing checkpoints (appends and headers, synced), for run.json.
