@@ -13,7 +13,9 @@ A rebuild and a ctest run per mutant come to a few hours on two cores, so it is 
 by `make test`. Before the mutants, the unmodified tree must build and pass; its test times
 order the suite: the library's test executables are built and run first (a fraction of the
 build), then the whole tree is built and its tests under --slow seconds run, and the slower ones
-only for a mutant none of these killed. The report (stdout and --report FILE, JSON, rewritten after
+only for a mutant none of these killed; a test that waits on a fixture (a quick run) runs in the
+phase of the fixture's setup (a fast test on a slow quick run runs late), and the fixtures' outputs
+are removed before every mutant, so that no test reads what an earlier run left. The report (stdout and --report FILE, JSON, rewritten after
 every mutant) gives each mutant's result and the failing tests, the kill rate, and the mutants
 that change a published value (`affects`) but survived; the exit status is 1 if there is any
 such mutant, 0 otherwise. With --resume, the mutants already in the report (of the same commit)
@@ -108,16 +110,77 @@ def failed_tests(args, log, stop_on_failure=True, phase=(None, None), label=None
     return failed
 
 
+def split_phases(tests, durations, slow):
+    """The tests (ctest --show-only=json-v1 `tests`) in phases of names: those under `slow` seconds
+    in `durations` (or not timed), then the others. A test runs in the phase of the setups of the
+    fixtures it requires (FIXTURES_REQUIRED, and for a cleanup test FIXTURES_CLEANUP), transitively,
+    when that is later than its own: a fast test that reads a slow quick run's output must run after
+    that quick run of the same mutant, not in a phase before it."""
+    props = {t["name"]: {p["name"]: p["value"] for p in t.get("properties", [])} for t in tests}
+    setups = {}
+    for name, p in props.items():
+        for fixture in p.get("FIXTURES_SETUP", []):
+            setups.setdefault(fixture, []).append(name)
+    phase = {}
+
+    def phase_of(name, path=()):
+        if name in path:
+            raise ValueError(f"fixture cycle: {' -> '.join(path + (name,))}")
+        if name not in phase:
+            needs = props[name].get("FIXTURES_REQUIRED", []) + props[name].get("FIXTURES_CLEANUP", [])
+            phase[name] = max([int(durations.get(name, 0.0) >= slow)] +
+                              [phase_of(setup, path + (name,)) for f in needs for setup in setups.get(f, [])])
+        return phase[name]
+
+    phases = [[], []]
+    for t in tests:
+        phases[phase_of(t["name"])].append(t["name"])
+    return [p for p in phases if p]
+
+
+def ctest_tests(args, *selection):
+    """ctest's list of tests (with their properties) of `selection` (ctest options), none run."""
+    out = subprocess.run(["ctest", "--test-dir", str(args.build), "--show-only=json-v1", *selection],
+                         cwd=ROOT, capture_output=True, text=True, check=True).stdout
+    return json.loads(out)["tests"]
+
+
+def names_pattern(names):
+    return "^(" + "|".join(re.escape(n) for n in names) + ")$"
+
+
 def test_phases(args):
-    """(ctest -R, extra ctest -E) per phase: the tests that took under --slow seconds in the
-    baseline run (and any it did not time), then the others; one phase with --tests."""
-    cost_file = args.build / "Testing" / "Temporary" / "CTestCostData.txt"
-    slow = sorted(parts[0] for parts in map(str.split, cost_file.read_text().splitlines())
-                  if len(parts) == 3 and float(parts[2]) >= args.slow)
-    if not slow or args.tests:
+    """(ctest -R, extra ctest -E) per phase (split_phases of the baseline's test times, without
+    --exclude's tests); one phase with --tests. A phase is selected by its names (-R), not by leaving
+    the others out (-E alone): ctest then drops the left-out tests before it adds the setups of the
+    fixtures the selected tests require, and a test would read a quick run that did not run. With -R,
+    ctest adds those setups (split_phases has put them in the phase or an earlier one; a setup that a
+    later phase needs again runs again there)."""
+    if args.tests:
         return [(args.tests, None)]
-    slow_pattern = "^(" + "|".join(re.escape(name) for name in slow) + ")$"
-    return [(None, slow_pattern), (slow_pattern, None)]
+    cost_file = args.build / "Testing" / "Temporary" / "CTestCostData.txt"
+    durations = {parts[0]: float(parts[2]) for parts in map(str.split, cost_file.read_text().splitlines())
+                 if len(parts) == 3}
+    phases = [[n for n in phase if not re.search(args.exclude, n)]
+              for phase in split_phases(ctest_tests(args), durations, args.slow)]
+    selections = []
+    for phase in filter(None, phases):
+        pattern = names_pattern(phase)
+        # A regex too long for ctest (with 3.25, one of 69 kB) matches no test, and says nothing; ctest
+        # and Python could also read --exclude differently: check each phase before a mutant relies on it.
+        missing = set(phase) - {t["name"] for t in ctest_tests(args, "-R", pattern, "-E", args.exclude)}
+        if missing:
+            sys.exit(f"ctest does not select {len(missing)} of the {len(phase)} tests of a phase "
+                     f"(e.g. {min(missing)}; its -R pattern has {len(pattern)} characters)")
+        selections.append((pattern, None))
+    return selections
+
+
+def remove_fixture_outputs(args):
+    """The quick runs write into <build>/test-results (GEOMINT_TEST_RESULTS, tests/CMakeLists.txt), and
+    the regression tests read them there. Without this, a test of one mutant could read files that an
+    earlier run (the baseline, another mutant) wrote and this one's run did not rewrite."""
+    shutil.rmtree(args.build / "test-results", ignore_errors=True)
 
 
 def commit_of_tree():
@@ -191,6 +254,7 @@ def main():
     print("baseline: building and testing the unmodified tree", flush=True)
     if not build(args, logs / "baseline-build.log"):
         sys.exit(f"the unmodified tree does not build: {logs / 'baseline-build.log'}")
+    remove_fixture_outputs(args)
     base_failed = failed_tests(args, logs / "baseline-ctest.log", stop_on_failure=False)
     if base_failed:
         sys.exit(f"the unmodified tree fails tests ({', '.join(base_failed)}): nothing can be measured")
@@ -210,6 +274,7 @@ def main():
 
         old_handler = signal.signal(signal.SIGTERM, restore_and_stop)
         try:
+            remove_fixture_outputs(args)
             path.write_text(original.decode().replace(m["old"], m["new"], 1))
             failed = []
             if not build(args, logs / f"{m['id']}-build-library.log", LIBRARY_TESTS):
@@ -238,8 +303,9 @@ def main():
         print(f"[{i}/{len(mutants)}] {m['id']:32} {result:16} {shown}", flush=True)
         if args.report:
             args.report.write_text(json.dumps(summarize(results, commit), indent=2) + "\n")
-    # Leave the build matching the unmodified tree.
+    # Leave the build matching the unmodified tree, without the last mutant's outputs.
     build(args, logs / "final-build.log")
+    remove_fixture_outputs(args)
 
     summary = summarize(results, commit)
     valid = [r for r in results if r["result"] != "does not compile"]

@@ -1,0 +1,68 @@
+#!/usr/bin/env python3
+"""run_mutants.split_phases on made-up ctest test lists: a test never runs in a phase before the setup
+of a fixture it requires, so it cannot read outputs that an earlier run left."""
+import sys
+import unittest
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from run_mutants import split_phases  # noqa: E402
+
+
+def entry(name, setup=(), requires=(), cleanup=()):
+    """One entry of `ctest --show-only=json-v1`'s tests."""
+    props = [{"name": key, "value": list(value)} for key, value in
+             (("FIXTURES_SETUP", setup), ("FIXTURES_REQUIRED", requires), ("FIXTURES_CLEANUP", cleanup)) if value]
+    return {"name": name, "properties": props + [{"name": "LABELS", "value": ["regression"]}]}
+
+
+def phase_index(phases, name):
+    return next(i for i, phase in enumerate(phases) if name in phase)
+
+
+class SplitPhases(unittest.TestCase):
+    def check_each_once(self, tests, phases):
+        self.assertEqual(sorted(n for phase in phases for n in phase), sorted(t["name"] for t in tests))
+
+    def test_a_fast_test_runs_with_the_slow_setup_it_requires(self):
+        # S (slow) sets up F, which A needs; T (fast) sets up G, which C needs; X cleans up F.
+        tests = [entry("A", requires=["F"]), entry("S", setup=["F"]), entry("B"), entry("C", requires=["G"]),
+                 entry("T", setup=["G"]), entry("X", cleanup=["F"])]
+        durations = {"A": 0.1, "S": 30.0, "B": 0.1, "T": 1.0, "X": 0.1}  # C not timed: fast
+        phases = split_phases(tests, durations, slow=15.0)
+        self.check_each_once(tests, phases)
+        self.assertEqual(len(phases), 2)
+        self.assertEqual(phase_index(phases, "A"), phase_index(phases, "S"))
+        self.assertEqual(phase_index(phases, "X"), phase_index(phases, "S"))
+        for name in ("B", "C", "T"):
+            self.assertIn(name, phases[0])
+        self.assertLessEqual(phase_index(phases, "T"), phase_index(phases, "C"))
+
+    def test_the_closure_is_transitive(self):
+        # A needs F; F's setup S (fast) needs H, whose setup U is slow: A and S run with U, after B.
+        tests = [entry("A", requires=["F"]), entry("S", setup=["F"], requires=["H"]), entry("U", setup=["H"]),
+                 entry("B")]
+        phases = split_phases(tests, {"A": 0.1, "S": 0.1, "U": 30.0, "B": 0.1}, slow=15.0)
+        self.check_each_once(tests, phases)
+        self.assertEqual(phases, [["B"], ["A", "S", "U"]])
+
+    def test_a_fixture_with_several_setups_waits_for_the_slowest(self):
+        # quick_runs: every experiment's quick run sets it up; one of them is slow.
+        tests = [entry("P", requires=["quick_runs"]), entry("q1", setup=["quick_runs"]), entry("q2", setup=["quick_runs"])]
+        phases = split_phases(tests, {"P": 0.1, "q1": 0.5, "q2": 23.0}, slow=15.0)
+        self.check_each_once(tests, phases)
+        self.assertEqual(phase_index(phases, "P"), phase_index(phases, "q2"))
+        self.assertEqual(phase_index(phases, "q1"), 0)
+
+    def test_no_slow_test_gives_one_phase(self):
+        tests = [entry("A", requires=["F"]), entry("S", setup=["F"]), entry("B")]
+        self.assertEqual(split_phases(tests, {"S": 3.0}, slow=15.0), [["A", "S", "B"]])
+
+    def test_a_fixture_cycle_is_refused(self):
+        tests = [entry("S", setup=["F"], requires=["G"]), entry("T", setup=["G"], requires=["F"])]
+        with self.assertRaises(ValueError):
+            split_phases(tests, {}, slow=15.0)
+
+
+if __name__ == "__main__":
+    unittest.main()
