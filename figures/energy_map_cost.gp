@@ -9,7 +9,7 @@
 # method, symplectic Euler, is the same). The reference is H_0 = H(z_0), conserved by the flow; its
 # own error is the round-off of evaluating H (summary value work_precision.reference_error_max).
 # Input: cost_start_<i>.csv (one per start: method = coordinate system, h, steps, wall_s, wall_q1_s,
-# wall_q3_s, wall_spread, force_evals, err = ε); scene values (cost.t_end, cost.starts, pendulum, timing.repeats);
+# wall_q3_s, wall_spread, wall_timed, force_evals, err = ε); scene values (cost.t_end, cost.starts, pendulum, timing.repeats);
 # summary values (work_precision: start_count, dt_range, reference_error_max).
 if (!exists("results")) results = 'results/energy_map'
 load 'figures/common.gp'

@@ -243,7 +243,8 @@ def check_checkpoints(binary, keys, work, rng, kills, settings):
             out = work / f"ckpt-{study}-{damage}"
             partial = Path(str(out) + ".partial")
             shutil.rmtree(out, ignore_errors=True), shutil.rmtree(partial, ignore_errors=True)
-            rc, _, err = run([*base, "--set", f"{key}=1", "--out", str(out)], timeout=300)
+            # (one thread: a round of one task, so that a quick scene of two tasks still stops after the first)
+            rc, _, err = run([*base, "--threads", "1", "--set", f"{key}=1", "--out", str(out)], timeout=300)
             headers = sorted(partial.glob("*.checkpoint.json"))
             if rc != 3 or not headers:
                 fail(f"{study}: --set {key}=1 exits {rc} with checkpoint(s) {headers}: {err.strip()[-300:]}")

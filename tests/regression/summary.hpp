@@ -75,15 +75,49 @@ inline CsvFile read_csv(const std::filesystem::path& file) {
   return csv;
 }
 
-// The largest value of the wall_spread column of a timing CSV, interquartile range / median of each
-// timed measurement (runner/timing.hpp); each one must be finite and >= 0.
+// Whether a row of a timing CSV is a measurement: not a run of fixed work per step whose time is
+// interpolated between its method's timed runs (wall_timed 0, analysis/work_precision_set.hpp).
+inline bool timed_row(const CsvFile& t, const std::vector<std::string>& row) {
+  const auto c = std::find(t.names.begin(), t.names.end(), "wall_timed");
+  return c == t.names.end() || row.at(static_cast<std::size_t>(c - t.names.begin())) != "0";
+}
+inline std::size_t timed_rows(const CsvFile& t) {
+  return static_cast<std::size_t>(std::count_if(t.rows.begin(), t.rows.end(), [&](const auto& r) { return timed_row(t, r); }));
+}
+
+// The rows of a work-precision CSV whose time is interpolated (wall_timed 0) lie on the line, in the steps,
+// through the timed rows of their method's fewest and most steps (WorkPrecisionSet::time), to round-off; those
+// two are timed. Returns the count of interpolated rows.
+inline std::size_t expect_interpolated_rows_affine(const CsvFile& t) {
+  if (std::find(t.names.begin(), t.names.end(), "wall_timed") == t.names.end()) return 0;
+  const std::size_t m = t.column("method"), n = t.column("steps"), w = t.column("wall_s");
+  std::size_t interpolated = 0;
+  for (const auto& row : t.rows) {
+    if (timed_row(t, row)) continue;
+    ++interpolated;
+    const std::vector<std::string>*lo = nullptr, *hi = nullptr;
+    for (const auto& r : t.rows)
+      if (r[m] == row[m]) {
+        if (!lo || std::stod(r[n]) < std::stod((*lo)[n])) lo = &r;
+        if (!hi || std::stod(r[n]) > std::stod((*hi)[n])) hi = &r;
+      }
+    EXPECT_TRUE(timed_row(t, *lo) && timed_row(t, *hi)) << row[m];
+    const double x = (std::stod(row[n]) - std::stod((*lo)[n])) / (std::stod((*hi)[n]) - std::stod((*lo)[n]));
+    const double expect = std::stod((*lo)[w]) + x * (std::stod((*hi)[w]) - std::stod((*lo)[w]));
+    EXPECT_NEAR(std::stod(row[w]) / expect, 1, 1e-12) << row[m] << " at " << row[n] << " steps";
+  }
+  return interpolated;
+}
+
+// The largest value of the wall_spread column of a timing CSV over its timed rows, interquartile range /
+// median of each timed measurement (runner/timing.hpp); each one must be finite and >= 0.
 inline double largest_spread(const CsvFile& t) {
   const std::size_t c = t.column("wall_spread");
   double largest = 0;
   for (const auto& row : t.rows) {
     const double s = std::stod(row[c]);
     if (!(std::isfinite(s) && s >= 0)) throw std::runtime_error("wall_spread " + row[c] + " is not finite and >= 0");
-    largest = std::max(largest, s);
+    if (timed_row(t, row)) largest = std::max(largest, s);
   }
   return largest;
 }

@@ -6,6 +6,7 @@
 // convergence study (analysis/order_table.hpp).
 #include <array>
 #include <cmath>
+#include <map>
 #include <numbers>
 #include <string>
 #include <vector>
@@ -175,7 +176,7 @@ TEST(WorkPrecisionSet, CsvHasOneRowPerRecord) {
   const Csv csv = two_methods().csv();
   EXPECT_EQ(csv.rows(), 8u);
   EXPECT_EQ(csv.str().substr(0, csv.str().find('\n')),
-            "method,h,steps,wall_s,wall_q1_s,wall_q3_s,wall_spread,force_evals,err");
+            "method,h,steps,wall_s,wall_q1_s,wall_q3_s,wall_spread,wall_timed,force_evals,err");
 }
 
 // Each method's time per step at its smallest h against the first's, with the force evaluations per
@@ -186,6 +187,48 @@ TEST(WorkPrecisionSet, RelativeTimePerStepKnowsTheNoise) {
   EXPECT_DOUBLE_EQ(r["by_method"]["b"]["ratio"].get<double>(), 0.5);
   EXPECT_DOUBLE_EQ(r["by_method"]["b"]["interval"]["min"].get<double>(), 0.75 * 0.5 / 1.75);
   EXPECT_EQ(r["by_method"]["b"]["verdict"], "indistinguishable");
+}
+
+// A method of fixed work per step (force evaluations 2 n + 1 at every h) is timed at its fewest and most
+// steps, its other runs interpolated affinely in the steps; one whose evaluations are not affine in the steps
+// (a Newton iteration count that changes with h) and one of two runs are timed at every run.
+TEST(WorkPrecisionSet, TimesAMethodOfFixedWorkPerStepAtItsEnds) {
+  WorkPrecisionSet set("e");
+  std::map<std::string, int> calls;
+  const auto add = [&](const std::string& m, double n, double evals) {
+    set.add({m, 1 / n, n, {}, evals, 1 / n}, [&calls, key = m + std::to_string(static_cast<int>(n))] { ++calls[key]; });
+  };
+  for (double n : {100, 10, 1000, 300}) add("fixed", n, 2 * n + 1), add("newton", n, n < 500 ? 3 * n : 4 * n);
+  for (double n : {10, 20}) add("two", n, 2 * n);
+  set.time(7);
+  for (const char* k : {"fixed10", "fixed1000", "newton10", "newton100", "newton300", "newton1000", "two10", "two20"})
+    EXPECT_GE(calls[k], 7) << k;
+  EXPECT_EQ(calls["fixed100"], 0);
+  EXPECT_EQ(calls["fixed300"], 0);
+  const auto& r = set.records();  // in the order added: fixed and newton alternate, n = 100, 10, 1000, 300
+  EXPECT_FALSE(r[0].wall_timed);
+  EXPECT_TRUE(r[2].wall_timed && r[4].wall_timed && r[1].wall_timed);
+  const RunTime expect = affine_in_steps(r[2].wall, 10, r[4].wall, 1000, 300);
+  EXPECT_EQ(r[6].wall.median_s, expect.median_s);
+  EXPECT_EQ(r[6].wall.q3_s, expect.q3_s);
+  EXPECT_EQ(set.summary({})["by_method"]["fixed"]["timed_runs"], 2);
+  EXPECT_EQ(set.summary({})["spread"]["measurements"], 8);  // the timed runs only
+  const Csv csv = set.csv();
+  EXPECT_NE(csv.str().find("\nfixed,0.01,100,"), std::string::npos);
+}
+
+// t(n) = t0 + n t1 through two runs, every statistic.
+TEST(WorkPrecisionSet, AffineInStepsThroughTwoRuns) {
+  RunTime a, b;
+  a.min_s = 1, a.q1_s = 2, a.median_s = 3, a.q3_s = 4, a.max_s = 5;
+  b.min_s = 11, b.q1_s = 22, b.median_s = 33, b.q3_s = 44, b.max_s = 55;
+  const RunTime m = affine_in_steps(a, 10, b, 110, 60);
+  EXPECT_DOUBLE_EQ(m.min_s, 6);
+  EXPECT_DOUBLE_EQ(m.q1_s, 12);
+  EXPECT_DOUBLE_EQ(m.median_s, 18);
+  EXPECT_DOUBLE_EQ(m.q3_s, 24);
+  EXPECT_DOUBLE_EQ(m.max_s, 30);
+  EXPECT_EQ(m.repeats, 0);
 }
 
 // Records added with a run are timed together by time(); a record timed by its caller keeps its time.

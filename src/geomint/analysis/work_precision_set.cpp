@@ -1,6 +1,8 @@
 #include "geomint/analysis/work_precision_set.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdint>
 #include <stdexcept>
 #include <utility>
 
@@ -23,19 +25,65 @@ std::vector<CostRun> WorkPrecisionSet::runs(const std::string& method) const {
   return by_decreasing_h(out);
 }
 
+RunTime affine_in_steps(const RunTime& a, double na, const RunTime& b, double nb, double n) {
+  const double w = (n - na) / (nb - na);
+  RunTime r;
+  for (auto x : {&RunTime::min_s, &RunTime::q1_s, &RunTime::median_s, &RunTime::q3_s, &RunTime::max_s})
+    r.*x = a.*x + w * (b.*x - a.*x);
+  return r;
+}
+
+namespace {
+
+// Whether the force evaluations e_k of the runs k (n_k steps) are e = a n + c with a > 0, exactly
+// (counts: integers, their products below 2^63 for counts below 2^31).
+bool evals_affine_in_steps(const std::vector<const WorkPrecisionRecord*>& runs) {
+  const auto& [lo, hi] = std::minmax_element(runs.begin(), runs.end(), [](auto x, auto y) { return x->steps < y->steps; });
+  const auto n0 = static_cast<std::int64_t>((*lo)->steps), e0 = static_cast<std::int64_t>((*lo)->evals);
+  const std::int64_t dn = static_cast<std::int64_t>((*hi)->steps) - n0, de = static_cast<std::int64_t>((*hi)->evals) - e0;
+  if (dn <= 0 || de <= 0) return false;
+  return std::all_of(runs.begin(), runs.end(), [&](auto r) {
+    const double n = r->steps, e = r->evals;
+    return n == std::floor(n) && e == std::floor(e) && n < 2147483648.0 && e < 2147483648.0 &&
+           (static_cast<std::int64_t>(e) - e0) * dn == de * (static_cast<std::int64_t>(n) - n0);
+  });
+}
+
+}  // namespace
+
 void WorkPrecisionSet::time(int repeats, int workers) {
   InterleavedTiming timing(repeats, kTimingFloorS, workers);
   std::vector<std::size_t> which;
-  for (std::size_t k = 0; k < records_.size(); ++k)
-    if (timed_[k]) timing.add(timed_[k]), which.push_back(k);
+  struct Interpolated {
+    std::size_t k, lo, hi;  // record k between the timed records lo and hi
+  };
+  std::vector<Interpolated> between;
+  for (const auto& m : methods()) {
+    std::vector<std::size_t> mine;
+    std::vector<const WorkPrecisionRecord*> runs;
+    for (std::size_t k = 0; k < records_.size(); ++k)
+      if (timed_[k] && records_[k].method == m) mine.push_back(k), runs.push_back(&records_[k]);
+    if (mine.size() > 2 && evals_affine_in_steps(runs)) {
+      const auto [lo, hi] = std::minmax_element(mine.begin(), mine.end(), [&](std::size_t x, std::size_t y) {
+        return records_[x].steps < records_[y].steps;
+      });
+      for (std::size_t k : mine)
+        if (k != *lo && k != *hi) between.push_back({k, *lo, *hi}), records_[k].wall_timed = false;
+      mine = {*lo, *hi};
+    }
+    for (std::size_t k : mine) timing.add(timed_[k]), which.push_back(k);
+  }
   const std::vector<RunTime> times = timing.run();
   for (std::size_t i = 0; i < which.size(); ++i) records_[which[i]].wall = times[i];
+  for (const auto& [k, lo, hi] : between)
+    records_[k].wall = affine_in_steps(records_[lo].wall, records_[lo].steps, records_[hi].wall, records_[hi].steps, records_[k].steps);
 }
 
 Csv WorkPrecisionSet::csv() const {
-  Csv out({"method", "h", "steps", "wall_s", "wall_q1_s", "wall_q3_s", "wall_spread", "force_evals", "err"});
+  Csv out({"method", "h", "steps", "wall_s", "wall_q1_s", "wall_q3_s", "wall_spread", "wall_timed", "force_evals", "err"});
   for (const auto& r : records_)
-    out.row(r.method, r.h, r.steps, r.wall.seconds(), r.wall.q1_s, r.wall.q3_s, r.wall.spread(), r.evals, r.err);
+    out.row(r.method, r.h, r.steps, r.wall.seconds(), r.wall.q1_s, r.wall.q3_s, r.wall.spread(),
+            static_cast<std::int64_t>(r.wall_timed), r.evals, r.err);
   return out;
 }
 
@@ -48,7 +96,9 @@ nlohmann::ordered_json WorkPrecisionSet::summary(const std::vector<double>& targ
   json by_method = json::object();
   for (std::size_t k = 0; k < labels.size(); ++k) {
     const auto& c = curves[k];
-    json m{{"runs", c.size()}};
+    json m{{"runs", c.size()}, {"timed_runs", std::count_if(records_.begin(), records_.end(), [&](const auto& r) {
+                                  return r.method == labels[k] && r.wall_timed;
+                                })}};
     if (!c.empty()) {
       const CostRun& finest = c.back();
       m["min_err"] = std::min_element(c.begin(), c.end(), [](const auto& a, const auto& b) { return a.err < b.err; })->err;
@@ -68,7 +118,8 @@ nlohmann::ordered_json WorkPrecisionSet::summary(const std::vector<double>& targ
     by_method[labels[k]] = m;
   }
   SpreadTally spreads;
-  for (const auto& r : records_) spreads.add(r.wall);
+  for (const auto& r : records_)
+    if (r.wall_timed) spreads.add(r.wall);
   return {{"error", error_},         {"methods", labels},      {"targets", targets},
           {"equal_wall_s", or_null(wall)}, {"equal_evals", or_null(evals)}, {"by_method", by_method},
           {"spread", spreads.to_json()}};

@@ -1,7 +1,10 @@
 #pragma once
 // A work-precision set (DiffEqDevTools' WorkPrecisionSet): what accuracy costs, in the one shape of
 // every cost study. One record per (method, step h): the error of one run, its wall time (the timed
-// repeats of runner/timing.hpp), its force evaluations (a separate counting run) and its steps.
+// repeats of runner/timing.hpp), its force evaluations (a separate counting run) and its steps. A
+// method whose force evaluations are affine in the steps (e = a n + c at every h: fixed work per
+// step) is timed at its fewest and its most steps only, and its other runs' times are interpolated
+// affinely in the steps between those two (time(); `wall_timed` says which).
 // One CSV (csv()), one summary (summary()) and one rule for "at equal cost" (equal_cost()), drawn by
 // figures/cost.gpi. Costs and errors are interpolated in log-log between measured runs, never
 // extrapolated (analysis/work_precision.hpp).
@@ -23,7 +26,12 @@ struct WorkPrecisionRecord {
   RunTime wall;        // of one run; its estimate (RunTime::seconds, the median) is the run's wall time
   double evals = 0;    // force evaluations of one run
   double err = 0;      // the error of the run
+  bool wall_timed = true;  // false: `wall` interpolated in the steps between the method's timed runs (time())
 };
+
+// The affine interpolation in the steps n of every statistic of two timed runs a (na steps) and b (nb):
+// the time of a run of fixed work per step, t(n) = t0 + n t1 (repeats and inner 0: not a measurement).
+RunTime affine_in_steps(const RunTime& a, double na, const RunTime& b, double nb, double n);
 
 class WorkPrecisionSet {
  public:
@@ -34,19 +42,22 @@ class WorkPrecisionSet {
   // A record whose wall time is measured by time(): `run` is one run of it (MethodsOn<Sys>::timed).
   void add(WorkPrecisionRecord r, std::function<void()> run) { records_.push_back(std::move(r)), timed_.push_back(std::move(run)); }
   // Times the records added with a run, all in one interleaved measurement (runner/timing.hpp), up to
-  // `workers` runs at a time where the cores time alike.
+  // `workers` runs at a time where the cores time alike; of a method with more than two such records
+  // whose force evaluations are affine in the steps, only those of its fewest and most steps (the
+  // others interpolated: affine_in_steps).
   void time(int repeats, int workers = 1);
   const std::vector<WorkPrecisionRecord>& records() const { return records_; }
   std::vector<std::string> methods() const;                    // in the order first added
   std::vector<CostRun> runs(const std::string& method) const;  // its measurable runs, by decreasing h
 
-  // One row per record: method,h,steps,wall_s,wall_q1_s,wall_q3_s,wall_spread,force_evals,err (wall_s the median).
+  // One row per record: method,h,steps,wall_s,wall_q1_s,wall_q3_s,wall_spread,wall_timed,force_evals,err
+  // (wall_s the median; wall_timed 1 where timed, 0 where interpolated).
   Csv csv() const;
   // {error, methods, targets, equal_wall_s, equal_evals (equal_cost), by_method: {label: {runs, min_err,
   // ns_per_step, ns_per_step_q1, ns_per_step_q3, ns_per_step_spread, evals_per_step (of its run at the
   // smallest h), err_at_equal_wall,
   // err_at_equal_evals, wall_s_to, evals_to (per target; null where the measured steps do not reach it)}},
-  // spread (of every timed run: runner/timing_report.hpp)}.
+  // timed_runs (of its runs, those timed)}}, spread (of every timed run: runner/timing_report.hpp)}.
   nlohmann::ordered_json summary(const std::vector<double>& targets) const;
   // Each method's time per step at its smallest h against the first method's (relative_timings,
   // runner/timing_report.hpp), the force evaluations per step as the work.
