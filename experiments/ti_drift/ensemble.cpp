@@ -16,6 +16,7 @@
 #include "geomint/observables/ensemble_statistics.hpp"
 #include "geomint/observables/modified_energy.hpp"
 #include "geomint/runner/checkpoint.hpp"
+#include "geomint/runner/fits.hpp"
 #include "geomint/sweep/ensemble_kernels.hpp"
 #include "henon_heiles_starts.hpp"
 #include "ti_drift.hpp"
@@ -193,6 +194,14 @@ void ensemble_with(Context& ctx, const HH& hhk) {
   const json poincare = write_fig5(ctx, hhk, run, out.worst_i, reproduced);
   ctx.summary["ensemble"] = ensemble;
   ctx.summary["poincare"] = poincare;
+  const double t_fit = fit_t_min(ctx.scene, "ensemble", run.t_end), t_last = stats.ts.back();
+  record_fit(ctx.summary, {"reproduced.hh5_sigma_exponent", "fig4_stats.csv", "t", "sigma", "power_law", t_fit, t_last, "ensemble.fit_from"});
+  record_fit(ctx.summary, {"ensemble.sigma_exponent_from_hundredth", "fig4_stats.csv", "t", "sigma", "power_law", t_fit / 10,
+                           t_last, "ensemble.fit_from", 0.1});
+  record_fit(ctx.summary, {"ensemble.sigma2_slope", "fig4_stats.csv", "t", "sigma^2", "slope", t_fit, t_last, "ensemble.fit_from"});
+  record_unfittable(ctx.summary, "ensemble.without_outliers.sigma_exponent",
+                    "the ensemble without its outliers at every output time: fig4_trajectories.csv holds the "
+                    "trajectories at thinned times only");
   const double wall4 = run.wall4;
   const std::size_t M = run.M;
   const std::int64_t n4 = run.n4;
