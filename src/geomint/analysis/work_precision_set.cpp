@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <span>
 #include <stdexcept>
 #include <utility>
 
@@ -35,15 +36,15 @@ RunTime affine_in_steps(const RunTime& a, double na, const RunTime& b, double nb
 
 namespace {
 
-// Whether the force evaluations e_k of the runs k (n_k steps) are e = a n + c with a > 0, exactly
-// (counts: integers, their products below 2^63 for counts below 2^31).
-bool evals_affine_in_steps(const std::vector<const WorkPrecisionRecord*>& runs) {
-  const auto& [lo, hi] = std::minmax_element(runs.begin(), runs.end(), [](auto x, auto y) { return x->steps < y->steps; });
-  const auto n0 = static_cast<std::int64_t>((*lo)->steps), e0 = static_cast<std::int64_t>((*lo)->evals);
-  const std::int64_t dn = static_cast<std::int64_t>((*hi)->steps) - n0, de = static_cast<std::int64_t>((*hi)->evals) - e0;
+// Whether the force evaluations of the runs are e = a n + c with a > 0 in their steps n, exactly (counts:
+// integers, their products below 2^63 for counts below 2^31), on the line through lo and hi.
+bool evals_affine_in_steps(std::span<const WorkPrecisionRecord> records, const std::vector<std::size_t>& runs,
+                           std::size_t lo, std::size_t hi) {
+  const auto n0 = static_cast<std::int64_t>(records[lo].steps), e0 = static_cast<std::int64_t>(records[lo].evals);
+  const std::int64_t dn = static_cast<std::int64_t>(records[hi].steps) - n0, de = static_cast<std::int64_t>(records[hi].evals) - e0;
   if (dn <= 0 || de <= 0) return false;
-  return std::all_of(runs.begin(), runs.end(), [&](auto r) {
-    const double n = r->steps, e = r->evals;
+  return std::all_of(runs.begin(), runs.end(), [&](std::size_t k) {
+    const double n = records[k].steps, e = records[k].evals;
     return n == std::floor(n) && e == std::floor(e) && n < 2147483648.0 && e < 2147483648.0 &&
            (static_cast<std::int64_t>(e) - e0) * dn == de * (static_cast<std::int64_t>(n) - n0);
   });
@@ -60,13 +61,12 @@ void WorkPrecisionSet::time(int repeats, int workers) {
   std::vector<Interpolated> between;
   for (const auto& m : methods()) {
     std::vector<std::size_t> mine;
-    std::vector<const WorkPrecisionRecord*> runs;
     for (std::size_t k = 0; k < records_.size(); ++k)
-      if (timed_[k] && records_[k].method == m) mine.push_back(k), runs.push_back(&records_[k]);
-    if (mine.size() > 2 && evals_affine_in_steps(runs)) {
-      const auto [lo, hi] = std::minmax_element(mine.begin(), mine.end(), [&](std::size_t x, std::size_t y) {
-        return records_[x].steps < records_[y].steps;
-      });
+      if (timed_[k] && records_[k].method == m) mine.push_back(k);
+    const auto [lo, hi] = std::minmax_element(mine.begin(), mine.end(), [&](std::size_t x, std::size_t y) {
+      return records_[x].steps < records_[y].steps;
+    });
+    if (mine.size() > 2 && evals_affine_in_steps(records_, mine, *lo, *hi)) {
       for (std::size_t k : mine)
         if (k != *lo && k != *hi) between.push_back({k, *lo, *hi}), records_[k].wall_timed = false;
       mine = {*lo, *hi};
