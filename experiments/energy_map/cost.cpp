@@ -22,6 +22,7 @@
 #include "geomint/core/integrate.hpp"
 #include "geomint/methods/registry.hpp"
 #include "geomint/observables/order_fit.hpp"
+#include "geomint/runner/fits.hpp"
 #include "geomint/runner/distributed_map.hpp"
 #include "geomint/runner/summary.hpp"
 #include "geomint/runner/timing.hpp"
@@ -76,7 +77,9 @@ StudyPlan plan_cost(const Scene& s) {
 
 // Per start: where it lies, the reference's own error, the fitted orders and the ranges of eps per
 // system, and its error target (summary work_precision.starts; none where the ranges do not overlap).
-json start_facts(const std::vector<double>& x0, const ElasticPendulumParams& pendulum, const WorkPrecisionSet& set) {
+// The fitted orders are recorded in `summary` (runner/fits.hpp) as start `i`'s.
+json start_facts(const std::vector<double>& x0, const ElasticPendulumParams& pendulum, const WorkPrecisionSet& set,
+                 json& summary, std::size_t i) {
   const double u = std::numeric_limits<double>::epsilon();
   const double x = x0[0], y = x0[1], r = std::hypot(x, y);
   const double spring = 0.5 * pendulum.k * (r - pendulum.l) * (r - pendulum.l), gravity = pendulum.m * pendulum.g * y;
@@ -90,7 +93,11 @@ json start_facts(const std::vector<double>& x0, const ElasticPendulumParams& pen
     std::vector<double> h, e;  // in the order of cost.dt
     for (const WorkPrecisionRecord& rec : set.records())
       if (rec.method == coordinates_name(c)) h.push_back(rec.h), e.push_back(rec.err);
-    st["order"][coordinates_name(c)] = fit_order(h, e, roundoff_floor(), "cost").order;
+    const OrderFit fit = fit_order(h, e, roundoff_floor(), "cost");
+    st["order"][coordinates_name(c)] = fit.order;
+    record_order_fit(summary, "work_precision.starts." + std::to_string(i) + ".order." + coordinates_name(c),
+                     {"cost_start_" + std::to_string(i) + ".csv", "h", "err", {{"method", coordinates_name(c)}}}, fit,
+                     roundoff_floor());
     st["eps_range"][coordinates_name(c)] = range_of(e);
     lo = std::max(lo, *std::min_element(e.begin(), e.end())), hi = std::min(hi, *std::max_element(e.begin(), e.end()));
   }
@@ -186,7 +193,7 @@ void run_cost(Context& ctx) {
   json start_list = json::array(), cost;
   double reference_error = 0;
   for (std::size_t i = 0; i < starts.size(); ++i) {
-    const json st = start_facts(starts[i], pendulum, sets[i]);
+    const json st = start_facts(starts[i], pendulum, sets[i], ctx.summary, i);
     reference_error = std::max(reference_error, st["reference_error"].get<double>());
     const std::string name = "start_" + std::to_string(i);
     ctx.write("cost_" + name + ".csv", sets[i].csv());

@@ -13,6 +13,7 @@
 #include "geomint/core/state.hpp"
 #include "geomint/integrators/symplectic_euler.hpp"
 #include "geomint/observables/order_fit.hpp"
+#include "geomint/runner/fits.hpp"
 #include "geomint/runner/distributed_map.hpp"
 #include "geomint/systems/elastic_pendulum.hpp"
 #include "geomint/transforms/polar.hpp"
@@ -65,6 +66,8 @@ void run_first_integrals(Context& ctx) {
   for (std::size_t k = 0; k < hs.size(); ++k) fi.row(hs[k], change[k]);
   ctx.write("first_integrals.csv", fi);
   const OrderFit px_fit = fit_order(hs, change, roundoff_floor());
+  record_order_fit(ctx.summary, "orders.polar_px_change_per_step", {"first_integrals.csv", "h", "px_change_per_step"}, px_fit,
+                   roundoff_floor());
 
   // The angular momentum is a quadratic invariant of symplectic Euler (a P-series
   // method), preserved exactly in exact arithmetic; in floating point the

@@ -10,6 +10,7 @@
 #include "geomint/methods/registry.hpp"
 #include "geomint/observables/error_norms.hpp"
 #include "geomint/observables/order_fit.hpp"
+#include "geomint/runner/fits.hpp"
 #include "geomint/runner/distributed_map.hpp"
 #include "geomint/runner/summary.hpp"
 #include "geomint/systems/exponential_decay.hpp"
@@ -73,10 +74,13 @@ void run_convergence(Context& ctx) {
   // Orders: least squares on log-log over the points above round-off.
   const double floor = roundoff_floor(std::max(H0, 1.0));
   OrderTable orders;
-  orders.fit("ee_decay", hs, ee_decay, roundoff_floor(s.real("decay.y0")));
-  orders.fit("ee_gompertz", hs, ee_gompertz, roundoff_floor(gompertz.equilibrium()));
-  for (std::size_t m = 0; m < methods.size(); ++m) orders.fit(label_of(methods[m]) + "_energy", hs, max_err[m], floor);
-  for (std::size_t m = 0; m < methods.size(); ++m) orders.fit(label_of(methods[m]) + "_energy_rms", hs, rms_err[m], floor);
+  const auto fit = [&](const std::string& name, const std::string& column, const std::vector<double>& err, double fl) {
+    record_order_fit(ctx.summary, "orders." + name, {"fig9_convergence.csv", "h", column}, orders.fit(name, hs, err, fl), fl);
+  };
+  fit("ee_decay", "ee_decay_max", ee_decay, roundoff_floor(s.real("decay.y0")));
+  fit("ee_gompertz", "ee_gompertz_max", ee_gompertz, roundoff_floor(gompertz.equilibrium()));
+  for (std::size_t m = 0; m < methods.size(); ++m) fit(label_of(methods[m]) + "_energy", label_of(methods[m]) + "_max", max_err[m], floor);
+  for (std::size_t m = 0; m < methods.size(); ++m) fit(label_of(methods[m]) + "_energy_rms", label_of(methods[m]) + "_rms", rms_err[m], floor);
   ctx.write("orders.csv", orders.csv());
   ctx.summary["orders"] = orders.orders();
   ctx.summary["fits"] = orders.fits();

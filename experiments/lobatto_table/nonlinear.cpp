@@ -15,6 +15,7 @@
 #include "geomint/methods/scene_methods.hpp"
 #include "geomint/observables/error_norms.hpp"
 #include "geomint/observables/order_fit.hpp"
+#include "geomint/runner/fits.hpp"
 #include "geomint/observables/symplecticity.hpp"
 #include "geomint/reference/odeint_reference.hpp"
 #include "geomint/runner/distributed_map.hpp"
@@ -101,13 +102,15 @@ void run_nonlinear(Context& ctx) {
   ctx.write("nonlinear.csv", nl);
   const double nfloor = kReferenceFloorFactor * atol;
   json orders = json::object(), fits = json::object();
-  const auto fit = [&](const std::string& key, const std::vector<double>& err) {
+  const auto fit = [&](const std::string& key, const std::string& column, const std::vector<double>& err) {
     const OrderFit f = fit_order(nh, err, nfloor, key.c_str());
     orders[key] = f.order, fits[key] = to_json(f);
+    record_order_fit(ctx.summary, "orders." + key, {"nonlinear.csv", "h", column}, f, nfloor);
   };
-  fit("lobatto_nonlinear_pendulum", e_p);
-  fit("lobatto_elastic_pendulum", e_e);
-  for (std::size_t k = 0; k < methods.size(); ++k) fit(label_of(methods[k]) + "_nonlinear_pendulum", e_m[k]);
+  fit("lobatto_nonlinear_pendulum", "pendulum_err", e_p);
+  fit("lobatto_elastic_pendulum", "elastic_err", e_e);
+  for (std::size_t k = 0; k < methods.size(); ++k)
+    fit(label_of(methods[k]) + "_nonlinear_pendulum", label_of(methods[k]) + "_pendulum_err", e_m[k]);
   merge(ctx.summary, "orders", orders);
   std::vector<double> it_p, it_e;
   for (const auto& r : rows) it_p.push_back(r.pendulum_iterations), it_e.push_back(r.elastic_iterations);

@@ -22,6 +22,7 @@
 #include "geomint/methods/registry.hpp"
 #include "geomint/observables/error_norms.hpp"
 #include "geomint/observables/order_fit.hpp"
+#include "geomint/runner/fits.hpp"
 #include "geomint/runner/summary.hpp"
 #include "geomint/runner/timing.hpp"
 #include "geomint/runner/timing_report.hpp"
@@ -162,7 +163,10 @@ json report_discretizations(Context& ctx, const PhiStudy& p, const WorkPrecision
         names.push_back(name), per_step.push_back(r.wall.scaled(1e9 / r.steps)), work.push_back(r.evals / r.steps);
       }
     }
-    order[name] = fit_order(hs, errs, 0.0, "cost").order;
+    const OrderFit fit = fit_order(hs, errs, 0.0, "cost");
+    order[name] = fit.order;
+    record_order_fit(ctx.summary, std::string("orders.cost_error_phi4.") + name,
+                     {"cost_trajectory.csv", "h", "err", {{"method", phi_label(4, d)}}}, fit, 0.0);
   }
   put_methods(ctx, "newton_iterations_per_step_phi4", newton_at_h);
   if (!names.empty()) ctx.summary["cost"]["relative_ns_per_step_at_h"] = relative_timings(names, per_step, work);
@@ -188,7 +192,11 @@ void report_compared(Context& ctx, Discretization cmp, const Sets& sets) {
     std::vector<double> hs, errs;
     for (const CostRun& r : sets.trajectory.runs(m == "rk4" ? m : m + "_" + discretization_name(cmp)))
       hs.push_back(r.h), errs.push_back(r.err);
-    w[m]["order"] = fit_order(hs, errs, 0.0, "work precision").order;  // trajectory error against h
+    const std::string method = m == "rk4" ? m : m + "_" + discretization_name(cmp);
+    const OrderFit fit = fit_order(hs, errs, 0.0, "work precision");  // trajectory error against h
+    w[m]["order"] = fit.order;
+    record_order_fit(ctx.summary, "reproduced.work_precision." + m + ".order",
+                     {"cost_trajectory.csv", "h", "err", {{"method", method}}}, fit, 0.0);
   }
   ctx.summary["reproduced"]["work_precision"] = w;
 }

@@ -13,6 +13,7 @@
 #include "geomint/geometry/hull_volume.hpp"
 #include "geomint/geometry/volume_series.hpp"
 #include "geomint/observables/order_fit.hpp"
+#include "geomint/runner/fits.hpp"
 #include "geomint/runner/checkpoint.hpp"
 #include "geomint/systems/nonholonomic_modified_series.hpp"
 #include "measure_cloud.hpp"
@@ -60,6 +61,8 @@ void fit_orders(Context& ctx, const std::vector<Discretization>& methods, const 
       try {
         const OrderFit fit = fit_order(hs, ptp, floor, "order study");
         o[name] = fit.order, f[name] = to_json(fit), points[name] = fit.points;
+        record_order_fit(ctx.summary, "orders." + key + "." + name,
+                         {"order_study.csv", "h", "ptp", {{"method", name}, {"ell", std::to_string(es[e])}}}, fit, floor);
       } catch (const NumericalFailure&) {
         o[name] = nullptr, points[name] = nullptr;  // fewer than 3 steps above the noise: no order is claimed
       }

@@ -15,6 +15,7 @@
 #include "geomint/geometry/volume_series.hpp"
 #include "geomint/runner/checkpoint.hpp"
 #include "geomint/runner/distributed_map.hpp"
+#include "geomint/runner/fits.hpp"
 #include "geomint/systems/nonholonomic_modified_series.hpp"
 #include "measure_cloud.hpp"
 
@@ -81,6 +82,13 @@ void cloud_volumes(Context& ctx, const PhiStudy& p, const std::vector<Point4>& c
   const std::vector<double> ref_relative = relative_volumes(ref_volumes, ref_volumes.size());
   put_here("cloud_points", cloud.size());
   put_here("ptp_reference_mu", relative_peak_to_peak(ref_volumes, window));
+  // Each peak-to-peak over t <= ptp_window of a column of <prefix>phi<ell>.csv (runner/fits.hpp).
+  const std::string at = nest.empty() ? "reproduced." : "reproduced." + nest + ".";
+  const auto record_ptp = [&](const std::string& quantity, const std::string& csv, const std::string& column,
+                              const char* kind, const std::string& minus = "") {
+    record_fit(ctx.summary, {.quantity = at + quantity, .data = {csv, "t", column, {}, minus}, .kind = kind, .from = 0,
+                             .to = s.real("ptp_window"), .to_key = "ptp_window"});
+  };
   put_here("reference_rel_volume_at_window", ref_relative[window - 1]);
   put_here("reference_rel_volume_at_t_end", ref_relative.back());
 
@@ -106,11 +114,18 @@ void cloud_volumes(Context& ctx, const PhiStudy& p, const std::vector<Point4>& c
         for (std::size_t m = 0; m < all_measures.size(); ++m) csv << vols[k][m][j];
       csv.end_row();
     }
-    ctx.write(prefix + "phi" + std::to_string(ell) + ".csv", csv);
+    const std::string file = prefix + "phi" + std::to_string(ell) + ".csv";
+    ctx.write(file, csv);
+    if (ell == ells(s, "cloud.ells").front()) record_ptp("ptp_reference_mu", file, "reference_mu", "relative_ptp");
     const std::string phi = "ptp_phi" + std::to_string(ell) + "_";
+    const auto column = [&](std::size_t k, int m) { return std::string(discretization_name(p.methods[k])) + "_" + measure_name(m); };
     for (std::size_t m = 0; m < all_measures.size(); ++m) {
       json ptp;
-      for (std::size_t k = 0; k < p.methods.size(); ++k) ptp[discretization_name(p.methods[k])] = relative_peak_to_peak(vols[k][m], window);
+      for (std::size_t k = 0; k < p.methods.size(); ++k) {
+        ptp[discretization_name(p.methods[k])] = relative_peak_to_peak(vols[k][m], window);
+        record_ptp(phi + measure_name(all_measures[m]) + "." + discretization_name(p.methods[k]), file, column(k, all_measures[m]),
+                   "relative_ptp");
+      }
       put_methods(ctx, phi + measure_name(all_measures[m]), ptp, nest);
     }
     // the amplitude (half the ptp) in mu^(4)_mod, the quantity 003 reads off Fig. 5.2
@@ -119,14 +134,18 @@ void cloud_volumes(Context& ctx, const PhiStudy& p, const std::vector<Point4>& c
       json amp;
       for (std::size_t k = 0; k < p.methods.size(); ++k)
         amp[discretization_name(p.methods[k])] =
-            relative_amplitude(vols[k][static_cast<std::size_t>(mu4 - all_measures.begin())], window);
+            relative_amplitude(vols[k][static_cast<std::size_t>(mu4 - all_measures.begin())], window),
+        record_ptp("amplitude_phi" + std::to_string(ell) + "_mu4." + discretization_name(p.methods[k]), file, column(k, 4),
+                   "relative_amplitude");
       put_methods(ctx, "amplitude_phi" + std::to_string(ell) + "_mu4", amp, nest);
     }
     // in its own measure mu^(ell)_mod, less the reference's relative volume (the hull artefact both share)
     const std::size_t own = static_cast<std::size_t>(std::find(all_measures.begin(), all_measures.end(), ell) - all_measures.begin());
     json corrected;
     for (std::size_t k = 0; k < p.methods.size(); ++k)
-      corrected[discretization_name(p.methods[k])] = relative_peak_to_peak_minus(vols[k][own], ref_volumes, window);
+      corrected[discretization_name(p.methods[k])] = relative_peak_to_peak_minus(vols[k][own], ref_volumes, window),
+      record_ptp(phi + measure_name(ell) + "_minus_reference." + discretization_name(p.methods[k]), file, column(k, ell),
+                 "relative_ptp", "reference_mu");
     put_methods(ctx, phi + measure_name(ell) + "_minus_reference", corrected, nest);
   }
   const json& r = nest.empty() ? ctx.summary["reproduced"] : ctx.summary["reproduced"][nest];
@@ -153,6 +172,8 @@ void run_volumes(Context& ctx) {
   const double ptp_small = relative_peak_to_peak(small_volumes, small_volumes.size());
   put(ctx, "reproduced", "artefact_radius_fraction", artefact_radius_fraction);
   put(ctx, "reproduced", "ptp_reference_mu_small_radius", ptp_small);
+  record_unfittable(ctx.summary, "reproduced.ptp_reference_mu_small_radius",
+                    "the reference volumes of the small cloud are not written to a CSV (only their peak-to-peak is reported)");
   put(ctx, "reproduced", "ptp_reference_mu_ratio_to_small_radius",
       ctx.summary["reproduced"]["ptp_reference_mu"].get<double>() / ptp_small);
   if (s.boolean("cloud.authors_cloud"))  // the cloud of the published figures

@@ -21,6 +21,7 @@
 #include "geomint/methods/registry.hpp"
 #include "geomint/observables/error_norms.hpp"
 #include "geomint/observables/order_fit.hpp"
+#include "geomint/runner/fits.hpp"
 #include "geomint/reference/odeint_reference.hpp"
 #include "geomint/runner/distributed_map.hpp"
 #include "geomint/systems/counting.hpp"
@@ -206,7 +207,7 @@ Orders fit_orders(Context& ctx, const Sys& sys, const std::vector<double>& hs,
   double min_phase = std::numeric_limits<double>::infinity();  // smallest phase error plotted
   for (std::size_t i = 0; i < initial.size(); ++i) {
     for (std::size_t k = 0; k < methods.size(); ++k) {
-      const std::string name = order_name(methods[k]);
+      const std::string name = order_name(methods[k]), column = label_of(methods[k]);  // (the CSV's columns by label)
       std::vector<double> rms, mx, ph;
       for (std::size_t j = 0; j < nh; ++j) {
         const Errors& e = runs[i * nh + j][k];
@@ -214,12 +215,18 @@ Orders fit_orders(Context& ctx, const Sys& sys, const std::vector<double>& hs,
       }
       const double H0 = std::abs(sys.H(state_of(initial[i])));
       const int ic = static_cast<int>(i);
+      const auto record = [&](const std::string& order, const std::string& csv_column, const OrderFit& f, double floor) {
+        record_order_fit(ctx.summary, "orders_by_initial." + std::to_string(i) + "." + order,
+                         {"fig4_convergence.csv", "h", csv_column, {{"initial", std::to_string(i)}}}, f, floor);
+      };
       if (obs.energy) {
-        table.fit(name + "_energy", hs, rms, energy_floor * std::max(H0, 1.0), ic);
-        table.fit(name + "_energy_max", hs, mx, energy_floor * std::max(H0, 1.0), ic);
+        const double floor = energy_floor * std::max(H0, 1.0);
+        record(name + "_energy", column + "_energy_rms", table.fit(name + "_energy", hs, rms, floor, ic), floor);
+        record(name + "_energy_max", column + "_energy_max", table.fit(name + "_energy_max", hs, mx, floor, ic), floor);
       }
       if (obs.phase) {
-        table.fit(name + "_phase", hs, ph, phase_floor, ic, "round-off or the reference's accuracy");
+        record(name + "_phase", column + "_phase",
+               table.fit(name + "_phase", hs, ph, phase_floor, ic, "round-off or the reference's accuracy"), phase_floor);
         for (double e : ph) min_phase = std::min(min_phase, e);
       }
     }

@@ -195,10 +195,10 @@ void ensemble_with(Context& ctx, const HH& hhk) {
   ctx.summary["ensemble"] = ensemble;
   ctx.summary["poincare"] = poincare;
   const double t_fit = fit_t_min(ctx.scene, "ensemble", run.t_end), t_last = stats.ts.back();
-  record_fit(ctx.summary, {"reproduced.hh5_sigma_exponent", "fig4_stats.csv", "t", "sigma", "power_law", t_fit, t_last, "ensemble.fit_from"});
-  record_fit(ctx.summary, {"ensemble.sigma_exponent_from_hundredth", "fig4_stats.csv", "t", "sigma", "power_law", t_fit / 10,
+  record_fit(ctx.summary, {"reproduced.hh5_sigma_exponent", {"fig4_stats.csv", "t", "sigma"}, "power_law", t_fit, t_last, "ensemble.fit_from"});
+  record_fit(ctx.summary, {"ensemble.sigma_exponent_from_hundredth", {"fig4_stats.csv", "t", "sigma"}, "power_law", t_fit / 10,
                            t_last, "ensemble.fit_from", 0.1});
-  record_fit(ctx.summary, {"ensemble.sigma2_slope", "fig4_stats.csv", "t", "sigma^2", "slope", t_fit, t_last, "ensemble.fit_from"});
+  record_fit(ctx.summary, {"ensemble.sigma2_slope", {"fig4_stats.csv", "t", "sigma^2"}, "slope", t_fit, t_last, "ensemble.fit_from"});
   record_unfittable(ctx.summary, "ensemble.without_outliers.sigma_exponent",
                     "the ensemble without its outliers at every output time: fig4_trajectories.csv holds the "
                     "trajectories at thinned times only");

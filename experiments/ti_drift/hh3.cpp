@@ -10,6 +10,7 @@
 #include "geomint/integrators/takahashi_imada.hpp"
 #include "geomint/observables/modified_energy.hpp"
 #include "henon_heiles_starts.hpp"
+#include "geomint/runner/fits.hpp"
 #include "ti_drift.hpp"
 
 namespace geomint::ti_drift {
@@ -39,6 +40,8 @@ void run_hh3(Context& ctx) {
   });
   ctx.write("fig3_hh3.csv", f3);
   const double drift = slope(ts, es);
+  record_fit(ctx.summary, {"reproduced.hh3_drift_slope", {"fig3_hh3.csv", "t", "E_err"}, "slope", 0, ts.back()});
+  record_fit(ctx.summary, {"hh3.E_err_peak_to_peak", {"fig3_hh3.csv", "t", "E_err"}, "ptp", 0, ts.back()});
   merge(ctx.summary, "reproduced", {{"hh3_drift_slope", drift}, {"hh3_max_E_err", worst}});
   const auto [e_lo, e_hi] = std::minmax_element(es.begin(), es.end());
   ctx.summary["hh3"] = {{"p1", start.p[0]},

@@ -250,8 +250,8 @@ void put_summary(Context& ctx, const LJ& lj, const Scan& scan, const Ensemble& e
                            {"sigma_from_printed", std::abs(sigma_f - ctx.published_value("lj_sigma_final")) / sigma_se}}}};
   if (!stable.empty()) ctx.summary["lj"]["stable_steps"] = range_of(stable);
   const double t_fit = fit_t_min(s, "lj", s.real("lj.t_end"));
-  record_fit(ctx.summary, {"reproduced.lj_sigma_exponent", "fig6_stats.csv", "t", "sigma", "power_law", t_fit, ts.back(), "lj.fit_from"});
-  record_fit(ctx.summary, {"lj.Hhat_change_exponent", "fig6_stats.csv", "t", "Hhat_change_rms", "power_law", t_fit, ts.back(), "lj.fit_from"});
+  record_fit(ctx.summary, {"reproduced.lj_sigma_exponent", {"fig6_stats.csv", "t", "sigma"}, "power_law", t_fit, ts.back(), "lj.fit_from"});
+  record_fit(ctx.summary, {"lj.Hhat_change_exponent", {"fig6_stats.csv", "t", "Hhat_change_rms"}, "power_law", t_fit, ts.back(), "lj.fit_from"});
   // the smallest step of the scan: the median of its largest errors of H
   const auto hs = s.reals("lj.h_scan");
   const auto smallest = std::min_element(hs.begin(), hs.end()) - hs.begin();

@@ -2,6 +2,7 @@
 // the starts of Fig. 6 over a short span). The random walk of (4.3) gives sigma ~ h^4 t^(1/2); the fitted
 // exponent in h, and the step at which the published sigma at the published time would be reached (carried
 // there by the published t^(1/2)).
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <span>
@@ -15,6 +16,7 @@
 #include "geomint/observables/stiffness.hpp"
 #include "geomint/runner/distributed_map.hpp"
 #include "geomint/sweep/ensemble_kernels.hpp"
+#include "geomint/runner/fits.hpp"
 #include "ti_drift.hpp"
 
 namespace geomint::ti_drift {
@@ -56,6 +58,8 @@ void run_lj_steps(Context& ctx) {
   }
   ctx.write("fig6_steps.csv", out);
   const LinearFit fit = linear_fit(log_h, log_sigma);
+  record_fit(ctx.summary, {"lj_steps.exponent", {"fig6_steps.csv", "h", "sigma"}, "power_law", *std::min_element(hs.begin(), hs.end()),
+                           *std::max_element(hs.begin(), hs.end())});
   // the standard error of the slope from the relative standard error 1/sqrt(2(M-1)) of each sigma (independent starts
   // per h are not assumed: the same starts are used at every h, so this is a scale, not a confidence bound)
   double sxx = 0, mean_log_h = 0;

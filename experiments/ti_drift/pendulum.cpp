@@ -19,6 +19,7 @@
 #include "geomint/observables/modified_energy.hpp"
 #include "geomint/observables/stiffness.hpp"
 #include "geomint/systems/unsymmetric_pendulum.hpp"
+#include "geomint/runner/fits.hpp"
 #include "ti_drift.hpp"
 
 namespace geomint::ti_drift {
@@ -48,6 +49,8 @@ void write_local_slopes(Context& ctx, const UnsymmetricPendulum& up, const Z1& p
     H_mean /= static_cast<double>(b - a);
     const double local = linear_fit(tw, ew).slope, pred = rate_at(H_mean), rel = std::abs(local - pred) / std::abs(pred);
     ls.row(ts_all[a], ts_all[b - 1], 0.5 * (ts_all[a] + ts_all[b - 1]), H_mean, local, pred, rel);
+    record_fit(ctx.summary, {"fig2_local_slope.csv#local_slope#" + std::to_string(w), {"fig2_pendulum.csv", "t", "shifted_energy_err"},
+                             "slope", ts_all[a], ts_all[b - 1]});
     if (rel > worst) worst = rel, worst_t = 0.5 * (ts_all[a] + ts_all[b - 1]);
   }
   ctx.write("fig2_local_slope.csv", ls);
@@ -89,6 +92,15 @@ void run_pendulum(Context& ctx) {
   });
   ctx.write("fig2_pendulum.csv", f2);
   const double rate = slope(ts, es), rate_predicted = predicted / static_cast<double>(kReferenceSteps);
+  record_fit(ctx.summary, {"reproduced.unsym_pendulum_drift_rate", {"fig2_pendulum.csv", "t", "shifted_energy_err"}, "slope", 0,
+                           s.real("pendulum.fit_t"), "", 1, 0, "pendulum.fit_t"});
+  record_fit(ctx.summary, {"reproduced.unsym_pendulum_drift_rate_whole", {"fig2_pendulum.csv", "t", "shifted_energy_err"}, "slope",
+                           0, ts_all.back()});
+  record_fit(ctx.summary, {"pendulum.H_drift_rate", {"fig2_pendulum.csv", "t", "H_err"}, "slope", 0, ts_all.back()});
+  for (const auto& [trend, kind] : {std::pair{"trend", "ptp_about_line"}, std::pair{"quadratic", "ptp_about_quadratic"}})
+    for (const auto& [name, column] : {std::pair{"shifted_energy", "shifted_energy_err"}, std::pair{"H", "H_err"}})
+      record_fit(ctx.summary, {std::string("pendulum.peak_to_peak_about_") + trend + "." + name, {"fig2_pendulum.csv", "t", column},
+                               kind, 0, ts_all.back()});
   merge(ctx.summary, "reproduced",
       {{"unsym_pendulum_drift_rate", rate},                         // at the start's energy
        {"unsym_pendulum_drift_rate_whole", slope(ts_all, es_all)},  // over the whole span (the rate falls with H)

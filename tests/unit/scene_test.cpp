@@ -119,7 +119,7 @@ TEST(Scene, RejectsOutOfRangeNanAndNegative) {
   expect_refused("an infinite step", valid, {"decay.h=inf"}, {"decay.h = inf (from --set): must be a finite number > 0"});
   expect_refused("zero steps", valid, {"decay.steps=0"}, {"decay.steps = 0"});
   expect_refused("a negative step in a list", valid, {"convergence.h=[0.1, -0.05, 0.025]"}, {"each a finite number > 0"});
-  expect_refused("a list shorter than its minimum", valid, {"convergence.h=[0.1, 0.05]"}, {"at least 3"});
+  expect_refused("a list shorter than its minimum", valid, {"convergence.h=[0.1, 0.05]"}, {"a list of 3 to"});
   // An integer key declared without an upper bound still fits an int: 2^31 is refused, 2^31 - 1 is not.
   expect_refused("an integer of 2^31", valid, {"decay.steps=2147483648"},
                  {"decay.steps = 2147483648 (from --set): must be an integer, a finite number >= 1 and <= 2147483647"});
@@ -140,6 +140,28 @@ TEST(Scene, RejectsTypeErrors) {
   expect_refused("1 for a boolean", valid, {"flags.fast=1"}, {"true or false"});
   expect_refused("a name not in the list", valid, {"method=\"euler\""}, {"one of \"se\", \"rk4\""});
   expect_refused("a row of 3 numbers for rows of 2", valid, {"initial=[[1, 2, 3]]"}, {"lists of 2 numbers"});
+}
+
+// A list longer than a study can use is refused before any work: max_list_entries numbers or rows, and a
+// list of choices at most as long as its choices.
+TEST(Scene, RefusesListsLongerThanAStudyCanUse) {
+  const auto list_of = [](std::size_t n, const std::string& entry) {
+    std::string v = "[";
+    for (std::size_t i = 0; i < n; ++i) v += (i ? ", " : "") + entry;
+    return v + "]";
+  };
+  EXPECT_EQ(error_of(valid, {"convergence.h=" + list_of(max_list_entries, "0.1")}), "");
+  expect_refused("a list of steps one entry too long", valid, {"convergence.h=" + list_of(max_list_entries + 1, "0.1")},
+                 {"convergence.h = [0.1, 0.1, 0.1, ... (1001 entries), 0.1, 0.1]",
+                  "must be a list of 3 to " + std::to_string(max_list_entries) + " numbers"});
+  expect_refused("rows one too many", valid, {"initial=" + list_of(max_list_entries + 1, "[1.0, 2.0]")},
+                 {"initial", "1 to " + std::to_string(max_list_entries) + " lists of 2 numbers"});
+  Schema choices;
+  choices.texts("methods", {"se", "rk4"}, 1);
+  EXPECT_NO_THROW(Scene::load(scene_file("methods = [\"se\", \"rk4\"]\n"), {}, choices));
+  EXPECT_REFUSAL_OF(SceneError, "three names from two choices",
+                    Scene::load(scene_file("methods = [\"se\", \"rk4\", \"se\"]\n"), {}, choices),
+                    {"methods", "must be a list of 1 to 2 strings"});
 }
 
 TEST(Scene, RejectsUnparsableValuesAndMissingKeys) {
@@ -228,7 +250,7 @@ TEST(Scene, AnErrorInAnOlderSpellingNamesIt) {
   EXPECT_NE(error("observables = [\"c\"]\n", {}).find("as 'observables', the older name of 'studies'"),
             std::string::npos);
   EXPECT_EQ(error("studies = []\n", {"observables=[\"c\"]"}),
-            "studies = [\"c\"] (from --set as 'observables', the older name of 'studies'): must be a list of strings, "
+            "studies = [\"c\"] (from --set as 'observables', the older name of 'studies'): must be a list of 0 to 2 strings, "
             "each one of \"a\", \"b\"");
 }
 

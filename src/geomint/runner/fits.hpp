@@ -1,30 +1,65 @@
 #pragma once
-// Every fitted number of a summary names what it was fitted to, under summary "fits": the CSV it was
-// written to, its columns, the window [from, to] of x, the fit, and the scene key the window comes
-// from, so that one test (tests/regression/fits_test.cpp) recomputes it from the CSV with the same fit
-// and checks the window against the scene. A fitted number no written CSV holds the data of is listed
-// under "fits_not_recomputable" with the reason.
+// Every fitted number of a summary names what it was fitted to, under summary "fit_sources": the CSV
+// it was written to, its columns, the rows (by the values of other columns), the window [from, to] of
+// x, the fit, and the scene key the window comes from, so that one test (tests/regression/fits_test.cpp)
+// recomputes it from the CSV with the same fit and checks the window against the scene. A fitted
+// number no written CSV holds the data of is listed under "fits_not_recomputable" with the reason.
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
+#include "geomint/observables/order_fit.hpp"
+
 namespace geomint {
 
-// A fitted number: at `quantity` (a dotted path into the summary), fitted to the columns x and y of
-// `csv` (y "c^2": the square of column c) over the rows with from <= x <= to, by `kind`:
-// "power_law" (power_law_exponent, observables/ensemble_statistics.hpp: log-log least squares, y > 0)
-// or "slope" (slope_from: least squares). The window starts at from = (scene value of from_key) *
-// from_factor * to.
+// Where a fitted number's data are: columns x and y of `csv` (y "c^2": the square of column c), on the
+// rows whose columns `where` hold the given values (as the CSV writes them); for "relative_ptp", less
+// the relative change of column `minus` if it is not empty.
+struct FitData {
+  std::string csv, x, y;
+  std::vector<std::pair<std::string, std::string>> where = {};
+  std::string minus = {};
+};
+
+// A fitted number: at `quantity` (a dotted path into the summary), fitted to `data` over the rows with
+// from <= x <= to, by `kind`: "power_law" (power_law_exponent, observables/ensemble_statistics.hpp:
+// log-log least squares, y > 0), "slope" (slope_from: least squares) or "order" (fit_order,
+// observables/order_fit.hpp: log-log least squares over the errors above `floor`), "relative_ptp"
+// (relative_peak_to_peak, geometry/volume_series.hpp: max - min of y_j / y_0 - 1, y_0 at the window's
+// first row), "relative_amplitude" (half that), "ptp" (max - min of y), "ptp_about_line" or
+// "ptp_about_quadratic" (max - min of y less its least-squares line or quadratic in x,
+// observables/ensemble_statistics.hpp). If `from_key` is not
+// empty, the window starts at from = (scene value of from_key) * from_factor * to; if `to_key` is not
+// empty, it ends at to = (scene value of to_key).
 struct FitRecord {
-  std::string quantity, csv, x, y, kind;
+  std::string quantity;
+  FitData data;
+  std::string kind;
   double from = 0, to = 0;
-  std::string from_key;
+  std::string from_key = {};
   double from_factor = 1;
+  double floor = 0;
+  std::string to_key = {};
 };
 
 inline void record_fit(nlohmann::ordered_json& summary, const FitRecord& f) {
-  summary["fits"].push_back({{"quantity", f.quantity}, {"csv", f.csv}, {"x", f.x}, {"y", f.y}, {"kind", f.kind},
-                             {"from", f.from}, {"to", f.to}, {"from_key", f.from_key}, {"from_factor", f.from_factor}});
+  nlohmann::ordered_json where = nlohmann::ordered_json::object();
+  for (const auto& [column, value] : f.data.where) where[column] = value;
+  nlohmann::ordered_json r = {{"quantity", f.quantity}, {"csv", f.data.csv}, {"x", f.data.x},   {"y", f.data.y},
+                              {"where", where},         {"kind", f.kind},    {"from", f.from}, {"to", f.to}};
+  if (!f.from_key.empty()) r["from_key"] = f.from_key, r["from_factor"] = f.from_factor;
+  if (!f.to_key.empty()) r["to_key"] = f.to_key;
+  if (f.kind == "order") r["floor"] = f.floor;
+  if (!f.data.minus.empty()) r["minus"] = f.data.minus;
+  summary["fit_sources"].push_back(std::move(r));
+}
+
+// An order fitted by fit_order(h, err, floor) to `data`: its window is the range of h it used.
+inline void record_order_fit(nlohmann::ordered_json& summary, const std::string& quantity, const FitData& data,
+                             const OrderFit& f, double floor) {
+  record_fit(summary, {.quantity = quantity, .data = data, .kind = "order", .from = f.h_min, .to = f.h_max, .floor = floor});
 }
 
 inline void record_unfittable(nlohmann::ordered_json& summary, const std::string& quantity, const std::string& why) {

@@ -52,9 +52,18 @@ std::string repr(const toml::node& node) {
     node.visit([&](const auto& n) { out << n; });
     return out.str() + " (a date or time)";
   }
-  if (const auto* arr = node.as_array()) {
+  if (const auto* arr = node.as_array()) {  // (a long list by its first and last entries, so a refusal stays short)
+    constexpr std::size_t head = 3, tail = 2;
+    const std::size_t n = arr->size();
     std::string out = "[";
-    for (std::size_t i = 0; i < arr->size(); ++i) out += (i ? ", " : "") + repr(*arr->get(i));
+    for (std::size_t i = 0; i < n; ++i) {
+      if (n > head + tail + 1 && i == head) {
+        out += ", ... (" + std::to_string(n) + " entries)";
+        i = n - tail - 1;
+        continue;
+      }
+      out += (i ? ", " : "") + repr(*arr->get(i));
+    }
     return out + "]";
   }
   return "(table)";
@@ -119,14 +128,18 @@ std::string type_name(Schema::Type t) {
   return "?";
 }
 
+std::size_t max_entries(const Schema::Entry& e) {
+  return e.type == Schema::Type::texts && !e.choices.empty() ? e.choices.size() : max_list_entries;
+}
+
 std::string allowed_values(const Schema::Entry& e) {
   using T = Schema::Type;
   std::string a;
   if (e.type == T::real || e.type == T::integer || e.type == T::reals || e.type == T::real_rows) a = e.bound.describe();
-  if ((e.type == T::reals || e.type == T::texts) && e.min_len > 0)
-    a += (a.empty() ? "" : "; ") + std::string("at least ") + std::to_string(e.min_len) + " entries";
+  if (e.type == T::reals || e.type == T::texts)
+    a += (a.empty() ? "" : "; ") + std::to_string(e.min_len) + " to " + std::to_string(max_entries(e)) + " entries";
   if (e.type == T::real_rows)
-    a += "; at least " + std::to_string(e.min_len) + " rows of " + std::to_string(e.row_len);
+    a += "; " + std::to_string(e.min_len) + " to " + std::to_string(max_entries(e)) + " rows of " + std::to_string(e.row_len);
   if (!e.choices.empty()) {
     a += a.empty() ? "one of" : "; each one of";
     for (const auto& c : e.choices) a += " \"" + c + "\"";
@@ -194,18 +207,18 @@ std::optional<std::string> check(const Schema::Entry& e, const toml::node& node)
       return std::nullopt;
     case Schema::Type::reals: {
       const auto* arr = node.as_array();
-      const std::string allowed = "must be a list of at least " + std::to_string(e.min_len) + " numbers, each " +
-                                  e.bound.describe();
-      if (!arr || arr->size() < e.min_len) return allowed;
+      const std::string allowed = "must be a list of " + std::to_string(e.min_len) + " to " + std::to_string(max_entries(e)) +
+                                  " numbers, each " + e.bound.describe();
+      if (!arr || arr->size() < e.min_len || arr->size() > max_entries(e)) return allowed;
       for (const auto& x : *arr)
         if (number_ok(x)) return allowed;
       return std::nullopt;
     }
     case Schema::Type::real_rows: {
       const auto* arr = node.as_array();
-      const std::string allowed = "must be a list of at least " + std::to_string(e.min_len) + " lists of " +
-                                  std::to_string(e.row_len) + " numbers, each " + e.bound.describe();
-      if (!arr || arr->size() < e.min_len) return allowed;
+      const std::string allowed = "must be a list of " + std::to_string(e.min_len) + " to " + std::to_string(max_entries(e)) +
+                                  " lists of " + std::to_string(e.row_len) + " numbers, each " + e.bound.describe();
+      if (!arr || arr->size() < e.min_len || arr->size() > max_entries(e)) return allowed;
       for (const auto& row : *arr) {
         const auto* r = row.as_array();
         if (!r || r->size() != e.row_len) return allowed;
@@ -220,9 +233,8 @@ std::optional<std::string> check(const Schema::Entry& e, const toml::node& node)
     case Schema::Type::text:
     case Schema::Type::texts: {
       const bool list = e.type == Schema::Type::texts;
-      std::string allowed = !list           ? "must be a string"
-                            : e.min_len == 0 ? "must be a list of strings"
-                                             : "must be a list of at least " + std::to_string(e.min_len) + " strings";
+      std::string allowed = !list ? "must be a string"
+                                  : "must be a list of " + std::to_string(e.min_len) + " to " + std::to_string(max_entries(e)) + " strings";
       if (!e.choices.empty()) {
         allowed += list ? ", each one of " : ", one of ";
         for (std::size_t i = 0; i < e.choices.size(); ++i) allowed += (i ? ", \"" : "\"") + e.choices[i] + "\"";
@@ -233,7 +245,7 @@ std::optional<std::string> check(const Schema::Entry& e, const toml::node& node)
       };
       if (!list) return ok(node) ? std::nullopt : std::optional<std::string>(allowed);
       const auto* arr = node.as_array();
-      if (!arr || arr->size() < e.min_len) return allowed;
+      if (!arr || arr->size() < e.min_len || arr->size() > max_entries(e)) return allowed;
       for (const auto& x : *arr)
         if (!ok(x)) return allowed;
       return std::nullopt;

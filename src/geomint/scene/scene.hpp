@@ -43,6 +43,10 @@ inline Bound tolerance() { return {.gt = {}, .ge = 1e-15, .lt = {}, .le = 1e-2};
 // The largest count of steps or evaluations a scene may ask for: 2^53, up to which counts are exact in
 // a double (steps are counted in 64-bit integers, t = n h).
 inline constexpr double max_exact_count = 9007199254740992.0;
+// The longest list a scene may give (step sizes, starts, rows): no study of the papers uses more than
+// 17 entries, and a study runs every entry, so a longer list is a mistake or a run of hours per entry.
+// A list of choices (methods) holds each choice at most once, so at most as many entries as choices.
+inline constexpr std::size_t max_list_entries = 1000;
 
 class Schema {
  public:
@@ -83,6 +87,8 @@ std::string type_name(Schema::Type t);
 std::string printable(std::string_view s);
 // What a key admits, in words: the range of a number, the choices of a string.
 std::string allowed_values(const Schema::Entry& e);
+// The most entries a list key admits: max_list_entries, or as many as its choices.
+std::size_t max_entries(const Schema::Entry& e);
 
 // Does `key` fall under one of `prefixes` (equal, or prefix + "." + ...)?
 bool key_under(std::string_view key, const std::vector<std::string>& prefixes);
