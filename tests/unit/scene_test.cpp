@@ -164,6 +164,17 @@ TEST(Scene, RefusesListsLongerThanAStudyCanUse) {
                     {"methods", "must be a list of 1 to 2 strings"});
 }
 
+// A path or value of any length is shown in a refusal on a line or two: by its start and end.
+TEST(Scene, ARefusalShowsALongPathByItsEnds) {
+  std::string long_path;
+  for (int i = 0; i < 500; ++i) long_path += "abcdefghi/";
+  long_path += "x.toml";
+  const std::string e = error_of_file(long_path);
+  EXPECT_NE(e.find("(5006 characters)"), std::string::npos) << e;
+  EXPECT_LT(e.size(), 2 * kShownChars) << e;
+  EXPECT_EQ(printable(std::string(kShownChars, 'a')), std::string(kShownChars, 'a'));  // (no longer: as it is)
+}
+
 TEST(Scene, RejectsUnparsableValuesAndMissingKeys) {
   expect_refused("a word for a number", valid, {"decay.h=abc"}, {"cannot read 'abc' as a number"});
   expect_refused("--set without a value", valid, {"decay.h"}, {"expected key=value"});

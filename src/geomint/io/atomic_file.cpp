@@ -14,6 +14,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "geomint/io/printable.hpp"
+
 namespace geomint {
 
 namespace fs = std::filesystem;
@@ -109,7 +111,7 @@ void remove_temporaries(const fs::path& dir) {
 // final rename would replace the link, not what it names), a parent that is not a writable directory,
 // a name too long for DIR.partial and DIR.lock, a path the system cannot resolve.
 void check_out_path(const fs::path& d, const std::string& given) {
-  const std::string out = "--out " + given + ": ";
+  const std::string out = "--out " + printable(given) + ": ";
   if (d.filename().string().size() + std::string_view(".partial").size() > NAME_MAX)
     throw OutputError(out + "the name " + d.filename().string().substr(0, 40) + "... is " +
                       std::to_string(d.filename().string().size()) + " bytes; with .partial it would exceed the " +

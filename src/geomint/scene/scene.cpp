@@ -14,20 +14,6 @@
 
 namespace geomint {
 
-std::string printable(std::string_view s) {
-  static const char* const kHex = "0123456789abcdef";
-  std::string out;
-  for (const char c : s) {
-    const auto u = static_cast<unsigned char>(c);
-    if (c == '\n') out += "\\n";
-    else if (c == '\r') out += "\\r";
-    else if (c == '\t') out += "\\t";
-    else if (u < 0x20 || u == 0x7f) out += std::string("\\x") + kHex[u >> 4] + kHex[u & 15];
-    else out += c;
-  }
-  return out;
-}
-
 namespace {
 
 std::string fmt(double v) {
@@ -331,7 +317,7 @@ std::string read_scene_text(const std::filesystem::path& file, const std::string
   std::ifstream in(file, std::ios::binary);
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   if (!in && !in.eof()) throw SceneError(who + ": cannot be read");
-  check_scene_shape(text, file.string());
+  check_scene_shape(text, printable(file.string()));
   return text;
 }
 
@@ -380,7 +366,7 @@ struct Loaded {
 // `who`: how the user named the file ("--scene FILE", or the base of a scene).
 Loaded read_scene(const std::filesystem::path& file, const std::string& who, const Schema& schema,
                   std::vector<std::filesystem::path>& chain) {
-  const std::string where = file.string();
+  const std::string where = printable(file.string());
   const std::string text = read_scene_text(file, who);
   Loaded out;
   toml::table own;
@@ -397,7 +383,7 @@ Loaded read_scene(const std::filesystem::path& file, const std::string& who, con
   if (const auto base = own["base"]; base) {
     if (!base.is_string()) throw SceneError(where + ": base must be a string naming the base scene file");
     const std::filesystem::path base_file = file.parent_path() / *base.value<std::string>();
-    const std::string base_who = where + ": base = \"" + *base.value<std::string>() + "\" (" + base_file.string() + ")";
+    const std::string base_who = where + ": base = \"" + printable(*base.value<std::string>()) + "\" (" + printable(base_file.string()) + ")";
     std::error_code ec;
     const auto canonical = std::filesystem::weakly_canonical(base_file, ec);
     if (ec) throw SceneError(base_who + ": " + path_problem(ec));
@@ -435,7 +421,7 @@ Scene Scene::load(const std::filesystem::path& file, const std::vector<std::stri
                   const Schema& schema) {
   Scene scene;
   scene.file_ = file;
-  const std::string where = file.string();
+  const std::string where = printable(file.string());
   std::error_code ec;
   std::vector<std::filesystem::path> chain{std::filesystem::weakly_canonical(file, ec)};
   if (ec) throw SceneError("--scene " + where + ": " + path_problem(ec));

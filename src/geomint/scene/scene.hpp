@@ -22,6 +22,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include "geomint/io/printable.hpp"  // printable(): a value or argument shown on one line
+
 namespace geomint {
 
 struct SceneError : std::runtime_error {
@@ -83,8 +85,6 @@ class Schema {
 
 // "a number", "a list of strings", ...: how --help and error messages name a type.
 std::string type_name(Schema::Type t);
-// s with its control characters escaped (\n, \r, \t, \xNN): a value or argument shown on one line.
-std::string printable(std::string_view s);
 // What a key admits, in words: the range of a number, the choices of a string.
 std::string allowed_values(const Schema::Entry& e);
 // The most entries a list key admits: max_list_entries, or as many as its choices.
