@@ -4,7 +4,8 @@
 // error max_j |H(z_j) - H_0| over the run. Methods: Phi^(4) of each scene discretization (phi4_<label>)
 // and Phi^(0) of cost.discretization (phi0_<label>) over order_study.h, and the classical RK4 on (3.8)
 // (rk4) over cost.rk4_h; every run from cloud.center with N = floor(T/h) steps, T = energies.t_end.
-// Costs: wall time (the timing protocol of runner/timing.hpp, every run together) and evaluations (Newton
+// Costs: wall time (WorkPrecisionSet::time: the timing protocol of runner/timing.hpp, every run together;
+// RK4, of fixed work per step, timed at its fewest and most steps) and evaluations (Newton
 // iterations of Psi_{h,E}, each the discrete momentum with its 2x2 Jacobian; 4 evaluations of (3.8)
 // per RK4 step). Besides, what is not a cost (reproduced, orders, ranges): per discretization the
 // Newton iterations per step at h, the errors at T for the steps that end there and the order of the
@@ -31,15 +32,14 @@
 namespace geomint::measure_cloud {
 namespace {
 
-// One timed run: its label in the sets, its step, its trajectory (z_0 .. z_n; Newton iterations for
-// Phi^(ell)), its evaluations, the run again (to time) and its time.
+// One run: its label in the sets, its step, its trajectory (z_0 .. z_n; Newton iterations for Phi^(ell)),
+// its evaluations, and the run again (to time).
 struct TimedRun {
   std::string method;
   double h;
   Trajectory tr;
   double evals;
   std::function<void()> again;
-  RunTime time;
 };
 
 // (3.8) as z' = f(z) on Vec<4>, for runge_kutta4; `evals` counts the evaluations of f.
@@ -75,7 +75,7 @@ TimedRun timed_phi(const Scene& s, const PhiStudy& p, Discretization d, int ell,
   const double evals = static_cast<double>(tr.iterations);
   return {phi_label(ell, d), h, std::move(tr), evals, [&p, d, h, ell, n] {
             do_not_optimize(run_phi(d, p.sys, h, ell, p.z0, n).z.back());
-          }, {}};
+          }};
 }
 
 // The classical RK4 on (3.8) at the step h to T = energies.t_end (timed by timed_runs); its evaluations of
@@ -87,11 +87,11 @@ TimedRun timed_rk4(const Scene& s, const PhiStudy& p, double h) {
   return {"rk4", h, std::move(tr), static_cast<double>(evals), [&p, h, n] {
             std::int64_t uncounted = 0;
             do_not_optimize(run_rk4(p.sys, h, p.z0, n, &uncounted).z.back());
-          }, {}};
+          }};
 }
 
 // Every run, in the order of the sets' rows: Phi^(4) of each discretization, Phi^(0) of cmp, RK4.
-std::vector<TimedRun> timed_runs(Context& ctx, const PhiStudy& p, Discretization cmp) {
+std::vector<TimedRun> cost_runs(Context& ctx, const PhiStudy& p, Discretization cmp) {
   const Scene& s = ctx.scene;
   std::vector<TimedRun> runs;
   ctx.progress("cost: Phi^(4) of each discretization");
@@ -100,11 +100,6 @@ std::vector<TimedRun> timed_runs(Context& ctx, const PhiStudy& p, Discretization
   ctx.progress("cost: Phi^(0) and RK4");
   for (double h : s.reals("order_study.h")) runs.push_back(timed_phi(s, p, cmp, 0, h));
   for (double h : s.reals("cost.rk4_h")) runs.push_back(timed_rk4(s, p, h));
-  ctx.progress("cost: timed runs");
-  InterleavedTiming timing(static_cast<int>(s.integer("timing.repeats")), kTimingFloorS, ctx.threads);  // every run together
-  for (const TimedRun& r : runs) timing.add(r.again);
-  const std::vector<RunTime> times = timing.run();
-  for (std::size_t k = 0; k < runs.size(); ++k) runs[k].time = times[k];
   return runs;
 }
 
@@ -114,8 +109,9 @@ struct Sets {
   double reference_error = 0;  // of the references at every t_N, against references at 100x tighter tolerances
 };
 
-// The errors of every run against the reference at its t_N (one reference per t_N, and its own error).
-Sets errors_of(const PhiStudy& p, const std::vector<TimedRun>& runs) {
+// The errors of every run against the reference at its t_N (one reference per t_N, and its own error), and
+// the wall times: the trajectory set times the runs (every run together), the energy set has the same.
+Sets errors_of(Context& ctx, const PhiStudy& p, const std::vector<TimedRun>& runs) {
   Sets out;
   const double H0 = p.sys.H(as_state(p.z0));
   std::map<double, Point4> refs;  // by t_N
@@ -131,9 +127,12 @@ Sets errors_of(const PhiStudy& p, const std::vector<TimedRun>& runs) {
     double e_energy = 0;
     for (const Point4& z : r.tr.z) e_energy = std::max(e_energy, std::abs(p.sys.H(as_state(z)) - H0));
     const double err = phase_distance(as_state(r.tr.z.back()), as_state(refs.at(tN)));
-    out.trajectory.add({r.method, r.h, static_cast<double>(n), r.time, r.evals, err});
-    out.energy.add({r.method, r.h, static_cast<double>(n), r.time, r.evals, e_energy});
+    out.trajectory.add({r.method, r.h, static_cast<double>(n), {}, r.evals, err}, r.again);
+    out.energy.add({r.method, r.h, static_cast<double>(n), {}, r.evals, e_energy});
   }
+  ctx.progress("cost: timed runs");
+  out.trajectory.time(static_cast<int>(ctx.scene.integer("timing.repeats")), ctx.threads);
+  out.energy.times_of(out.trajectory);
   return out;
 }
 
@@ -230,9 +229,9 @@ void run_cost(Context& ctx) {
   const Scene& s = ctx.scene;
   const PhiStudy p = phi_study(ctx);
   const Discretization cmp = *parse_discretization(method_info(s.text("cost.discretization")).label);
-  const std::vector<TimedRun> runs = timed_runs(ctx, p, cmp);
+  const std::vector<TimedRun> runs = cost_runs(ctx, p, cmp);
   ctx.progress("cost: errors against the reference");
-  const Sets sets = errors_of(p, runs);
+  const Sets sets = errors_of(ctx, p, runs);
   ctx.write("cost_trajectory.csv", sets.trajectory.csv());
   ctx.write("cost_energy.csv", sets.energy.csv());
   const json ns_at_h = report_discretizations(ctx, p, sets.trajectory);

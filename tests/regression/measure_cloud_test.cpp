@@ -158,7 +158,7 @@ TEST(MeasureCloud, WorkPrecisionOrdersAndReference) {
 }
 
 // The cost study's two work-precision sets (cost_trajectory.csv, cost_energy.csv) are two errors of the
-// same runs: every column but the error is the same, row by row. Evaluations: 4 per RK4 step; the Newton
+// same runs (timed once): every column but the error is the same, row by row. Evaluations: 4 per RK4 step; the Newton
 // iterations of Phi^(4) at h, which the table quotes (reproduced.newton_iterations_per_step_phi4), are
 // those of its run at h in the set.
 TEST(MeasureCloud, CostSetsAreTwoErrorsOfTheSameRuns) {
@@ -175,6 +175,10 @@ TEST(MeasureCloud, CostSetsAreTwoErrorsOfTheSameRuns) {
   EXPECT_EQ(cost["trajectory"]["methods"], cost["energy"]["methods"]);
   EXPECT_EQ(cost["trajectory"]["equal_wall_s"], cost["energy"]["equal_wall_s"]);
   EXPECT_EQ(cost["trajectory"]["by_method"]["rk4"]["evals_per_step"].get<double>(), 4.0);
+  // RK4, of fixed work per step, is timed at its fewest and most steps, its other runs interpolated; the
+  // spread tally counts the timed runs
+  expect_interpolated_rows_affine(traj);
+  EXPECT_EQ(cost["trajectory"]["spread"]["measurements"].get<std::size_t>(), timed_rows(traj));
   const json run = json::parse(std::ifstream(results_dir("measure_cloud") / "run.json"));
   const double h = run["scene"]["h"].get<double>();
   std::size_t checked = 0;

@@ -217,6 +217,26 @@ TEST(WorkPrecisionSet, TimesAMethodOfFixedWorkPerStepAtItsEnds) {
   EXPECT_NE(csv.str().find("\nfixed,0.01,100,"), std::string::npos);
 }
 
+// A second set of the same runs with another error takes the first's wall times (timed once); a set of
+// other runs is refused.
+TEST(WorkPrecisionSet, TakesTheTimesOfASetOfTheSameRuns) {
+  WorkPrecisionSet timed("trajectory"), energy("energy"), other("energy");
+  for (double n : {10, 100, 1000}) {
+    timed.add({"fixed", 1 / n, n, {}, 2 * n, 1 / n}, [] {});
+    energy.add({"fixed", 1 / n, n, {}, 2 * n, 1 / (n * n)});
+    other.add({"fixed", 2 / n, n, {}, 2 * n, 1 / (n * n)});
+  }
+  timed.time(7);
+  energy.times_of(timed);
+  for (std::size_t k = 0; k < 3; ++k) {
+    EXPECT_EQ(energy.records()[k].wall.median_s, timed.records()[k].wall.median_s);
+    EXPECT_EQ(energy.records()[k].wall_timed, timed.records()[k].wall_timed);
+    EXPECT_EQ(energy.records()[k].err, 1 / std::pow(timed.records()[k].steps, 2));
+  }
+  EXPECT_FALSE(energy.records()[1].wall_timed);  // (the middle run of fixed work per step, interpolated)
+  EXPECT_THROW(other.times_of(timed), std::logic_error);
+}
+
 // t(n) = t0 + n t1 through two runs, every statistic.
 TEST(WorkPrecisionSet, AffineInStepsThroughTwoRuns) {
   RunTime a, b;

@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <span>
 #include <stdexcept>
+#include <string>
 #include <utility>
 
 #include "geomint/runner/summary.hpp"
@@ -77,6 +78,17 @@ void WorkPrecisionSet::time(int repeats, int workers) {
   for (std::size_t i = 0; i < which.size(); ++i) records_[which[i]].wall = times[i];
   for (const auto& [k, lo, hi] : between)
     records_[k].wall = affine_in_steps(records_[lo].wall, records_[lo].steps, records_[hi].wall, records_[hi].steps, records_[k].steps);
+}
+
+void WorkPrecisionSet::times_of(const WorkPrecisionSet& timed) {
+  const auto& t = timed.records_;
+  for (std::size_t k = 0; k < records_.size(); ++k) {
+    WorkPrecisionRecord& r = records_[k];
+    if (k >= t.size() || t[k].method != r.method || t[k].h != r.h || t[k].steps != r.steps)
+      throw std::logic_error("WorkPrecisionSet::times_of: the sets do not hold the same runs (record " + std::to_string(k) + ")");
+    r.wall = t[k].wall, r.wall_timed = t[k].wall_timed;
+  }
+  if (t.size() != records_.size()) throw std::logic_error("WorkPrecisionSet::times_of: the sets differ in length");
 }
 
 Csv WorkPrecisionSet::csv() const {

@@ -46,6 +46,9 @@ class WorkPrecisionSet {
   // whose force evaluations are affine in the steps, only those of its fewest and most steps (the
   // others interpolated: affine_in_steps).
   void time(int repeats, int workers = 1);
+  // The wall times of `timed`, a set of the same runs (method, h and steps, in the same order) with
+  // another error: its records' wall and wall_timed.
+  void times_of(const WorkPrecisionSet& timed);
   const std::vector<WorkPrecisionRecord>& records() const { return records_; }
   std::vector<std::string> methods() const;                    // in the order first added
   std::vector<CostRun> runs(const std::string& method) const;  // its measurable runs, by decreasing h
