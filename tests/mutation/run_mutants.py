@@ -9,11 +9,12 @@ tree with work in progress:
     git worktree add ../geomint-mutation && cd ../geomint-mutation
     tests/mutation/run_mutants.py --build build-mutation
 
-A rebuild and a ctest run per mutant come to a few hours on two cores, so it is run on demand, not
-by `make test`. Before the mutants, the unmodified tree must build and pass; its test times
-order the suite: the library's test executables are built and run first (a fraction of the
-build), then the whole tree is built and its tests under --slow seconds run, and the slower ones
-only for a mutant none of these killed; a test that waits on a fixture (a quick run) runs in the
+A rebuild and a ctest run per mutant take one to four minutes on two cores, so it is run on demand,
+not by `make test`. The build compiles each test file on its own (see configure). Before the
+mutants, the unmodified tree must build and pass; its test times order the suite. For each mutant,
+the library's test executables are built and run one after the other (LIBRARY_TESTS), then the
+whole tree is built and its tests under --slow seconds run, then the slower ones, each step only
+for a mutant the earlier ones did not kill. A test that waits on a fixture (a quick run) runs in the
 phase of the fixture's setup (a fast test on a slow quick run runs late), and the fixtures' outputs
 are removed before every mutant, so that no test reads what an earlier run left. The report (stdout and --report FILE, JSON, rewritten after
 every mutant) gives each mutant's result and the failing tests, the kill rate, and the mutants
@@ -74,12 +75,11 @@ def run(cmd, log, timeout=None):
         return subprocess.run(cmd, cwd=ROOT, stdout=out, stderr=subprocess.STDOUT, timeout=timeout).returncode
 
 
-# The library's own tests: their executables build in a fraction of the whole tree, and they catch
-# most wrong formulas. A mutant is tried on them first; the rest of the tree is built only for a
-# mutant they do not kill.
-LIBRARY_TESTS = ["geomint_unit_tests", "geomint_stability_tests", "geomint_verification_tests"]
-LIBRARY_LABELS = "^(unit|stability|verification)$"
-NOT_LIBRARY = r"^(readme|mutation|derive_nonholonomic)\."  # (scripts that run the experiments or sympy)
+# The library's test executables, each built and then run before the next is built: most wrong
+# formulas die in one of them, and the rest of the tree is built only for a mutant none kills. The
+# smallest build first: the verification tests are one file, the unit tests twenty, and the stability
+# tests reuse the unit tests' precompiled header (so they are built after them anyway).
+LIBRARY_TESTS = ["geomint_verification_tests", "geomint_unit_tests", "geomint_stability_tests"]
 
 
 def build(args, log, targets=None):
@@ -87,17 +87,14 @@ def build(args, log, targets=None):
                (["--target"] + targets if targets else []), log) == 0
 
 
-def failed_tests(args, log, stop_on_failure=True, phase=(None, None), label=None):
-    """Runs ctest on the tests of `phase` (-R pattern or every test, and a further -E pattern) and
-    `label` (-L); returns the names of the failing tests ([] if all pass). A mutant is killed by its
-    first failing test: with `stop_on_failure` ctest stops there (the names are those that failed by then)."""
-    select, exclude = phase
+def failed_tests(args, log, stop_on_failure=True, select=None):
+    """Runs ctest on the tests matching `select` (-R; every test if None), less --exclude's; returns the
+    names of the failing tests ([] if all pass). A mutant is killed by its first failing test: with
+    `stop_on_failure` ctest stops there (the names are those that failed by then)."""
     cmd = ["ctest", "--test-dir", str(args.build), "-j", str(args.jobs), "--timeout", str(args.timeout),
-           "-E", args.exclude + (f"|{exclude}" if exclude else "")] + (["--stop-on-failure"] if stop_on_failure else [])
-    if select or args.tests:
-        cmd += ["-R", select or args.tests]
-    if label:
-        cmd += ["-L", label]
+           "-E", args.exclude] + (["--stop-on-failure"] if stop_on_failure else [])
+    if select:
+        cmd += ["-R", select]
     code = run(cmd, log)
     failed = []
     for line in Path(log).read_text().splitlines():
@@ -150,30 +147,45 @@ def names_pattern(names):
 
 
 def test_phases(args):
-    """(ctest -R, extra ctest -E) per phase (split_phases of the baseline's test times, without
+    """The ctest -R pattern of each phase (split_phases of the baseline's test times, without
     --exclude's tests); one phase with --tests. A phase is selected by its names (-R), not by leaving
     the others out (-E alone): ctest then drops the left-out tests before it adds the setups of the
     fixtures the selected tests require, and a test would read a quick run that did not run. With -R,
     ctest adds those setups (split_phases has put them in the phase or an earlier one; a setup that a
     later phase needs again runs again there)."""
     if args.tests:
-        return [(args.tests, None)]
+        return [args.tests]
     cost_file = args.build / "Testing" / "Temporary" / "CTestCostData.txt"
     durations = {parts[0]: float(parts[2]) for parts in map(str.split, cost_file.read_text().splitlines())
                  if len(parts) == 3}
     phases = [[n for n in phase if not re.search(args.exclude, n)]
               for phase in split_phases(ctest_tests(args), durations, args.slow)]
-    selections = []
-    for phase in filter(None, phases):
-        pattern = names_pattern(phase)
-        # A regex too long for ctest (with 3.25, one of 69 kB) matches no test, and says nothing; ctest
-        # and Python could also read --exclude differently: check each phase before a mutant relies on it.
-        missing = set(phase) - {t["name"] for t in ctest_tests(args, "-R", pattern, "-E", args.exclude)}
-        if missing:
-            sys.exit(f"ctest does not select {len(missing)} of the {len(phase)} tests of a phase "
-                     f"(e.g. {min(missing)}; its -R pattern has {len(pattern)} characters)")
-        selections.append((pattern, None))
-    return selections
+    return [checked_pattern(args, phase, "a phase") for phase in phases if phase]
+
+
+def checked_pattern(args, names, what):
+    """The ctest -R pattern selecting exactly `names`. A regex too long for ctest (with 3.25, one of
+    69 kB) matches no test, and says nothing; ctest and Python could also read --exclude differently:
+    each selection is checked before a mutant relies on it."""
+    pattern = names_pattern(names)
+    missing = set(names) - {t["name"] for t in ctest_tests(args, "-R", pattern, "-E", args.exclude)}
+    if missing:
+        sys.exit(f"ctest does not select {len(missing)} of the {len(names)} tests of {what} "
+                 f"(e.g. {min(missing)}; its -R pattern has {len(pattern)} characters)")
+    return pattern
+
+
+def library_stages(tests, exclude):
+    """(target, names of the tests that run its executable) for each of LIBRARY_TESTS, in that order;
+    `tests` is ctest's list (--show-only=json-v1), and tests matching `exclude` are left out."""
+    stages = []
+    for target in LIBRARY_TESTS:
+        names = [t["name"] for t in tests if t.get("command") and Path(t["command"][0]).name == target
+                 and not re.search(exclude, t["name"])]
+        if not names:
+            raise ValueError(f"no test runs {target}")
+        stages.append((target, names))
+    return stages
 
 
 def remove_fixture_outputs(args):
@@ -198,11 +210,16 @@ def summarize(results, commit):
 
 
 def configure(args):
-    if (args.build / "CMakeCache.txt").exists():
-        return
-    cmd = ["cmake", "-S", str(ROOT), "-B", str(args.build), "-DCMAKE_BUILD_TYPE=Release"]
-    if shutil.which("ccache"):
-        cmd.append("-DCMAKE_CXX_COMPILER_LAUNCHER=ccache")
+    """A mutation build compiles each test file on its own (GEOMINT_UNITY_TESTS=OFF): a mutant then
+    recompiles the test files that include its header, not every batch one of them is in; and with
+    Ninja, when there is one, a test file compiles while the library does (make waits for the library)."""
+    cmd = ["cmake", "-S", str(ROOT), "-B", str(args.build), "-DGEOMINT_UNITY_TESTS=OFF"]
+    if not (args.build / "CMakeCache.txt").exists():
+        cmd.append("-DCMAKE_BUILD_TYPE=Release")
+        if shutil.which("ninja"):
+            cmd += ["-G", "Ninja"]
+        if shutil.which("ccache"):
+            cmd.append("-DCMAKE_CXX_COMPILER_LAUNCHER=ccache")
     subprocess.run(cmd, cwd=ROOT, check=True, stdout=subprocess.DEVNULL)
 
 
@@ -259,6 +276,8 @@ def main():
     if base_failed:
         sys.exit(f"the unmodified tree fails tests ({', '.join(base_failed)}): nothing can be measured")
     phases = test_phases(args)
+    stages = [(target, checked_pattern(args, names, target))
+              for target, names in library_stages(ctest_tests(args), args.exclude)]
 
     for i, m in enumerate(mutants, 1):
         if m["id"] in done:
@@ -276,18 +295,20 @@ def main():
         try:
             remove_fixture_outputs(args)
             path.write_text(original.decode().replace(m["old"], m["new"], 1))
-            failed = []
-            if not build(args, logs / f"{m['id']}-build-library.log", LIBRARY_TESTS):
-                compiled = False
-            else:
-                if not args.tests:
-                    failed = failed_tests(args, logs / f"{m['id']}-ctest-library.log", phase=(None, NOT_LIBRARY),
-                                          label=LIBRARY_LABELS)
-                compiled = failed or build(args, logs / f"{m['id']}-build.log")
-                for k, phase in enumerate(phases if compiled and not failed else []):
-                    failed = failed_tests(args, logs / f"{m['id']}-ctest{k}.log", phase=phase)
-                    if failed:
-                        break
+            failed, compiled = [], True
+            for target, select in [] if args.tests else stages:
+                compiled = build(args, logs / f"{m['id']}-build-{target}.log", [target])
+                if not compiled:
+                    break
+                failed = failed_tests(args, logs / f"{m['id']}-ctest-{target}.log", select=select)
+                if failed:
+                    break
+            if compiled and not failed:
+                compiled = build(args, logs / f"{m['id']}-build.log")
+            for k, select in enumerate(phases if compiled and not failed else []):
+                failed = failed_tests(args, logs / f"{m['id']}-ctest{k}.log", select=select)
+                if failed:
+                    break
             result = "does not compile" if not compiled else "killed" if failed else "survived"
         except KeyboardInterrupt:
             interrupted = True

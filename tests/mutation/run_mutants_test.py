@@ -1,19 +1,21 @@
 #!/usr/bin/env python3
 """run_mutants.split_phases on made-up ctest test lists: a test never runs in a phase before the setup
-of a fixture it requires, so it cannot read outputs that an earlier run left."""
+of a fixture it requires, so it cannot read outputs that an earlier run left; and library_stages
+gives each library test executable exactly the tests that run it."""
 import sys
 import unittest
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from run_mutants import split_phases  # noqa: E402
+from run_mutants import LIBRARY_TESTS, library_stages, split_phases  # noqa: E402
 
 
-def entry(name, setup=(), requires=(), cleanup=()):
+def entry(name, setup=(), requires=(), cleanup=(), command="/build/bin/geomint_regression_tests"):
     """One entry of `ctest --show-only=json-v1`'s tests."""
     props = [{"name": key, "value": list(value)} for key, value in
              (("FIXTURES_SETUP", setup), ("FIXTURES_REQUIRED", requires), ("FIXTURES_CLEANUP", cleanup)) if value]
-    return {"name": name, "properties": props + [{"name": "LABELS", "value": ["regression"]}]}
+    return {"name": name, "command": [command, f"--gtest_filter={name}"],
+            "properties": props + [{"name": "LABELS", "value": ["regression"]}]}
 
 
 def phase_index(phases, name):
@@ -62,6 +64,22 @@ class SplitPhases(unittest.TestCase):
         tests = [entry("S", setup=["F"], requires=["G"]), entry("T", setup=["G"], requires=["F"])]
         with self.assertRaises(ValueError):
             split_phases(tests, {}, slow=15.0)
+
+
+class LibraryStages(unittest.TestCase):
+    def test_each_executable_gets_the_tests_that_run_it(self):
+        tests = [entry("V.a", command="/b/bin/geomint_verification_tests"), entry("U.a", command="/b/bin/geomint_unit_tests"),
+                 entry("mutation.mutants_apply", command="/usr/bin/python3"), entry("R.a"),
+                 entry("U.b", command="/b/bin/geomint_unit_tests"), entry("S.a", command="/b/bin/geomint_stability_tests"),
+                 entry("U.excluded", command="/b/bin/geomint_unit_tests")]
+        stages = library_stages(tests, exclude=r"^mutation\.|excluded")
+        self.assertEqual([target for target, _ in stages], LIBRARY_TESTS)
+        self.assertEqual(dict(stages), {"geomint_verification_tests": ["V.a"], "geomint_unit_tests": ["U.a", "U.b"],
+                                        "geomint_stability_tests": ["S.a"]})
+
+    def test_an_executable_without_tests_is_refused(self):
+        with self.assertRaises(ValueError):
+            library_stages([entry("U.a", command="/b/bin/geomint_unit_tests")], exclude="^$")
 
 
 if __name__ == "__main__":
