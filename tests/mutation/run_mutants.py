@@ -70,9 +70,18 @@ def load_mutants(path, will_mutate):
     return mutants
 
 
-def run(cmd, log, timeout=None):
+def run(cmd, log):
+    """Runs cmd (its output to log) in a process group of its own, and returns its exit status. If this
+    script is stopped meanwhile (Ctrl-C, SIGTERM), the whole group is killed: ninja or ctest alone
+    would leave their compilers and tests running, on a tree about to change under them."""
     with open(log, "w") as out:
-        return subprocess.run(cmd, cwd=ROOT, stdout=out, stderr=subprocess.STDOUT, timeout=timeout).returncode
+        child = subprocess.Popen(cmd, cwd=ROOT, stdout=out, stderr=subprocess.STDOUT, start_new_session=True)
+        try:
+            return child.wait()
+        except BaseException:
+            os.killpg(child.pid, signal.SIGKILL)
+            child.wait()
+            raise
 
 
 # The library's test executables, each built and then run before the next is built: most wrong
