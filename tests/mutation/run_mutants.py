@@ -72,15 +72,20 @@ def load_mutants(path, will_mutate):
 
 def run(cmd, log):
     """Runs cmd (its output to log) in a process group of its own, and returns its exit status. If this
-    script is stopped meanwhile (Ctrl-C, SIGTERM), the whole group is killed: ninja or ctest alone
-    would leave their compilers and tests running, on a tree about to change under them."""
+    script is stopped meanwhile (Ctrl-C, SIGTERM), the group is sent SIGTERM, and SIGKILL if it has
+    not ended 10 s later: ninja (which starts each compiler in a group of its own) stops its compilers
+    on SIGTERM, not when it is killed; a SIGKILL alone would leave them running."""
     with open(log, "w") as out:
         child = subprocess.Popen(cmd, cwd=ROOT, stdout=out, stderr=subprocess.STDOUT, start_new_session=True)
         try:
             return child.wait()
         except BaseException:
-            os.killpg(child.pid, signal.SIGKILL)
-            child.wait()
+            os.killpg(child.pid, signal.SIGTERM)
+            try:
+                child.wait(timeout=10)
+            except subprocess.TimeoutExpired:
+                os.killpg(child.pid, signal.SIGKILL)
+                child.wait()
             raise
 
 
@@ -295,12 +300,6 @@ def main():
         original = path.read_bytes()
         start = time.monotonic()
         interrupted = None
-
-        def restore_and_stop(signum, _frame):
-            path.write_bytes(original)
-            raise KeyboardInterrupt
-
-        old_handler = signal.signal(signal.SIGTERM, restore_and_stop)
         try:
             remove_fixture_outputs(args)
             path.write_text(original.decode().replace(m["old"], m["new"], 1))
@@ -322,8 +321,9 @@ def main():
         except KeyboardInterrupt:
             interrupted = True
         finally:
+            signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGTERM, signal.SIGINT})  # (a restore is never cut short)
             path.write_bytes(original)
-            signal.signal(signal.SIGTERM, old_handler)
+            signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGTERM, signal.SIGINT})
         if interrupted:
             print("interrupted; the mutated file is restored", file=sys.stderr)
             return 130
@@ -351,5 +351,14 @@ def main():
     return 1 if summary["published_survivors"] else 0
 
 
+def stop(_signum, _frame):
+    raise KeyboardInterrupt
+
+
 if __name__ == "__main__":
-    sys.exit(main())
+    # SIGTERM unwinds as Ctrl-C does: run() stops the build or ctest it waits on, a mutated file is restored.
+    signal.signal(signal.SIGTERM, stop)
+    try:
+        sys.exit(main())
+    except KeyboardInterrupt:
+        sys.exit("interrupted")
