@@ -10,6 +10,7 @@
 #include <string>
 
 #include "../hard_case.hpp"
+#include "geomint/core/compensated_sum.hpp"
 #include "geomint/integrators/explicit_euler.hpp"
 #include "geomint/core/integrate.hpp"
 #include "geomint/integrators/runge_kutta4.hpp"
@@ -47,6 +48,22 @@ TEST(RungeKutta4, OneStepOnOscillatorIsTheDegree4Rotation) {
   const auto z = runge_kutta4(HamiltonianField{HarmonicOscillator{}}, make_state(1.0, 0.5), h);
   EXPECT_NEAR(z.q[0], c * 1.0 + s * 0.5, 1e-15);
   EXPECT_NEAR(z.p[0], -s * 1.0 + c * 0.5, 1e-15);
+}
+
+// Kahan summation: 2^20 increments of the double nearest 0.1 sum to within an ulp (about 1.5e-11)
+// of their exact sum, where adding them one by one is off by about 1e-6.
+TEST(CompensatedSum, TwoToTheTwentyIncrementsWithinAnUlpOfTheExactSum) {
+  const double x = 0.1;
+  const long n = 1L << 20;
+  const double exact = x * static_cast<double>(n);  // (a power of two: exact)
+  double s = 0, c = 0, naive = 0;
+  for (long i = 0; i < n; ++i) {
+    compensated_add(s, c, x);
+    naive += x;
+  }
+  const double ulp = std::nextafter(exact, 2 * exact) - exact;
+  EXPECT_LE(std::abs(s - exact), ulp);
+  EXPECT_GT(std::abs(naive - exact), 1e4 * ulp);  // (the sum the compensation is there to avoid)
 }
 
 TEST(SymplecticEuler, PqOneStepOnOscillator) {
