@@ -9,7 +9,7 @@ tree with work in progress:
     git worktree add ../geomint-mutation && cd ../geomint-mutation
     tests/mutation/run_mutants.py --build build-mutation
 
-A rebuild and a ctest run per mutant take one to four minutes on two cores, so it is run on demand,
+A rebuild and a ctest run per mutant take seconds to four minutes on two cores, so it is run on demand,
 not by `make test`. The build compiles each test file on its own (see configure). Before the
 mutants, the unmodified tree must build and pass; its test times order the suite. For each mutant,
 the library's test executables are built and run one after the other (LIBRARY_TESTS), then the
@@ -292,8 +292,11 @@ def main():
     if base_failed:
         sys.exit(f"the unmodified tree fails tests ({', '.join(base_failed)}): nothing can be measured")
     phases = test_phases(args)
-    stages = [(target, checked_pattern(args, names, target))
-              for target, names in library_stages(ctest_tests(args), args.exclude)]
+    try:
+        stages = [(target, checked_pattern(args, names, target))
+                  for target, names in library_stages(ctest_tests(args), args.exclude)]
+    except ValueError as e:
+        sys.exit(f"cannot stage the library's tests: {e}")
 
     for i, m in enumerate(mutants, 1):
         if m["id"] in done:
