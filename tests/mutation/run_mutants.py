@@ -202,6 +202,62 @@ def library_stages(tests, exclude):
     return stages
 
 
+class BaselineOutputs:
+    """The baseline's build outputs, kept aside in <build>/mutation-baseline, so that after a mutant the
+    build is the baseline's again without a recompile. A mutated file gets a new mtime, so that its
+    dependents rebuild; restored to its text alone, it would keep a newer one, and the next mutant would
+    recompile every file that includes it, whether that mutant changes them or not (about a fifth of the
+    compiles of a whole run). So the restore puts back its text and its mtime, and every output that
+    differs from the baseline's (built from the mutant, or removed) is copied back from this store with its
+    mtime: every output then holds what the baseline built from the same text, and is newer than its
+    inputs. Only under Ninja, whose outputs `ninja -t targets all` lists; under make a mutated file's
+    dependents rebuild after it, as before."""
+
+    def __init__(self, build):
+        self.build, self.store, self.files = build, build / "mutation-baseline", {}
+
+    @staticmethod
+    def ninja_outputs(build):
+        """The files the build writes: the outputs of every non-phony edge under the build directory."""
+        out = subprocess.run(["ninja", "-C", str(build), "-t", "targets", "all"], capture_output=True, text=True,
+                             check=True).stdout
+        paths = set()
+        for line in out.splitlines():
+            target, _, rule = line.rpartition(": ")
+            path = (build / target).resolve()
+            if rule != "phony" and path.is_relative_to(build.resolve()) and path.is_file():
+                paths.add(path.relative_to(build.resolve()))
+        return sorted(paths)
+
+    def keep(self, outputs):
+        """Copies `outputs` (paths relative to the build directory) into the store, with their mtimes."""
+        shutil.rmtree(self.store, ignore_errors=True)
+        self.files = {}
+        for rel in outputs:
+            src, dst = self.build / rel, self.store / rel
+            dst.parent.mkdir(parents=True, exist_ok=True)
+            shutil.copy2(src, dst)
+            st = src.stat()
+            self.files[rel] = (st.st_mtime_ns, st.st_size)
+
+    def restore(self):
+        """Copies back every kept output that is missing or differs in mtime or size; returns how many."""
+        changed = 0
+        for rel, (mtime, size) in self.files.items():
+            path = self.build / rel
+            try:
+                st = path.stat()
+                if (st.st_mtime_ns, st.st_size) == (mtime, size):
+                    continue
+            except FileNotFoundError:
+                path.parent.mkdir(parents=True, exist_ok=True)
+            tmp = path.with_name(path.name + ".mutation-restore")
+            shutil.copy2(self.store / rel, tmp)
+            os.replace(tmp, path)  # (an executable being replaced is never half written)
+            changed += 1
+        return changed
+
+
 def remove_fixture_outputs(args):
     """The quick runs write into <build>/test-results (GEOMINT_TEST_RESULTS, tests/CMakeLists.txt), and
     the regression tests read them there. Without this, a test of one mutant could read files that an
@@ -292,6 +348,9 @@ def main():
     if base_failed:
         sys.exit(f"the unmodified tree fails tests ({', '.join(base_failed)}): nothing can be measured")
     phases = test_phases(args)
+    baseline = BaselineOutputs(args.build) if (args.build / "build.ninja").exists() else None
+    if baseline:
+        baseline.keep(BaselineOutputs.ninja_outputs(args.build))
     try:
         stages = [(target, checked_pattern(args, names, target))
                   for target, names in library_stages(ctest_tests(args), args.exclude)]
@@ -302,7 +361,7 @@ def main():
         if m["id"] in done:
             continue
         path = ROOT / m["file"]
-        original = path.read_bytes()
+        original, original_stat = path.read_bytes(), path.stat()
         start = time.monotonic()
         interrupted = None
         try:
@@ -328,6 +387,9 @@ def main():
         finally:
             signal.pthread_sigmask(signal.SIG_BLOCK, {signal.SIGTERM, signal.SIGINT})  # (a restore is never cut short)
             path.write_bytes(original)
+            if baseline:  # the baseline's text, mtime and outputs (BaselineOutputs)
+                os.utime(path, ns=(original_stat.st_atime_ns, original_stat.st_mtime_ns))
+                baseline.restore()
             signal.pthread_sigmask(signal.SIG_UNBLOCK, {signal.SIGTERM, signal.SIGINT})
         if interrupted:
             print("interrupted; the mutated file is restored", file=sys.stderr)

@@ -1,13 +1,16 @@
 #!/usr/bin/env python3
 """run_mutants.split_phases on made-up ctest test lists: a test never runs in a phase before the setup
 of a fixture it requires, so it cannot read outputs that an earlier run left; and library_stages
-gives each library test executable exactly the tests that run it."""
+gives each library test executable exactly the tests that run it; BaselineOutputs puts back the
+baseline's outputs that a mutant changed or removed, with their mtimes, and leaves the others alone."""
+import os
 import sys
+import tempfile
 import unittest
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from run_mutants import LIBRARY_TESTS, library_stages, split_phases  # noqa: E402
+from run_mutants import LIBRARY_TESTS, BaselineOutputs, library_stages, split_phases  # noqa: E402
 
 
 def entry(name, setup=(), requires=(), cleanup=(), command="/build/bin/geomint_regression_tests"):
@@ -80,6 +83,41 @@ class LibraryStages(unittest.TestCase):
     def test_an_executable_without_tests_is_refused(self):
         with self.assertRaises(ValueError):
             library_stages([entry("U.a", command="/b/bin/geomint_unit_tests")], exclude="^$")
+
+
+
+class KeptOutputs(unittest.TestCase):
+    def test_changed_and_removed_outputs_come_back_with_their_mtimes(self):
+        with tempfile.TemporaryDirectory() as d:
+            build = Path(d)
+            files = {Path("a.o"): b"baseline a", Path("sub/b.o"): b"baseline b", Path("bin/c"): b"baseline c"}
+            for rel, text in files.items():
+                (build / rel).parent.mkdir(parents=True, exist_ok=True)
+                (build / rel).write_bytes(text)
+                os.utime(build / rel, ns=(1_000_000_000, 1_000_000_000 + len(text)))
+            kept = BaselineOutputs(build)
+            kept.keep(sorted(files))
+            before = {rel: (build / rel).stat().st_mtime_ns for rel in files}
+            (build / "a.o").write_bytes(b"mutant a, longer")    # rebuilt from the mutant
+            (build / "sub/b.o").unlink()                        # removed (an interrupted build)
+            (build / "new.o").write_bytes(b"not an output of the baseline")
+            self.assertEqual(kept.restore(), 2)
+            for rel, text in files.items():
+                self.assertEqual((build / rel).read_bytes(), text)
+                self.assertEqual((build / rel).stat().st_mtime_ns, before[rel])
+            self.assertTrue((build / "new.o").exists())
+            self.assertEqual(kept.restore(), 0)  # nothing differs any more
+
+    def test_an_output_rewritten_with_the_same_size_is_restored(self):
+        with tempfile.TemporaryDirectory() as d:
+            build = Path(d)
+            (build / "x.o").write_bytes(b"12345")
+            os.utime(build / "x.o", ns=(5_000_000_000, 5_000_000_000))
+            kept = BaselineOutputs(build)
+            kept.keep([Path("x.o")])
+            (build / "x.o").write_bytes(b"54321")  # same size, a newer mtime
+            self.assertEqual(kept.restore(), 1)
+            self.assertEqual((build / "x.o").read_bytes(), b"12345")
 
 
 if __name__ == "__main__":

@@ -47,7 +47,7 @@ TEST_P(Verification, DeclaredOrdersBoundsAndProperties) {
     c->second(m);
   } else {
     FAIL() << "registered method " << m.name << " has no verification case: give it a generic binding "
-           << "(src/geomint/methods/methods.hpp) or a case in tests/verification/verification_test.cpp";
+           << "(src/geomint/methods/methods.hpp) or a case in tests/verification/special_cases.cpp";
   }
 }
 
