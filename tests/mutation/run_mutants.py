@@ -9,7 +9,7 @@ tree with work in progress:
     git worktree add ../geomint-mutation && cd ../geomint-mutation
     tests/mutation/run_mutants.py --build build-mutation
 
-A rebuild and a ctest run per mutant take seconds to four minutes on two cores, so it is run on demand,
+A rebuild and a ctest run per mutant take ten seconds to two and a half minutes on two cores, so it is run on demand,
 not by `make test`. The build compiles each test file on its own (see configure). Before the
 mutants, the unmodified tree must build and pass; its test times order the suite. For each mutant,
 the library's test executables are built and run one after the other (LIBRARY_TESTS), then the
