@@ -206,8 +206,8 @@ class BaselineOutputs:
     """The baseline's build outputs, kept aside in <build>/mutation-baseline, so that after a mutant the
     build is the baseline's again without a recompile. A mutated file gets a new mtime, so that its
     dependents rebuild; restored to its text alone, it would keep a newer one, and the next mutant would
-    recompile every file that includes it, whether that mutant changes them or not (about a fifth of the
-    compiles of a whole run). So the restore puts back its text and its mtime, and every output that
+    recompile every file that includes it, whether that mutant changes them or not (30 % of the
+    compile time of a whole run). So the restore puts back its text and its mtime, and every output that
     differs from the baseline's (built from the mutant, or removed) is copied back from this store with its
     mtime: every output then holds what the baseline built from the same text, and is newer than its
     inputs. Only under Ninja, whose outputs `ninja -t targets all` lists; under make a mutated file's
@@ -221,12 +221,12 @@ class BaselineOutputs:
         """The files the build writes: the outputs of every non-phony edge under the build directory."""
         out = subprocess.run(["ninja", "-C", str(build), "-t", "targets", "all"], capture_output=True, text=True,
                              check=True).stdout
-        paths = set()
+        root, paths = build.resolve(), set()
         for line in out.splitlines():
             target, _, rule = line.rpartition(": ")
-            path = (build / target).resolve()
-            if rule != "phony" and path.is_relative_to(build.resolve()) and path.is_file():
-                paths.add(path.relative_to(build.resolve()))
+            path = (root / target).resolve()
+            if rule != "phony" and path.is_relative_to(root) and path.is_file():
+                paths.add(path.relative_to(root))
         return sorted(paths)
 
     def keep(self, outputs):
@@ -282,9 +282,8 @@ def summarize(results, commit):
 def configure(args):
     """A mutation build compiles each test file on its own (GEOMINT_UNITY_TESTS=OFF): a mutant then
     recompiles the test files that include its header, not every batch one of them is in. Ninja, when
-    there is one, is used: under make a test file waits for the whole library, under ninja it may
-    compile beside the library's files (ninja 1.11, without critical-path scheduling, still starts
-    the 50-second verification file after them)."""
+    there is one, is used: under make a test file waits for the whole library, under ninja it
+    compiles beside the library's files (and BaselineOutputs can restore the build after a mutant)."""
     cmd = ["cmake", "-S", str(ROOT), "-B", str(args.build), "-DGEOMINT_UNITY_TESTS=OFF"]
     if not (args.build / "CMakeCache.txt").exists():
         cmd.append("-DCMAKE_BUILD_TYPE=Release")
