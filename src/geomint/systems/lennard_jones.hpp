@@ -86,13 +86,17 @@ struct LennardJones {
   // and j (for the others A = 0 and w = +-0; a sum that starts at +0 is never -0, so adding +-0 leaves
   // it as it is), so each pair is visited once and each entry takes its terms in the same order.
   // (Unlike the column sums, a non-finite G of one pair reaches only that pair's columns.)
+  // The A of column k, pair(e_k, i, j), for k = 2i, 2i + 1, 2j, 2j + 1, with its signed zeros.
+  static inline const std::array<Vec<2>, 4> kUnitPairs{Vec<2>(1.0, 0.0), Vec<2>(0.0, 1.0), Vec<2>(0.0 - 1.0, 0.0 - 0.0),
+                                                       Vec<2>(0.0 - 0.0, 0.0 - 1.0)};
   Mat<D> U_qq(const Vec<D>& q) const {
     Mat<D> J = Mat<D>::Zero();
     for_pairs(q, [&](int i, int j, const Vec<2>& d) {
       const auto g = G(d.squaredNorm());
-      for (const int k : {2 * i, 2 * i + 1, 2 * j, 2 * j + 1}) {
-        const Vec<2> w = hessian_pair(g, d, pair(Vec<D>::Unit(k), i, j));
-        J.template block<2, 1>(2 * i, k) += w, J.template block<2, 1>(2 * j, k) -= w;
+      const std::array<int, 4> columns{2 * i, 2 * i + 1, 2 * j, 2 * j + 1};
+      for (int c = 0; c < 4; ++c) {
+        const Vec<2> w = hessian_pair(g, d, kUnitPairs[c]);
+        J.template block<2, 1>(2 * i, columns[c]) += w, J.template block<2, 1>(2 * j, columns[c]) -= w;
       }
     });
     return J;
