@@ -390,6 +390,24 @@ TEST(EnergyMap, PlanSplitsTheMapAcrossRanks) {
   EXPECT_EQ(run_binary("energy_map", "--quick --ranks 2").code, 2);
 }
 
+// kernel_timing times the kernel on a sample of batches only when the map does not run in the same process (it takes
+// the map's wall time otherwise): the plan of the paper scene leaves the sample out (it was 22 s for a 0.5 s study),
+// and that of kernel_timing alone counts it.
+TEST(EnergyMap, PlanOfKernelTimingCountsTheSampleOnlyWithoutTheMap) {
+  const auto kernel_timing_wall = [](const std::string& args) {
+    const BinaryOutcome r = run_binary("energy_map", "--plan --json --threads 2 " + args);
+    EXPECT_EQ(r.code, 0) << r.err;
+    const nlohmann::json parsed = nlohmann::json::parse(r.out);
+    for (const auto& st : parsed["studies"])
+      if (st["study"] == "kernel_timing") return st["wall_s"].get<double>();
+    ADD_FAILURE() << r.out;
+    return 0.0;
+  };
+  const double with_map = kernel_timing_wall(""), alone = kernel_timing_wall("--study kernel_timing");
+  EXPECT_LT(with_map, 2.0);  // the scalar loop's protocol: 2 x 7 runs of >= 20 ms
+  EXPECT_GT(alone, 10 * with_map);  // + 2 x 8 calls of 32 batches of 250000 steps
+}
+
 // --resume with a checkpoint that counts more batches than the map has (it used to segfault), a header that is not
 // JSON, or a record log shorter than its header counts: exit 2, one line naming the file (and the field).
 TEST(EnergyMap, ResumeRefusesADamagedCheckpoint) {

@@ -116,6 +116,10 @@ struct StudyPlan {
   // The wall time and the steps of the runs it times under the timing protocol (runner/timing.hpp,
   // timing_plan), one after another on one thread; their steps are not in `steps`.
   double timed_seconds = 0, timed_steps = 0;
+  // The part of those runs that the study skips when the study `reuses` runs in the same process (it then
+  // takes that study's measurement instead; plan_json leaves the part out).
+  std::string reuses = {};
+  double reused_seconds = 0, reused_steps = 0;
 };
 
 struct Study {
