@@ -103,6 +103,10 @@ bool bounds_hull(const std::vector<Point4>& points, const std::vector<HullFacet>
   const auto [z, width, finite] = centred(points);  // the centroid is the origin from here on
   if (!finite) return false;
   const double margin = 1e-9 * width;
+  std::array<std::vector<double>, 4> columns;  // z by coordinate: the count over the points below vectorises
+  for (int k = 0; k < 4; ++k)
+    for (const Point4& p : z) columns[k].push_back(p[k]);
+  const double *z0 = columns[0].data(), *z1 = columns[1].data(), *z2 = columns[2].data(), *z3 = columns[3].data();
   for (const HullFacet& f : facets) {
     for (int v : f)
       if (v < 0 || static_cast<std::size_t>(v) >= n) return false;
@@ -125,11 +129,13 @@ bool bounds_hull(const std::vector<Point4>& points, const std::vector<HullFacet>
     if (!(w > margin)) return false;
     // the distance inside the hyperplane, w - u.z_i: round-off for the facet's own four vertices,
     // more than the margin for every other point
-    const auto inside = [&](std::size_t i) { return w - (u[0] * z[i][0] + u[1] * z[i][1] + u[2] * z[i][2] + u[3] * z[i][3]); };
+    const double u0 = u[0], u1 = u[1], u2 = u[2], u3 = u[3];
+    const auto inside = [=](std::size_t i) { return w - (u0 * z0[i] + u1 * z1[i] + u2 * z2[i] + u3 * z3[i]); };
     for (int v : f)
       if (!(std::abs(inside(static_cast<std::size_t>(v))) <= margin)) return false;
-    int near = 0;
-    for (std::size_t i = 0; i < n; ++i) near += !(inside(i) > margin);
+    double near = 0;  // (a double count: the comparisons and the sum in one vector width)
+#pragma omp simd reduction(+ : near)
+    for (std::size_t i = 0; i < n; ++i) near += inside(i) > margin ? 0.0 : 1.0;
     if (near != 4) return false;
   }
   return true;
