@@ -82,13 +82,14 @@ struct LennardJones {
     });
     return out;
   }
-  // Column k is U_qq_times(q, e_k) bit for bit: a pair (i, j) changes only the columns of particles i
-  // and j (for the others A = 0 and w = +-0; a sum that starts at +0 is never -0, so adding +-0 leaves
-  // it as it is), so each pair is visited once and each entry takes its terms in the same order.
-  // (Unlike the column sums, a non-finite G of one pair reaches only that pair's columns.)
   // The A of column k, pair(e_k, i, j), for k = 2i, 2i + 1, 2j, 2j + 1, with its signed zeros.
   static inline const std::array<Vec<2>, 4> kUnitPairs{Vec<2>(1.0, 0.0), Vec<2>(0.0, 1.0), Vec<2>(0.0 - 1.0, 0.0 - 0.0),
                                                        Vec<2>(0.0 - 0.0, 0.0 - 1.0)};
+  // Column k is U_qq_times(q, e_k) bit for bit: a pair (i, j) changes only the columns of particles i
+  // and j (for the others A = 0 and w = +-0; a sum that starts at +0 is never -0, so adding +-0 leaves
+  // it as it is), so each pair is visited once and each entry takes its terms in the same order.
+  // (Unlike the column sums, a non-finite G of one pair reaches only that pair's columns.) The A of
+  // those columns are the constants kUnitPairs, not differences of unit vectors of D entries.
   Mat<D> U_qq(const Vec<D>& q) const {
     Mat<D> J = Mat<D>::Zero();
     for_pairs(q, [&](int i, int j, const Vec<2>& d) {
