@@ -4,13 +4,12 @@
 #include <vector>
 
 #include "euler_compensation.hpp"
-#include "geomint/analysis/order_table.hpp"
+#include "geomint/analysis/convergence_study.hpp"
 #include "geomint/core/integrate.hpp"
 #include "geomint/integrators/explicit_euler.hpp"
 #include "geomint/methods/registry.hpp"
 #include "geomint/observables/error_norms.hpp"
 #include "geomint/observables/order_fit.hpp"
-#include "geomint/runner/fits.hpp"
 #include "geomint/runner/distributed_map.hpp"
 #include "geomint/runner/summary.hpp"
 #include "geomint/systems/exponential_decay.hpp"
@@ -44,46 +43,32 @@ void run_convergence(Context& ctx) {
     double ee_decay, ee_gompertz;
     auto fields() { return std::tie(osc, ee_decay, ee_gompertz); }
   };
-  const auto rows = distributed_map(hs.size(), [&](std::size_t i) {
-    const double h = hs[i];
-    const std::int64_t n = steps_to(t_end, h);
-    return Row{oscillator_runs(methods, z0, h, k, n), euler_max_err(decay, s.real("decay.y0"), h, n),
-               euler_max_err(gompertz, gy0, h, n)};
+  const auto rows = distributed_map(hs.size(), [&](std::size_t j) {
+    const std::int64_t n = steps_to(t_end, hs[j]);
+    return Row{oscillator_runs(methods, z0, hs[j], k, n), euler_max_err(decay, s.real("decay.y0"), hs[j], n),
+               euler_max_err(gompertz, gy0, hs[j], n)};
   });
-  // Columns: h, steps, then per method (by label) the max and the eq. (50) errors and the force evaluations.
-  std::vector<std::string> columns{"h", "steps"};
-  for (const char* suffix : {"_max", "_rms", "_evals"})
-    for (const auto& m : methods) columns.push_back(label_of(m) + suffix);
-  columns.insert(columns.end(), {"ee_decay_max", "ee_gompertz_max"});
-  Csv conv(columns);
-  std::vector<std::vector<double>> max_err(methods.size()), rms_err(methods.size());
-  std::vector<double> ee_decay, ee_gompertz;
-  for (std::size_t i = 0; i < hs.size(); ++i) {
-    const auto& runs = rows[i].osc;
-    conv << hs[i] << steps_to(t_end, hs[i]);
-    for (const auto& r : runs) conv << r.max_err;
-    for (const auto& r : runs) conv << r.rms_err;
-    for (const auto& r : runs) conv << r.force_evals;
-    conv.row(rows[i].ee_decay, rows[i].ee_gompertz);
+  std::vector<double> steps;
+  for (double h : hs) steps.push_back(static_cast<double>(steps_to(t_end, h)));
+  // Columns: per method (by label) the max and the eq. (50) errors and the force evaluations, then explicit Euler.
+  ConvergenceStudy conv({.csv = "fig9_convergence.csv", .h = hs, .steps = steps});
+  const auto per_method = [&](const char* suffix, auto field) {
     for (std::size_t m = 0; m < methods.size(); ++m)
-      max_err[m].push_back(runs[m].max_err), rms_err[m].push_back(runs[m].rms_err);
-    ee_decay.push_back(rows[i].ee_decay), ee_gompertz.push_back(rows[i].ee_gompertz);
-  }
-  ctx.write("fig9_convergence.csv", conv);
+      conv.column(label_of(methods[m]) + suffix, [&](std::size_t, std::size_t j) { return field(rows[j].osc[m]); });
+  };
+  per_method("_max", [](const EnergyRun& r) { return r.max_err; });
+  per_method("_rms", [](const EnergyRun& r) { return r.rms_err; });
+  per_method("_evals", [](const EnergyRun& r) { return static_cast<double>(r.force_evals); });
+  conv.column("ee_decay_max", [&](std::size_t, std::size_t j) { return rows[j].ee_decay; })
+      .column("ee_gompertz_max", [&](std::size_t, std::size_t j) { return rows[j].ee_gompertz; });
 
   // Orders: least squares on log-log over the points above round-off.
+  conv.fit("ee_decay", "ee_decay_max", roundoff_floor(s.real("decay.y0")))
+      .fit("ee_gompertz", "ee_gompertz_max", roundoff_floor(gompertz.equilibrium()));
   const double floor = roundoff_floor(std::max(H0, 1.0));
-  OrderTable orders;
-  const auto fit = [&](const std::string& name, const std::string& column, const std::vector<double>& err, double fl) {
-    record_order_fit(ctx.summary, "orders." + name, {"fig9_convergence.csv", "h", column}, orders.fit(name, hs, err, fl), fl);
-  };
-  fit("ee_decay", "ee_decay_max", ee_decay, roundoff_floor(s.real("decay.y0")));
-  fit("ee_gompertz", "ee_gompertz_max", ee_gompertz, roundoff_floor(gompertz.equilibrium()));
-  for (std::size_t m = 0; m < methods.size(); ++m) fit(label_of(methods[m]) + "_energy", label_of(methods[m]) + "_max", max_err[m], floor);
-  for (std::size_t m = 0; m < methods.size(); ++m) fit(label_of(methods[m]) + "_energy_rms", label_of(methods[m]) + "_rms", rms_err[m], floor);
-  ctx.write("orders.csv", orders.csv());
-  ctx.summary["orders"] = orders.orders();
-  ctx.summary["fits"] = orders.fits();
+  for (const auto& m : methods) conv.fit(label_of(m) + "_energy", label_of(m) + "_max", floor);
+  for (const auto& m : methods) conv.fit(label_of(m) + "_energy_rms", label_of(m) + "_rms", floor);
+  conv.write(ctx);
   ctx.summary["norms"] = {
       {"energy", "max over t_j = j h in [0, convergence.t_end] of |H(q_j, p_j) - H(q_0, p_0)|; *_rms: eq. (50)"},
       {"ee", "max over t_j in [0, convergence.t_end] of |y_j - y(t_j)|"},

@@ -8,14 +8,13 @@
 #include <tuple>
 #include <vector>
 
+#include "geomint/analysis/convergence_study.hpp"
 #include "geomint/core/integrate.hpp"
 #include "geomint/integrators/galerkin_variational.hpp"
 #include "geomint/methods/by_name.hpp"
 #include "geomint/methods/registry.hpp"
 #include "geomint/methods/scene_methods.hpp"
 #include "geomint/observables/error_norms.hpp"
-#include "geomint/observables/order_fit.hpp"
-#include "geomint/runner/fits.hpp"
 #include "geomint/observables/symplecticity.hpp"
 #include "geomint/reference/odeint_reference.hpp"
 #include "geomint/runner/distributed_map.hpp"
@@ -81,37 +80,29 @@ void run_nonlinear(Context& ctx) {
           MethodsOn<NonlinearPendulum>::integrate(m, pend, pz0, h, n), pref));
     return r;
   });
-  std::vector<std::string> columns = {"h", "pendulum_err", "pendulum_newton_iterations", "elastic_err",
-                                      "elastic_newton_iterations"};
-  for (const auto& m : methods) columns.push_back(label_of(m) + "_pendulum_err");
-  Csv nl(columns);
-  std::vector<double> e_p, e_e;
-  std::vector<std::vector<double>> e_m(methods.size());
-  for (std::size_t i = 0; i < nh.size(); ++i) {
-    const auto& r = rows[i];
-    bool finite = std::isfinite(r.pendulum_err) && std::isfinite(r.elastic_err);
-    for (double e : r.compared) finite = finite && std::isfinite(e);
+  for (std::size_t j = 0; j < nh.size(); ++j) {
+    bool finite = std::isfinite(rows[j].pendulum_err) && std::isfinite(rows[j].elastic_err);
+    for (double e : rows[j].compared) finite = finite && std::isfinite(e);
     if (!finite)
-      throw NumericalFailure("study nonlinear: a non-finite error at h = " + format_double(nh[i]) + ", t = " +
+      throw NumericalFailure("study nonlinear: a non-finite error at h = " + format_double(nh[j]) + ", t = " +
                              format_double(t_end) + " (pendulum, elastic pendulum or one of nonlinear.methods)");
-    nl << nh[i] << r.pendulum_err << r.pendulum_iterations << r.elastic_err << r.elastic_iterations;
-    for (std::size_t k = 0; k < methods.size(); ++k) nl << r.compared[k], e_m[k].push_back(r.compared[k]);
-    nl.end_row();
-    e_p.push_back(r.pendulum_err), e_e.push_back(r.elastic_err);
   }
-  ctx.write("nonlinear.csv", nl);
-  const double nfloor = kReferenceFloorFactor * atol;
-  json orders = json::object(), fits = json::object();
-  const auto fit = [&](const std::string& key, const std::string& column, const std::vector<double>& err) {
-    const OrderFit f = fit_order(nh, err, nfloor, key.c_str());
-    orders[key] = f.order, fits[key] = to_json(f);
-    record_order_fit(ctx.summary, "orders." + key, {"nonlinear.csv", "h", column}, f, nfloor);
-  };
-  fit("lobatto_nonlinear_pendulum", "pendulum_err", e_p);
-  fit("lobatto_elastic_pendulum", "elastic_err", e_e);
+  // nonlinear.csv and the orders fitted over the errors above the reference's accuracy.
+  std::vector<double> steps;
+  for (double h : nh) steps.push_back(static_cast<double>(steps_to(t_end, h)));
+  ConvergenceStudy conv({.csv = "nonlinear.csv", .h = nh, .steps = steps, .orders_csv = "nonlinear_orders.csv"});
+  conv.column("pendulum_err", [&](std::size_t, std::size_t j) { return rows[j].pendulum_err; })
+      .column("pendulum_newton_iterations", [&](std::size_t, std::size_t j) { return rows[j].pendulum_iterations; })
+      .column("elastic_err", [&](std::size_t, std::size_t j) { return rows[j].elastic_err; })
+      .column("elastic_newton_iterations", [&](std::size_t, std::size_t j) { return rows[j].elastic_iterations; });
   for (std::size_t k = 0; k < methods.size(); ++k)
-    fit(label_of(methods[k]) + "_nonlinear_pendulum", label_of(methods[k]) + "_pendulum_err", e_m[k]);
-  merge(ctx.summary, "orders", orders);
+    conv.column(label_of(methods[k]) + "_pendulum_err", [&](std::size_t, std::size_t j) { return rows[j].compared[k]; });
+  const double nfloor = kReferenceFloorFactor * atol;
+  const std::string below = "at the reference's accuracy (" + format_double(kReferenceFloorFactor) + " reference.atol)";
+  conv.fit("lobatto_nonlinear_pendulum", "pendulum_err", nfloor, below)
+      .fit("lobatto_elastic_pendulum", "elastic_err", nfloor, below);
+  for (const auto& m : methods) conv.fit(label_of(m) + "_nonlinear_pendulum", label_of(m) + "_pendulum_err", nfloor, below);
+  conv.write(ctx);
   std::vector<double> it_p, it_e;
   for (const auto& r : rows) it_p.push_back(r.pendulum_iterations), it_e.push_back(r.elastic_iterations);
   ctx.summary["methods"]["nonlinear"] = labels_of(methods);
@@ -119,7 +110,7 @@ void run_nonlinear(Context& ctx) {
                               {"error_floor", nfloor},
                               {"error_floor_over_atol", kReferenceFloorFactor},
                               {"newton_iterations", {{"pendulum", range_of(it_p)}, {"elastic", range_of(it_e)}}},
-                              {"fits", fits}};
+                              {"fits", conv.fits()}};
   // Symplecticity of the nonlinear one-step maps: max |J^T Omega J - Omega|.
   ctx.summary["reproduced"]["symplecticity_defect_pendulum"] =
       symplecticity_defect(galerkin_step_jacobian(lob, pend, pz0, nh.front()));
@@ -150,7 +141,7 @@ void keys(Schema& s) {
 }  // namespace
 
 Study nonlinear_study() {
-  return {"nonlinear", "nonlinear Lagrangians (Newton): order 6, symplecticity", {"nonlinear.csv"},
+  return {"nonlinear", "nonlinear Lagrangians (Newton): order 6, symplecticity", {"nonlinear.csv", "nonlinear_orders.csv"},
           {"nonlinear", "reference"}, check_nonlinear, run_nonlinear, plan_nonlinear, keys};
 }
 

@@ -13,8 +13,7 @@
 #include "geomint/methods/by_name.hpp"
 #include "geomint/methods/registry.hpp"
 #include "geomint/methods/scene_methods.hpp"
-#include "geomint/observables/order_fit.hpp"
-#include "geomint/runner/fits.hpp"
+#include "geomint/analysis/convergence_study.hpp"
 #include "lobatto_table.hpp"
 #include "trajectory.hpp"
 
@@ -81,10 +80,7 @@ void run_table1(Context& ctx) {
   const Oscillator o = oscillator(s);
   const auto& [osc, A, T, z0] = o;
   const auto methods = s.texts("table1.methods");
-  std::vector<std::string> columns = {"N", "h", "p_err", "q_err", "H_err", "Hd_err"};
-  for (const auto& m : methods) columns.push_back(label_of(m) + "_q_err");
-  Csv t1(columns);
-  std::vector<double> hs, ep, eq, eH, eHd, Hd0s, e12;
+  std::vector<double> hs, Ns, ep, eq, eH, eHd, Hd0s, e12;
   std::vector<std::vector<double>> em(methods.size());
   json reproduced = json::object();
   for (double Nd : s.reals("meshes")) {
@@ -100,36 +96,27 @@ void run_table1(Context& ctx) {
       p = std::max(p, std::abs(zl.p[0] - ex.p[0])), q = std::max(q, std::abs(zl.q[0] - ex.q[0]));
       H = std::max(H, std::abs(osc.H(zl) - H0)), Hd = std::max(Hd, std::abs(discrete_energy(Phi, zl) - Hd0));
     }
-    t1 << N << h << p << q << H << Hd;
-    for (std::size_t k = 0; k < methods.size(); ++k) {
-      const double e = max_q_error(trajectory(methods[k], osc, z0, h, N), o, h);
-      t1 << e;
-      em[k].push_back(e);
-    }
-    t1.end_row();
+    for (std::size_t k = 0; k < methods.size(); ++k) em[k].push_back(max_q_error(trajectory(methods[k], osc, z0, h, N), o, h));
     const std::string n = std::to_string(N);  // the errors by N
     reproduced["p_err"][n] = p, reproduced["q_err"][n] = q, reproduced["H_err"][n] = H, reproduced["Hd_err"][n] = Hd;
-    hs.push_back(h), ep.push_back(p), eq.push_back(q), eH.push_back(H), eHd.push_back(Hd), Hd0s.push_back(Hd0);
+    hs.push_back(h), Ns.push_back(Nd), ep.push_back(p), eq.push_back(q), eH.push_back(H), eHd.push_back(Hd), Hd0s.push_back(Hd0);
     // 001 eq. (12) as printed, iterated as a scheme of its own (it is not (13)-(14): see the unit tests)
     e12.push_back(max_q_error(iterate_pq(lobatto_map_12(h, osc.m, osc.w, Eq12::printed), z0, N), o, h));
   }
-  ctx.write("table1.csv", t1);
-  const double floor = roundoff_floor();
-  json orders = json::object();
-  const auto fit = [&](const std::string& key, const std::string& column, const std::vector<double>& err) {
-    const OrderFit f = fit_order(hs, err, floor, key.c_str());
-    orders[key] = f.order;
-    record_order_fit(ctx.summary, "orders." + key, {"table1.csv", "h", column}, f, floor);
+  // table1.csv (h, steps N, the errors) and the orders fitted to them over the errors above round-off.
+  ConvergenceStudy conv({.csv = "table1.csv", .h = hs, .steps = Ns, .orders_csv = "table1_orders.csv"});
+  const auto column = [&](const std::string& name, const std::vector<double>& err) {
+    conv.column(name, [&](std::size_t, std::size_t j) { return err[j]; });
   };
-  fit("lobatto_p", "p_err", ep);
-  fit("lobatto_q", "q_err", eq);
-  fit("lobatto_H", "H_err", eH);
-  for (std::size_t k = 0; k < methods.size(); ++k) fit(label_of(methods[k]), label_of(methods[k]) + "_q_err", em[k]);
-  orders["lobatto_printed_eq12_q"] = fit_order(hs, e12, floor, "lobatto_printed_eq12_q").order;
-  record_unfittable(ctx.summary, "orders.lobatto_printed_eq12_q",
-                    "the errors of eq. (12) as printed are not written to a CSV (the scheme is not a method of the table)");
+  column("p_err", ep), column("q_err", eq), column("H_err", eH), column("Hd_err", eHd);
+  for (std::size_t k = 0; k < methods.size(); ++k) column(label_of(methods[k]) + "_q_err", em[k]);
+  column("printed_eq12_q_err", e12);
+  const double floor = roundoff_floor();
+  conv.fit("lobatto_p", "p_err", floor).fit("lobatto_q", "q_err", floor).fit("lobatto_H", "H_err", floor);
+  for (const auto& m : methods) conv.fit(label_of(m), label_of(m) + "_q_err", floor);
+  conv.fit("lobatto_printed_eq12_q", "printed_eq12_q_err", floor);
+  conv.write(ctx);
   merge(ctx.summary, "reproduced", reproduced);
-  merge(ctx.summary, "orders", orders);
   ctx.summary["norms"]["table1"] = "max over the steps j = 1..N of one period of the absolute error (p, q, H, H_d)";
   // H_d(0) (15) per mesh, the H_d errors relative to it and their range; the compared methods' errors;
   // the comparison with the printed digits.
@@ -162,7 +149,7 @@ void keys(Schema& s) {
 }  // namespace
 
 Study table1_study() {
-  return {"table1", "001 Table 1", {"table1.csv"}, {"meshes", "oscillator", "table1"}, check_table1, run_table1,
+  return {"table1", "001 Table 1", {"table1.csv", "table1_orders.csv"}, {"meshes", "oscillator", "table1"}, check_table1, run_table1,
           plan_table1, keys};
 }
 

@@ -14,14 +14,13 @@
 #include <utility>
 #include <vector>
 
-#include "geomint/analysis/order_table.hpp"
+#include "geomint/analysis/convergence_study.hpp"
 #include "geomint/core/integrate.hpp"
 #include "geomint/core/numerical_failure.hpp"
 #include "geomint/methods/by_name.hpp"
 #include "geomint/methods/registry.hpp"
 #include "geomint/observables/error_norms.hpp"
 #include "geomint/observables/order_fit.hpp"
-#include "geomint/runner/fits.hpp"
 #include "geomint/reference/odeint_reference.hpp"
 #include "geomint/runner/distributed_map.hpp"
 #include "geomint/systems/counting.hpp"
@@ -149,7 +148,7 @@ std::vector<Ref> references(Context& ctx, const Sys& sys, const std::vector<std:
   return refs;
 }
 
-// Convergence: one task per (initial condition, h), all methods in it (fig4_convergence.csv).
+// Convergence: one task per (initial condition, h), all methods in it.
 // runs[i * hs.size() + j][k]: initial condition i, step hs[j], method k.
 template <class Sys>
 std::vector<std::vector<Errors>> convergence_runs(Context& ctx, const Sys& sys, const std::vector<double>& hs,
@@ -158,7 +157,7 @@ std::vector<std::vector<Errors>> convergence_runs(Context& ctx, const Sys& sys, 
                                                   double t_end, const std::vector<Ref>& refs) {
   ctx.progress("Fig. 4: convergence");
   const std::size_t nh = hs.size();
-  const auto runs = distributed_map(initial.size() * nh, [&](std::size_t task) {
+  return distributed_map(initial.size() * nh, [&](std::size_t task) {
     const std::size_t i = task / nh;
     const double h = hs[task % nh];
     std::vector<Errors> out;
@@ -167,73 +166,57 @@ std::vector<std::vector<Errors>> convergence_runs(Context& ctx, const Sys& sys, 
                                     steps_to(t_end, h), obs));
     return out;
   });
-  std::vector<std::string> columns = {"initial", "h", "steps"};
-  for (const auto& m : methods) {
-    if (obs.energy) columns.insert(columns.end(), {label_of(m) + "_energy_rms", label_of(m) + "_energy_max"});
-    if (obs.phase) columns.push_back(label_of(m) + "_phase");
-    columns.push_back(label_of(m) + "_evals");
-  }
-  Csv conv(columns);
-  for (std::size_t task = 0; task < runs.size(); ++task) {
-    conv << static_cast<std::int64_t>(task / nh) << hs[task % nh] << steps_to(t_end, hs[task % nh]);
-    for (const auto& e : runs[task]) {
-      if (obs.energy) conv << e.energy_rms << e.energy_max;
-      if (obs.phase) conv << e.phase;
-      conv << e.force_evals;
-    }
-    conv.end_row();
-  }
-  ctx.write("fig4_convergence.csv", conv);
-  return runs;
 }
 
-// The fitted orders: per initial condition {name + norm suffix: order}, the fits of initial[0], and
-// the smallest phase error plotted.
+// fig4_convergence.csv and the orders fitted per initial condition and norm (orders.csv); the
+// reference's error bounds what can be fitted of the phase error.
+template <class Sys>
+ConvergenceStudy convergence_table(const Sys& sys, const std::vector<double>& hs, double t_end,
+                                   const std::vector<std::vector<double>>& initial,
+                                   const std::vector<std::string>& methods, Observables obs,
+                                   const std::vector<std::vector<Errors>>& runs, double self_check) {
+  std::vector<double> steps;
+  for (double h : hs) steps.push_back(static_cast<double>(steps_to(t_end, h)));
+  ConvergenceStudy conv({.csv = "fig4_convergence.csv", .h = hs, .steps = steps, .initials = initial.size()});
+  for (std::size_t k = 0; k < methods.size(); ++k) {
+    const auto column = [&](const char* suffix, auto field) {
+      conv.column(label_of(methods[k]) + suffix, [&](std::size_t i, std::size_t j) { return field(runs[i * hs.size() + j][k]); });
+    };
+    if (obs.energy) {
+      column("_energy_rms", [](const Errors& e) { return e.energy_rms; });
+      column("_energy_max", [](const Errors& e) { return e.energy_max; });
+    }
+    if (obs.phase) column("_phase", [](const Errors& e) { return e.phase; });
+    column("_evals", [](const Errors& e) { return static_cast<double>(e.force_evals); });
+  }
+  const auto energy_floor = [&](std::size_t i) { return roundoff_floor() * std::max(std::abs(sys.H(state_of(initial[i]))), 1.0); };
+  const double phase_floor = std::max(100.0 * self_check, roundoff_floor());
+  for (const auto& m : methods) {  // (the CSV's columns by label)
+    if (obs.energy)
+      conv.fit(order_name(m) + "_energy", label_of(m) + "_energy_rms", energy_floor)
+          .fit(order_name(m) + "_energy_max", label_of(m) + "_energy_max", energy_floor);
+    if (obs.phase)
+      conv.fit(order_name(m) + "_phase", label_of(m) + "_phase", phase_floor, "round-off or the reference's accuracy");
+  }
+  return conv;
+}
+
+// The fitted orders per initial condition ({name + norm suffix: order}), and the smallest phase error plotted.
 struct Orders {
-  json by_initial, fits;
+  json by_initial;
   double min_phase;
 };
 
-// Orders, per initial condition (orders.csv); the reference error bounds what can be fitted.
-template <class Sys>
-Orders fit_orders(Context& ctx, const Sys& sys, const std::vector<double>& hs,
-                  const std::vector<std::vector<double>>& initial, const std::vector<std::string>& methods,
-                  Observables obs, const std::vector<std::vector<Errors>>& runs, double self_check) {
-  const std::size_t nh = hs.size();
-  const double energy_floor = roundoff_floor();
-  const double phase_floor = std::max(100.0 * self_check, energy_floor);
-  OrderTable table;
+Orders orders_of(const ConvergenceStudy& conv, std::size_t n_initial, const std::vector<std::string>& methods, Observables obs) {
   json by_initial = json::array();
   double min_phase = std::numeric_limits<double>::infinity();  // smallest phase error plotted
-  for (std::size_t i = 0; i < initial.size(); ++i) {
-    for (std::size_t k = 0; k < methods.size(); ++k) {
-      const std::string name = order_name(methods[k]), column = label_of(methods[k]);  // (the CSV's columns by label)
-      std::vector<double> rms, mx, ph;
-      for (std::size_t j = 0; j < nh; ++j) {
-        const Errors& e = runs[i * nh + j][k];
-        rms.push_back(e.energy_rms), mx.push_back(e.energy_max), ph.push_back(e.phase);
-      }
-      const double H0 = std::abs(sys.H(state_of(initial[i])));
-      const int ic = static_cast<int>(i);
-      const auto record = [&](const std::string& order, const std::string& csv_column, const OrderFit& f, double floor) {
-        record_order_fit(ctx.summary, "orders_by_initial." + std::to_string(i) + "." + order,
-                         {"fig4_convergence.csv", "h", csv_column, {{"initial", std::to_string(i)}}}, f, floor);
-      };
-      if (obs.energy) {
-        const double floor = energy_floor * std::max(H0, 1.0);
-        record(name + "_energy", column + "_energy_rms", table.fit(name + "_energy", hs, rms, floor, ic), floor);
-        record(name + "_energy_max", column + "_energy_max", table.fit(name + "_energy_max", hs, mx, floor, ic), floor);
-      }
-      if (obs.phase) {
-        record(name + "_phase", column + "_phase",
-               table.fit(name + "_phase", hs, ph, phase_floor, ic, "round-off or the reference's accuracy"), phase_floor);
-        for (double e : ph) min_phase = std::min(min_phase, e);
-      }
-    }
-    by_initial.push_back(table.orders(static_cast<int>(i)));
+  for (std::size_t i = 0; i < n_initial; ++i) {
+    by_initial.push_back(conv.orders(i));
+    if (obs.phase)
+      for (const auto& m : methods)
+        for (double e : conv.values(label_of(m) + "_phase", i)) min_phase = std::min(min_phase, e);
   }
-  ctx.write("orders.csv", table.csv());
-  return {by_initial, table.fits(0), min_phase};
+  return {by_initial, min_phase};
 }
 
 // What the study reports in summary.json: the reference's margin, the orders and their ranges, the
@@ -242,7 +225,7 @@ void summarize(Context& ctx, const std::vector<double>& hs, std::size_t n_initia
                const std::vector<std::string>& methods, Observables obs, const std::vector<std::vector<Errors>>& runs,
                const Orders& orders, double self_check) {
   const Scene& s = ctx.scene;
-  const auto& [by_initial, fits, min_phase] = orders;
+  const auto& [by_initial, min_phase] = orders;  // (in the summary already: ConvergenceStudy::write)
   json reproduced;
   if (obs.phase) {
     reproduced["reference_self_check"] = self_check;
@@ -250,9 +233,6 @@ void summarize(Context& ctx, const std::vector<double>& hs, std::size_t n_initia
   }
 
   if (!reproduced.empty()) ctx.summary["reproduced"] = reproduced;
-  ctx.summary["orders"] = by_initial[0];
-  ctx.summary["orders_by_initial"] = by_initial;
-  ctx.summary["fits"] = fits;
   json norms;
   if (obs.energy) {
     norms["energy"] = "eq. (50): sqrt(sum_{j=0}^{N} (H(z_j) - H(z_0))^2 / N), z_j postprocessed at every step";
@@ -280,7 +260,9 @@ void convergence_with(Context& ctx, const Sys& sys) {
   double self_check = 0;
   const auto refs = references(ctx, sys, initial, obs, t_end, rtol, atol, self_check);
   const auto runs = convergence_runs(ctx, sys, hs, initial, methods, obs, t_end, refs);
-  const Orders orders = fit_orders(ctx, sys, hs, initial, methods, obs, runs, self_check);
+  const ConvergenceStudy conv = convergence_table(sys, hs, t_end, initial, methods, obs, runs, self_check);
+  conv.write(ctx);
+  const Orders orders = orders_of(conv, initial.size(), methods, obs);
   summarize(ctx, hs, initial.size(), methods, obs, runs, orders, self_check);
 }
 

@@ -2,8 +2,8 @@
 // scanned stable set (analysis/linear_stability.hpp), the area of a convex hull in the plane
 // (geometry/convex_area.hpp), Poincare cuts (analysis/poincare.hpp) and the crossing of two
 // work-precision curves, the rule of equal cost and the work-precision set of every cost study
-// (analysis/work_precision.hpp, analysis/work_precision_set.hpp), and the order table of every
-// convergence study (analysis/order_table.hpp).
+// (analysis/work_precision.hpp, analysis/work_precision_set.hpp), and the convergence study of every
+// order figure and table (analysis/convergence_study.hpp).
 #include <array>
 #include <cmath>
 #include <map>
@@ -16,7 +16,7 @@
 #include "../hard_case.hpp"
 
 #include "geomint/analysis/linear_stability.hpp"
-#include "geomint/analysis/order_table.hpp"
+#include "geomint/analysis/convergence_study.hpp"
 #include "geomint/analysis/poincare.hpp"
 #include "geomint/analysis/work_precision.hpp"
 #include "geomint/analysis/work_precision_set.hpp"
@@ -265,29 +265,55 @@ TEST(WorkPrecisionSet, TimesTheRecordsAddedWithARun) {
   EXPECT_GE(calls, 1 + 1 + 7);  // a warm-up, a calibration run, the rounds
 }
 
-TEST(OrderTable, FitsEachSeriesPerInitialConditionInOneShape) {
-  const std::vector<double> h{0.1, 0.05, 0.025, 0.0125};
-  std::vector<double> quadratic, quartic;
-  for (double x : h) quadratic.push_back(3 * x * x), quartic.push_back(x * x * x * x);
-  OrderTable t;
-  t.fit("a_energy", h, quadratic, 1e-13);
-  t.fit("a_energy", h, quartic, 1e-13, 1);
-  EXPECT_NEAR(t.orders()["a_energy"].get<double>(), 2.0, 1e-12);
-  EXPECT_NEAR(t.orders(1)["a_energy"].get<double>(), 4.0, 1e-12);
-  EXPECT_NEAR(t.fits()["a_energy"]["log10_c"].get<double>(), std::log10(3.0), 1e-12);
-  EXPECT_EQ(t.fits(1)["a_energy"]["points"], 4);
-  const Csv csv = t.csv();
-  EXPECT_EQ(csv.rows(), 2u);
-  EXPECT_EQ(csv.str().substr(0, csv.str().find('\n')), "initial,name,order,log10_c,r2,points,h_min,h_max");
-  EXPECT_EQ(csv.str().substr(csv.str().rfind('\n', csv.str().size() - 2) + 1, 11), "1,a_energy,");
+// Two initial conditions, four steps: err = 3 h^2 (condition 0) and h^4 (condition 1), and a
+// column that is not fitted.
+ConvergenceStudy two_conditions() {
+  ConvergenceStudy conv({.csv = "conv.csv", .h = {0.1, 0.05, 0.025, 0.0125}, .steps = {10, 20, 40, 80}, .initials = 2});
+  conv.column("a_err", [](std::size_t i, std::size_t j) {
+        const double h = 0.1 / std::pow(2.0, static_cast<double>(j));
+        return i == 0 ? 3 * h * h : h * h * h * h;
+      })
+      .column("a_evals", [](std::size_t i, std::size_t j) { return static_cast<double>(10 * (i + 1) << j); });
+  return conv;
 }
 
-TEST(OrderTable, RefusesASeriesWithFewerThanThreePointsAboveItsFloorNamingIt) {
-  OrderTable t;
-  const std::vector<double> h{0.1, 0.05, 0.025, 0.0125}, err{1e-3, 1e-4, 1e-16, 1e-17};
-  EXPECT_REFUSAL_OF(NumericalFailure, "an order fit with two of four points above the floor 1e-14",
-                    t.fit("sv_phase", h, err, 1e-14, 2, "round-off or the reference's accuracy"),
-                    {"sv_phase", "initial condition 2", "reference's accuracy"});
+TEST(ConvergenceStudy, FitsEachColumnPerInitialConditionInOneShape) {
+  ConvergenceStudy conv = two_conditions();
+  conv.fit("a_energy", "a_err", 1e-13).fit("a_energy_high", "a_err", [](std::size_t i) { return i == 0 ? 1e-13 : 1e-7; });
+  EXPECT_NEAR(conv.orders()["a_energy"].get<double>(), 2.0, 1e-12);
+  EXPECT_NEAR(conv.orders(1)["a_energy"].get<double>(), 4.0, 1e-12);
+  EXPECT_NEAR(conv.fits()["a_energy"]["log10_c"].get<double>(), std::log10(3.0), 1e-12);
+  EXPECT_EQ(conv.fits(1)["a_energy"]["points"], 4);
+  EXPECT_EQ(conv.order("a_energy_high", 1).points, 3);  // h^4 = 2.4e-8 < 1e-7 at the smallest h: left out
+  EXPECT_EQ(conv.order("a_energy_high", 1).h_min, 0.025);
+  EXPECT_EQ(conv.values("a_evals", 1), (std::vector<double>{20, 40, 80, 160}));
+  // The runs' CSV: initial, h, steps, the columns; one row per (initial condition, h).
+  const std::string runs = conv.csv().str();
+  EXPECT_EQ(runs.substr(0, runs.find('\n')), "initial,h,steps,a_err,a_evals");
+  EXPECT_EQ(conv.csv().rows(), 8u);
+  EXPECT_NE(runs.find("\n1,0.012500000000000001,80,2.4414062500000004e-08,160\n"), std::string::npos) << runs;
+  // orders.csv: by initial condition, then in the order fitted.
+  const std::string orders = conv.orders_csv().str();
+  EXPECT_EQ(orders.substr(0, orders.find('\n')), "initial,name,order,log10_c,r2,points,h_min,h_max");
+  std::vector<std::string> keys;
+  for (std::size_t at = orders.find('\n') + 1; at < orders.size(); at = orders.find('\n', at) + 1)
+    keys.push_back(orders.substr(at, orders.find(',', orders.find(',', at) + 1) - at));
+  EXPECT_EQ(keys, (std::vector<std::string>{"0,a_energy", "0,a_energy_high", "1,a_energy", "1,a_energy_high"}));
+}
+
+TEST(ConvergenceStudy, OneInitialConditionHasNoInitialColumn) {
+  ConvergenceStudy conv({.csv = "conv.csv", .h = {0.1, 0.05, 0.025}, .steps = {10, 20, 40}});
+  conv.column("e", [](std::size_t, std::size_t j) { return 1.0 / static_cast<double>(1 << j); }).fit("e", "e", 0.0);
+  EXPECT_EQ(conv.csv().str(), "h,steps,e\n0.10000000000000001,10,1\n0.050000000000000003,20,0.5\n0.025000000000000001,40,0.25\n");
+  EXPECT_NEAR(conv.orders()["e"].get<double>(), 1.0, 1e-12);
+}
+
+TEST(ConvergenceStudy, RefusesASeriesWithFewerThanThreePointsAboveItsFloorNamingIt) {
+  ConvergenceStudy conv = two_conditions();
+  EXPECT_REFUSAL_OF(NumericalFailure, "an order fit with two of four points above the floor 1e-6 (condition 1)",
+                    conv.fit("sv_phase", "a_err", 1e-6, "round-off or the reference's accuracy"),
+                    {"sv_phase", "initial condition 1", "reference's accuracy"});
+  EXPECT_REFUSAL_OF(std::logic_error, "a fit of a column that was not added", conv.fit("b", "b_err", 0.0), {"no column b_err"});
 }
 
 TEST(PoincareSection, UpwardCutInterpolatesTheStepLinearly) {
