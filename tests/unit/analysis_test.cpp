@@ -291,7 +291,7 @@ TEST(ConvergenceStudy, FitsEachColumnPerInitialConditionInOneShape) {
   const std::string runs = conv.csv().str();
   EXPECT_EQ(runs.substr(0, runs.find('\n')), "initial,h,steps,a_err,a_evals");
   EXPECT_EQ(conv.csv().rows(), 8u);
-  EXPECT_NE(runs.find("\n1,0.012500000000000001,80,2.4414062500000004e-08,160\n"), std::string::npos) << runs;
+  EXPECT_NE(runs.find("\n1,0.012500000000000001,80,2.4414062500000008e-08,160\n"), std::string::npos) << runs;
   // orders.csv: by initial condition, then in the order fitted.
   const std::string orders = conv.orders_csv().str();
   EXPECT_EQ(orders.substr(0, orders.find('\n')), "initial,name,order,log10_c,r2,points,h_min,h_max");
