@@ -10,10 +10,9 @@
 #include <vector>
 
 #include "energy_map.hpp"
+#include "geomint/analysis/convergence_study.hpp"
 #include "geomint/core/state.hpp"
 #include "geomint/integrators/symplectic_euler.hpp"
-#include "geomint/observables/order_fit.hpp"
-#include "geomint/runner/fits.hpp"
 #include "geomint/runner/distributed_map.hpp"
 #include "geomint/systems/elastic_pendulum.hpp"
 #include "geomint/transforms/polar.hpp"
@@ -62,12 +61,11 @@ void run_first_integrals(Context& ctx) {
     }
     return worst;
   });
-  Csv fi({"h", "px_change_per_step"});
-  for (std::size_t k = 0; k < hs.size(); ++k) fi.row(hs[k], change[k]);
-  ctx.write("first_integrals.csv", fi);
-  const OrderFit px_fit = fit_order(hs, change, roundoff_floor());
-  record_order_fit(ctx.summary, "orders.polar_px_change_per_step", {"first_integrals.csv", "h", "px_change_per_step"}, px_fit,
-                   roundoff_floor());
+  // first_integrals.csv (one step per h) and the order of the change over the changes above round-off.
+  ConvergenceStudy conv({.csv = "first_integrals.csv", .h = hs, .steps = std::vector<double>(hs.size(), 1.0)});
+  conv.column("px_change_per_step", [&](std::size_t, std::size_t k) { return change[k]; })
+      .fit("polar_px_change_per_step", "px_change_per_step", roundoff_floor());
+  conv.write(ctx);
 
   // The angular momentum is a quadratic invariant of symplectic Euler (a P-series
   // method), preserved exactly in exact arithmetic; in floating point the
@@ -91,8 +89,6 @@ void run_first_integrals(Context& ctx) {
 
   ctx.summary["reproduced"]["cartesian_L_max_rel_drift"] = L_drift;  // with compensated summation
   ctx.summary["reproduced"]["cartesian_L_max_rel_drift_plain"] = L_drift_plain;
-  ctx.summary["orders"] = {{"polar_px_change_per_step", px_fit.order}};
-  ctx.summary["fits"] = {{"polar_px_change_per_step", to_json(px_fit)}};
   // |q_J| at the end of the angular-momentum run, and the round-off of evaluating L = x p_y - y p_x
   // there: eps |q_J| |p| / |L_0| (p is constant for the free particle).
   const double q_end = zc.z.q.norm();
@@ -113,7 +109,7 @@ void keys(Schema& s) {
 }  // namespace
 
 Study first_integrals_study() {
-  return {"first_integrals", "000 Sec 5.2", {"first_integrals.csv", "angular_momentum.csv"}, {"first_integrals"},
+  return {"first_integrals", "000 Sec 5.2", {"first_integrals.csv", "orders.csv", "angular_momentum.csv"}, {"first_integrals"},
           check_first_integrals, run_first_integrals, plan_first_integrals, keys};
 }
 
