@@ -39,11 +39,6 @@ void expect_published(const std::string& experiment) {
 
 }  // namespace
 
-TEST(Published, LobattoTable) { expect_published("lobatto_table"); }
-TEST(Published, EulerCompensation) { expect_published("euler_compensation"); }
-TEST(Published, RowlandsConvergence) { expect_published("rowlands_convergence"); }
-TEST(Published, EnergyMap) { expect_published("energy_map"); }
-TEST(Published, TiDrift) { expect_published("ti_drift"); }
-TEST(Published, MeasureCloud) { expect_published("measure_cloud"); }
+#include "published_tests.inc"  // TEST(Published, <Name>) { expect_published("<name>"); } per experiment
 
 }  // namespace published_test
