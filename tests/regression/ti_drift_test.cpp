@@ -384,8 +384,8 @@ TEST(TiDrift, DivergingLennardJonesEnsembleIsANumericalFailure) {
   expect_exit("ti_drift", 4, "--set 'lj.h=0.1' --study 'lj'", {"lj.h = 0.1", "diverged", "lj.blowup"});
 }
 TEST(TiDrift, PlanOfThePaperSceneCountsEveryStudy) {
-  expect_plan("ti_drift", {"oscillator", "pendulum", "hh3", "ensemble", "lj", "lj_steps", "cost", "symplecticity",
-                        "kernel_timing"});
+  expect_plan("ti_drift", {"oscillator", "pendulum", "hh3", "ensemble", "poincare", "lj", "lj_steps", "cost",
+                        "symplecticity", "kernel_timing"});
 }
 
 // Checkpoints (runner/checkpoint.hpp): the Fig. 4 ensemble and the Lennard-Jones ensemble of Fig. 6, stopped after one
