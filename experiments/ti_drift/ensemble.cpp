@@ -1,7 +1,8 @@
 // 004 Fig. 4: Henon-Heiles k (hh.k, 004: 5), an ensemble of perturbed starts along the simplified method (1.6)
 // (in SIMD lanes, bit for bit the scalar method; checkpointed): the mean and standard deviation of the error of
-// the modified energy E of (3.3) and (4.2), its random walk (sigma^2 against t) and the outliers. Fig. 5, the
-// Poincare cuts and growth episodes of its trajectory with the largest error: ensemble_fig5.hpp.
+// the modified energy E of (3.3) and (4.2), its random walk (sigma^2 against t) and the outliers. Its trajectory
+// with the largest error goes to Fig. 5, the Poincare cuts and growth episodes (study poincare, poincare.cpp),
+// when that study runs in the same process; alone, it integrates the ensemble here too (integrate_ensemble).
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -11,7 +12,7 @@
 #include <utility>
 #include <vector>
 
-#include "ensemble_fig5.hpp"
+#include "ensemble.hpp"
 #include "geomint/core/integrate.hpp"
 #include "geomint/observables/ensemble_statistics.hpp"
 #include "geomint/observables/modified_energy.hpp"
@@ -24,12 +25,15 @@
 namespace geomint::ti_drift {
 namespace {
 
-// The scene keys the ensemble's series depend on (its checkpoint).
-const std::vector<std::string> kEnsembleKeys = {"h", "t_end", "samples", "hh", "ensemble.size", "ensemble.seed",
-                                                "ensemble.perturbation", "hh3.q2", "hh3.p2"};
+// max_k |e_k| of a trajectory's recorded error (Fig. 4's outliers; its largest error goes to Fig. 5).
+double max_abs(const std::vector<double>& e) {
+  double mx = 0;
+  for (double x : e) mx = std::max(mx, std::abs(x));
+  return mx;
+}
 
 template <class HH>
-Run integrate_ensemble(Context& ctx, const HH& hhk) {
+Run integrate_with(Context& ctx, const HH& hhk) {
   const Scene& s = ctx.scene;
   ctx.progress("Fig. 4: ensemble");
   const double h = s.real("h"), t_end = s.real("t_end");
@@ -87,7 +91,6 @@ Stats write_stats(Context& ctx, const Run& run, json& reproduced) {
 
 // Every trajectory's series (thinned to at most 200 times) and the outliers.
 struct Outliers {
-  std::size_t worst_i;  // the trajectory with the largest error
   json outliers;
   std::vector<std::size_t> kept;
   std::size_t stride;  // of the thinned times
@@ -99,24 +102,19 @@ Outliers write_trajectories(Context& ctx, const Run& run, json& reproduced) {
   const std::size_t M = run.M, ns = run.ns;
   const auto time_of = [&](std::size_t k) { return run.time_of(k); };
   Csv f4t({"trajectory", "outlier", "t", "E_err"});
-  std::size_t worst_i = 0;
-  double worst_e = 0;
   json outliers = json::array();
   std::vector<std::size_t> kept;
   const std::size_t stride = std::max<std::size_t>(1, ns / 200);
   for (std::size_t i = 0; i < M; ++i) {
-    double mx = 0;
-    for (double e : series[i]) mx = std::max(mx, std::abs(e));
-    const bool out = mx > s.real("ensemble.outlier");
+    const bool out = max_abs(series[i]) > s.real("ensemble.outlier");
     if (out) outliers.push_back(i);
     else kept.push_back(i);
-    if (mx > worst_e) worst_e = mx, worst_i = i;
     for (std::size_t k = 0; k < ns; k += stride)
       f4t.row(static_cast<std::int64_t>(i), static_cast<std::int64_t>(out), time_of(k), series[i][k]);
   }
   ctx.write("fig4_trajectories.csv", f4t);
   reproduced["hh5_outliers"] = outliers;
-  return {worst_i, outliers, kept, stride};
+  return {outliers, kept, stride};
 }
 
   // The statistics without the outliers, at the times of fig4_trajectories.csv.
@@ -182,18 +180,15 @@ json ensemble_summary(const Context& ctx, const HH& hhk, const Run& run, const S
 }
 
 template <class HH>
-void ensemble_with(Context& ctx, const HH& hhk) {
-  const Run run = integrate_ensemble(ctx, hhk);
+void ensemble_with(Context& ctx, const HH& hhk, LargestError& largest) {
+  const Run run = integrate_with(ctx, hhk);
   json reproduced;
   const Stats stats = write_stats(ctx, run, reproduced);
   const Outliers out = write_trajectories(ctx, run, reproduced);
   const json ensemble = ensemble_summary(ctx, hhk, run, stats, out);
-
-  // Fig. 5: Poincare cuts (q1 = 0 upwards, p1 > 0) of the trajectory with the largest error,
-  // on the window where its error grows fastest and on the one where it is flattest.
-  const json poincare = write_fig5(ctx, hhk, run, out.worst_i, reproduced);
+  merge(ctx.summary, "reproduced", reproduced);
   ctx.summary["ensemble"] = ensemble;
-  ctx.summary["poincare"] = poincare;
+  largest = trajectory_of(run, largest_error(run));  // (Fig. 5: the poincare study of this process)
   const double t_fit = fit_t_min(ctx.scene, "ensemble", run.t_end), t_last = stats.ts.back();
   record_fit(ctx.summary, {"reproduced.hh5_sigma_exponent", {"fig4_stats.csv", "t", "sigma"}, "power_law", t_fit, t_last, "ensemble.fit_from"});
   record_fit(ctx.summary, {"ensemble.sigma_exponent_from_hundredth", {"fig4_stats.csv", "t", "sigma"}, "power_law", t_fit / 10,
@@ -214,36 +209,22 @@ void ensemble_with(Context& ctx, const HH& hhk) {
   put_differences(ctx, "ensemble");
 }
 
-void run_ensemble(Context& ctx) {
-  with_ensemble_system(ctx.scene, [&](const auto& hhk) { ensemble_with(ctx, hhk); });
-}
-
-void check_ensemble(const Scene& s) {
-  with_ensemble_system(s, [&](const auto& hh) { check_hh_starts(s, "hh3", hh, s.real("ensemble.perturbation"), true); });
-  const double h = s.real("h"), t_end = s.real("t_end");
-  if (t_end / h < 2) s.reject("t_end", "must be at least two steps h");
-  for (const char* key : {"ensemble.episode_half_width", "ensemble.episode_min_length"})
-    if (s.real(key) > t_end) s.reject(key, "must not exceed t_end = " + format_double(t_end));
+void run_ensemble(Context& ctx, LargestError& largest) {
+  with_ensemble_system(ctx.scene, [&](const auto& hhk) { ensemble_with(ctx, hhk, largest); });
 }
 
 StudyPlan plan_ensemble(const Scene& s) {
   const double n = s.real("t_end") / s.real("h"), M = static_cast<double>(s.integer("ensemble.size"));
   const double rows = kept_samples(n, static_cast<double>(s.integer("samples")));
-  // M trajectories and the rerun of the one with the largest error (Fig. 5); the series of all M, and the CSVs
-  return {(M + 1) * n, (M + 1) * n * static_cast<double>(evals_per_step("simplified_takahashi_imada")),
-          M * rows * 8 + rows * 200 + M * std::min(rows, 201.0) * 60, kNsPerStepLanesHH, kNsLanesNote,
+  // M trajectories; the series of all M (and the copy of the one handed to Fig. 5), and the CSVs
+  return {M * n, M * n * static_cast<double>(evals_per_step("simplified_takahashi_imada")),
+          (M + 1) * rows * 8 + M * std::min(rows, 201.0) * 60, kNsPerStepLanesHH, kNsLanesNote,
           static_cast<double>(lane_batches(static_cast<std::size_t>(M)))};  // (tasks: batches of lanes)
 }
 
 void keys(Schema& s) {
   s.real("t_end", positive(), "Fig. 4 time span (004: 2.5e6)")
       .integer("ensemble.size", at_least(2), "Fig. 4 trajectories (004: 100)")
-      .real("ensemble.episode_half_width", positive(),
-            "Fig. 5 episodes: the running slope of the error of E of the trajectory is fitted over +- this time")
-      .real("ensemble.episode_threshold", positive(),
-            "Fig. 5 episodes: a sample belongs to an episode where its running slope differs from their median by more "
-            "than this many robust standard deviations (1.4826 MAD) of the running slopes")
-      .real("ensemble.episode_min_length", positive(), "Fig. 5 episodes: the shortest episode (time units)")
       .real("ensemble.fit_from", {.gt = 0.0, .ge = {}, .lt = 1.0, .le = {}},
             "Fig. 4: sigma ~ t^gamma, the late mean and the slope of sigma^2 are fitted over [fit_from t_end, t_end] "
             "(summary ensemble.fit; 004: past the bounded part, 0.1)")
@@ -252,11 +233,28 @@ void keys(Schema& s) {
 
 }  // namespace
 
-Study ensemble_study() {
-  return {"ensemble", "004 Figs 4, 5",
-          {"fig4_stats.csv", "fig4_trajectories.csv", "fig5_poincare.csv", "fig5_episodes.csv", "fig5_episode_cuts.csv"},
-          {"h", "t_end", "samples", "hh", "ensemble", "hh3.q2", "hh3.p2", "checkpoint"},
-          check_ensemble, run_ensemble, plan_ensemble, keys};
+Run integrate_ensemble(Context& ctx) {
+  return with_ensemble_system(ctx.scene, [&](const auto& hhk) { return integrate_with(ctx, hhk); });
+}
+
+void check_ensemble_run(const Scene& s) {
+  with_ensemble_system(s, [&](const auto& hh) { check_hh_starts(s, "hh3", hh, s.real("ensemble.perturbation"), true); });
+  if (s.real("t_end") / s.real("h") < 2) s.reject("t_end", "must be at least two steps h");
+}
+
+std::size_t largest_error(const Run& run) {
+  std::size_t worst_i = 0;
+  double worst_e = 0;
+  for (std::size_t i = 0; i < run.M; ++i)
+    if (const double mx = max_abs(run.series[i]); mx > worst_e) worst_e = mx, worst_i = i;
+  return worst_i;
+}
+
+Study ensemble_study(LargestError& largest) {
+  return {"ensemble", "004 Fig 4", {"fig4_stats.csv", "fig4_trajectories.csv"},
+          {"h", "t_end", "samples", "hh", "ensemble.size", "ensemble.seed", "ensemble.perturbation", "ensemble.fit_from",
+           "ensemble.outlier", "hh3.q2", "hh3.p2", "checkpoint"},
+          check_ensemble_run, [&largest](Context& ctx) { run_ensemble(ctx, largest); }, plan_ensemble, keys};
 }
 
 }  // namespace geomint::ti_drift

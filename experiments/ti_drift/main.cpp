@@ -4,18 +4,21 @@
 //   Fig 1      the harmonic oscillator at equal work: errors, orders, closed forms    oscillator.cpp
 //   Fig 2      the drift of the shifted energy on the unsymmetric pendulum            pendulum.cpp
 //   Fig 3      the modified energy E of (3.3) and (4.2) on Henon-Heiles k = 3         hh3.cpp
-//   Figs 4, 5  its random walk over an ensemble for k = 5; Poincare cuts and growth
-//              episodes of one trajectory                                            ensemble.cpp
-//                                                                                    (ensemble_fig5.hpp)
+//   Fig 4      its random walk over an ensemble for k = 5                             ensemble.cpp
+//   Fig 5      Poincare cuts and growth episodes of the ensemble's trajectory with
+//              the largest error (from the ensemble study of the same run, or the
+//              ensemble integrated again: ensemble.hpp)                               poincare.cpp
 //   Fig 6      the Lennard-Jones cluster: a step-size scan and the ensemble statistics lj.cpp
 //   Fig 6      sigma against h (the printed step)                                     lj_steps.cpp
 //   Sect. 1.3  symplecticity against volume preservation                              symplecticity.cpp
 // plus the cost: error against wall time and force evaluations (study `cost`)         cost.cpp
 //            and ns per step of each method's kernel (study `kernel_timing`)          kernel_timing.cpp
 // One study per figure (or analysis); the scene's sections say which run. Here: the studies, and the
-// scene keys that several of them read (what they share otherwise: ti_drift.hpp, henon_heiles_starts.hpp).
+// scene keys that several of them read (what they share otherwise: ti_drift.hpp, henon_heiles_starts.hpp,
+// ensemble.hpp).
 #include <utility>
 
+#include "ensemble.hpp"
 #include "ti_drift.hpp"
 #include "geomint/runner/timing.hpp"
 
@@ -39,8 +42,8 @@ Schema shared_keys() {
       .integer("samples", at_least(10), "output times per long run")
       .real("lj.h", positive(), "Fig. 6: the step used for the statistics")
       .integer("checkpoint.stop_after", non_negative(),
-               "ensemble, lj: stop after this many rounds of trajectories, leaving a checkpoint for --resume (0: run to "
-               "the end)")
+               "ensemble, lj (and poincare, which integrates the ensemble when the ensemble study does not run): stop "
+               "after this many rounds of trajectories, leaving a checkpoint for --resume (0: run to the end)")
       .real("checkpoint.interval", non_negative(), "seconds between checkpoint saves (0: after every round); a SIGKILL loses at most this much work")
       .integer("lj.seed", non_negative(), "seed; trajectory i uses its own stream (seed, i)")
       .real("lj.perturbation", non_negative(), "each coordinate of the 3 x 3 grid perturbed uniformly by at most this (004: 0.01)")
@@ -51,9 +54,10 @@ Schema shared_keys() {
 }  // namespace
 
 int main(int argc, char** argv) {
+  LargestError largest;  // the ensemble study's trajectory with the largest error, for the poincare study of the same run
   ExperimentSpec spec{"ti_drift", "004 Figs 1-6: energy behaviour of the (simplified) Takahashi-Imada method",
                       shared_keys(),
-                      {oscillator_study(), pendulum_study(), hh3_study(), ensemble_study(), lj_study(), lj_steps_study(),
-                       cost_study(), symplecticity_study(), kernel_timing_study()}};
+                      {oscillator_study(), pendulum_study(), hh3_study(), ensemble_study(largest), poincare_study(largest),
+                       lj_study(), lj_steps_study(), cost_study(), symplecticity_study(), kernel_timing_study()}};
   return run_experiment(argc, argv, std::move(spec), GEOMINT_EXPERIMENT_DIR);
 }

@@ -6,6 +6,7 @@
 // Lennard-Jones starts of Fig. 6, the step checks and the --plan constants. The Henon-Heiles starts
 // and their checks: henon_heiles_starts.hpp.
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,11 +24,17 @@ using json = nlohmann::ordered_json;
 using Z1 = PhaseState<1>;
 using Z2 = PhaseState<2>;
 
+// The ensemble study's trajectory with the largest error (ensemble.hpp), for the poincare study of the same
+// process: empty until the ensemble study has run in it (the poincare study then integrates the ensemble itself).
+struct Trajectory;
+using LargestError = std::optional<Trajectory>;
+
 // The studies, in the order they run.
 Study oscillator_study();      // 004 Fig 1                                            oscillator.cpp
 Study pendulum_study();        // 004 Fig 2                                            pendulum.cpp
 Study hh3_study();             // 004 Fig 3                                            hh3.cpp
-Study ensemble_study();        // 004 Figs 4, 5                                        ensemble.cpp
+Study ensemble_study(LargestError& largest);         // 004 Fig 4                      ensemble.cpp
+Study poincare_study(const LargestError& largest);   // 004 Fig 5                      poincare.cpp
 Study lj_study();              // 004 Fig 6                                            lj.cpp
 Study lj_steps_study();        // 004 Fig 6: sigma against h (the printed step)        lj_steps.cpp
 Study cost_study();            // cost: error against wall time and force evaluations  cost.cpp

@@ -3,8 +3,9 @@
 
 The reproduction ledger (scripts/report.py) from a fixture of summaries: every row takes its verdict
 and its values from its own figure's comparisons (summary.json "figures", made by the runner), never
-from another figure of the same study ([004] Fig. 5 from Fig. 4's) or of another scene ([003] Figs 5.5
-and 5.6, the free particle's, from the harmonic scene's Fig. 5.3). Also: the errata chapter lists an
+from another figure of the same run ([004] Fig. 5, study poincare, from Fig. 4's, study ensemble, whose
+ensemble it cuts) or of another scene ([003] Figs 5.5 and 5.6, the free particle's, from the harmonic
+scene's Fig. 5.3), and names the study that made it. Also: the errata chapter lists an
 open convention and an authors'-code value in their own sections, never as errata or as published, an
 erratum with the paper's words it quotes, no ledger cell past 6 lines, and report.py refuses a results directory that is not its paper scene's run, and a \\cite of a work
 that paper/papers.toml does not list.
@@ -22,7 +23,8 @@ def comparison(figure, published, reproduced, verdict, **extra):
 
 
 FIXTURE = {  # run id -> (experiment, scene file, {study: items made}, comparisons)
-    "ti_drift": ("ti_drift", "experiments/ti_drift/ti_drift.toml", {"ensemble": ["004 Fig. 4", "004 Fig. 5"]}, {
+    "ti_drift": ("ti_drift", "experiments/ti_drift/ti_drift.toml", {"ensemble": ["004 Fig. 4"],
+                                                                            "poincare": ["004 Fig. 5"]}, {
         "sigma4": comparison("004 Fig. 4", 0.54e-6, 0.551e-6, "reproduced"),
         "side5": comparison("004 Fig. 5", "> 0.5", 0.0742, "differs", expect="differs", kind="sample",
                             note="another trajectory", test="x.Side"),
@@ -120,6 +122,8 @@ def main():
     expect("0.0742" in fig5.replace("7.42", "0.0742") or "7.42" in fig5, f"[004] Fig. 5 lacks its measured share: {fig5}")
     expect("5.51" not in fig5 and "5.4" not in fig5, f"[004] Fig. 5 shows Fig. 4's sigma: {fig5}")
     expect("5.51" in fig4, f"[004] Fig. 4 lacks its sigma: {fig4}")
+    expect("study poincare" in fig5 and "study ensemble" not in fig5, f"[004] Fig. 5 is not rerun by its study: {fig5}")
+    expect("study ensemble" in fig4 and "study poincare" not in fig4, f"[004] Fig. 4 is not rerun by its study: {fig4}")
     for item, own, other in (("[003] Fig. 5.5", "9.7", "4.02"), ("[003] Fig. 5.6", "5.6", "4.02"),
                              ("[003] Fig. 5.3", "4.02", "9.7")):
         row = ledger.get(item, "")

@@ -208,6 +208,97 @@ TEST(TiDrift, PoincareEpisodesChangeEAsTheIntegratedRateOf43Predicts) {
   EXPECT_NEAR(ep["complement"]["share_p2_negative"].get<double>(), 0.5, 0.05);
 }
 
+// ---- Fig. 5 is its own study (poincare), of the trajectory of the Fig. 4 ensemble (study ensemble) with the largest
+// error: after the ensemble study of the same run it takes that study's trajectory, alone it integrates the ensemble
+// again (ensemble.hpp) ----
+
+TEST(TiDrift, ListStudiesNamesFig4ForTheEnsembleAndFig5ForPoincare) {
+  const BinaryOutcome r = run_binary("ti_drift", "--list-studies");
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::map<std::string, std::pair<std::string, std::string>> listed;  // study -> (makes, files)
+  std::istringstream lines(r.out);
+  for (std::string line; std::getline(lines, line);) {
+    const auto a = line.find('\t'), b = line.find('\t', a + 1);
+    ASSERT_NE(b, std::string::npos) << line;
+    listed[line.substr(0, a)] = {line.substr(a + 1, b - a - 1), line.substr(b + 1)};
+  }
+  using V = std::vector<std::string>;
+  EXPECT_EQ(geomint::made_items(listed["ensemble"].first), V{"004 Fig. 4"});
+  EXPECT_EQ(listed["ensemble"].second, "fig4_stats.csv fig4_trajectories.csv");
+  EXPECT_EQ(geomint::made_items(listed["poincare"].first), V{"004 Fig. 5"});
+  EXPECT_EQ(listed["poincare"].second, "fig5_poincare.csv fig5_episodes.csv fig5_episode_cuts.csv");
+  // it says where its trajectory comes from
+  EXPECT_NE(listed["poincare"].first.find("from the ensemble study of the same run"), std::string::npos);
+  EXPECT_NE(listed["poincare"].first.find("the ensemble integrated again"), std::string::npos);
+  // the quick run made each figure by its own study, and judged Fig. 5 by the entries of poincare
+  for (const auto& st : json_of("ti_drift", "run.json", "study_list"))
+    if (st["name"] == "ensemble" || st["name"] == "poincare") {
+      EXPECT_TRUE(st["ran"].get<bool>()) << st["name"];
+      EXPECT_EQ(st["made"], json::array({st["name"] == "ensemble" ? "004 Fig. 4" : "004 Fig. 5"})) << st["name"];
+    }
+  for (const auto& [key, c] : summary()["comparisons"].items())
+    if (c["figure"] == "004 Fig. 5") EXPECT_EQ(c["study"], "poincare") << key;
+}
+
+TEST(TiDrift, PoincareAloneCutsTheTrajectoryTheEnsembleStudyHandsOver) {
+  // --study poincare alone integrates the ensemble again: the same trajectory, the same Fig. 5 (bytes and summary)
+  // as the quick run, where the ensemble study ran before it
+  namespace fs = std::filesystem;
+  const fs::path alone = results_dir("ti_drift-poincare-alone");
+  fs::remove_all(alone);
+  const BinaryOutcome r = run_binary("ti_drift", "--quick --study poincare --threads 2 --out " + alone.string());
+  ASSERT_EQ(r.code, 0) << r.err;
+  for (const char* f : {"fig5_poincare.csv", "fig5_episodes.csv", "fig5_episode_cuts.csv"})
+    EXPECT_TRUE(file_text(alone / f) == file_text(results_dir("ti_drift") / f)) << f << " differs from the quick run's";
+  EXPECT_FALSE(fs::exists(alone / "fig4_stats.csv"));
+  const json s = json::parse(file_text(alone / "summary.json"));
+  EXPECT_EQ(s["studies"], json::array({"poincare"}));
+  EXPECT_FALSE(s.contains("ensemble"));
+  EXPECT_EQ(s["poincare"], summary()["poincare"]);
+  for (const char* key : {"poincare_trajectory", "poincare_windows"})
+    EXPECT_EQ(s["reproduced"][key], summary()["reproduced"][key]) << key;
+  fs::remove_all(alone);
+}
+
+TEST(TiDrift, PoincareCutsTheEnsembleTrajectoryWithTheLargestError) {
+  // fig5_episodes.csv holds the recorded error of the trajectory Fig. 5 cuts at every output time: at the thinned
+  // times of fig4_trajectories.csv it is that trajectory's, and no trajectory there reaches a larger |error|
+  const CsvFile f4 = read_csv(results_dir("ti_drift") / "fig4_trajectories.csv");
+  const CsvFile f5 = read_csv(results_dir("ti_drift") / "fig5_episodes.csv");
+  ASSERT_EQ(f4.names, (std::vector<std::string>{"trajectory", "outlier", "t", "E_err"}));
+  ASSERT_EQ(f5.names.at(0), "t");
+  ASSERT_EQ(f5.names.at(1), "E_err");
+  const std::string index = std::to_string(summary()["reproduced"]["poincare_trajectory"].get<std::size_t>());
+  std::map<std::string, std::string> error_at;  // t -> E_err of the cut trajectory
+  double largest = 0;
+  for (const auto& row : f5.rows) error_at[row[0]] = row[1], largest = std::max(largest, std::abs(std::stod(row[1])));
+  std::size_t matched = 0;
+  for (const auto& row : f4.rows) {
+    EXPECT_LE(std::abs(std::stod(row[3])), largest) << "trajectory " << row[0] << " at t = " << row[2];
+    if (row[0] != index) continue;
+    ++matched;
+    EXPECT_EQ(error_at[row[2]], row[3]) << "t = " << row[2];
+  }
+  EXPECT_GT(matched, 100u);
+}
+
+TEST(TiDrift, PoincarePlanCountsTheEnsembleOnlyWhenItIntegratesIt) {
+  const auto planned = [](const std::string& args) {
+    const BinaryOutcome r = run_binary("ti_drift", "--quick --plan --json --threads 2 " + args);
+    EXPECT_EQ(r.code, 0) << r.err;
+    const json plan = json::parse(r.out);
+    std::map<std::string, double> steps;
+    for (const auto& st : plan["studies"]) steps[st["study"].get<std::string>()] = st["steps"].get<double>();
+    return steps;
+  };
+  const double n = scene()["t_end"].get<double>() / scene()["h"].get<double>();
+  const double M = scene()["ensemble"]["size"].get<double>();
+  const auto both = planned("--study ensemble --study poincare"), alone = planned("--study poincare");
+  EXPECT_DOUBLE_EQ(both.at("ensemble"), M * n);
+  EXPECT_DOUBLE_EQ(both.at("poincare"), n);              // the rerun of the trajectory it takes
+  EXPECT_DOUBLE_EQ(alone.at("poincare"), (M + 1) * n);   // the ensemble, and the rerun
+}
+
 TEST(TiDrift, LocalDriftFollowsTheRateOf43AtTheCurrentEnergy) {
   // Fig. 2: the slope of H + h^2 H_3 in each window of the run against (4.3) averaged over the orbit of the
   // window's energy. The quadrature over the orbit agrees with the RK4 time average at the start's energy;
@@ -384,15 +475,18 @@ TEST(TiDrift, DivergingLennardJonesEnsembleIsANumericalFailure) {
   expect_exit("ti_drift", 4, "--set 'lj.h=0.1' --study 'lj'", {"lj.h = 0.1", "diverged", "lj.blowup"});
 }
 TEST(TiDrift, PlanOfThePaperSceneCountsEveryStudy) {
-  expect_plan("ti_drift", {"oscillator", "pendulum", "hh3", "ensemble", "lj", "lj_steps", "cost", "symplecticity",
-                        "kernel_timing"});
+  expect_plan("ti_drift", {"oscillator", "pendulum", "hh3", "ensemble", "poincare", "lj", "lj_steps", "cost",
+                        "symplecticity", "kernel_timing"});
 }
 
-// Checkpoints (runner/checkpoint.hpp): the Fig. 4 ensemble and the Lennard-Jones ensemble of Fig. 6, stopped after one
-// round of trajectories (on 2 threads a round of two batches of lanes: four batches, two rounds) and resumed (on 1
-// thread), give the files of a run straight through.
+// Checkpoints (runner/checkpoint.hpp): the Fig. 4 ensemble (by the ensemble study, and by the poincare study alone)
+// and the Lennard-Jones ensemble of Fig. 6, stopped after one round of trajectories (on 2 threads a round of two
+// batches of lanes: four batches, two rounds) and resumed (on 1 thread), give the files of a run straight through.
 TEST(TiDrift, ResumedEnsembleGivesTheSameFiles) {
   expect_resume_identical("ti_drift", "--quick --study ensemble --set ensemble.size=32 --set t_end=100000", 1, "ensemble");
+}
+TEST(TiDrift, ResumedPoincareAloneGivesTheSameFiles) {
+  expect_resume_identical("ti_drift", "--quick --study poincare --set ensemble.size=32 --set t_end=100000", 1, "poincare");
 }
 TEST(TiDrift, ResumedLennardJonesEnsembleGivesTheSameFiles) {
   expect_resume_identical("ti_drift", "--quick --study lj --set lj.size=32 --set lj.t_end=100", 1, "lj");

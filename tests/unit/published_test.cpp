@@ -192,7 +192,7 @@ TEST(Published, MadeItemsAsThePapersNameThem) {
 TEST(Published, EachEntryBelongsToAFigureItsStudyMakes) {
   const auto makes = [](const std::string& study) {
     return study == "table1" ? "001 Table 1" : study == "convergence" ? "000 Fig 4" : study == "long_run" ? "001 Fig 2"
-                                                                                                          : "004 Figs 4, 5";
+                                                                                                          : "003 Figs 5.2, 5.4";
   };
   auto entries = read_published(published_file(kEntries));
   resolve_figures(entries, "published.toml", makes);
@@ -202,7 +202,7 @@ TEST(Published, EachEntryBelongsToAFigureItsStudyMakes) {
   ASSERT_TRUE(c.has_value());
   EXPECT_EQ((*c)["figure"], "000 Fig. 4");
   const auto resolved = [&](const std::string& figure_line) {
-    auto e = read_published(published_file("[a]\nstudy = \"ensemble\"\nvalue = 1\nwhere = \"w\"\nsummary = \"x\"\n" + figure_line));
+    auto e = read_published(published_file("[a]\nstudy = \"volumes\"\nvalue = 1\nwhere = \"w\"\nsummary = \"x\"\n" + figure_line));
     try {
       resolve_figures(e, "published.toml", makes);
     } catch (const PublishedError& err) {
@@ -210,11 +210,11 @@ TEST(Published, EachEntryBelongsToAFigureItsStudyMakes) {
     }
     return e[0].figure;
   };
-  EXPECT_EQ(resolved("figure = \"004 Fig. 5\"\n"), "004 Fig. 5");
+  EXPECT_EQ(resolved("figure = \"003 Fig. 5.4\"\n"), "003 Fig. 5.4");
   EXPECT_EQ(resolved("figure = \"004 Sec. 1.4\"\n"), "004 Sec. 1.4");  // a statement of the text
   EXPECT_EQ(resolved("figure = \"000 eq. (16)\"\n"), "000 eq. (16)");
   EXPECT_NE(resolved("").find("figure = ?"), std::string::npos) << resolved("");
-  EXPECT_NE(resolved("figure = \"004 Fig. 6\"\n").find("not one the study ensemble makes"), std::string::npos);
+  EXPECT_NE(resolved("figure = \"003 Fig. 5.3\"\n").find("not one the study volumes makes"), std::string::npos);
 }
 
 TEST(Published, ClaimsAreComparedAboveOrBelowTheirThreshold) {

@@ -472,6 +472,8 @@ void check_plan(const Study& st, const StudyPlan& p, const std::vector<std::stri
 // tasks runs on every rank alike: steps ns_per_step / threads. Every rank holds every result: the
 // memory is per rank. Timed runs add their own time (StudyPlan::timed_seconds, less the part a study
 // skips when the study it reuses runs too), and every study the fixed cost of running at all (kStudyOverheadS).
+// A study whose plan has another plan for when the study it reuses runs too (StudyPlan::when_reusing) is
+// planned by that one then.
 nlohmann::ordered_json plan_json(const std::vector<const Study*>& studies, const std::vector<StudyPlan>& plans, int ranks,
                                  int threads) {
   nlohmann::ordered_json j = {{"ranks", ranks}, {"threads", threads}, {"studies", nlohmann::ordered_json::array()}};
@@ -480,8 +482,10 @@ nlohmann::ordered_json plan_json(const std::vector<const Study*>& studies, const
   for (std::size_t i = 0; i < studies.size(); ++i) {
     StudyPlan p = plans[i];
     if (!p.reuses.empty() &&
-        std::any_of(studies.begin(), studies.end(), [&](const Study* other) { return other->name == p.reuses; }))
-      p.timed_seconds -= p.reused_seconds, p.timed_steps -= p.reused_steps;
+        std::any_of(studies.begin(), studies.end(), [&](const Study* other) { return other->name == p.reuses; })) {
+      if (p.when_reusing) p = StudyPlan(*p.when_reusing);
+      else p.timed_seconds -= p.reused_seconds, p.timed_steps -= p.reused_steps;
+    }
     const bool has = static_cast<bool>(studies[i]->plan), estimated = has && p.ns_per_step > 0, split = has && p.tasks > 0;
     const double share = split ? std::ceil(p.tasks / ranks) : 0;
     const double wall = (split ? p.steps / p.tasks * p.ns_per_step * 1e-9 * std::ceil(share / threads)

@@ -12,6 +12,7 @@
 // that set. Only the scene keys the running studies declare are required, and
 // a study may read only those.
 #include <functional>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -120,6 +121,10 @@ struct StudyPlan {
   // takes that study's measurement instead; plan_json leaves the part out).
   std::string reuses = {};
   double reused_seconds = 0, reused_steps = 0;
+  // A study that takes the results of the study `reuses` when that one runs in the same process, and computes
+  // them itself otherwise: its whole plan in the first case, which plan_json takes instead of this one (null:
+  // the two differ only by the timed part above).
+  std::shared_ptr<const StudyPlan> when_reusing = {};
 };
 
 struct Study {

@@ -1,38 +1,31 @@
-#pragma once
-// ti_drift, the ensemble study (ensemble.cpp): 004 Fig. 5, Poincare cuts (q1 = 0 upwards, p1 > 0) of the
-// ensemble's trajectory with the largest error, in the window where its error grows fastest and in the
-// flattest, and the growth episodes of its error against (4.3); and the ensemble as run, which Figs 4 and 5
-// read.
+// 004 Fig. 5: Poincare cuts (q1 = 0 upwards, p1 > 0) of the trajectory of the Fig. 4 ensemble with the largest
+// error, in the window where its error grows fastest and in the flattest, and the growth episodes of its error
+// against (4.3). The trajectory: the ensemble study's, when it ran in the same process (LargestError, main.cpp);
+// else this study integrates the ensemble itself (integrate_ensemble, ensemble.cpp: the same starts, checkpoint
+// and numbers) and takes its trajectory with the largest error.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <limits>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "ensemble.hpp"
 #include "geomint/analysis/growth_episodes.hpp"
 #include "geomint/analysis/poincare.hpp"
 #include "geomint/core/integrate.hpp"
 #include "geomint/integrators/takahashi_imada.hpp"
 #include "geomint/observables/modified_energy.hpp"
+#include "geomint/sweep/ensemble_kernels.hpp"
+#include "henon_heiles_starts.hpp"
 #include "ti_drift.hpp"
 
 namespace geomint::ti_drift {
-
-// The ensemble as run: the error of E of each trajectory at its ns output times, every4 steps apart.
-struct Run {
-  double h, t_end;
-  std::size_t M;
-  std::int64_t n4, every4;
-  std::vector<Z2> starts;
-  std::vector<std::vector<double>> series;  // per trajectory
-  std::size_t ns;
-  double wall4;  // (on --resume: the part run since)
-  double time_of(std::size_t k) const { return static_cast<double>(k) * static_cast<double>(every4) * h; }
-};
+namespace {
 
 constexpr std::size_t kPoincareWindows = 20;  // Fig. 5: the run of the trajectory is cut into this many windows
 
@@ -42,7 +35,7 @@ struct Windows {
   double tw;  // their length in time
 };
 
-inline Windows choose_windows(const Run& run, const std::vector<double>& e) {
+Windows choose_windows(const Trajectory& run, const std::vector<double>& e) {
   const double h = run.h;
   const std::int64_t every4 = run.every4;
   const std::size_t ns = run.ns;
@@ -78,7 +71,7 @@ struct Episodes {
 
 // The growth episodes of its recorded error (analysis/growth_episodes.hpp; the scene's ensemble.episode_*).
 // fig5_episodes.csv: at each output time the error, its running slope and its episode.
-inline Episodes find_episodes(Context& ctx, const Run& run, const std::vector<double>& e) {
+Episodes find_episodes(Context& ctx, const Trajectory& run, const std::vector<double>& e) {
   const Scene& s = ctx.scene;
   const std::size_t ns = run.ns;
   const auto time_of = [&](std::size_t k) { return run.time_of(k); };
@@ -113,12 +106,10 @@ struct Crossings {
 };
 
 template <class HH>
-Crossings cut_trajectory(Context& ctx, const HH& hhk, const Run& run, std::size_t worst_i, const Windows& win,
-                         const Episodes& found) {
+Crossings cut_trajectory(Context& ctx, const HH& hhk, const Trajectory& run, const Windows& win, const Episodes& found) {
   const double h = run.h, tw = win.tw;
   const std::int64_t every4 = run.every4, n4 = run.n4;
   const std::size_t ns = run.ns, steep = win.steep, flat = win.flat;
-  const auto& starts = run.starts;
   const std::vector<Episode>& episodes = found.episodes;
   const std::vector<int>& episode_of = found.episode_of;
   Csv f5({"window", "t", "q2", "p2"});
@@ -127,8 +118,8 @@ Crossings cut_trajectory(Context& ctx, const HH& hhk, const Run& run, std::size_
   std::vector<double> ep_predicted(episodes.size() + 1, 0.0);
   std::vector<std::int64_t> ep_steps(episodes.size() + 1, 0), ep_steps_negative(episodes.size() + 1, 0);
   Csv f5c({"episode", "sign", "t", "q2", "p2"});
-  Z2 prev = starts[worst_i];
-  integrate(simplified_ti_method(hhk, false), starts[worst_i], h, n4, [&](std::int64_t j, const Z2& z) {
+  Z2 prev = run.start;
+  integrate(simplified_ti_method(hhk, false), run.start, h, n4, [&](std::int64_t j, const Z2& z) {
     const double t = static_cast<double>(j) * h;
     const std::size_t k_prev = j > 0 ? static_cast<std::size_t>((j - 1) / every4) : 0;
     const int ep = k_prev < ns ? episode_of[k_prev] : -1;
@@ -160,8 +151,8 @@ Crossings cut_trajectory(Context& ctx, const HH& hhk, const Run& run, std::size_
 }
 
 // Each window: its cuts, and the error of E of the trajectory at its ends (output times).
-inline json window_summary(const Context& ctx, const Run& run, const std::vector<double>& e, const Windows& win,
-                           Crossings& x) {
+json window_summary(const Context& ctx, const Trajectory& run, const std::vector<double>& e, const Windows& win,
+                    Crossings& x) {
   const std::size_t ns = run.ns, windows = win.windows, compared = win.compared, per = win.per;
   const std::size_t steep = win.steep, flat = win.flat;
   const double tw = win.tw;
@@ -192,8 +183,8 @@ inline json window_summary(const Context& ctx, const Run& run, const std::vector
 // The episodes against (4.3): dE/dt = -h^4/2880 U^(5)(p^5) = h^4/120 p2^5 for k = 5 (U_22222 = -24): E rises where
 // the time average of p2^5 over the episode is positive. The change (4.3) predicts, h sum_n dE/dt(p_n, q_n) over the
 // episode's steps, against the recorded change; and the share of the cuts, and of the steps, with p2 < 0.
-inline json episode_summary(const Scene& s, const Run& run, const std::vector<double>& e, const Episodes& found,
-                            const Crossings& x) {
+json episode_summary(const Scene& s, const Trajectory& run, const std::vector<double>& e, const Episodes& found,
+                     const Crossings& x) {
   const std::size_t ns = run.ns;
   const double sample_dt = found.sample_dt;
   const std::size_t half = found.half, min_samples = found.min_samples;
@@ -267,18 +258,19 @@ inline json episode_summary(const Scene& s, const Run& run, const std::vector<do
   return ep_summary;
 }
 
-// Fig. 5 of the trajectory worst_i of the run (fig5_episodes.csv, fig5_poincare.csv, fig5_episode_cuts.csv,
-// summary.reproduced); returns summary.poincare.
+// Fig. 5 of the trajectory (fig5_episodes.csv, fig5_poincare.csv, fig5_episode_cuts.csv, summary.reproduced);
+// returns summary.poincare.
 template <class HH>
-json write_fig5(Context& ctx, const HH& hhk, const Run& run, std::size_t worst_i, json& reproduced) {
+json write_fig5(Context& ctx, const HH& hhk, const Trajectory& run) {
   ctx.progress("Fig. 5: Poincare cuts");
-  const auto& e = run.series[worst_i];
+  const auto& e = run.e;
   const Windows win = choose_windows(run, e);
   const std::size_t steep = win.steep, flat = win.flat;
   const double tw = win.tw;
   const Episodes found = find_episodes(ctx, run, e);
-  Crossings x = cut_trajectory(ctx, hhk, run, worst_i, win, found);
-  reproduced["poincare_trajectory"] = worst_i;
+  Crossings x = cut_trajectory(ctx, hhk, run, win, found);
+  json reproduced;
+  reproduced["poincare_trajectory"] = run.index;
   reproduced["poincare_windows"] = {{"growth", {static_cast<double>(steep) * tw, static_cast<double>(steep + 1) * tw}},
                                     {"no_growth", {static_cast<double>(flat) * tw, static_cast<double>(flat + 1) * tw}}};
   merge(ctx.summary, "reproduced", reproduced);
@@ -286,6 +278,64 @@ json write_fig5(Context& ctx, const HH& hhk, const Run& run, std::size_t worst_i
   poincare["episodes"] = episode_summary(ctx.scene, run, e, found, x);
   ctx.write("fig5_episode_cuts.csv", x.f5c);
   return poincare;
+}
+
+// The trajectory with the largest error: the ensemble study's of this process, or that of the ensemble integrated
+// here when that study did not run (the same function, starts and checkpoint: the same trajectory).
+void run_poincare(Context& ctx, const LargestError& largest) {
+  LargestError own;
+  if (!largest) {
+    const Run run = integrate_ensemble(ctx);
+    own = trajectory_of(run, largest_error(run));
+  }
+  const Trajectory& worst = largest ? *largest : *own;
+  with_ensemble_system(ctx.scene, [&](const auto& hhk) { ctx.summary["poincare"] = write_fig5(ctx, hhk, worst); });
+  put_differences(ctx, "poincare");
+}
+
+void check_poincare(const Scene& s) {
+  check_ensemble_run(s);
+  const double t_end = s.real("t_end");
+  for (const char* key : {"ensemble.episode_half_width", "ensemble.episode_min_length"})
+    if (s.real(key) > t_end) s.reject(key, "must not exceed t_end = " + format_double(t_end));
+}
+
+// With the ensemble study in the same process: the rerun of one trajectory (the scalar method, with (4.3) and the
+// test for a cut at every step), its series and the CSVs. Alone: the ensemble too, as the ensemble study plans it
+// (its M trajectories in lanes, the rerun counted as one more).
+StudyPlan plan_poincare(const Scene& s) {
+  const double n = s.real("t_end") / s.real("h"), M = static_cast<double>(s.integer("ensemble.size"));
+  const double rows = kept_samples(n, static_cast<double>(s.integer("samples")));
+  const double evals = static_cast<double>(evals_per_step("simplified_takahashi_imada"));
+  const StudyPlan taken{n, n * evals, rows * 8 + rows * 200, kNsPerStepHH,
+                        std::string("the trajectory of the ensemble study of this run; ") + kNsNote};
+  StudyPlan alone{(M + 1) * n, (M + 1) * n * evals, M * rows * 8 + rows * 200, kNsPerStepLanesHH,
+                  std::string("the ensemble integrated again (without the ensemble study); ") + kNsLanesNote,
+                  static_cast<double>(lane_batches(static_cast<std::size_t>(M)))};  // (tasks: batches of lanes)
+  alone.reuses = "ensemble", alone.when_reusing = std::make_shared<const StudyPlan>(taken);
+  return alone;
+}
+
+void keys(Schema& s) {
+  s.real("ensemble.episode_half_width", positive(),
+         "Fig. 5 episodes: the running slope of the error of E of the trajectory is fitted over +- this time")
+      .real("ensemble.episode_threshold", positive(),
+            "Fig. 5 episodes: a sample belongs to an episode where its running slope differs from their median by more "
+            "than this many robust standard deviations (1.4826 MAD) of the running slopes")
+      .real("ensemble.episode_min_length", positive(), "Fig. 5 episodes: the shortest episode (time units)");
+}
+
+}  // namespace
+
+Study poincare_study(const LargestError& largest) {
+  return {"poincare",
+          "004 Fig 5: Poincare cuts of the Fig 4 ensemble's trajectory with the largest error (from the ensemble study "
+          "of the same run; without it, the ensemble integrated again, the same numbers)",
+          {"fig5_poincare.csv", "fig5_episodes.csv", "fig5_episode_cuts.csv"},
+          {"h", "t_end", "samples", "hh", "ensemble.size", "ensemble.seed", "ensemble.perturbation",
+           "ensemble.episode_half_width", "ensemble.episode_threshold", "ensemble.episode_min_length", "hh3.q2",
+           "hh3.p2", "checkpoint"},
+          check_poincare, [&largest](Context& ctx) { run_poincare(ctx, largest); }, plan_poincare, keys};
 }
 
 }  // namespace geomint::ti_drift
