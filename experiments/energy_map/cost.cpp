@@ -212,20 +212,24 @@ void run_cost(Context& ctx) {
   ctx.summary["cost"] = cost;
 }
 
-void keys(Schema& s) {
-  s.real_rows("cost.starts", 2, any_finite(), 1,
-              "initial positions [x0, y0] (at rest) of the work-precision study, inside the polar runs' "
-              "divergence boundary")
-      .reals("cost.dt", positive(), 3, "steps of symplectic Euler in the work-precision study; each divides cost.t_end")
-      .real("cost.t_end", positive(), "end time of the work-precision runs (eq. (50) over [0, t_end])");
-}
 
 }  // namespace
 
 Study cost_study() {
-  return {"cost", "cost: energy error against wall time and force evaluations, Cartesian and polar",
-          {"cost_start_*.csv"}, {"cost", "pendulum", "divergence", "timing.repeats"}, check_cost, run_cost, plan_cost,
-          keys};
+  return {.name = "cost",
+          .about = "cost: energy error against wall time and force evaluations, Cartesian and polar",
+          .files = {"cost_start_*.csv"},
+          .keys = Schema()
+                      .real_rows("cost.starts", 2, any_finite(), 1,
+                                 "initial positions [x0, y0] (at rest) of the work-precision study, inside the polar "
+                                 "runs' divergence boundary")
+                      .reals("cost.dt", positive(), 3,
+                             "steps of symplectic Euler in the work-precision study; each divides cost.t_end")
+                      .real("cost.t_end", positive(), "end time of the work-precision runs (eq. (50) over [0, t_end])"),
+          .reads = {"pendulum", "divergence", "timing.repeats"},
+          .run = run_cost,
+          .validate = check_cost,
+          .plan = plan_cost};
 }
 
 }  // namespace geomint::energy_map

@@ -100,17 +100,22 @@ void run_first_integrals(Context& ctx) {
       {"L_eval_roundoff", std::numeric_limits<double>::epsilon() * q_end * zL.p.norm() / std::abs(L0)}};
 }
 
-void keys(Schema& s) {
-  s.reals("first_integrals.h", positive(), 3, "steps for the change of p_x per step in polar coordinates")
-      .real_rows("first_integrals.initial", 4, any_finite(), 1, "free-particle states [x, y, px, py], x, y not both 0")
-      .integer("first_integrals.steps", at_least(1), "steps of the Cartesian angular-momentum run");
-}
 
 }  // namespace
 
 Study first_integrals_study() {
-  return {"first_integrals", "000 Sec 5.2", {"first_integrals.csv", "orders.csv", "angular_momentum.csv"}, {"first_integrals"},
-          check_first_integrals, run_first_integrals, plan_first_integrals, keys};
+  return {.name = "first_integrals",
+          .makes = {{"000", "Sec. 5.2"}},
+          .about = "polar symplectic Euler changes p_x by O(h^2) per step; Cartesian keeps the angular momentum",
+          .files = {"first_integrals.csv", "orders.csv", "angular_momentum.csv"},
+          .keys = Schema()
+                      .reals("first_integrals.h", positive(), 3, "steps for the change of p_x per step in polar coordinates")
+                      .real_rows("first_integrals.initial", 4, any_finite(), 1,
+                                 "free-particle states [x, y, px, py], x, y not both 0")
+                      .integer("first_integrals.steps", at_least(1), "steps of the Cartesian angular-momentum run"),
+          .run = run_first_integrals,
+          .validate = check_first_integrals,
+          .plan = plan_first_integrals};
 }
 
 }  // namespace geomint::energy_map

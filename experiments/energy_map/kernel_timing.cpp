@@ -164,27 +164,32 @@ void run_timing(Context& ctx, const MapCost& map) {
   ctx.summary["timing"] = timing;
 }
 
-void keys(Schema& s) {
-  s.integer("timing.scalar_points", at_least(1), "initial conditions timed with the scalar reference loop")
-      .integer("timing.scalar_steps", at_least(1), "steps of each scalar timing run")
-      .integer("timing.kernel_batches", at_least(1),
-               "batches of 64 trajectories (evenly spaced over the grid, t_max/dt steps each) on which the batched "
-               "kernel is timed when the map study does not run in the same process")
-      .real("timing.target.cartesian", positive(), "the time per trajectory-step and core set as the goal of the Cartesian kernel [ns]")
-      .real("timing.target.polar", positive(), "the same for the polar kernel [ns]")
-      .reals("timing.ceiling.cartesian", positive(), 2,
-             "[low, high] hardware ceiling of the Cartesian kernel [ns per trajectory-step and core]: an estimate from "
-             "performance measurements (bench/README.md), not measured by the run")
-      .reals("timing.ceiling.polar", positive(), 2, "the same for the polar kernel");
-}
 
 }  // namespace
 
 Study kernel_timing_study(const MapCost& map) {
-  std::vector<std::string> uses = kMapKeys;
-  uses.push_back("timing");
-  return {"kernel_timing", "cost: batched kernel against the scalar loop, ns per step", {}, uses, check_timing,
-          [&map](Context& ctx) { run_timing(ctx, map); }, plan_timing, keys, {"timing"}};
+  std::vector<std::string> reads = kMapKeys;
+  reads.emplace_back("timing.repeats");
+  return {.name = "kernel_timing",
+          .about = "cost: batched kernel against the scalar loop, ns per step",
+          .keys = Schema()
+                      .integer("timing.scalar_points", at_least(1), "initial conditions timed with the scalar reference loop")
+                      .integer("timing.scalar_steps", at_least(1), "steps of each scalar timing run")
+                      .integer("timing.kernel_batches", at_least(1),
+                               "batches of 64 trajectories (evenly spaced over the grid, t_max/dt steps each) on which "
+                               "the batched kernel is timed when the map study does not run in the same process")
+                      .real("timing.target.cartesian", positive(),
+                            "the time per trajectory-step and core set as the goal of the Cartesian kernel [ns]")
+                      .real("timing.target.polar", positive(), "the same for the polar kernel [ns]")
+                      .reals("timing.ceiling.cartesian", positive(), 2,
+                             "[low, high] hardware ceiling of the Cartesian kernel [ns per trajectory-step and core]: an "
+                             "estimate from performance measurements (bench/README.md), not measured by the run")
+                      .reals("timing.ceiling.polar", positive(), 2, "the same for the polar kernel"),
+          .reads = reads,
+          .run = [&map](Context& ctx) { run_timing(ctx, map); },
+          .validate = check_timing,
+          .plan = plan_timing,
+          .aliases = {"timing"}};
 }
 
 }  // namespace geomint::energy_map

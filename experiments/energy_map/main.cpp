@@ -32,8 +32,7 @@ Schema shared_keys() {
       .real("dt", positive(),
             "step of symplectic Euler (000 Fig. 6: 0.2); dt sqrt(k/m) below its oscillatory bound (geomint-methods)")
       .real("t_max", positive(), "end time (000 Fig. 6: 50 000); a multiple of dt")
-      .real("divergence.blowup", positive(), "|H_j - H_0| above this marks a run diverged")
-      .integer("timing.repeats", at_least(1), kTimingRepeatsHelp);
+      .real("divergence.blowup", positive(), "|H_j - H_0| above this marks a run diverged");
   return s;
 }
 

@@ -132,7 +132,7 @@ std::vector<Point> integrate_map(Context& ctx, const MapSetup& g, MapCost& cost)
     std::atomic<std::size_t> computed = 0;
     const auto t0 = std::chrono::steady_clock::now();
     const auto batches = checkpointed_map<std::vector<EnergyMapPoint>>(
-        ctx, {std::string("map.") + coordinates_name(c), kMapKeys}, g.nbatches,
+        ctx, {std::string("map.") + coordinates_name(c)}, g.nbatches,
         [&](std::size_t b) {
           std::vector<EnergyMapPoint> out(kEnergyMapBatch);
           kernel(c, g.P, &g.x0[b * kEnergyMapBatch], &g.y0[b * kEnergyMapBatch], out.data());
@@ -208,22 +208,23 @@ void run_map(Context& ctx, MapCost& cost) {
   write_map(ctx, g, points);
 }
 
-void keys(Schema& s) {
-  s.real("map_statistics.ring_half_width", positive(),
-         "initial radii |r(0) - l| < ring_half_width * l are counted apart for where polar is the more accurate")
-      .integer("checkpoint.stop_after", non_negative(),
-               "stop after this many rounds (1/32 of the batches of 64 starts, Cartesian then polar), leaving a "
-               "checkpoint for --resume (0: run to the end)")
-      .real("checkpoint.interval", non_negative(), "seconds between checkpoint saves (0: after every round); a SIGKILL loses at most this much work");
-}
 
 }  // namespace
 
 Study map_study(MapCost& cost) {
-  std::vector<std::string> uses = kMapKeys;
-  uses.insert(uses.end(), {"checkpoint", "map_statistics"});
-  return {"map", "000 Fig 6", {"map.csv", "map_grid.csv"}, uses, check_map,
-          [&cost](Context& ctx) { run_map(ctx, cost); }, plan_map, keys};
+  std::vector<std::string> reads = kMapKeys;
+  reads.emplace_back("checkpoint");
+  return {.name = "map",
+          .makes = {{"000", "Fig. 6"}},
+          .about = "epsilon of symplectic Euler, Cartesian - polar, over initial positions; the divergence boundary",
+          .files = {"map.csv", "map_grid.csv"},
+          .keys = Schema().real("map_statistics.ring_half_width", positive(),
+                                "initial radii |r(0) - l| < ring_half_width * l are counted apart for where polar is "
+                                "the more accurate"),
+          .reads = reads,
+          .run = [&cost](Context& ctx) { run_map(ctx, cost); },
+          .validate = check_map,
+          .plan = plan_map};
 }
 
 }  // namespace geomint::energy_map

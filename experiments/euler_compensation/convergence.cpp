@@ -85,21 +85,24 @@ StudyPlan plan_convergence(const Scene& s) {
           kOscillatorNs, kOscillatorNsNote};
 }
 
-void keys(Schema& s) {
-  s.texts("convergence.methods", oscillator_method_choices(), 1,
-          "methods of Fig 9 on the oscillator (registry names or labels); compensated_symplectic_euler uses "
-          "oscillator.k")
-      .reals("convergence.h", positive(), 3, "steps of the convergence study (Fig 9); each divides t_end");
-}
 
 }  // namespace
 
 Study convergence_study() {
-  return {"convergence", "000 Fig 9", {"fig9_convergence.csv", "orders.csv"},
-          {"convergence", "oscillator.q0", "oscillator.p0", "oscillator.k", "decay.alpha", "decay.y0", "gompertz.a",
-           "gompertz.b", "gompertz.y0"},
-          [](const Scene& s) { check_steps(s, "convergence.h", "convergence.methods"); }, run_convergence,
-          plan_convergence, keys};
+  return {.name = "convergence",
+          .makes = {{"000", "Fig. 9"}},
+          .about = "error in H against h: orders 1 and 2",
+          .files = {"fig9_convergence.csv", "orders.csv"},
+          .keys = Schema()
+                      .texts("convergence.methods", oscillator_method_choices(), 1,
+                             "methods of Fig 9 on the oscillator (registry names or labels); compensated_symplectic_euler "
+                             "uses oscillator.k")
+                      .reals("convergence.h", positive(), 3, "steps of the convergence study (Fig 9); each divides t_end"),
+          .reads = {"convergence.t_end", "oscillator.q0", "oscillator.p0", "oscillator.k", "decay.alpha", "decay.y0",
+                    "gompertz.a", "gompertz.b", "gompertz.y0"},
+          .run = run_convergence,
+          .validate = [](const Scene& s) { check_steps(s, "convergence.h", "convergence.methods"); },
+          .plan = plan_convergence};
 }
 
 }  // namespace geomint::euler_compensation

@@ -105,19 +105,22 @@ StudyPlan plan_cost(const Scene& s) {
   return p;
 }
 
-void keys(Schema& s) {
-  s.texts("timing.methods", oscillator_method_choices(), 1, "methods of the cost study (registry names or labels)")
-      .reals("timing.h", positive(), 3, "steps of the work-precision runs (to convergence.t_end)")
-      .integer("timing.repeats", at_least(1), kTimingRepeatsHelp)
-      .integer("timing.steps", at_least(1), "steps of the run that measures ns per step");
-}
 
 }  // namespace
 
 Study cost_study() {
-  return {"cost", "cost: error against wall time and force evaluations", {"cost_energy.csv"},
-          {"timing", "convergence.t_end", "oscillator.q0", "oscillator.p0", "oscillator.k", "oscillator.h"},
-          [](const Scene& s) { check_steps(s, "timing.h", "timing.methods"); }, run_cost, plan_cost, keys, {"timing"}};
+  return {.name = "cost",
+          .about = "cost of Figs 8-9's methods: error against wall time and force evaluations",
+          .files = {"cost_energy.csv"},
+          .keys = Schema()
+                      .texts("timing.methods", oscillator_method_choices(), 1, "methods of the cost study (registry names or labels)")
+                      .reals("timing.h", positive(), 3, "steps of the work-precision runs (to convergence.t_end)")
+                      .integer("timing.steps", at_least(1), "steps of the run that measures ns per step"),
+          .reads = {"timing.repeats", "convergence.t_end", "oscillator.q0", "oscillator.p0", "oscillator.k", "oscillator.h"},
+          .run = run_cost,
+          .validate = [](const Scene& s) { check_steps(s, "timing.h", "timing.methods"); },
+          .plan = plan_cost,
+          .aliases = {"timing"}};
 }
 
 }  // namespace geomint::euler_compensation

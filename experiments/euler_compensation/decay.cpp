@@ -34,21 +34,26 @@ void run_decay(Context& ctx) {
           .compensated_max_rel_err;
 }
 
-void keys(Schema& s) {
-  s.real("decay.h", positive(), "step of explicit Euler (Fig 2); h alpha < 1 (ybar of (15) defined along the run)")
-      .integer("decay.steps", at_least(1), "number of steps shown in Fig 2")
-      .real("decay.printed_alpha", positive(),
-            "alpha at which the transformed field (16) as printed, ybar' = -alpha, is checked against (15) "
-            "(they coincide at alpha = 1); h alpha < 1");
-}
 
 StudyPlan plan_decay(const Scene& s) { return plan_scalar(static_cast<double>(s.integer("decay.steps")), 2); }
 
 }  // namespace
 
 Study decay_study() {
-  return {"decay", "000 Fig 2", {"fig2_decay.csv", "fig2_decay_exact.csv"}, {"decay"}, check_decay, run_decay,
-          plan_decay, keys};
+  return {.name = "decay",
+          .makes = {{"000", "Fig. 2"}},
+          .about = "explicit Euler on y' = -alpha y, in y and in ybar = Psi(y) of (15)",
+          .files = {"fig2_decay.csv", "fig2_decay_exact.csv"},
+          .keys = Schema()
+                      .real("decay.h", positive(), "step of explicit Euler (Fig 2); h alpha < 1 (ybar of (15) defined along the run)")
+                      .integer("decay.steps", at_least(1), "number of steps shown in Fig 2")
+                      .real("decay.printed_alpha", positive(),
+                            "alpha at which the transformed field (16) as printed, ybar' = -alpha, is checked against (15) "
+                            "(they coincide at alpha = 1); h alpha < 1"),
+          .reads = {"decay"},
+          .run = run_decay,
+          .validate = check_decay,
+          .plan = plan_decay};
 }
 
 }  // namespace geomint::euler_compensation

@@ -29,18 +29,25 @@ void run_gompertz(Context& ctx) {
                       y0, s.real("gompertz.h"), s.integer("gompertz.steps"));
 }
 
-void keys(Schema& s) {
-  s.real("gompertz.h", positive(), "step of explicit Euler (Fig 3); h b <= 1 (the Euler iterates stay below the equilibrium, where (18) is defined)")
-      .integer("gompertz.steps", at_least(1), "number of steps shown in Fig 3");
-}
 
 StudyPlan plan_gompertz(const Scene& s) { return plan_scalar(static_cast<double>(s.integer("gompertz.steps")), 1); }
 
 }  // namespace
 
 Study gompertz_study() {
-  return {"gompertz", "000 Fig 3", {"fig3_gompertz.csv", "fig3_gompertz_exact.csv"}, {"gompertz"}, check_gompertz,
-          run_gompertz, plan_gompertz, keys};
+  return {.name = "gompertz",
+          .makes = {{"000", "Fig. 3"}},
+          .about = "explicit Euler on the Gompertz equation (17), in y and in ybar of (18)",
+          .files = {"fig3_gompertz.csv", "fig3_gompertz_exact.csv"},
+          .keys = Schema()
+                      .real("gompertz.h", positive(),
+                            "step of explicit Euler (Fig 3); h b <= 1 (the Euler iterates stay below the equilibrium, where "
+                            "(18) is defined)")
+                      .integer("gompertz.steps", at_least(1), "number of steps shown in Fig 3"),
+          .reads = {"gompertz"},
+          .run = run_gompertz,
+          .validate = check_gompertz,
+          .plan = plan_gompertz};
 }
 
 }  // namespace geomint::euler_compensation

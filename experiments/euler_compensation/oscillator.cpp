@@ -59,10 +59,15 @@ StudyPlan plan_oscillator(const Scene& s) {
 }  // namespace
 
 Study oscillator_study() {
-  return {"oscillator", "000 Fig 8", {"fig8_phase.csv", "fig8_exact.csv"}, {"oscillator"},
-          [](const Scene& s) { check_oscillator_step(s, "oscillator.h", s.real("oscillator.h")); }, run_oscillator,
-          plan_oscillator,
-          [](Schema& s) { s.integer("oscillator.steps", at_least(1), "number of steps in Fig 8"); }};
+  return {.name = "oscillator",
+          .makes = {{"000", "Fig. 8"}},
+          .about = "symplectic Euler (42)-(43) on the oscillator (74), with and without the transformation (82)",
+          .files = {"fig8_phase.csv", "fig8_exact.csv"},
+          .keys = Schema().integer("oscillator.steps", at_least(1), "number of steps in Fig 8"),
+          .reads = {"oscillator"},
+          .run = run_oscillator,
+          .validate = [](const Scene& s) { check_oscillator_step(s, "oscillator.h", s.real("oscillator.h")); },
+          .plan = plan_oscillator};
 }
 
 }  // namespace geomint::euler_compensation

@@ -68,23 +68,27 @@ StudyPlan plan_cost(const Scene& s) {
   return p;
 }
 
-void keys(Schema& s) {
-  s.texts("timing.methods", MethodsOn<NonlinearPendulum>::names(), 1,
-          "methods timed on the nonlinear pendulum at the steps nonlinear.h, against its reference")
-      .reals("timing.error_targets", positive(), 1,
-             "errors whose cost (wall time, force evaluations) each method's runs are asked for")
-      // (declared so that scenes which set it are still read; equal wall time is the one rule of equal_cost)
-      .text("timing.equal_wall", MethodsOn<NonlinearPendulum>::names(),
-            "unused: the errors at equal wall time are at the largest wall time every method's runs reach "
-            "(analysis/work_precision.hpp equal_cost), whatever this names");
-}
-
 }  // namespace
 
 Study cost_study() {
-  return {"cost", "cost: error against wall time and force evaluations", {"cost_pendulum.csv"},
-          {"timing", "nonlinear.h", "nonlinear.t_end", "nonlinear.pendulum_q0", "reference"}, check_cost, run_cost,
-          plan_cost, keys, {"timing"}};
+  return {.name = "cost",
+          .about = "cost: error against wall time and force evaluations",
+          .files = {"cost_pendulum.csv"},
+          .keys = Schema()
+                      .texts("timing.methods", MethodsOn<NonlinearPendulum>::names(), 1,
+                             "methods timed on the nonlinear pendulum at the steps nonlinear.h, against its reference")
+                      .reals("timing.error_targets", positive(), 1,
+                             "errors whose cost (wall time, force evaluations) each method's runs are asked for")
+                      // (declared so that scenes which set it are still read; equal wall time is the one rule of
+                      // equal_cost)
+                      .text("timing.equal_wall", MethodsOn<NonlinearPendulum>::names(),
+                            "unused: the errors at equal wall time are at the largest wall time every method's runs "
+                            "reach (analysis/work_precision.hpp equal_cost), whatever this names"),
+          .reads = {"timing.repeats", "nonlinear.h", "nonlinear.t_end", "nonlinear.pendulum_q0", "reference"},
+          .run = run_cost,
+          .validate = check_cost,
+          .plan = plan_cost,
+          .aliases = {"timing"}};
 }
 
 }  // namespace geomint::lobatto_table

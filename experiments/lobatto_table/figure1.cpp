@@ -72,17 +72,21 @@ StudyPlan plan_figure1(const Scene& s) {
           kOscillatorNs, "ns per step: Lobatto on the oscillator (paper-scene summary cost.long_run_phase)"};
 }
 
-void keys(Schema& s) {
-  s.reals("figure1.meshes", at_least(1), 1, "steps per period of Fig. 1 (001: 3, 10)")
-      .texts("figure1.methods", MethodsOn<HarmonicOscillator>::names(), 1,
-             "methods drawn in Fig. 1 (001: lobatto, simpson, implicit_midpoint)");
-}
-
 }  // namespace
 
 Study figure1_study() {
-  return {"figure1", "001 Fig 1", {"fig1_N*.csv", "fig1_exact.csv"}, {"figure1", "oscillator"}, check_figure1,
-          run_figure1, plan_figure1, keys};
+  return {.name = "figure1",
+          .makes = {{"001", "Fig. 1"}},
+          .about = "trajectories (q, p) over one period of the oscillator at N steps per period, and the exact curve",
+          .files = {"fig1_N*.csv", "fig1_exact.csv"},
+          .keys = Schema()
+                      .reals("figure1.meshes", at_least(1), 1, "steps per period of Fig. 1 (001: 3, 10)")
+                      .texts("figure1.methods", MethodsOn<HarmonicOscillator>::names(), 1,
+                             "methods drawn in Fig. 1 (001: lobatto, simpson, implicit_midpoint)"),
+          .reads = {"oscillator"},
+          .run = run_figure1,
+          .validate = check_figure1,
+          .plan = plan_figure1};
 }
 
 }  // namespace geomint::lobatto_table

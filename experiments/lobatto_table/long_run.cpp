@@ -116,16 +116,20 @@ StudyPlan plan_long_run(const Scene& s) {
           "iterates the one-step matrix (13), no force evaluations; ns per step: paper-scene study wall time over its steps"};
 }
 
-void keys(Schema& s) {
-  s.reals("long_run.h", positive(), 1, "steps of Fig. 2 (001: 0.1, 0.05, 0.025)")
-      .integer("long_run.windows", at_least(2), "windows for the maxima of the energy error");
-}
-
 }  // namespace
 
 Study long_run_study() {
-  return {"long_run", "001 Fig 2", {"fig2_energy.csv"}, {"long_run", "oscillator"}, check_long_run, run_long_run,
-          plan_long_run, keys};
+  return {.name = "long_run",
+          .makes = {{"001", "Fig. 2"}},
+          .about = "Lobatto's errors of H and H_d (15) over long_run.periods periods, plain and compensated summation",
+          .files = {"fig2_energy.csv"},
+          .keys = Schema()
+                      .reals("long_run.h", positive(), 1, "steps of Fig. 2 (001: 0.1, 0.05, 0.025)")
+                      .integer("long_run.windows", at_least(2), "windows for the maxima of the energy error"),
+          .reads = {"long_run.periods", "oscillator"},
+          .run = run_long_run,
+          .validate = check_long_run,
+          .plan = plan_long_run};
 }
 
 }  // namespace geomint::lobatto_table

@@ -53,6 +53,7 @@ std::vector<Measured> measure(Context& ctx, const Oscillator& o, const std::vect
                               const std::vector<double>& hs, double periods) {
   const auto& [osc, A, T, z0] = o;
   const std::size_t nh = hs.size();
+  // (narrower than the study's reads: error_targets, timing_steps and timing.repeats do not change these runs)
   const std::vector<std::string> keys = {"oscillator", "long_run.periods", "long_run_cost.methods", "long_run_cost.h"};
   return checkpointed_map<Measured>(ctx, {"long_run_cost", keys}, methods.size() * nh, [&](std::size_t task) {
     Measured r;
@@ -165,27 +166,27 @@ StudyPlan plan_long_run_cost(const Scene& s) {
   return p;
 }
 
-void keys(Schema& s) {
-  s.texts("long_run_cost.methods", MethodsOn<HarmonicOscillator>::names(), 1,
-          "methods whose cost is measured on the oscillator of Fig. 2 over long_run.periods periods (001: lobatto, "
-          "simpson, implicit_midpoint)")
-      .reals("long_run_cost.h", positive(), 3, "steps of the long-run work-precision study")
-      .reals("long_run_cost.error_targets", positive(), 1,
-             "phase errors at the end of the long run whose cost (wall time, force evaluations) each method is asked for")
-      .integer("long_run_cost.timing_steps", at_least(1),
-               "steps of the timed segment; a long run's wall time is its steps times the time per step measured on it")
-      .integer("checkpoint.stop_after", non_negative(),
-               "long_run_cost: stop after this many rounds of its runs, leaving a checkpoint for --resume (0: run to the "
-               "end)")
-      .real("checkpoint.interval", non_negative(), "seconds between checkpoint saves (0: after every round); a SIGKILL loses at most this much work");
-}
-
 }  // namespace
 
 Study long_run_cost_study() {
-  return {"long_run_cost", "cost over the long run of Fig 2: error against wall time and force evaluations",
-          {"cost_long_run_phase.csv", "cost_long_run_energy.csv"}, {"long_run_cost", "long_run.periods", "oscillator", "timing.repeats", "checkpoint"},
-          check_long_run_cost, run_long_run_cost, plan_long_run_cost, keys};
+  return {.name = "long_run_cost",
+          .about = "cost over the long run of Fig 2: error against wall time and force evaluations",
+          .files = {"cost_long_run_phase.csv", "cost_long_run_energy.csv"},
+          .keys = Schema()
+                      .texts("long_run_cost.methods", MethodsOn<HarmonicOscillator>::names(), 1,
+                             "methods whose cost is measured on the oscillator of Fig. 2 over long_run.periods periods "
+                             "(001: lobatto, simpson, implicit_midpoint)")
+                      .reals("long_run_cost.h", positive(), 3, "steps of the long-run work-precision study")
+                      .reals("long_run_cost.error_targets", positive(), 1,
+                             "phase errors at the end of the long run whose cost (wall time, force evaluations) each "
+                             "method is asked for")
+                      .integer("long_run_cost.timing_steps", at_least(1),
+                               "steps of the timed segment; a long run's wall time is its steps times the time per "
+                               "step measured on it"),
+          .reads = {"long_run.periods", "oscillator", "timing.repeats", "checkpoint"},
+          .run = run_long_run_cost,
+          .validate = check_long_run_cost,
+          .plan = plan_long_run_cost};
 }
 
 }  // namespace geomint::lobatto_table

@@ -29,10 +29,7 @@ Schema shared_keys() {
       .real("long_run.periods", at_least(1), "periods of Fig. 2 (001: 1e5)")
       .reals("nonlinear.h", positive(), 3, "steps of the nonlinear convergence study")
       .real("nonlinear.t_end", positive(), "end time of the nonlinear runs")
-      .real("nonlinear.pendulum_q0", any_finite(), "initial angle of L = qdot^2/2 + cos q (p(0) = 0)")
-      .real("reference.rtol", tolerance(), "tolerances of the odeint Bulirsch-Stoer reference")
-      .real("reference.atol", tolerance(), "")
-      .integer("timing.repeats", at_least(1), kTimingRepeatsHelp);
+      .real("nonlinear.pendulum_q0", any_finite(), "initial angle of L = qdot^2/2 + cos q (p(0) = 0)");
   return s;
 }
 

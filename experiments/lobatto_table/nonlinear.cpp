@@ -128,21 +128,24 @@ StudyPlan plan_nonlinear(const Scene& s) {
           kPendulumNs, "odeint reference steps not counted; ns per step: Lobatto on the pendulum (paper-scene summary cost.pendulum)"};
 }
 
-void keys(Schema& s) {
-  s.real("nonlinear.elastic.l", positive(), "elastic pendulum: relaxed length of the spring")
-      .real("nonlinear.elastic.m", positive(), "elastic pendulum: mass")
-      .real("nonlinear.elastic.k", positive(), "elastic pendulum: spring stiffness")
-      .real("nonlinear.elastic.g", non_negative(), "elastic pendulum: gravity (y pointing down)")
-      .real_rows("nonlinear.elastic_initial", 4, any_finite(), 1, "elastic pendulum [x, y, px, py]")
-      .texts("nonlinear.methods", MethodsOn<NonlinearPendulum>::names(), 0,
-             "methods compared with Lobatto on the nonlinear pendulum");
-}
-
 }  // namespace
 
 Study nonlinear_study() {
-  return {"nonlinear", "nonlinear Lagrangians (Newton): order 6, symplecticity", {"nonlinear.csv", "nonlinear_orders.csv"},
-          {"nonlinear", "reference"}, check_nonlinear, run_nonlinear, plan_nonlinear, keys};
+  return {.name = "nonlinear",
+          .about = "nonlinear Lagrangians (Newton): order 6, symplecticity",
+          .files = {"nonlinear.csv", "nonlinear_orders.csv"},
+          .keys = Schema()
+                      .real("nonlinear.elastic.l", positive(), "elastic pendulum: relaxed length of the spring")
+                      .real("nonlinear.elastic.m", positive(), "elastic pendulum: mass")
+                      .real("nonlinear.elastic.k", positive(), "elastic pendulum: spring stiffness")
+                      .real("nonlinear.elastic.g", non_negative(), "elastic pendulum: gravity (y pointing down)")
+                      .real_rows("nonlinear.elastic_initial", 4, any_finite(), 1, "elastic pendulum [x, y, px, py]")
+                      .texts("nonlinear.methods", MethodsOn<NonlinearPendulum>::names(), 0,
+                             "methods compared with Lobatto on the nonlinear pendulum"),
+          .reads = {"nonlinear.h", "nonlinear.t_end", "nonlinear.pendulum_q0", "reference"},
+          .run = run_nonlinear,
+          .validate = check_nonlinear,
+          .plan = plan_nonlinear};
 }
 
 }  // namespace geomint::lobatto_table

@@ -144,19 +144,22 @@ StudyPlan plan_stability(const Scene& s) {
           "runs at the bound iterate the one-step matrix (13); ns per step: paper-scene study wall time over its steps"};
 }
 
-void keys(Schema& s) {
-  s.real("stability.hw_min", positive(), "scan of the spectral radius over h omega")
-      .real("stability.hw_max", positive(), "")
-      .integer("stability.points", at_least(2), "")
-      .texts("stability.methods", MethodsOn<HarmonicOscillator>::names(), 0,
-             "methods whose kernel's spectral radius is scanned with Lobatto's");
-}
-
 }  // namespace
 
 Study stability_study() {
-  return {"stability", "stability set beyond 001 eq. (10); runs at 0.99 and 1.01 of the bound", {"stability.csv"},
-          {"stability", "oscillator", "long_run.periods"}, check_stability, run_stability, plan_stability, keys};
+  return {.name = "stability",
+          .about = "stability set beyond 001 eq. (10); runs at 0.99 and 1.01 of the bound",
+          .files = {"stability.csv"},
+          .keys = Schema()
+                      .real("stability.hw_min", positive(), "scan of the spectral radius over h omega")
+                      .real("stability.hw_max", positive(), "")
+                      .integer("stability.points", at_least(2), "")
+                      .texts("stability.methods", MethodsOn<HarmonicOscillator>::names(), 0,
+                             "methods whose kernel's spectral radius is scanned with Lobatto's"),
+          .reads = {"oscillator", "long_run.periods"},
+          .run = run_stability,
+          .validate = check_stability,
+          .plan = plan_stability};
 }
 
 }  // namespace geomint::lobatto_table

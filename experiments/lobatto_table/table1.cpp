@@ -140,17 +140,23 @@ StudyPlan plan_table1(const Scene& s) {
           "ns per step: Lobatto on the oscillator (paper-scene summary cost.long_run_phase)"};
 }
 
-void keys(Schema& s) {
-  s.reals("meshes", at_least(1), 3, "steps per period N of Table 1 (001: 10, 20, 40)")
-      .texts("table1.methods", MethodsOn<HarmonicOscillator>::names(), 0,
-             "methods compared with Lobatto in Table 1 (max error of q; 001: simpson, implicit_midpoint)");
-}
-
 }  // namespace
 
 Study table1_study() {
-  return {"table1", "001 Table 1", {"table1.csv", "table1_orders.csv"}, {"meshes", "oscillator", "table1"}, check_table1, run_table1,
-          plan_table1, keys};
+  return {.name = "table1",
+          .makes = {{"001", "Table 1"}},
+          .about = "one period at N steps per period: Lobatto's errors of p, q, H and H_d (15), the compared "
+                   "methods' q errors, fitted orders",
+          .files = {"table1.csv", "table1_orders.csv"},
+          .keys = Schema()
+                      .reals("meshes", at_least(1), 3, "steps per period N of Table 1 (001: 10, 20, 40)")
+                      .texts("table1.methods", MethodsOn<HarmonicOscillator>::names(), 0,
+                             "methods compared with Lobatto in Table 1 (max error of q; 001: simpson, "
+                             "implicit_midpoint)"),
+          .reads = {"oscillator"},
+          .run = run_table1,
+          .validate = check_table1,
+          .plan = plan_table1};
 }
 
 }  // namespace geomint::lobatto_table

@@ -267,23 +267,26 @@ void check_cost(const Scene& s) {
   check_first_step(s, "order_study.h", s.reals("order_study.h"));
 }
 
-void keys(Schema& s) {
-  s.integer("timing.repeats", at_least(1), kTimingRepeatsHelp)
-      .text("cost.discretization", method_choices(),
-            "the discrete Lagrangian (5.1) of Phi^(4) and Phi^(0) in the comparison with RK4")
-      .reals("cost.rk4_h", positive(), 3, "steps of the classical RK4 on (3.8), the baseline that preserves neither")
-      .real("cost.target_err", positive(), "trajectory error at which the cost to reach it is reported")
-      .real("cost.target_energy_err", positive(), "energy error max |H - H0| at which the cost to reach it is reported");
-}
-
 }  // namespace
 
 // the cost runs take the steps of the order study to the end time of the energies
 Study cost_study() {
-  return {"cost", "work precision: Phi^(4) of each discretization, Phi^(0) and RK4; trajectory and energy errors",
-          {"cost_trajectory.csv", "cost_energy.csv"},
-          {"potential", "cloud.center", "h", "methods", "energies.t_end", "order_study.h", "timing", "cost", "reference"},
-          check_cost, run_cost, plan_cost, keys};
+  return {.name = "cost",
+          .about = "work precision: Phi^(4) of each discretization, Phi^(0) and RK4; trajectory and energy errors",
+          .files = {"cost_trajectory.csv", "cost_energy.csv"},
+          .keys = Schema()
+                      .text("cost.discretization", method_choices(),
+                            "the discrete Lagrangian (5.1) of Phi^(4) and Phi^(0) in the comparison with RK4")
+                      .reals("cost.rk4_h", positive(), 3,
+                             "steps of the classical RK4 on (3.8), the baseline that preserves neither")
+                      .real("cost.target_err", positive(), "trajectory error at which the cost to reach it is reported")
+                      .real("cost.target_energy_err", positive(),
+                            "energy error max |H - H0| at which the cost to reach it is reported"),
+          .reads = {"potential", "cloud.center", "h", "methods", "energies.t_end", "order_study.h", "timing.repeats",
+                    "reference"},
+          .run = run_cost,
+          .validate = check_cost,
+          .plan = plan_cost};
 }
 
 }  // namespace geomint::measure_cloud

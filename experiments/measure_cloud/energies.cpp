@@ -90,19 +90,25 @@ StudyPlan plan_energies(const Scene& s) {
 
 // (energies.t_end is also the end time of the cost runs: a shared key, main.cpp)
 Study energies_study() {
-  Study st{"energies", "003 Figs 5.3, 5.5, 5.6", {"energies_phi*.csv"},
-           {"potential", "cloud.center", "h", "methods", "energies", "reference"},
-           [](const Scene& s) {
-             check_at_least_one_step(s, "energies.t_end", {s.real("h")}, "h");
-             check_first_step(s, "h", {s.real("h")});
-           },
-           run_energies, plan_energies};
-  // Fig 5.3 is the harmonic particle's, Figs 5.5 (Phi^(4)) and 5.6 (Phi^(0)) the free particle's (003 Sec. 5.3)
-  st.makes_under = [](const Scene& s) {
-    const std::string pot = s.text("potential");
-    return pot == "harmonic" ? std::string("003 Fig 5.3") : pot == "free" ? std::string("003 Figs 5.5, 5.6") : "";
-  };
-  return st;
+  return {.name = "energies",
+          .makes = {{"003", "Fig. 5.3"}, {"003", "Fig. 5.5"}, {"003", "Fig. 5.6"}},
+          .about = "H, K_E, K^(4)_mod, E^(4) and the error against the reference along Phi^(4), Phi^(0)",
+          .files = {"energies_phi*.csv"},
+          .reads = {"potential", "cloud.center", "h", "methods", "energies", "reference"},
+          .run = run_energies,
+          .validate =
+              [](const Scene& s) {
+                check_at_least_one_step(s, "energies.t_end", {s.real("h")}, "h");
+                check_first_step(s, "h", {s.real("h")});
+              },
+          .plan = plan_energies,
+          // Fig 5.3 is the harmonic particle's, Figs 5.5 (Phi^(4)) and 5.6 (Phi^(0)) the free particle's (003 Sec. 5.3)
+          .makes_under = [](const Scene& s) {
+            const std::string pot = s.text("potential");
+            return pot == "harmonic" ? std::vector<Item>{{"003", "Fig. 5.3"}}
+                   : pot == "free"   ? std::vector<Item>{{"003", "Fig. 5.5"}, {"003", "Fig. 5.6"}}
+                                     : std::vector<Item>{};
+          }};
 }
 
 }  // namespace geomint::measure_cloud

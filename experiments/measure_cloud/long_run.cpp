@@ -49,20 +49,21 @@ StudyPlan plan_long_run(const Scene& s) {
   return make_plan(2 * M * n, 2 * M * (n + 1) * kPointBytes, 1800);
 }
 
-void keys(Schema& s) {
-  s.real("long_run.t_end", positive(), "end time of the long run of Phi^(0) and Phi^(4)");
-}
-
 }  // namespace
 
 Study long_run_study() {
-  return {"long_run", "H under Phi^(0) and Phi^(4) to long_run.t_end", {"long_run.csv"},
-          {"potential", "cloud.center", "h", "methods", "long_run", "reference"},
-          [](const Scene& s) {
-            check_at_least_one_step(s, "long_run.t_end", {s.real("h")}, "h");
-            check_first_step(s, "h", {s.real("h")});
-          },
-          run_long_run, plan_long_run, keys};
+  return {.name = "long_run",
+          .about = "H under Phi^(0) and Phi^(4) to long_run.t_end",
+          .files = {"long_run.csv"},
+          .keys = Schema().real("long_run.t_end", positive(), "end time of the long run of Phi^(0) and Phi^(4)"),
+          .reads = {"potential", "cloud.center", "h", "methods", "reference"},
+          .run = run_long_run,
+          .validate =
+              [](const Scene& s) {
+                check_at_least_one_step(s, "long_run.t_end", {s.real("h")}, "h");
+                check_first_step(s, "h", {s.real("h")});
+              },
+          .plan = plan_long_run};
 }
 
 }  // namespace geomint::measure_cloud

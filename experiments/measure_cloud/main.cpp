@@ -13,8 +13,8 @@
 // The scene names the potential, the studies and the discretizations (registry
 // names conformal_M ... or their labels M ...); nothing else is computed.
 // Every study reads the potential and the centre cloud.center; all but order_study the reference
-// flow. Here: the studies, and the scene keys that several of them read (measure_cloud.hpp: what
-// else they share).
+// flow. Here: the studies, and the scene keys that several of them read (the runner declares reference.*,
+// checkpoint.* and timing.repeats: common_keys(); measure_cloud.hpp: what else they share).
 #include "measure_cloud.hpp"
 
 using namespace geomint;
@@ -33,12 +33,6 @@ Schema shared_keys() {
       .reals("cloud.center", any_finite(), 4, "centre [x, y, px, py] of every cloud and start of every trajectory")
       .real("energies.t_end", positive(), "end time of Figs 5.3, 5.5, 5.6 (003: 10) and of the cost runs")
       .reals("order_study.h", positive(), 3, "steps of the order study and of the cost runs")
-      .real("reference.rtol", tolerance(), "tolerances of the odeint Bulirsch-Stoer reference on (3.8)")
-      .real("reference.atol", tolerance(), "")
-      .integer("checkpoint.stop_after", non_negative(),
-               "volumes, order_study: stop after this many rounds of reference paths or cloud runs, leaving a "
-               "checkpoint for --resume (0: run to the end)")
-      .real("checkpoint.interval", non_negative(), "seconds between checkpoint saves (0: after every round); a SIGKILL loses at most this much work")
       .alias("observables", "studies");  // the older name of the studies list
   return s;
 }

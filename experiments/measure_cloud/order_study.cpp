@@ -93,8 +93,7 @@ void run_order_study(Context& ctx) {
   }
   const double h_probe = 0.5 * *std::min_element(hs.begin(), hs.end());
   ctx.progress("order study: " + std::to_string(tasks.size()) + " cloud runs");
-  const std::vector<std::string> keys = {"potential", "cloud.center", "methods", "order_study", "ptp_window"};
-  const auto results = checkpointed_map<Result>(ctx, {"order_study", keys}, tasks.size(), [&](std::size_t t) {
+  const auto results = checkpointed_map<Result>(ctx, {"order_study"}, tasks.size(), [&](std::size_t t) {
     const Task& T = tasks[t];
     const bool probe = T.e == es.size();
     const double hh = probe ? h_probe : hs[T.i];
@@ -143,18 +142,21 @@ StudyPlan plan_order_study(const Scene& s) {
   return p;
 }
 
-void keys(Schema& s) {
-  s.real("order_study.radius", {.gt = 0.0, .ge = {}, .lt = {}, .le = kMaxRadius}, "radius of its 600-cell clouds (small enough for no hull artefact)")
-      .real("order_study.t_end", positive(), "its end time")
-      .reals("order_study.ells", at_least(0), 1, "its truncation orders ell");
-}
-
 }  // namespace
 
 Study order_study_study() {
-  return {"order_study", "order of measure preservation (003 Cor. 4.3)", {"order_study.csv"},
-          {"potential", "cloud.center", "methods", "order_study", "ptp_window", "checkpoint"}, check_order_study,
-          run_order_study, plan_order_study, keys};
+  return {.name = "order_study",
+          .about = "order of measure preservation (003 Cor. 4.3)",
+          .files = {"order_study.csv"},
+          .keys = Schema()
+                      .real("order_study.radius", {.gt = 0.0, .ge = {}, .lt = {}, .le = kMaxRadius},
+                            "radius of its 600-cell clouds (small enough for no hull artefact)")
+                      .real("order_study.t_end", positive(), "its end time")
+                      .reals("order_study.ells", at_least(0), 1, "its truncation orders ell"),
+          .reads = {"potential", "cloud.center", "methods", "order_study.h", "ptp_window", "checkpoint"},
+          .run = run_order_study,
+          .validate = check_order_study,
+          .plan = plan_order_study};
 }
 
 }  // namespace geomint::measure_cloud

@@ -145,20 +145,24 @@ StudyPlan plan_shape(const Scene& s) {
   return make_plan(M * n + points * snaps + 2 * n, points * (snaps + 1) * kPointBytes * 2 + (2 + M) * (n + 1) * 20 * 8, 15700);
 }
 
-void keys(Schema& s) {
-  s.integer("seed", at_least(0), "seed of the random cloud of Fig. 5.1")
-      .integer("shape.points", at_least(5), "points on the 3-sphere of Fig. 5.1 (003: 5000)")
-      .real("shape.radius", {.gt = 0.0, .ge = {}, .lt = {}, .le = kMaxRadius}, "radius of that sphere (003: 0.3)")
-      .real("shape.snapshot_dt", positive(), "time between snapshots (003: 2.75)")
-      .integer("shape.snapshots", at_least(1), "snapshots after t = 0 (003: 5)");
-}
-
 }  // namespace
 
 Study shape_study() {
-  return {"shape", "003 Fig 5.1", {"shape.csv", "shape_areas.csv", "shape_symplecticity.csv"},
-          {"potential", "cloud.center", "seed", "shape", "h", "methods", "reference"},
-          [](const Scene& s) { check_first_step(s, "h", {s.real("h")}); }, run_shape, plan_shape, keys};
+  return {.name = "shape",
+          .makes = {{"003", "Fig. 5.1"}},
+          .about = "a large cloud on a 3-sphere under the reference flow: snapshots, shadow areas, symplecticity",
+          .files = {"shape.csv", "shape_areas.csv", "shape_symplecticity.csv"},
+          .keys = Schema()
+                      .integer("seed", at_least(0), "seed of the random cloud of Fig. 5.1")
+                      .integer("shape.points", at_least(5), "points on the 3-sphere of Fig. 5.1 (003: 5000)")
+                      .real("shape.radius", {.gt = 0.0, .ge = {}, .lt = {}, .le = kMaxRadius},
+                            "radius of that sphere (003: 0.3)")
+                      .real("shape.snapshot_dt", positive(), "time between snapshots (003: 2.75)")
+                      .integer("shape.snapshots", at_least(1), "snapshots after t = 0 (003: 5)"),
+          .reads = {"potential", "cloud.center", "h", "methods", "reference"},
+          .run = run_shape,
+          .validate = [](const Scene& s) { check_first_step(s, "h", {s.real("h")}); },
+          .plan = plan_shape};
 }
 
 }  // namespace geomint::measure_cloud

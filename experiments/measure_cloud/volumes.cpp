@@ -187,23 +187,30 @@ StudyPlan plan_volumes(const Scene& s) {
   return make_plan(runs * points * n, runs * (n + 1) * 121 * kPointBytes, 9500);
 }
 
-void keys(Schema& s) {
-  s.real("t_end", positive(), "end time of the cloud runs (003 Figs 5.2, 5.4: 30)")
-      .real("cloud.radius", {.gt = 0.0, .ge = {}, .lt = {}, .le = kMaxRadius}, "circumradius of the 600-cell cloud (003: 0.01)")
-      .boolean("cloud.authors_cloud",
-               "also the cloud of the code of 003 (it drops the vertex (0, 0, r, 0): 119 vertices + centre), beside "
-               "the full one: volumes_authors_phi*.csv, reproduced.authors_cloud")
-      .reals("cloud.ells", at_least(0), 1, "truncation orders ell of the methods Phi^(ell) run on the cloud");
-}
-
 }  // namespace
 
 Study volumes_study() {
-  Study st{"volumes", "003 Figs 5.2, 5.4", {"volumes_phi*.csv", "volumes_authors_phi*.csv"},
-           {"potential", "cloud.center", "h", "methods", "t_end", "ptp_window", "cloud", "checkpoint", "reference"},
-           check_volumes, run_volumes, plan_volumes, keys};
-  st.makes_under = [](const Scene& s) { return s.text("potential") == "harmonic" ? std::string("003 Figs 5.2, 5.4") : ""; };
-  return st;
+  return {.name = "volumes",
+          .makes = {{"003", "Fig. 5.2"}, {"003", "Fig. 5.4"}},
+          .about = "measure-weighted convex-hull volumes of the 600-cell cloud under Phi^(ell) and the reference flow",
+          .files = {"volumes_phi*.csv", "volumes_authors_phi*.csv"},
+          .keys = Schema()
+                      .real("t_end", positive(), "end time of the cloud runs (003 Figs 5.2, 5.4: 30)")
+                      .real("cloud.radius", {.gt = 0.0, .ge = {}, .lt = {}, .le = kMaxRadius},
+                            "circumradius of the 600-cell cloud (003: 0.01)")
+                      .boolean("cloud.authors_cloud",
+                               "also the cloud of the code of 003 (it drops the vertex (0, 0, r, 0): 119 vertices + "
+                               "centre), beside the full one: volumes_authors_phi*.csv, reproduced.authors_cloud")
+                      .reals("cloud.ells", at_least(0), 1,
+                             "truncation orders ell of the methods Phi^(ell) run on the cloud"),
+          .reads = {"potential", "cloud.center", "h", "methods", "ptp_window", "checkpoint", "reference"},
+          .run = run_volumes,
+          .validate = check_volumes,
+          .plan = plan_volumes,
+          .makes_under = [](const Scene& s) {
+            return s.text("potential") == "harmonic" ? std::vector<Item>{{"003", "Fig. 5.2"}, {"003", "Fig. 5.4"}}
+                                                     : std::vector<Item>{};
+          }};
 }
 
 }  // namespace geomint::measure_cloud

@@ -278,23 +278,27 @@ StudyPlan plan_convergence(const Scene& s) {
           kNsPerStep, "odeint reference steps not counted; ns per step: the processed Rowlands method (paper-scene summary timing)"};
 }
 
-void keys(Schema& s) {
-  s.texts("methods", pendulum_method_choices(), 1, "methods of the convergence study (registry names or labels)")
-      .texts("observables", {"energy_error", "phase_error"}, 1,
-             "what the convergence study records: energy_error (eq. (50) and the max over the run), phase_error "
-             "(|z_N - z(t_end)|_2 against the odeint reference, computed only if named)");
-}
 
 }  // namespace
 
 Study convergence_study() {
-  return {"convergence", "000 Fig 4", {"fig4_convergence.csv", "orders.csv", "reference.csv"},
-          {"initial", "t_end", "h", "methods", "observables", "pendulum", "reference"},
-          [](const Scene& s) {
-            check_common(s);
-            check_methods(s, "methods");
-          },
-          run_convergence, plan_convergence, keys};
+  return {.name = "convergence",
+          .makes = {{"000", "Fig. 4"}},
+          .about = "Stormer-Verlet vs Rowlands on the elastic pendulum: orders 2 and 4",
+          .files = {"fig4_convergence.csv", "orders.csv", "reference.csv"},
+          .keys = Schema()
+                      .texts("methods", pendulum_method_choices(), 1, "methods of the convergence study (registry names or labels)")
+                      .texts("observables", {"energy_error", "phase_error"}, 1,
+                             "what the convergence study records: energy_error (eq. (50) and the max over the run), "
+                             "phase_error (|z_N - z(t_end)|_2 against the odeint reference, computed only if named)"),
+          .reads = {"initial", "t_end", "h", "pendulum", "reference"},
+          .run = run_convergence,
+          .validate =
+              [](const Scene& s) {
+                check_common(s);
+                check_methods(s, "methods");
+              },
+          .plan = plan_convergence};
 }
 
 }  // namespace geomint::rowlands_convergence

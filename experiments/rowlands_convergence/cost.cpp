@@ -86,23 +86,26 @@ StudyPlan plan_cost(const Scene& s) {
   return p;
 }
 
-void keys(Schema& s) {
-  s.texts("timing.methods", pendulum_method_choices(), 1, "methods of the cost study (registry names or labels)")
-      .integer("timing.repeats", at_least(1), kTimingRepeatsHelp)
-      .reals("timing.error_targets", positive(), 1,
-             "phase errors for which the wall time and the force evaluations to reach them are reported");
-}
 
 }  // namespace
 
 Study cost_study() {
-  return {"cost", "cost: error against wall time and force evaluations, against odeint's steppers", {"cost_phase.csv"},
-          {"timing", "initial", "t_end", "h", "pendulum", "reference"},
-          [](const Scene& s) {
-            check_common(s);
-            check_methods(s, "timing.methods");
-          },
-          run_cost, plan_cost, keys, {"timing"}};
+  return {.name = "cost",
+          .about = "cost of Fig 4's methods: error against wall time and force evaluations, against odeint's steppers",
+          .files = {"cost_phase.csv"},
+          .keys = Schema()
+                      .texts("timing.methods", pendulum_method_choices(), 1, "methods of the cost study (registry names or labels)")
+                      .reals("timing.error_targets", positive(), 1,
+                             "phase errors for which the wall time and the force evaluations to reach them are reported"),
+          .reads = {"timing.repeats", "initial", "t_end", "h", "pendulum", "reference"},
+          .run = run_cost,
+          .validate =
+              [](const Scene& s) {
+                check_common(s);
+                check_methods(s, "timing.methods");
+              },
+          .plan = plan_cost,
+          .aliases = {"timing"}};
 }
 
 }  // namespace geomint::rowlands_convergence

@@ -25,9 +25,7 @@ Schema shared_keys() {
                  "initial conditions [x, y, px, py]; the first is drawn in Fig. 4 and timed, orders are fitted for each")
       .real("t_end", positive(), "t_max: end of every run (000 Fig. 4: 4)")
       .reals("h", positive(), 3,
-             "step sizes; each divides t_end, and h sqrt(k/m) is below the oscillatory bound of every named method")
-      .real("reference.rtol", tolerance(), "relative tolerance of the odeint Bulirsch-Stoer reference")
-      .real("reference.atol", tolerance(), "absolute tolerance of the odeint Bulirsch-Stoer reference");
+             "step sizes; each divides t_end, and h sqrt(k/m) is below the oscillatory bound of every named method");
   return s;
 }
 

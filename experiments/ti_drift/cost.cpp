@@ -133,23 +133,28 @@ StudyPlan plan_cost(const Scene& s) {
   return p;
 }
 
-void keys(Schema& s) {
-  s.texts("work_precision.methods", MethodsOn<Counting<HenonHeiles>>::choices(), 2,
-          "methods of the work-precision study (processed where they have processing; registry names or labels)")
-      .reals("work_precision.h", positive(), 3, "steps of the work-precision runs (every method)")
-      .real("work_precision.t_end", positive(), "the global error of a work-precision run is taken at this time")
-      .real("work_precision.target", positive(), "target error of the cost to reach it")
-      .real("work_precision.reference_tol", {.gt = {}, .ge = 1e-13, .lt = {}, .le = 1e-2},
-            "odeint tolerance of the Henon-Heiles reference error estimate (the reference itself: 100 times tighter, so in [1e-15, 1e-4])");
-}
-
 }  // namespace
 
 Study cost_study() {
-  return {"cost", "cost: error against wall time and force evaluations (Henon-Heiles k = 3, oscillator)",
-          {"cost_henon_heiles.csv", "cost_oscillator.csv"},
-          {"work_precision", "timing.repeats", "hh3.q2", "hh3.p2", "hh.H0"},
-          check_cost, run_cost, plan_cost, keys, {"work_precision"}};
+  return {.name = "cost",
+          .about = "cost: error against wall time and force evaluations (Henon-Heiles k = 3, oscillator)",
+          .files = {"cost_henon_heiles.csv", "cost_oscillator.csv"},
+          .keys = Schema()
+                      .texts("work_precision.methods", MethodsOn<Counting<HenonHeiles>>::choices(), 2,
+                             "methods of the work-precision study (processed where they have processing; registry "
+                             "names or labels)")
+                      .reals("work_precision.h", positive(), 3, "steps of the work-precision runs (every method)")
+                      .real("work_precision.t_end", positive(),
+                            "the global error of a work-precision run is taken at this time")
+                      .real("work_precision.target", positive(), "target error of the cost to reach it")
+                      .real("work_precision.reference_tol", {.gt = {}, .ge = 1e-13, .lt = {}, .le = 1e-2},
+                            "odeint tolerance of the Henon-Heiles reference error estimate (the reference itself: 100 "
+                            "times tighter, so in [1e-15, 1e-4])"),
+          .reads = {"timing.repeats", "hh3.q2", "hh3.p2", "hh.H0"},
+          .run = run_cost,
+          .validate = check_cost,
+          .plan = plan_cost,
+          .aliases = {"work_precision"}};
 }
 
 }  // namespace geomint::ti_drift

@@ -222,15 +222,6 @@ StudyPlan plan_ensemble(const Scene& s) {
           static_cast<double>(lane_batches(static_cast<std::size_t>(M)))};  // (tasks: batches of lanes)
 }
 
-void keys(Schema& s) {
-  s.real("t_end", positive(), "Fig. 4 time span (004: 2.5e6)")
-      .integer("ensemble.size", at_least(2), "Fig. 4 trajectories (004: 100)")
-      .real("ensemble.fit_from", {.gt = 0.0, .ge = {}, .lt = 1.0, .le = {}},
-            "Fig. 4: sigma ~ t^gamma, the late mean and the slope of sigma^2 are fitted over [fit_from t_end, t_end] "
-            "(summary ensemble.fit; 004: past the bounded part, 0.1)")
-      .real("ensemble.outlier", positive(), "trajectories whose max |error| exceeds this go to Fig. 4's upper panel (004: 2e-6)");
-}
-
 }  // namespace
 
 Run integrate_ensemble(Context& ctx) {
@@ -251,10 +242,22 @@ std::size_t largest_error(const Run& run) {
 }
 
 Study ensemble_study(LargestError& largest) {
-  return {"ensemble", "004 Fig 4", {"fig4_stats.csv", "fig4_trajectories.csv"},
-          {"h", "t_end", "samples", "hh", "ensemble.size", "ensemble.seed", "ensemble.perturbation", "ensemble.fit_from",
-           "ensemble.outlier", "hh3.q2", "hh3.p2", "checkpoint"},
-          check_ensemble_run, [&largest](Context& ctx) { run_ensemble(ctx, largest); }, plan_ensemble, keys};
+  std::vector<std::string> reads = kEnsembleKeys;  // (main.cpp's shared keys: the poincare study reads them too)
+  reads.emplace_back("checkpoint");
+  return {.name = "ensemble",
+          .makes = {{"004", "Fig. 4"}},
+          .about = "the random walk of the error of E over an ensemble on Henon-Heiles k: mean, sigma, outliers",
+          .files = {"fig4_stats.csv", "fig4_trajectories.csv"},
+          .keys = Schema()
+                      .real("ensemble.fit_from", {.gt = 0.0, .ge = {}, .lt = 1.0, .le = {}},
+                            "Fig. 4: sigma ~ t^gamma, the late mean and the slope of sigma^2 are fitted over [fit_from "
+                            "t_end, t_end] (summary ensemble.fit; 004: past the bounded part, 0.1)")
+                      .real("ensemble.outlier", positive(),
+                            "trajectories whose max |error| exceeds this go to Fig. 4's upper panel (004: 2e-6)"),
+          .reads = reads,
+          .run = [&largest](Context& ctx) { run_ensemble(ctx, largest); },
+          .validate = check_ensemble_run,
+          .plan = plan_ensemble};
 }
 
 }  // namespace geomint::ti_drift

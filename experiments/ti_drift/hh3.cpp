@@ -68,8 +68,15 @@ StudyPlan plan_hh3(const Scene& s) {
 }  // namespace
 
 Study hh3_study() {
-  return {"hh3", "004 Fig 3", {"fig3_hh3.csv"}, {"h", "samples", "hh3", "hh.H0"}, check_hh3, run_hh3, plan_hh3,
-          [](Schema& s) { s.real("hh3.t_end", positive(), "Fig. 3 time span"); }};
+  return {.name = "hh3",
+          .makes = {{"004", "Fig. 3"}},
+          .about = "the modified energy E of (3.3) and (4.2) on Henon-Heiles k = 3: bounded, no drift",
+          .files = {"fig3_hh3.csv"},
+          .keys = Schema().real("hh3.t_end", positive(), "Fig. 3 time span"),
+          .reads = {"h", "samples", "hh3.q2", "hh3.p2", "hh.H0"},
+          .run = run_hh3,
+          .validate = check_hh3,
+          .plan = plan_hh3};
 }
 
 }  // namespace geomint::ti_drift

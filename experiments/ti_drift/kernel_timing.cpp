@@ -115,26 +115,29 @@ StudyPlan plan_timing(const Scene& s) {
   return p;
 }
 
-void keys(Schema& s) {
-  s.texts("timing.methods", MethodsOn<HenonHeiles>::choices(), 1,
-          "methods timed (their kernels, on the Fig. 4 system; registry names or labels)")
-      .integer("timing.steps", at_least(1), "steps of each timed run")
-      .integer("timing.lj_steps", at_least(1), "steps of each timed run of the Lennard-Jones lanes (Fig. 6 cluster, lj.h)");
-}
-
 }  // namespace
 
 Study kernel_timing_study() {
-  return {"kernel_timing", "cost: ns per step of each method", {},
-          {"timing", "h", "hh", "hh3.q2", "hh3.p2", "ensemble.seed", "ensemble.perturbation", "lj.h", "lj.seed",
-           "lj.perturbation"},
-          [](const Scene& s) {
-            with_ensemble_system(s, [&](const auto& hh) {
-              MethodsOn<std::decay_t<decltype(hh)>>::check(s, "timing.methods", hh);
-              check_hh_starts(s, "hh3", hh, s.real("ensemble.perturbation"), true);
-            });
-          },
-          run_timing, plan_timing, keys, {"timing"}};
+  return {.name = "kernel_timing",
+          .about = "cost: ns per step of each method",
+          .keys = Schema()
+                      .texts("timing.methods", MethodsOn<HenonHeiles>::choices(), 1,
+                             "methods timed (their kernels, on the Fig. 4 system; registry names or labels)")
+                      .integer("timing.steps", at_least(1), "steps of each timed run")
+                      .integer("timing.lj_steps", at_least(1),
+                               "steps of each timed run of the Lennard-Jones lanes (Fig. 6 cluster, lj.h)"),
+          .reads = {"timing.repeats", "h", "hh", "hh3.q2", "hh3.p2", "ensemble.seed", "ensemble.perturbation", "lj.h",
+                    "lj.seed", "lj.perturbation"},
+          .run = run_timing,
+          .validate =
+              [](const Scene& s) {
+                with_ensemble_system(s, [&](const auto& hh) {
+                  MethodsOn<std::decay_t<decltype(hh)>>::check(s, "timing.methods", hh);
+                  check_hh_starts(s, "hh3", hh, s.real("ensemble.perturbation"), true);
+                });
+              },
+          .plan = plan_timing,
+          .aliases = {"timing"}};
 }
 
 }  // namespace geomint::ti_drift

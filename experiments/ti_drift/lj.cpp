@@ -306,21 +306,27 @@ StudyPlan plan_lj(const Scene& s) {
   return p;
 }
 
-void keys(Schema& s) {
-  s.reals("lj.h_scan", positive(), 1, "Fig. 6: steps scanned for stability (004 prints h = 0.2)")
-      .real("lj.scan_t", positive(), "time span of the step-size scan")
-      .integer("lj.scan_size", at_least(1), "trajectories of the scan")
-      .real("lj.t_end", positive(), "Fig. 6 time span (004: 2e4)")
-      .real("lj.fit_from", {.gt = 0.0, .ge = {}, .lt = 1.0, .le = {}},
-            "Fig. 6: sigma ~ t^gamma and the growth of H(p^, q^) are fitted over [fit_from t_end, t_end] (summary lj.fit)")
-      .integer("lj.size", at_least(2), "Fig. 6 trajectories (004: 400)")
-      .real("lj.blowup", positive(), "|H - H0| above this marks a scan run diverged");
-}
-
 }  // namespace
 
 Study lj_study() {
-  return {"lj", "004 Fig 6", {"fig6_*.csv"}, {"lj", "samples", "checkpoint"}, check_lj, run_lj, plan_lj, keys};
+  return {.name = "lj",
+          .makes = {{"004", "Fig. 6"}},
+          .about = "the Lennard-Jones cluster: a step-size scan and the ensemble statistics at lj.h",
+          .files = {"fig6_*.csv"},
+          .keys = Schema()
+                      .reals("lj.h_scan", positive(), 1, "Fig. 6: steps scanned for stability (004 prints h = 0.2)")
+                      .real("lj.scan_t", positive(), "time span of the step-size scan")
+                      .integer("lj.scan_size", at_least(1), "trajectories of the scan")
+                      .real("lj.t_end", positive(), "Fig. 6 time span (004: 2e4)")
+                      .real("lj.fit_from", {.gt = 0.0, .ge = {}, .lt = 1.0, .le = {}},
+                            "Fig. 6: sigma ~ t^gamma and the growth of H(p^, q^) are fitted over [fit_from t_end, "
+                            "t_end] (summary lj.fit)")
+                      .integer("lj.size", at_least(2), "Fig. 6 trajectories (004: 400)")
+                      .real("lj.blowup", positive(), "|H - H0| above this marks a scan run diverged"),
+          .reads = {"lj.h", "lj.seed", "lj.perturbation", "samples", "checkpoint"},
+          .run = run_lj,
+          .validate = check_lj,
+          .plan = plan_lj};
 }
 
 }  // namespace geomint::ti_drift

@@ -108,17 +108,23 @@ StudyPlan plan_lj_steps(const Scene& s) {
   return p;
 }
 
-void keys(Schema& s) {
-  s.reals("lj_steps.h", positive(), 3, "Fig. 6: steps at which sigma of the error of E is measured (its power of h)")
-      .integer("lj_steps.size", at_least(2), "trajectories per step of lj_steps (the starts of Fig. 6: lj.seed)")
-      .real("lj_steps.t_end", positive(), "time at which sigma is measured in lj_steps");
-}
-
 }  // namespace
 
 Study lj_steps_study() {
-  return {"lj_steps", "004 Fig 6: sigma against h (the printed step)", {"fig6_steps.csv"},
-          {"lj_steps", "lj.seed", "lj.perturbation"}, check_lj_steps, run_lj_steps, plan_lj_steps, keys};
+  return {.name = "lj_steps",
+          .makes = {{"004", "Fig. 6"}},
+          .about = "sigma against h (the printed step)",
+          .files = {"fig6_steps.csv"},
+          .keys = Schema()
+                      .reals("lj_steps.h", positive(), 3,
+                             "Fig. 6: steps at which sigma of the error of E is measured (its power of h)")
+                      .integer("lj_steps.size", at_least(2),
+                               "trajectories per step of lj_steps (the starts of Fig. 6: lj.seed)")
+                      .real("lj_steps.t_end", positive(), "time at which sigma is measured in lj_steps"),
+          .reads = {"lj.seed", "lj.perturbation"},
+          .run = run_lj_steps,
+          .validate = check_lj_steps,
+          .plan = plan_lj_steps};
 }
 
 }  // namespace geomint::ti_drift

@@ -20,7 +20,6 @@
 
 #include "ensemble.hpp"
 #include "ti_drift.hpp"
-#include "geomint/runner/timing.hpp"
 
 using namespace geomint;
 using namespace geomint::ti_drift;
@@ -30,6 +29,7 @@ namespace {
 Schema shared_keys() {
   Schema s;
   s.real("h", positive(), "step of Figs 2-5 (004: 0.2), of the symplecticity check and of the cost runs")
+      .real("t_end", positive(), "Fig. 4 time span (004: 2.5e6)")
       .real("hh3.q2", any_finite(), "Fig. 3 start q2 (q1 = 0, p1 > 0 from hh.H0); the centre of the Fig. 4 starts")
       .real("hh3.p2", any_finite(), "Fig. 3 start p2")
       .integer("hh.k", at_least(3), "exponent k of Fig. 4 (004: 5)")
@@ -37,17 +37,15 @@ Schema shared_keys() {
       .real("hh.coupling", any_finite(),
             "coefficient c of c q1^2 q2 in the potential of Figs 4-5 (004: 1); c = 0 removes the term from the "
             "compiled step")
+      .integer("ensemble.size", at_least(2), "Fig. 4 trajectories (004: 100)")
       .integer("ensemble.seed", non_negative(), "seed; trajectory i uses its own stream (seed, i)")
       .real("ensemble.perturbation", non_negative(), "q2 and p2 of each start perturbed uniformly by at most this")
       .integer("samples", at_least(10), "output times per long run")
       .real("lj.h", positive(), "Fig. 6: the step used for the statistics")
-      .integer("checkpoint.stop_after", non_negative(),
-               "ensemble, lj (and poincare, which integrates the ensemble when the ensemble study does not run): stop "
-               "after this many rounds of trajectories, leaving a checkpoint for --resume (0: run to the end)")
-      .real("checkpoint.interval", non_negative(), "seconds between checkpoint saves (0: after every round); a SIGKILL loses at most this much work")
       .integer("lj.seed", non_negative(), "seed; trajectory i uses its own stream (seed, i)")
-      .real("lj.perturbation", non_negative(), "each coordinate of the 3 x 3 grid perturbed uniformly by at most this (004: 0.01)")
-      .integer("timing.repeats", at_least(1), kTimingRepeatsHelp);
+      .real("lj.perturbation", non_negative(), "each coordinate of the 3 x 3 grid perturbed uniformly by at most this (004: 0.01)");
+  // (checkpoint.* and timing.repeats are the runner's, common_keys(). A checkpoint's rounds are rounds of
+  // trajectories: ensemble, lj, and poincare, which integrates the ensemble when the ensemble study does not run.)
   return s;
 }
 

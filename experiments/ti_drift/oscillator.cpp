@@ -298,19 +298,23 @@ StudyPlan plan_oscillator(const Scene& s) {
   return p;
 }
 
-void keys(Schema& s) {
-  s.reals("oscillator.omega_h", positive(), 3,
-          "effective steps omega h_eff of Fig. 1 (equal work: h = h_eff e/2 for e force evaluations per step)")
-      .texts("oscillator.methods", MethodsOn<Counting<HarmonicOscillator>>::choices(), 1,
-             "methods of Fig. 1, processed where they have processing (registry names or labels)")
-      .real("oscillator.t_omega", positive(), "errors are maxima over t <= t_omega / omega (004: 50)");
-}
-
 }  // namespace
 
 Study oscillator_study() {
-  return {"oscillator", "004 Fig 1", {"oscillator.csv", "oscillator_closed_forms.csv"}, {"oscillator"}, check_oscillator,
-          run_oscillator, plan_oscillator, keys};
+  return {.name = "oscillator",
+          .makes = {{"004", "Fig. 1"}},
+          .about = "the harmonic oscillator at equal work: global and energy errors, their orders, the closed forms",
+          .files = {"oscillator.csv", "oscillator_closed_forms.csv"},
+          .keys = Schema()
+                      .reals("oscillator.omega_h", positive(), 3,
+                             "effective steps omega h_eff of Fig. 1 (equal work: h = h_eff e/2 for e force evaluations "
+                             "per step)")
+                      .texts("oscillator.methods", MethodsOn<Counting<HarmonicOscillator>>::choices(), 1,
+                             "methods of Fig. 1, processed where they have processing (registry names or labels)")
+                      .real("oscillator.t_omega", positive(), "errors are maxima over t <= t_omega / omega (004: 50)"),
+          .run = run_oscillator,
+          .validate = check_oscillator,
+          .plan = plan_oscillator};
 }
 
 }  // namespace geomint::ti_drift

@@ -170,21 +170,26 @@ StudyPlan plan_pendulum(const Scene& s) {
   return p;
 }
 
-void keys(Schema& s) {
-  s.real("pendulum.q0", any_finite(), "Fig. 2 start (004: q = 0, p = 2.5)")
-      .real("pendulum.p0", any_finite(), "")
-      .real("pendulum.t_end", positive(), "Fig. 2 time span")
-      .real("pendulum.fit_t", positive(), "the drift rate is fitted over t <= fit_t, where the energy has not yet fallen")
-      .integer("pendulum.slope_windows", at_least(2),
-               "the local drift: least-squares slopes over this many consecutive windows of the run, against (4.3) at "
-               "each window's energy");
-}
-
 }  // namespace
 
 Study pendulum_study() {
-  return {"pendulum", "004 Fig 2", {"fig2_pendulum.csv", "fig2_local_slope.csv"}, {"h", "samples", "pendulum"},
-          check_pendulum, run_pendulum, plan_pendulum, keys};
+  return {.name = "pendulum",
+          .makes = {{"004", "Fig. 2"}},
+          .about = "the drift of the shifted energy on the unsymmetric pendulum, against the rate (4.3)",
+          .files = {"fig2_pendulum.csv", "fig2_local_slope.csv"},
+          .keys = Schema()
+                      .real("pendulum.q0", any_finite(), "Fig. 2 start (004: q = 0, p = 2.5)")
+                      .real("pendulum.p0", any_finite(), "")
+                      .real("pendulum.t_end", positive(), "Fig. 2 time span")
+                      .real("pendulum.fit_t", positive(),
+                            "the drift rate is fitted over t <= fit_t, where the energy has not yet fallen")
+                      .integer("pendulum.slope_windows", at_least(2),
+                               "the local drift: least-squares slopes over this many consecutive windows of the run, "
+                               "against (4.3) at each window's energy"),
+          .reads = {"h", "samples"},
+          .run = run_pendulum,
+          .validate = check_pendulum,
+          .plan = plan_pendulum};
 }
 
 }  // namespace geomint::ti_drift

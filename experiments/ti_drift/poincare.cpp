@@ -316,26 +316,30 @@ StudyPlan plan_poincare(const Scene& s) {
   return alone;
 }
 
-void keys(Schema& s) {
-  s.real("ensemble.episode_half_width", positive(),
-         "Fig. 5 episodes: the running slope of the error of E of the trajectory is fitted over +- this time")
-      .real("ensemble.episode_threshold", positive(),
-            "Fig. 5 episodes: a sample belongs to an episode where its running slope differs from their median by more "
-            "than this many robust standard deviations (1.4826 MAD) of the running slopes")
-      .real("ensemble.episode_min_length", positive(), "Fig. 5 episodes: the shortest episode (time units)");
-}
-
 }  // namespace
 
 Study poincare_study(const LargestError& largest) {
-  return {"poincare",
-          "004 Fig 5: Poincare cuts of the Fig 4 ensemble's trajectory with the largest error (from the ensemble study "
-          "of the same run; without it, the ensemble integrated again, the same numbers)",
-          {"fig5_poincare.csv", "fig5_episodes.csv", "fig5_episode_cuts.csv"},
-          {"h", "t_end", "samples", "hh", "ensemble.size", "ensemble.seed", "ensemble.perturbation",
-           "ensemble.episode_half_width", "ensemble.episode_threshold", "ensemble.episode_min_length", "hh3.q2",
-           "hh3.p2", "checkpoint"},
-          check_poincare, [&largest](Context& ctx) { run_poincare(ctx, largest); }, plan_poincare, keys};
+  std::vector<std::string> reads = kEnsembleKeys;  // (main.cpp's shared keys: the ensemble study reads them too)
+  reads.emplace_back("checkpoint");
+  return {.name = "poincare",
+          .makes = {{"004", "Fig. 5"}},
+          .about = "Poincare cuts of the Fig 4 ensemble's trajectory with the largest error (from the ensemble study "
+                   "of the same run; without it, the ensemble integrated again, the same numbers)",
+          .files = {"fig5_poincare.csv", "fig5_episodes.csv", "fig5_episode_cuts.csv"},
+          .keys = Schema()
+                      .real("ensemble.episode_half_width", positive(),
+                            "Fig. 5 episodes: the running slope of the error of E of the trajectory is fitted over +- "
+                            "this time")
+                      .real("ensemble.episode_threshold", positive(),
+                            "Fig. 5 episodes: a sample belongs to an episode where its running slope differs from "
+                            "their median by more than this many robust standard deviations (1.4826 MAD) of the "
+                            "running slopes")
+                      .real("ensemble.episode_min_length", positive(),
+                            "Fig. 5 episodes: the shortest episode (time units)"),
+          .reads = reads,
+          .run = [&largest](Context& ctx) { run_poincare(ctx, largest); },
+          .validate = check_poincare,
+          .plan = plan_poincare};
 }
 
 }  // namespace geomint::ti_drift

@@ -66,25 +66,26 @@ StudyPlan plan_symplecticity(const Scene& s) {
   return {16 * m + 8, 2 * (16 * m + 8), 1e4, kNsPerStepHH, kNsNote};
 }
 
-void keys(Schema& s) {
-  s.texts("symplecticity.methods", MethodsOn<HenonHeiles>::choices(), 1,
-          "methods whose one-step Jacobian (of the kernel) is checked (registry names or labels)")
-      .integer("symplecticity.k", at_least(3), "exponent k of the Henon-Heiles system of the check")
-      .real("symplecticity.q2", any_finite(), "start q2 of the check (q1 = 0, p1 > 0 from hh.H0)")
-      .real("symplecticity.p2", any_finite(), "start p2 of the check")
-      .real("symplecticity.fd_step", positive(), "step of the central differences of the Jacobian");
-}
-
 }  // namespace
 
 Study symplecticity_study() {
-  return {"symplecticity", "004 Sect. 1.3: TI symplectic, the simplified TI only volume-preserving", {},
-          {"symplecticity", "h", "hh.H0"},
-          [](const Scene& s) {
-            MethodsOn<HenonHeiles>::check(s, "symplecticity.methods", symplecticity_system(s));
-            check_hh_starts(s, "symplecticity", symplecticity_system(s), 0.0, true);
-          },
-          run_symplecticity, plan_symplecticity, keys};
+  return {.name = "symplecticity",
+          .about = "004 Sect. 1.3: TI symplectic, the simplified TI only volume-preserving",
+          .keys = Schema()
+                      .texts("symplecticity.methods", MethodsOn<HenonHeiles>::choices(), 1,
+                             "methods whose one-step Jacobian (of the kernel) is checked (registry names or labels)")
+                      .integer("symplecticity.k", at_least(3), "exponent k of the Henon-Heiles system of the check")
+                      .real("symplecticity.q2", any_finite(), "start q2 of the check (q1 = 0, p1 > 0 from hh.H0)")
+                      .real("symplecticity.p2", any_finite(), "start p2 of the check")
+                      .real("symplecticity.fd_step", positive(), "step of the central differences of the Jacobian"),
+          .reads = {"h", "hh.H0"},
+          .run = run_symplecticity,
+          .validate =
+              [](const Scene& s) {
+                MethodsOn<HenonHeiles>::check(s, "symplecticity.methods", symplecticity_system(s));
+                check_hh_starts(s, "symplecticity", symplecticity_system(s), 0.0, true);
+              },
+          .plan = plan_symplecticity};
 }
 
 }  // namespace geomint::ti_drift

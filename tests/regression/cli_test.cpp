@@ -225,7 +225,9 @@ TEST(Cli, ListStudiesAndHelp) {
   std::ifstream in(listing);
   std::stringstream ss;
   ss << in.rdbuf();
-  EXPECT_NE(ss.str().find("convergence\t000 Fig 9\tfig9_convergence.csv orders.csv"), std::string::npos) << ss.str();
+  EXPECT_NE(ss.str().find("convergence\t000 Fig. 9: error in H against h: orders 1 and 2\tfig9_convergence.csv orders.csv"),
+            std::string::npos)
+      << ss.str();
   const fs::path help = work / "help.txt";
   ASSERT_EQ(std::system((bin + " --help > " + help.string()).c_str()), 0);
   std::ifstream hin(help);

@@ -54,7 +54,7 @@ def main() -> int:
             for first, length in functions(lines):
                 if length > MAX_FUNCTION:
                     problems.append(f"{f.relative_to(source)}:{first}: a function of {length} lines (at most {MAX_FUNCTION})")
-            for m in re.finditer(r"^Study \w+_study\([^)]*\) \{.*?^  (?:return |Study st)\{\"(\w+)\"", text, re.M | re.S):
+            for m in re.finditer(r"^Study \w+_study\([^)]*\) \{.*?^  (?:return |Study st)\{(?:\.name = )?\"(\w+)\"", text, re.M | re.S):
                 owner.setdefault(m.group(1), []).append(f)
         for study in studies:
             files = owner.get(study, [])

@@ -41,6 +41,14 @@ json scene_slice(const Scene& scene, const std::vector<std::string>& keys) {
   return slice;
 }
 
+// The keys a study reads but those that only say when to stop and save (checkpoint.*).
+std::vector<std::string> task_keys(const std::vector<std::string>& reads) {
+  std::vector<std::string> keys;
+  for (const auto& key : reads)
+    if (!key_under(key, {"checkpoint"})) keys.push_back(key);
+  return keys;
+}
+
 std::uint64_t new_run_id() {
   std::random_device device;
   return (static_cast<std::uint64_t>(device()) << 32) ^ device();
@@ -92,7 +100,7 @@ CheckpointLog::CheckpointLog(const Context& ctx, const CheckpointSpec& spec, std
       run_id_(new_run_id()) {
   identity_ = {{"format", kFormat},       {"experiment", ctx.experiment},
                {"study", ctx.study},      {"name", name_},
-               {"scene", scene_slice(ctx.scene, spec.keys)}, {"build", build_info()},
+               {"scene", scene_slice(ctx.scene, spec.keys.empty() ? task_keys(ctx.reads) : spec.keys)}, {"build", build_info()},
                {"n", n}};
 }
 

@@ -43,7 +43,9 @@ namespace geomint {
 
 struct CheckpointSpec {
   std::string name;               // the files' stem: the study's name, or "<study>.<part>" for a study's second loop
-  std::vector<std::string> keys;  // the scene keys (dotted; sections or values) the tasks depend on
+  // The scene keys (dotted; sections or values) the tasks depend on; empty: every key the study reads
+  // (Context::reads) but checkpoint.* (task_keys).
+  std::vector<std::string> keys = {};
   std::size_t round = 0;          // tasks per round (0: default_round)
 };
 

@@ -273,15 +273,23 @@ const Study* find_study(const ExperimentSpec& spec, std::string_view name) {
   return nullptr;
 }
 
-// What a study makes under a scene (Study::makes_under): a part of what it declares it makes.
-std::string makes_here(const Study& st, const Scene& scene) {
-  if (!st.makes_under) return st.makes;
-  const std::string here = st.makes_under(scene);
-  const auto all = made_items(st.makes);
-  for (const auto& item : made_items(here))
-    if (std::find(all.begin(), all.end(), item) == all.end())
-      throw std::logic_error("study " + st.name + " makes " + item + " under this scene, not one of " + st.makes);
-  return here;
+// The ids of the items a study makes under a scene (Study::makes_under): a part of those it declares.
+std::vector<std::string> made_here(const Study& st, const Scene& scene) {
+  const std::vector<Item> here = st.makes_under ? st.makes_under(scene) : st.makes;
+  std::vector<std::string> ids;
+  for (const Item& item : here) {
+    if (std::find(st.makes.begin(), st.makes.end(), item) == st.makes.end())
+      throw std::logic_error("study " + st.name + " makes " + item.id() + " under this scene, not one of its makes");
+    ids.push_back(item.id());
+  }
+  return ids;
+}
+
+// The ids of every item a study makes.
+std::vector<std::string> item_ids(const Study& st) {
+  std::vector<std::string> ids;
+  for (const Item& item : st.makes) ids.push_back(item.id());
+  return ids;
 }
 
 // Every name a scene or --study may use: the studies' names and their former names.
@@ -345,7 +353,7 @@ std::optional<Scene> paper_scene(const ExperimentSpec& spec, const std::string& 
 std::string studies_help(const ExperimentSpec& spec) {
   std::string s = "\nStudies (a scene runs those in its `studies` list, else those whose section it has;\n"
                   "--study NAME runs only NAME):\n";
-  for (const auto& st : spec.studies) s += "  " + st.name + "  " + st.makes + "  [" + join(st.files, " ") + "]\n";
+  for (const auto& st : spec.studies) s += "  " + st.name + "  " + st.description() + "  [" + join(st.files, " ") + "]\n";
   return s;
 }
 
@@ -391,7 +399,7 @@ nlohmann::ordered_json keys_json(const ExperimentSpec& spec, const std::string& 
     k["doc"] = e.doc;
     auto users = nlohmann::ordered_json::array();
     for (const auto& st : spec.studies)
-      if (e.key != kStudiesKey && key_under(e.key, st.uses)) users.push_back(st.name);
+      if (e.key != kStudiesKey && key_under(e.key, st.uses())) users.push_back(st.name);
     k["used_by"] = users;
     keys.push_back(k);
   }
@@ -493,7 +501,7 @@ nlohmann::ordered_json plan_json(const std::vector<const Study*>& studies, const
                         p.timed_seconds + kStudyOverheadS;
     total += estimated ? wall : 0, all = all && estimated;
     const auto value = [](bool known, double v) { return known ? nlohmann::ordered_json(v) : nlohmann::ordered_json(); };
-    j["studies"].push_back({{"study", studies[i]->name}, {"makes", studies[i]->makes}, {"steps", value(has, p.steps + p.timed_steps)},
+    j["studies"].push_back({{"study", studies[i]->name}, {"makes", studies[i]->description()}, {"steps", value(has, p.steps + p.timed_steps)},
                             {"force_evals", value(has, p.force_evals)}, {"memory_bytes", value(has, p.memory_bytes)},
                             {"tasks", value(split, p.tasks)}, {"tasks_per_rank", value(split, share)},
                             {"wall_s", value(estimated, wall)}, {"note", p.note}});
@@ -559,6 +567,35 @@ std::string find_experiment_dir(const std::string& name, const std::string& buil
   return built_from;
 }
 
+std::vector<std::string> Study::uses() const {
+  std::vector<std::string> prefixes;
+  for (const auto& e : keys.entries()) prefixes.push_back(e.key);
+  prefixes.insert(prefixes.end(), reads.begin(), reads.end());
+  return prefixes;
+}
+
+std::string Study::description() const {
+  std::vector<std::string> ids;
+  for (const Item& item : makes) ids.push_back(item.id());
+  const std::string items = join(ids);
+  return items.empty() ? about : about.empty() ? items : items + ": " + about;
+}
+
+const Schema& common_keys() {
+  static const Schema keys = [] {
+    Schema s;
+    s.integer("timing.repeats", at_least(1), kTimingRepeatsHelp)
+        .integer("checkpoint.stop_after", non_negative(),
+                 "stop after this many rounds of tasks, leaving a checkpoint for --resume (0: run to the end)")
+        .real("checkpoint.interval", non_negative(),
+              "seconds between checkpoint saves (0: after every round); a SIGKILL loses at most this much work")
+        .real("reference.rtol", tolerance(), "relative tolerance of the odeint Bulirsch-Stoer reference solutions")
+        .real("reference.atol", tolerance(), "absolute tolerance of the odeint Bulirsch-Stoer reference solutions");
+    return s;
+  }();
+  return keys;
+}
+
 int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string& built_from) {
   const mpi::Session mpi_session(argc, argv);  // (one process without mpirun)
   if (!mpi::is_root()) std::cout.rdbuf(nullptr), std::cerr.rdbuf(nullptr);  // rank 0 speaks for the job
@@ -567,8 +604,10 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
   const nlohmann::ordered_json load_before = load_average();  // (timings on a shared machine: its load, run.json)
   const auto t0 = std::chrono::steady_clock::now();
   const std::string name = spec.name;
-  for (const Study& st : spec.studies)
-    if (st.keys) st.keys(spec.schema);
+  for (const Study& st : spec.studies) spec.schema.merge(st.keys);
+  for (const Schema::Entry& e : common_keys().entries())  // the runner's keys that a study reads
+    if (std::any_of(spec.studies.begin(), spec.studies.end(), [&](const Study& st) { return key_under(e.key, st.reads); }))
+      spec.schema.declare(e);
   spec.schema.texts(kStudiesKey, accepted_study_names(spec), 0,
                     "the studies this scene runs (default: every study whose section the scene has)");
 
@@ -579,7 +618,7 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
   int threads = omp_get_max_threads();
   std::vector<std::string> overrides, only;
   auto* scene_opt = app.add_option("--scene", scene_file, "Scene file (default: " + experiment_dir + "/" + name + ".toml)");
-  app.add_flag("--quick", quick, "Use the quick scene " + experiment_dir + "/quick.toml (the paper scene, shortened; for CI)")
+  app.add_flag("--quick", quick, "Use the quick scene " + experiment_dir + "/quick.toml (the paper scene, shortened; for CI; the paper scene where there is none)")
       ->excludes(scene_opt);
   app.add_option("--study", only, "Run only this study of the scene (repeatable; see --list-studies)");
   app.add_flag("--list-studies", list_studies, "Print each study: name, the figure or table it makes, its CSV files");
@@ -641,7 +680,7 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
     return 2;
   }
   if (list_studies) {
-    for (const auto& st : spec.studies) std::cout << st.name << '\t' << st.makes << '\t' << join(st.files, " ") << '\n';
+    for (const auto& st : spec.studies) std::cout << st.name << '\t' << st.description() << '\t' << join(st.files, " ") << '\n';
     return 0;
   }
   if (list_keys) {
@@ -656,7 +695,10 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
     }
     return 0;
   }
-  if (scene_file.empty()) scene_file = experiment_dir + "/" + (quick ? std::string("quick") : name) + ".toml";
+  // (--quick: quick.toml, or the paper scene where the experiment has none: its paper scene is quick)
+  if (scene_file.empty())
+    scene_file = experiment_dir + "/" +
+                 (quick && std::filesystem::exists(experiment_dir + "/quick.toml") ? std::string("quick") : name) + ".toml";
 
   std::optional<Scene> scene;
   std::optional<ResultsDir> results;
@@ -673,7 +715,7 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
         throw PublishedError(published_file.string() + ": [" + p.key + "]: no study '" + p.study + "' (studies: " +
                              join(study_names(spec)) + ")");
     }
-    resolve_figures(published, published_file, [&](const std::string& study) { return find_study(spec, study)->makes; });
+    resolve_figures(published, published_file, [&](const std::string& study) { return item_ids(*find_study(spec, study)); });
   } catch (const PublishedError& e) {
     std::cerr << name << ": published values: " << e.what() << '\n';
     return 2;
@@ -682,14 +724,14 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
     scene = Scene::load(scene_file, overrides, spec.schema);
     studies = select_studies(spec, *scene, only);
     for (const Study* st : studies) {
-      scene->require(st->uses, "study " + st->name, spec.schema);
-      scene->restrict_reads(st->uses, "study " + st->name);
+      scene->require(st->uses(), "study " + st->name, spec.schema);
+      scene->restrict_reads(st->uses(), "study " + st->name);
       if (st->validate) st->validate(*scene);
     }
     scene->restrict_reads({});
     std::vector<StudyPlan> plans;
     for (const Study* st : studies) {
-      scene->restrict_reads(st->uses, "study " + st->name);
+      scene->restrict_reads(st->uses(), "study " + st->name);
       std::vector<std::string> read;
       scene->log_reads(&read);
       plans.push_back(st->plan ? st->plan(*scene) : StudyPlan{});
@@ -740,8 +782,8 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
     for (const Study* st : studies) {
       const auto ts = std::chrono::steady_clock::now();
       const std::size_t files_before = out->written().size();
-      scene->restrict_reads(st->uses, "study " + st->name);
-      ctx.study = st->name;
+      scene->restrict_reads(st->uses(), "study " + st->name);
+      ctx.study = st->name, ctx.reads = st->uses();
       try {
         st->run(ctx);
       } catch (const NumericalFailure& e) {  // also Newton's IntegrationError (integrators/newton.hpp)
@@ -765,7 +807,7 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
     apply_published(published, summary, scene->to_json(), ran);
     std::vector<std::string> made;  // the papers' items the studies that ran made under this scene
     for (const std::string& r : ran)
-      for (const auto& item : made_items(makes_here(*find_study(spec, r), *scene))) made.push_back(item);
+      for (const auto& item : made_here(*find_study(spec, r), *scene)) made.push_back(item);
     apply_figure_verdicts(summary, made);
     summary["timing"]["wall_s"] = wall;
     summary["timing"]["study_wall_s"] = study_wall;
@@ -786,7 +828,7 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
     run["studies"] = ran;
     run["study_list"] = nlohmann::ordered_json::array();  // every study of the experiment: what it makes, its files
     for (const auto& st : spec.studies)
-      run["study_list"].push_back({{"name", st.name}, {"makes", st.makes}, {"made", made_items(makes_here(st, *scene))},
+      run["study_list"].push_back({{"name", st.name}, {"makes", st.description()}, {"made", made_here(st, *scene)},
                                    {"files", st.files},
                                    {"ran", std::find(ran.begin(), ran.end(), st.name) != ran.end()}});
     run["threads"] = threads;

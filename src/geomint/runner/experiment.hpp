@@ -37,6 +37,7 @@ class Context {
   int threads;
   bool resume = false;  // --resume: continue from the checkpoint in the output directory, if any
   std::string experiment, study;  // the experiment, and the study that runs
+  std::vector<std::string> reads;  // the scene keys the study that runs reads (Study::uses)
   std::string resume_command;     // the command line of the run with --resume (for a stopped run's message)
   // What summary.json reports besides "experiment", "studies" and the wall
   // times: "published", "reproduced", "orders", "timing", ...
@@ -111,7 +112,7 @@ struct StudyPlan {
   double force_evals = 0;   // force (gradient) evaluations
   double memory_bytes = 0;  // the largest memory the study holds at once
   double ns_per_step = 0;   // estimated time per step and thread (0: no estimate)
-  std::string note;         // what the estimate rests on
+  std::string note = {};    // what the estimate rests on
   double tasks = 0;         // independent tasks of about equal cost, split across MPI ranks and threads
                             // (distributed_map, checkpointed_map); 0: the study runs alike on every rank
   // The wall time and the steps of the runs it times under the timing protocol (runner/timing.hpp,
@@ -127,26 +128,48 @@ struct StudyPlan {
   std::shared_ptr<const StudyPlan> when_reusing = {};
 };
 
+// A figure, table or statement of a paper (paper/papers.toml): `paper` its number ("000"), `item` as the
+// paper names it ("Fig. 9", "Table 1", "Sec. 5.2", "energy error"); "<paper> <item>" (id()) is its one
+// spelling in published.toml, summary.json "figures", run.json and the report.
+struct Item {
+  std::string paper, item;
+  std::string id() const { return paper + " " + item; }
+  bool operator==(const Item&) const = default;
+};
+
+// A study: one figure, table or analysis, declared in one expression (designated initialisers). What it
+// reads is `keys` (the keys only it reads, declared there once: type, range, meaning) and `reads` (the
+// other keys or sections it reads: the experiment's shared keys, ExperimentSpec::schema, and the
+// runner's, common_keys()); every key under them is required when it runs, and it may read no other.
 struct Study {
   std::string name;                // as in scenes, --study and summary.json
-  std::string makes;               // the figure or table, e.g. "000 Fig 9"
-  std::vector<std::string> files;  // the CSV files it writes ('*' stands for a scene-dependent part)
-  std::vector<std::string> uses;   // the scene keys or sections it reads (required when it runs)
-  std::function<void(const Scene&)> validate;  // checks across keys; calls scene.reject(...)
-  std::function<void(Context&)> run;
+  std::vector<Item> makes = {};    // the papers' items it makes (none: an analysis beyond them)
+  std::string about = {};          // what it makes or computes, in words (--list-studies, --plan)
+  std::vector<std::string> files = {};  // the CSV files it writes ('*' stands for a scene-dependent part)
+  Schema keys = {};                     // the scene keys only this study reads
+  std::vector<std::string> reads = {};  // the shared keys or sections it reads besides
+  std::function<void(Context&)> run = {};
+  std::function<void(const Scene&)> validate = {};   // checks across keys; calls scene.reject(...)
   std::function<StudyPlan(const Scene&)> plan = {};  // --plan and the count checks (none: not estimated)
-  std::function<void(Schema&)> keys = {};  // declares the scene keys only this study reads (shared ones: ExperimentSpec)
-  std::vector<std::string> aliases = {};   // former names, still accepted (with a note on stderr) for one release
-  // Where the figures it makes depend on the scene (003: Fig 5.3 is the harmonic scene's energies,
-  // Figs 5.5 and 5.6 the free particle's): the part of `makes` this scene makes ("" for none).
-  std::function<std::string(const Scene&)> makes_under = {};
+  std::vector<std::string> aliases = {};  // former names, still accepted (with a note on stderr) for one release
+  // Where the items it makes depend on the scene (003: Fig 5.3 is the harmonic scene's energies, Figs 5.5
+  // and 5.6 the free particle's): those of `makes` this scene makes.
+  std::function<std::vector<Item>(const Scene&)> makes_under = {};
+
+  std::vector<std::string> uses() const;  // the prefixes of every key it reads: those of `keys`, and `reads`
+  std::string description() const;       // its items' ids and `about`: "000 Fig. 9: error in H against h"
 };
+
+// The scene keys the runner itself declares, once for every experiment, read by the studies that name them
+// in Study::reads: "timing.repeats" (runner/timing.hpp), "checkpoint" (.stop_after, .interval:
+// runner/checkpoint.hpp), "reference" (.rtol, .atol: the odeint reference solutions).
+const Schema& common_keys();
 
 struct ExperimentSpec {
   std::string name;
-  std::string description;
-  Schema schema;  // the keys several studies read; each study adds its own (Study::keys)
-  std::vector<Study> studies;  // in the order they run
+  std::string description = {};
+  Schema schema = {};  // the keys several studies read (each study declares its own: Study::keys)
+  std::vector<Study> studies = {};  // in the order they run
 };
 
 // `built_from`: the experiment's source directory when the binary was built (its scenes and

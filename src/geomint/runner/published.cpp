@@ -338,41 +338,12 @@ void apply_figure_verdicts(json& summary, const std::vector<std::string>& made) 
   summary["figures"] = std::move(figures);
 }
 
-std::vector<std::string> made_items(const std::string& makes) {
-  // "<paper> <kind> <numbers>": kind Fig/Figs/Table/Tables/Sec, optionally with a dot; numbers separated by ", "
-  const std::size_t sp = makes.find(' ');
-  if (sp != 3 || !std::all_of(makes.begin(), makes.begin() + 3, [](char c) { return c >= '0' && c <= '9'; })) return {};
-  const std::string paper = makes.substr(0, 3);
-  std::size_t i = 4, j = i;
-  while (j < makes.size() && std::isalpha(static_cast<unsigned char>(makes[j]))) ++j;
-  const std::string word = makes.substr(i, j - i);
-  const std::string kind = word == "Fig" || word == "Figs" ? "Fig." : word == "Table" || word == "Tables" ? "Table"
-                           : word == "Sec"                  ? "Sec."
-                                                            : "";
-  if (kind.empty()) return {};
-  if (j < makes.size() && makes[j] == '.') ++j;
-  if (j >= makes.size() || makes[j] != ' ') return {};
-  std::vector<std::string> items;
-  std::string number;
-  for (std::size_t k = j + 1; k <= makes.size(); ++k) {
-    const char c = k < makes.size() ? makes[k] : ':';
-    if ((c >= '0' && c <= '9') || c == '.') {
-      number += c;
-      continue;
-    }
-    while (!number.empty() && number.back() == '.') number.pop_back();
-    if (!number.empty()) items.push_back(paper + " " + kind + " " + number);
-    number.clear();
-    if (c != ',' && c != ' ') break;  // the description after the numbers
-  }
-  return items;
-}
-
 void resolve_figures(std::vector<Published>& entries, const std::filesystem::path& file,
-                     const std::function<std::string(const std::string&)>& makes_of) {
+                     const std::function<std::vector<std::string>(const std::string&)>& items_of) {
   for (Published& p : entries) {
-    const std::string makes = makes_of(p.study);
-    const auto items = made_items(makes);
+    const auto items = items_of(p.study);
+    std::string makes;
+    for (const auto& item : items) makes += (makes.empty() ? "" : ", ") + item;
     if (p.figure.empty()) {
       if (items.size() > 1)
         fail(file, p.key, "figure = ? (study " + p.study + " makes " + makes + ": say which of them it belongs to)");

@@ -104,15 +104,10 @@ nlohmann::ordered_json figure_verdict(const nlohmann::ordered_json& comparisons,
 // the scene, in order).
 void apply_figure_verdicts(nlohmann::ordered_json& summary, const std::vector<std::string>& made);
 
-// The items of the papers a study makes (Study::makes), as paper/papers.toml names them:
-// "003 Figs 5.2, 5.4" -> {"003 Fig. 5.2", "003 Fig. 5.4"}; "001 Table 1" -> {"001 Table 1"};
-// "000 Sec 5.2" -> {"000 Sec. 5.2"}; none for a study beyond the papers' items.
-std::vector<std::string> made_items(const std::string& makes);
-
-// Each entry's figure checked against, or taken from, the items its study makes (made_items of
-// `makes_of(study)`); throws PublishedError naming the file and the entry.
+// Each entry's figure checked against, or taken from, the ids of the items its study makes (`items_of(study)`,
+// Study::makes); throws PublishedError naming the file and the entry.
 void resolve_figures(std::vector<Published>& entries, const std::filesystem::path& file,
-                     const std::function<std::string(const std::string&)>& makes_of);
+                     const std::function<std::vector<std::string>(const std::string&)>& items_of);
 
 // The value at a dotted path ("reproduced.p_err.10", "initial.0.1"), or nullptr if there is none.
 const nlohmann::ordered_json* json_at(const nlohmann::ordered_json& j, const std::string& dotted);

@@ -143,6 +143,11 @@ Schema& Schema::add(Entry e) {
   entries_.push_back(std::move(e));
   return *this;
 }
+Schema& Schema::merge(const Schema& other) {
+  for (const auto& e : other.entries_) add(e);
+  for (const auto& [old_key, key] : other.aliases_) alias(old_key, key);
+  return *this;
+}
 Schema& Schema::real(std::string key, Bound b, std::string doc) {
   return add({std::move(key), Type::real, b, 0, 0, {}, std::move(doc)});
 }

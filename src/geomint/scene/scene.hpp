@@ -72,6 +72,9 @@ class Schema {
   Schema& texts(std::string key, std::vector<std::string> choices, std::size_t min_len, std::string doc = {});
   // An older spelling of a key: scene files and --set may use it, it reads as `key`.
   Schema& alias(std::string old_key, std::string key);
+  Schema& declare(Entry e) { return add(std::move(e)); }  // (std::logic_error on a key declared twice)
+  // Every entry and alias of `other` (std::logic_error on a key declared in both).
+  Schema& merge(const Schema& other);
 
   const Entry* find(std::string_view key) const;
   const std::vector<Entry>& entries() const { return entries_; }
