@@ -282,6 +282,12 @@ def ledger_cell(cell, text, where):
     return text
 
 
+def item_slug(name):
+    """An item's name as figure scripts spell it (figures/<run>_<slug>*.gp): "Fig. 5.2" -> "fig52",
+    "Table 1" -> "table1", "energy error" -> "energyerror"."""
+    return re.sub(r"[^a-z0-9]", "", name.lower())
+
+
 def ledger_tex(runs, papers, tests):
     """One row per item of the papers, with the verdict its own run computed (summary.json "figures")
     from that item's own comparisons."""
@@ -297,7 +303,7 @@ def ledger_tex(runs, papers, tests):
            r"\toprule paper & in this report & verdict & its own values & rerun, figure, test\\ \midrule",
            r"\endhead"]
     for paper in papers["paper"]:
-        for item in paper["item"]:
+        for item in paper.get("item", []):  # (a paper with no items yet has no rows)
             where = f"{{[{paper['id']}]}} {tex_escape(item['name'])}"  # (braced: not \\[dimen])
             if "left_out" in item:  # (why, in the values' column)
                 out.append(f"{where} & --- & left out & {ledger_cell('values', prose(item['left_out']), where)} & \\\\")
@@ -332,8 +338,8 @@ def ledger_tex(runs, papers, tests):
                         tests_cited.append(comparisons[key]["test"])
                 if f["verdict"] == "no printed value":
                     values.append("the paper prints no value or claim: shape compared by eye")
-            own = [g for g in scripts if re.search(rf"fig{re.sub(r'[^0-9]', '', item['name'])}(?![0-9])", g)]
-            scripts = own or scripts  # (a study's scripts that draw this figure, where their names say so)
+            own = [g for g in scripts if re.search(rf"_{item_slug(item['name'])}(?![0-9])", g)]
+            scripts = own or scripts  # (a study's scripts that draw this item, where their names say so)
             tests_cited = tests_cited or [f"{runs[name]['summary'].get('experiment', name)}.studies" for name in done]
             if tests is not None:
                 for t in tests_cited:
@@ -359,7 +365,7 @@ def bibliography_tex(papers):
     for p in papers["paper"] + papers.get("reference", []):
         ids = [f"doi:\\href{{https://doi.org/{p['doi']}}}{{{tex_escape(p['doi'])}}}" if "doi" in p else "",
                f"arXiv:\\href{{https://arxiv.org/abs/{p['arxiv']}}}{{{p['arxiv']}}}" if "arxiv" in p else ""]
-        label, key = (p["id"], f"paper{p['id']}") if "id" in p else (p["label"], p["key"])
+        label, key = (p["id"], p.get("key", f"paper{p['id']}")) if "id" in p else (p["label"], p["key"])
         entry = f"\\bibitem[{tex_escape(label)}]{{{key}}} {tex_escape(p['authors'])}, \\emph{{{tex_escape(p['title'])}}}, " \
                 f"{tex_escape(p['venue'])}, {p['year']}." + (" " + ", ".join(i for i in ids if i) + "." if any(ids) else "")
         if "code" in p:
@@ -372,9 +378,9 @@ def bibliography_tex(papers):
 def method_citations(papers):
     """Registry name -> the \\cite of the works that define it (paper/papers.toml [[reference]] methods)."""
     cites = {}
-    for r in (papers or {}).get("reference", []):
+    for r in (papers or {}).get("paper", []) + (papers or {}).get("reference", []):
         for m in r.get("methods", []):
-            cites.setdefault(m, []).append(r["key"])
+            cites.setdefault(m, []).append(r.get("key", f"paper{r.get('id')}"))
     return {m: f" \\cite{{{','.join(keys)}}}" for m, keys in cites.items()}
 
 
@@ -559,7 +565,7 @@ def main():
     if papers:
         files["ledger.tex"] = ledger_tex(runs, papers, tests)
         files["bibliography.tex"] = bibliography_tex(papers)
-        known = {r["key"] for r in papers.get("reference", [])} | {f"paper{p['id']}" for p in papers["paper"]}
+        known = {r["key"] for r in papers.get("reference", [])} | {p.get("key", f"paper{p['id']}") for p in papers["paper"]}
         for path in tex:  # every \cite of the report names a work of papers.toml
             for keys in re.findall(r"\\cite\{([^}]*)\}", path.read_text(encoding="utf-8")):
                 missing += [f"{path.name}: \\cite{{{k}}} (no [[reference]] key {k} in {args.papers})"

@@ -104,7 +104,7 @@ def main() -> int:
                 problems.append(f"{run}: no \\result[{fmt}] for timing.wall_s")
     papers = tomllib.loads((source / "paper" / "papers.toml").read_text(encoding="utf-8"))
     for paper in papers["paper"]:
-        for item in paper["item"]:
+        for item in paper.get("item", []):
             if f"{{[{paper['id']}]}} {item['name']}" not in ledger:
                 problems.append(f"ledger: no row for [{paper['id']}] {item['name']}")
     lookups_tex.write_text("\\result{" + runs[0] + "}{no.such.key}\n", encoding="utf-8")
