@@ -25,7 +25,6 @@ HAS_PHASE = in_list(scene_words('observables'), 'phase_error')
 QUANTITIES = (HAS_ENERGY ? "energy " : "") . (HAS_PHASE ? "phase" : "")
 PREFERRED = "sv kernel rowlands_printed rowlands rowlands_cheap forest_ruth"   # (the key's order)
 eval ORDER_METHODS
-FIT(m)   = m eq "kernel" ? "kernel_unprocessed" : m                   # (name prefix in orders.csv)
 LABEL(m) = method_key(m, "000")   # (figures/methods.gpi: the registry's title and 000's equations)
 STYLE(m) = m eq "sv" ? LS_SV : m eq "rowlands" ? LS_ROW : m eq "rowlands_cheap" ? LS_ROWCH \
          : m eq "kernel" ? LS_KERNEL : m eq "rowlands_printed" ? LS_PRINTED : m eq "forest_ruth" ? LS_FR : LS_OTHER
@@ -37,7 +36,7 @@ _row_ic(n, col) = (strcol("name") eq n && column("initial") == ic) ? column(col)
 _get_ic(n, col, var) = sprintf("undefine STATS_*; stats csv('orders.csv') using (_row_ic('%s','%s')) nooutput; %s = STATS_max; ", n, col, var)
 fit_at(n) = _get_ic(n, 'order', n.'_order') . _get_ic(n, 'log10_c', n.'_c') \
           . _get_ic(n, 'h_min', n.'_hmin')  . _get_ic(n, 'h_max', n.'_hmax')
-do for [m in METHODS] { do for [q in QUANTITIES] { eval fit_at(FIT(m).'_'.q) } }
+do for [m in METHODS] { do for [q in QUANTITIES] { eval fit_at(m.'_'.q) } }
 # the fitted line err = 10^c h^order from h_min (t = 0) to h_max (t = 1): straight in log-log
 fit_h(n, t)   = value(n.'_hmin') * (value(n.'_hmax') / value(n.'_hmin'))**t
 fit_err(n, t) = powerlaw(fit_h(n, t), value(n.'_c'), value(n.'_order'))
@@ -69,20 +68,20 @@ do for [fmt in FORMATS] {
     set title "energy error, eq. (50)"
     set ylabel "(J^{−1} Σ_{j=0}^{J} (H(q^j, p^j) − H_0)^2)^{1/2}"
     plot for [m in METHODS] CONV using "h":(sel(m.'_energy_rms')) with points ls STYLE(m) notitle, \
-         for [m in METHODS] [t=0:1:1] '+' using (fit_h(FIT(m).'_energy', t)):(fit_err(FIT(m).'_energy', t)) \
+         for [m in METHODS] [t=0:1:1] '+' using (fit_h(m.'_energy', t)):(fit_err(m.'_energy', t)) \
                 with lines ls FITSTYLE(m) notitle, \
          for [m in METHODS] keyentry with linespoints ls FITSTYLE(m) \
-                title sprintf("%s, order %.2f", LABEL(m), value(FIT(m).'_energy_order'))
+                title sprintf("%s, order %.2f", LABEL(m), value(m.'_energy_order'))
     }
 
     if (HAS_PHASE) {
     set title "phase-space error at t_{max}"
     set ylabel "|z^N − z(t_{max})|_2,  z = (x, y, p_x, p_y)"
     plot for [m in METHODS] CONV using "h":(sel(m.'_phase')) with points ls STYLE(m) notitle, \
-         for [m in METHODS] [t=0:1:1] '+' using (fit_h(FIT(m).'_phase', t)):(fit_err(FIT(m).'_phase', t)) \
+         for [m in METHODS] [t=0:1:1] '+' using (fit_h(m.'_phase', t)):(fit_err(m.'_phase', t)) \
                 with lines ls FITSTYLE(m) notitle, \
          for [m in METHODS] keyentry with linespoints ls FITSTYLE(m) \
-                title sprintf("%s, order %.2f", LABEL(m), value(FIT(m).'_phase_order'))
+                title sprintf("%s, order %.2f", LABEL(m), value(m.'_phase_order'))
     }
     unset multiplot
     unset output

@@ -29,12 +29,6 @@
 namespace geomint::rowlands_convergence {
 namespace {
 
-// The label of a method (CSV columns, summary keys) and the prefix of its orders.
-std::string order_name(const std::string& method) {
-  const std::string label = label_of(method);
-  return label == "kernel" ? "kernel_unprocessed" : label;  // (the kernel's orders keep their published key)
-}
-
 struct Errors {
   double energy_rms = 0, energy_max = 0;  // of H(z_j) - H(z_0), j = 0..N: eq. (50) and the max
   double phase = 0;                       // |z_N - z(t_N)|_2 against the reference
@@ -81,8 +75,8 @@ json order_ranges(const std::vector<std::string>& methods, const json& by_initia
                                         -std::numeric_limits<double>::infinity()).first->second;
     for (const auto& o : by_initial)
       for (const char* suffix : {"_energy", "_energy_max", "_phase"})
-        if (o.contains(order_name(m) + suffix)) {
-          const double v = o[order_name(m) + suffix].get<double>();
+        if (o.contains(label_of(m) + suffix)) {
+          const double v = o[label_of(m) + suffix].get<double>();
           if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
         }
   }
@@ -193,10 +187,10 @@ ConvergenceStudy convergence_table(const Sys& sys, const std::vector<double>& hs
   const double phase_floor = std::max(100.0 * self_check, roundoff_floor());
   for (const auto& m : methods) {  // (the CSV's columns by label)
     if (obs.energy)
-      conv.fit(order_name(m) + "_energy", label_of(m) + "_energy_rms", energy_floor)
-          .fit(order_name(m) + "_energy_max", label_of(m) + "_energy_max", energy_floor);
+      conv.fit(label_of(m) + "_energy", label_of(m) + "_energy_rms", energy_floor)
+          .fit(label_of(m) + "_energy_max", label_of(m) + "_energy_max", energy_floor);
     if (obs.phase)
-      conv.fit(order_name(m) + "_phase", label_of(m) + "_phase", phase_floor, "round-off or the reference's accuracy");
+      conv.fit(label_of(m) + "_phase", label_of(m) + "_phase", phase_floor, "round-off or the reference's accuracy");
   }
   return conv;
 }
