@@ -61,6 +61,36 @@ std::vector<double> reference_volumes(Context& ctx, const std::string& name, con
   return v;
 }
 
+// The hull volumes of the cloud under Phi^(ell) of each method, in every measure of `measures`
+// ([method][measure][step]), written beside the reference's to the CSV `file` (t, reference_mu,
+// <method>_<measure>...).
+using Volumes = std::vector<std::vector<std::vector<double>>>;
+Volumes phi_volumes(Context& ctx, const PhiStudy& p, const std::vector<Point4>& cloud, int ell, std::int64_t n,
+                    const std::vector<int>& measures, const std::vector<double>& ref_volumes, const std::string& file) {
+  const auto runs = distributed_map(p.methods.size(), [&](std::size_t k) { return cloud_phi(p.methods[k], p.sys, p.h, ell, cloud, n); });
+  std::vector<std::string> cols{"t", "reference_mu"};
+  for (Discretization d : p.methods)
+    for (int m : measures) cols.push_back(std::string(discretization_name(d)) + "_" + measure_name(m));
+  Csv csv(cols);
+  Volumes vols(p.methods.size());
+  for (std::size_t k = 0; k < p.methods.size(); ++k) {
+    const ModifiedSeries ms(p.methods[k], p.sys, p.h);
+    const auto per_step = snapshot_volumes(runs[k], ms, measures);
+    vols[k].assign(measures.size(), std::vector<double>(per_step.size()));
+    for (std::size_t j = 0; j < per_step.size(); ++j)
+      for (std::size_t m = 0; m < measures.size(); ++m) vols[k][m][j] = per_step[j][m];
+    count_newton(ctx, runs[k].iterations, runs[k].steps);
+  }
+  for (std::size_t j = 0; j <= static_cast<std::size_t>(n); ++j) {
+    csv << static_cast<double>(j) * p.h << ref_volumes[j];
+    for (std::size_t k = 0; k < p.methods.size(); ++k)
+      for (std::size_t m = 0; m < measures.size(); ++m) csv << vols[k][m][j];
+    csv.end_row();
+  }
+  ctx.write(file, csv);
+  return vols;
+}
+
 // Figs 5.2, 5.4 for one cloud: the hull volumes under the reference flow and under Phi^(ell) for each
 // ell of cloud.ells, in every measure mu^(m)_mod, m = 0, 2, .., max_modified_order, to t_end; CSV
 // <prefix>phi<ell>.csv; summary.reproduced.<nest> (the cloud's own object, or reproduced itself for nest
@@ -94,28 +124,8 @@ void cloud_volumes(Context& ctx, const PhiStudy& p, const std::vector<Point4>& c
 
   for (int ell : ells(s, "cloud.ells")) {
     ctx.progress("Figs 5.2, 5.4: Phi^(" + std::to_string(ell) + "), " + std::to_string(cloud.size()) + " points");
-    const auto runs = distributed_map(p.methods.size(), [&](std::size_t k) { return cloud_phi(p.methods[k], p.sys, p.h, ell, cloud, n); });
-    std::vector<std::string> cols{"t", "reference_mu"};
-    for (Discretization d : p.methods)
-      for (int m : all_measures) cols.push_back(std::string(discretization_name(d)) + "_" + measure_name(m));
-    Csv csv(cols);
-    std::vector<std::vector<std::vector<double>>> vols(p.methods.size());  // [method][measure][step]
-    for (std::size_t k = 0; k < p.methods.size(); ++k) {
-      const ModifiedSeries ms(p.methods[k], p.sys, p.h);
-      const auto per_step = snapshot_volumes(runs[k], ms, all_measures);
-      vols[k].assign(all_measures.size(), std::vector<double>(per_step.size()));
-      for (std::size_t j = 0; j < per_step.size(); ++j)
-        for (std::size_t m = 0; m < all_measures.size(); ++m) vols[k][m][j] = per_step[j][m];
-      count_newton(ctx, runs[k].iterations, runs[k].steps);
-    }
-    for (std::size_t j = 0; j <= static_cast<std::size_t>(n); ++j) {
-      csv << static_cast<double>(j) * p.h << ref_volumes[j];
-      for (std::size_t k = 0; k < p.methods.size(); ++k)
-        for (std::size_t m = 0; m < all_measures.size(); ++m) csv << vols[k][m][j];
-      csv.end_row();
-    }
     const std::string file = prefix + "phi" + std::to_string(ell) + ".csv";
-    ctx.write(file, csv);
+    const Volumes vols = phi_volumes(ctx, p, cloud, ell, n, all_measures, ref_volumes, file);
     if (ell == ells(s, "cloud.ells").front()) record_ptp("ptp_reference_mu", file, "reference_mu", "relative_ptp");
     const std::string phi = "ptp_phi" + std::to_string(ell) + "_";
     const auto column = [&](std::size_t k, int m) { return std::string(discretization_name(p.methods[k])) + "_" + measure_name(m); };
