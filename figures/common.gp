@@ -27,14 +27,33 @@ term(fmt, name, w, h) = (fmt eq "pdf" \
 set datafile separator comma
 csv(file) = results . '/' . file
 
-# ---- methods: colour, key title and equations from the registry --------------------------------
+# ---- methods: colour, marker, key title and equations from the registry -------------------------
 # figures/methods.gpi is generated from the method registry (geomint-methods --gnuplot): a method's
-# colour method_colour(m) is the same in every figure (Okabe-Ito and, for the five discretizations
-# of 003, Paul Tol's "bright": colour-blind safe; a base method is vermillion and its processed or
-# compensated form blue throughout), its key text method_key(m, paper) names it with the equations
-# of that paper. Methods that a scene lists together (its *.methods) have different colours: ctest
-# palette.distinct_per_scene checks this against every paper scene.
+# colour method_colour(m) and marker method_point(m) are the same in every figure (Okabe-Ito and, for
+# the five discretizations of 003, Paul Tol's "bright": colour-blind safe; a base method is vermillion
+# and its processed or compensated form blue throughout), its key text method_key(m, paper) names it
+# with the equations of that paper. No two methods of the registry share colour and marker (ctest
+# MethodRegistry.ColourAndMarkerNameOneMethod, palette.distinct_per_scene), so the methods of any
+# figure are told apart, whichever a scene names.
 load 'figures/methods.gpi'
+# eval method_styles(METHODS) defines, for the i-th method m of the words METHODS (registry names or
+# labels), line style method_ls(m) = 200 + i, its points (method_colour(m), method_point(m)), and
+# method_fit_ls(m) = 300 + i, its least-squares fit (dashed, its marker for the key). Colour and marker
+# name one method of the registry, so the methods of any figure are told apart without a map per script.
+_ps(pt) = pt == 5 || pt == 7 ? 0.55 : pt == 1 || pt == 2 || pt == 3 || pt == 12 || pt == 13 ? 0.8 : 0.7
+_method_style(m, i) = sprintf("set style line %d lc rgb '%s' lw 1.0 pt %d ps %g; ", 200 + i, method_colour(m), \
+                              method_point(m), _ps(method_point(m))) \
+                    . sprintf("set style line %d lc rgb '%s' lw 0.9 dt (8,4) pt %d ps %g; ", 300 + i, method_colour(m), \
+                              method_point(m), _ps(method_point(m)))
+_method_styles(list, i) = i > words(list) ? "" : _method_style(word(list, i), i) . _method_styles(list, i + 1)
+method_styles(list) = _method_styles(list, 1)
+# unique_words("a b a c") = "a b c" (a figure's METHODS from several lists name each method once)
+_unique(list, i, acc) = i > words(list) ? acc \
+                      : _unique(list, i + 1, strstrt(" ".acc." ", " ".word(list, i)." ") > 0 ? acc : acc.(acc eq "" ? "" : " ").word(list, i))
+unique_words(list) = _unique(list, 1, "")
+method_ls(m) = 200 + word_index(METHODS, m)
+LS_OTHER = 29; set style line LS_OTHER lc rgb C_OTHER lw 1.0 pt P_OTHER ps 0.75   # (a curve of no registry method)
+method_fit_ls(m) = 300 + word_index(METHODS, m)
 
 C_EXACT = '#000000'                                  # exact solution
 C_SE    = method_colour('symplectic_euler_pq')       # (symplectic) Euler without compensation
@@ -70,29 +89,8 @@ getfit(n) = _get(n, 'order', n.'_order') . _get(n, 'log10_c', n.'_c') \
 powerlaw(h, c, order) = 10**c * h**order
 
 # ---- 000 Sec. 3.3, Rowlands time stepping (figures/rowlands_convergence_*.gp) ----
-# As above, the unprocessed base method is vermillion and the processed one blue.
-C_SV      = method_colour('stormer_verlet')    # Störmer–Verlet (26)–(28); odeint's velocity Verlet, the same method, a darker vermillion
-C_ROW     = method_colour('rowlands')          # Rowlands kernel (31) with the processors (32)–(33)
-C_ROWCH   = method_colour('rowlands_cheap')    # Rowlands kernel with the cheap processors (34)–(37)
-C_KERNEL  = method_colour('rowlands_kernel')   # Rowlands kernel (31) without processing
-C_PRINTED = method_colour('rowlands_printed')  # processors (32)–(33) with the coefficient h²/24 as printed
-C_RKN     = method_colour('odeint_rkn_sb3a')   # odeint symplectic RKN (McLachlan SB3a), order 4
-# (odeint's RK4 uses C_RK4 and LS_RK4)
-
-LS_SV      = 21; set style line LS_SV      lc rgb C_SV      lw 1.0 pt 7  ps 0.55  # filled circles
-LS_ROW     = 22; set style line LS_ROW     lc rgb C_ROW     lw 1.0 pt 4  ps 0.70  # open squares
-LS_ROWCH   = 23; set style line LS_ROWCH   lc rgb C_ROWCH   lw 1.0 pt 9  ps 0.65  # filled triangles
-LS_KERNEL  = 24; set style line LS_KERNEL  lc rgb C_KERNEL  lw 1.0 pt 12 ps 0.80  # open diamonds
-LS_PRINTED = 25; set style line LS_PRINTED lc rgb C_PRINTED lw 1.0 pt 6  ps 0.60  # open circles
-LS_RKN     = 26; set style line LS_RKN     lc rgb C_RKN     lw 1.0 pt 10 ps 0.70  # open inverted triangles
-LS_VV      = 27; set style line LS_VV      lc rgb method_colour('odeint_velocity_verlet')     lw 1.0 pt 6  ps 1.00 dt (4,3)  # large open circles
-# least-squares fits: dashed (dotted for the processors as printed), with the
-# method's marker for the key sample; LS_<X>_FIT = LS_<X> + 10
-LS_SV_FIT      = 31; set style line LS_SV_FIT      lc rgb C_SV      lw 0.9 dt (8,4) pt 7  ps 0.55
-LS_ROW_FIT     = 32; set style line LS_ROW_FIT     lc rgb C_ROW     lw 0.9 dt (8,4) pt 4  ps 0.70
-LS_ROWCH_FIT   = 33; set style line LS_ROWCH_FIT   lc rgb C_ROWCH   lw 0.9 dt (8,4) pt 9  ps 0.65
-LS_KERNEL_FIT  = 34; set style line LS_KERNEL_FIT  lc rgb C_KERNEL  lw 0.9 dt (8,4) pt 12 ps 0.80
-LS_PRINTED_FIT = 35; set style line LS_PRINTED_FIT lc rgb C_PRINTED lw 0.9 dt (3,3) pt 6  ps 0.60
+# A figure's methods take their colours and markers from the registry (method_styles, above).
+C_SV      = method_colour('stormer_verlet')    # Störmer–Verlet (26)–(28) (004 Fig. 1's closed form too)
 
 # ---- the numbers of the run: DIR/figure_values.gp, written by the experiment (the "scene values"
 # and "summary values" of the scripts' Input lines): no script reads JSON ----
@@ -121,24 +119,14 @@ need_num(var, s) = (s eq "?") \
     : sprintf("%s = %s", var, s)
 
 # ---- 001 Dubois & Rojas-Quintero, Lobatto variational integrator (figures/lobatto_table_*.gp) ----
-# The paper's method is blue (as the processed / compensated methods above), the comparison
-# schemes of its Fig. 1 and Table 1 orange (Simpson) and vermillion (implicit midpoint).
+# The paper's method is blue, its quantities told apart by their markers (the compared methods: method_styles).
 C_LOB   = method_colour('lobatto')            # Lobatto P3 variational scheme (13)–(14); nonlinear: Newton on the internal nodes
-C_SIMP  = method_colour('simpson')            # Simpson P2 variational scheme (001 ref. [2])
-C_MID   = method_colour('implicit_midpoint')  # implicit midpoint
-C_RKF78 = method_colour('odeint_rkf78')       # odeint Runge–Kutta–Fehlberg 7(8), fixed step
-# (odeint's RK4 uses C_RK4 and LS_RK4)
 LS_LOB   = 41; set style line LS_LOB   lc rgb C_LOB   lw 1.0 pt 4  ps 0.70   # open squares
-LS_SIMP  = 42; set style line LS_SIMP  lc rgb C_SIMP  lw 1.0 pt 12 ps 0.85   # open diamonds
-LS_MID   = 43; set style line LS_MID   lc rgb C_MID   lw 1.0 pt 7  ps 0.55   # filled circles
-LS_RKF78 = 44; set style line LS_RKF78 lc rgb C_RKF78 lw 1.0 pt 10 ps 0.70   # open inverted triangles
 LS_LOB2  = 45; set style line LS_LOB2  lc rgb C_LOB   lw 1.0 pt 5  ps 0.60   # filled squares: second quantity / problem
 LS_LOB3  = 46; set style line LS_LOB3  lc rgb C_LOB   lw 1.0 pt 8  ps 0.70   # open triangles: third quantity
 LS_LOB4  = 47; set style line LS_LOB4  lc rgb C_LOB   lw 1.0 pt 6  ps 0.65   # open circles: fourth quantity
 # fits and guides: dashed, in the method's colour, with its marker for the key sample; LS_<X>_FIT = LS_<X> + 10
 LS_LOB_FIT   = 51; set style line LS_LOB_FIT   lc rgb C_LOB   lw 0.9 dt (8,4) pt 4  ps 0.70
-LS_SIMP_FIT  = 52; set style line LS_SIMP_FIT  lc rgb C_SIMP  lw 0.9 dt (8,4) pt 12 ps 0.85
-LS_MID_FIT   = 53; set style line LS_MID_FIT   lc rgb C_MID   lw 0.9 dt (8,4) pt 7  ps 0.55
 LS_LOB2_FIT  = 55; set style line LS_LOB2_FIT  lc rgb C_LOB   lw 0.9 dt (8,4) pt 5  ps 0.60
 LS_LOB3_FIT  = 56; set style line LS_LOB3_FIT  lc rgb C_LOB   lw 0.9 dt (8,4) pt 8  ps 0.70
 # Fig. 2 compares step sizes of the Lobatto scheme alone: a ramp of its blue, light = large h
@@ -155,18 +143,10 @@ scene_real(key)   = (_i = _fv('scene.' . key), _i > 0 ? sprintf("%.17e", FV_VAL[
 summary_real(key) = (_i = _fv('summary.' . key), _i > 0 ? sprintf("%.17e", FV_VAL[_i]) : "?")
 # sci(x): x as "−6.52·10^{−6}" (3 significant digits; enhanced text)
 sci(x) = x == 0 ? "0" : gprintf("%.2t·10^{%T}", x)
-# the methods: Störmer–Verlet vermillion and dashed (as in 004 Fig. 1), Takahashi–Imada (1.4) blue,
-# the simplified method (1.6) bluish green (it is the only method of Figs 2–5); statistics black
+# the simplified method (1.6) of Figs 2–5 in its registry colour, Takahashi–Imada (1.4) beside it; statistics black
 C_TI   = method_colour('takahashi_imada')
 C_STI  = method_colour('simplified_takahashi_imada')
 C_STAT = '#000000'
-LS_TD_SV  = 101; set style line LS_TD_SV  lc rgb C_SV  lw 1.0 dt (6,3) pt 7 ps 0.55   # filled circles, dashed
-LS_TD_TI  = 102; set style line LS_TD_TI  lc rgb C_TI  lw 1.0 dt 1     pt 4 ps 0.80   # open squares, solid
-LS_TD_STI = 103; set style line LS_TD_STI lc rgb C_STI lw 1.0 dt 1     pt 1 ps 0.80   # plus signs
-# least-squares fits: dashed in the method's colour (as above)
-LS_TD_SV_FIT  = 111; set style line LS_TD_SV_FIT  lc rgb C_SV  lw 0.9 dt (8,4)
-LS_TD_TI_FIT  = 112; set style line LS_TD_TI_FIT  lc rgb C_TI  lw 0.9 dt (8,4)
-LS_TD_STI_FIT = 113; set style line LS_TD_STI_FIT lc rgb C_STI lw 1.2 dt (8,4)
 # time as the colour of points (Fig. 5): eval PALETTE_TIME (viridis, cut before its light yellow end)
 PALETTE_TIME = "set palette defined (0 '#440154', 0.25 '#3B528B', 0.5 '#21908C', 0.75 '#5DC863', 1 '#B5DE2B')"
 
@@ -178,10 +158,3 @@ nosub(s) = (_u = strstrt(s, "_")) ? s[1:_u-1]." ".nosub(s[_u+1:]) : s         # 
 ORDER_METHODS = 'METHODS = ""; ' \
               . 'do for [m in PREFERRED] { if (in_list(CSV_METHODS, m)) { METHODS = METHODS.m." " } }; ' \
               . 'do for [m in CSV_METHODS] { if (!in_list(PREFERRED, m)) { METHODS = METHODS.m." " } }'
-# Forest-Ruth (in no paper here: the standard order-4 composition) and any further method: black
-# crosses and grey stars; their fits dotted (style + 10)
-C_FR = method_colour('forest_ruth')
-LS_FR    = 28; set style line LS_FR    lc rgb C_FR    lw 1.0 pt 2 ps 0.75
-LS_OTHER = 29; set style line LS_OTHER lc rgb C_OTHER lw 1.0 pt 3 ps 0.75
-set style line LS_FR + 10    lc rgb C_FR    lw 0.9 dt (2,3) pt 2 ps 0.75
-set style line LS_OTHER + 10 lc rgb C_OTHER lw 0.9 dt (2,3) pt 3 ps 0.75

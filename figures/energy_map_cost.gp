@@ -24,6 +24,7 @@ C_POLAR = '#b2182b'   # Fig. 6's red (polar better there)
 set style line 201 lc rgb C_CART lw 1.0 pt 7 ps 0.6
 set style line 221 lc rgb C_POLAR lw 1.0 dt (5,3) pt 6 ps 0.7
 METHODS = "cartesian polar"
+COST_OWN_STYLES = 1   # (its curves are coordinate systems, not registry methods)
 LABEL(m) = m eq "cartesian" ? "Cartesian (73)" : "polar (72)"
 STYLE(m) = m eq "cartesian" ? 201 : 221
 start_x(i) = scene_num(sprintf('cost.starts.%d.0', i))

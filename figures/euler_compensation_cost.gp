@@ -7,8 +7,7 @@ load 'figures/common.gp'
 stats csv('cost_energy.csv') using (column("h") * column("steps")) nooutput
 T = STATS_max
 METHODS = summary_words('cost.energy.methods')
-LABEL(m) = method_key(m, "000")   # (figures/methods.gpi: the registry's title and 000's equations)
-STYLE(m) = m eq "se" ? LS_SE : m eq "se_compensated" ? LS_COMP : LS_RK4
+COST_PAPER = "000"
 COST_NAME = 'euler_compensation_cost'
 COST_TITLE = sprintf("{/:Bold Cost:} energy error against computing effort, harmonic oscillator, one run to T = %g per step size h\nwall time: median of %s interleaved runs of at least 20 ms, single thread", T, scene_num('timing.repeats'))
 COST_SETS = "energy"

@@ -29,13 +29,8 @@ Z0 = sprintf("(%s, %s, %s, %s)", scene_num('nonlinear.elastic_initial.0.0'), sce
 # nonlinear study's (nonlinear.methods, columns <label>_pendulum_err)
 T1M = summary_words('methods.table1')
 NLM = summary_words('methods.nonlinear')
-ALLM = T1M . NLM
-do for [i = 1:words(ALLM)] {   # styles for methods other than Simpson's and the midpoint rule, and their guides (+ 10)
-    c = word("#009E73 #CC79A7 #56B4E9 #882255 #999999 #000000 #E69F00 #0072B2 #D55E00", (i - 1) % 9 + 1)
-    eval sprintf("set style line %d lc rgb '%s' lw 1.0 pt %d ps 0.7", 60 + i, c, (2 * i) % 14 + 1)
-    eval sprintf("set style line %d lc rgb '%s' lw 0.9 dt (8,4) pt %d ps 0.7", 70 + i, c, (2 * i) % 14 + 1)
-}
-MSTYLE(m) = m eq "simpson" ? LS_SIMP : m eq "midpoint" ? LS_MID : 60 + word_index(ALLM, m)
+METHODS = unique_words(T1M . " " . NLM)
+eval method_styles(METHODS)   # (figures/common.gp: colours and markers from the registry)
 
 # series: name, file, column, summary order key (or "" for none), style, label
 LOB1(s)  = s eq "p" || s eq "q" || s eq "H" || s eq "Hd"           # (the Lobatto series of Table 1)
@@ -43,7 +38,8 @@ S1 = "p q H Hd " . T1M
 S1F = "p q H " . T1M                    # (the series with an order: all but H_d)
 COL1(s)  = LOB1(s) ? s."_err" : s."_q_err"
 ORD1(s)  = s eq "p" ? "lobatto_p" : s eq "q" ? "lobatto_q" : s eq "H" ? "lobatto_H" : s eq "Hd" ? "" : s
-STY1(s)  = s eq "p" ? LS_LOB : s eq "q" ? LS_LOB2 : s eq "H" ? LS_LOB3 : s eq "Hd" ? LS_LOB4 : MSTYLE(s)
+STY1(s)  = s eq "p" ? LS_LOB : s eq "q" ? LS_LOB2 : s eq "H" ? LS_LOB3 : s eq "Hd" ? LS_LOB4 : method_ls(s)
+FIT1(s)  = LOB1(s) ? STY1(s) + 10 : method_fit_ls(s)   # (a fitted guide: Lobatto's LS_LOB*_FIT, a method's dashed)
 LAB1(s)  = s eq "p" ? "Lobatto, momentum p" : s eq "q" ? "Lobatto, state q" : s eq "H" ? "Lobatto, energy H" \
          : s eq "Hd" ? "Lobatto, discrete energy H_d (15)" : s eq "simpson" ? "Simpson [2], state q" : method_title(s).", state q"
 S2 = "pendulum_err elastic_err"
@@ -51,7 +47,8 @@ do for [m in NLM] { S2 = S2 . " " . m . "_pendulum_err" }
 MOF(s)   = s[1:strlen(s) - strlen("_pendulum_err")]           # (the method of a compared series)
 ORD2(s)  = s eq "pendulum_err" ? "lobatto_nonlinear_pendulum" : s eq "elastic_err" ? "lobatto_elastic_pendulum" \
          : MOF(s)."_nonlinear_pendulum"
-STY2(s)  = s eq "pendulum_err" ? LS_LOB : s eq "elastic_err" ? LS_LOB2 : MSTYLE(MOF(s))
+STY2(s)  = s eq "pendulum_err" ? LS_LOB : s eq "elastic_err" ? LS_LOB2 : method_ls(MOF(s))
+FIT2(s)  = s eq "pendulum_err" || s eq "elastic_err" ? STY2(s) + 10 : method_fit_ls(MOF(s))
 LAB2(s)  = s eq "pendulum_err" ? "Lobatto, pendulum" : s eq "elastic_err" ? "Lobatto, elastic pendulum (2 DOF)" \
          : MOF(s) eq "simpson" ? "Simpson, pendulum" : method_title(MOF(s)).", pendulum"
 ORDER(key) = (o = summary_num('orders.'.key), o eq "?" ? NaN : real(o))
@@ -113,8 +110,8 @@ do for [fmt in FORMATS] {
     plot $PUB using 1:2 with points pt 6 ps 1.6 lc rgb C_EXACT lw 0.8 notitle, \
          for [s in S1] T1 using "h":(column(COL1(s))):xtic(sprintf("%g", column("h"))) with points ls STY1(s) notitle, \
          for [s in S1] [t=0:1:1] '+' using (h = H1MIN * (H1MAX / H1MIN)**t, h):(ORD1(s) eq "" ? NaN : GUIDE("t1", s, ORD1(s), h)) \
-                with lines ls STY1(s) + 10 notitle, \
-         for [s in S1F] keyentry with linespoints ls STY1(s) + 10 title sprintf("%s, %s", LAB1(s), ORDTXT(ORD1(s))), \
+                with lines ls FIT1(s) notitle, \
+         for [s in S1F] keyentry with linespoints ls FIT1(s) title sprintf("%s, %s", LAB1(s), ORDTXT(ORD1(s))), \
          keyentry with points ls STY1("Hd") title LAB1("Hd") . ": round-off", \
          keyentry with points pt 6 ps 1.6 lc rgb C_EXACT lw 0.8 title "paper, Table 1 (p, q, H, H_d): rings"
 
@@ -128,8 +125,8 @@ do for [fmt in FORMATS] {
     set ylabel "|z_N − z(t_{end})|_2  (odeint reference)"
     plot for [s in S2] NL using "h":(column(s)):xtic(sprintf("%g", column("h"))) with points ls STY2(s) notitle, \
          for [s in S2] [t=0:1:1] '+' using (h = H2MIN * (H2MAX / H2MIN)**t, h):(GUIDE("nl", s, ORD2(s), h)) \
-                with lines ls STY2(s) + 10 notitle, \
-         for [s in S2] keyentry with linespoints ls STY2(s) + 10 \
+                with lines ls FIT2(s) notitle, \
+         for [s in S2] keyentry with linespoints ls FIT2(s) \
                 title sprintf("%s, %s", LAB2(s), ORDTXT(ORD2(s)))
     unset label 1
     unset multiplot

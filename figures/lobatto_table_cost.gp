@@ -15,12 +15,7 @@ eval need_num('T', scene_full('nonlinear.t_end'))
 # the methods of the scene key timing.methods, by label, in the order of cost_pendulum.csv
 METHODS = summary_words('cost.pendulum.methods')
 if (words(METHODS) == 0) { exit error sprintf("%s/figure_values.gp: no cost.pendulum.methods", results) }
-do for [i = 1:words(METHODS)] {   # styles for methods other than these five
-    eval sprintf("set style line %d lc rgb '%s' lw 1.0 pt %d ps 0.7", 60 + i, word("#882255 #56B4E9 #999999 #000000 #E69F00 #0072B2 #D55E00 #009E73 #CC79A7", (i - 1) % 9 + 1), (2 * i) % 14 + 1)
-}
-LABEL(m) = method_key(m, "001")   # (figures/methods.gpi: the registry's title and 001's equations)
-STYLE(m) = m eq "lobatto" ? LS_LOB : m eq "simpson" ? LS_SIMP : m eq "midpoint" ? LS_MID \
-         : m eq "odeint_rk4" ? LS_RK4 : m eq "odeint_rkf78" ? LS_RKF78 : 60 + word_index(METHODS, m)
+COST_PAPER = "001"
 COST_NAME = 'lobatto_table_cost'
 COST_TITLE = sprintf("{/:Bold Cost:} phase-space error against computing effort, nonlinear pendulum L = q̇²/2 + cos q, q(0) = %s, p(0) = 0\n" \
                      . "one run to t_{end} = %g per step size h; wall time: median of %s interleaved runs of ≥ 20 ms, single thread", \

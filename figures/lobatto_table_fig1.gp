@@ -24,11 +24,7 @@ FIG(n) = csv(sprintf('fig1_N%d.csv', n))
 # the methods of the scene key figure1.methods, by label: the columns q_<label> of the CSV
 METHODS = summary_words('methods.figure1')
 if (words(METHODS) == 0) { exit error sprintf("%s/figure_values.gp: no methods.figure1", results) }
-do for [i = 1:words(METHODS)] {   # styles for methods other than the paper's three
-    eval sprintf("set style line %d lc rgb '%s' lw 1.0 pt %d ps 0.7", 60 + i, word("#009E73 #CC79A7 #56B4E9 #882255 #999999 #000000 #E69F00 #0072B2 #D55E00", (i - 1) % 9 + 1), (2 * i) % 14 + 1)
-}
-LABEL(m) = method_key(m, "001")   # (figures/methods.gpi: the registry's title and 001's equations)
-STYLE(m) = m eq "lobatto" ? LS_LOB : m eq "simpson" ? LS_SIMP : m eq "midpoint" ? LS_MID : 60 + word_index(METHODS, m)
+eval method_styles(METHODS)   # (figures/common.gp: colours and markers from the registry)
 
 # "max_j error: Lobatto 1.2e-03, Simpson ..." per mesh (k = 0, 1) and variable, ERRS_<k>_<var>: the
 # largest errors over the steps, summary values figure1.max_error.<k>.<label>.<var>
@@ -69,14 +65,14 @@ do for [fmt in FORMATS] {
         set ylabel "q"
         set label 1 ERRS(row - 1, "q")
         plot EXACT using "t":"q" with lines ls LS_EXACT, \
-             for [m in METHODS] FIG(n) using "t":(column("q_".m)) with points ls STYLE(m)
+             for [m in METHODS] FIG(n) using "t":(column("q_".m)) with points ls method_ls(m)
 
         set lmargin at screen 0.59; set rmargin at screen 0.98
         set title sprintf("N = %d, h = %.4g:  momentum p (not rescaled)", n, T / n)
         set ylabel "p"
         set label 1 ERRS(row - 1, "p")
         plot EXACT using "t":"p" with lines ls LS_EXACT, \
-             for [m in METHODS] FIG(n) using "t":(column("p_".m)) with points ls STYLE(m)
+             for [m in METHODS] FIG(n) using "t":(column("p_".m)) with points ls method_ls(m)
     }
     unset label 1
 
@@ -88,7 +84,7 @@ do for [fmt in FORMATS] {
     set key center center horizontal Left reverse maxrows 1 samplen 3 width 1
     plot 2 with lines notitle, \
          keyentry with lines ls LS_EXACT title "exact", \
-         for [m in METHODS] keyentry with points ls STYLE(m) title LABEL(m)   # (2: off the yrange)
+         for [m in METHODS] keyentry with points ls method_ls(m) title method_key(m, "001")   # (2: off the yrange)
     unset multiplot
     unset output
 }

@@ -17,11 +17,7 @@ eval need_num('PERIODS', scene_num('long_run.periods'))
 eval need_num('REF_ERR', summary_real('long_run_cost.reference_error'))
 METHODS = summary_words('cost.long_run_phase.methods')
 if (words(METHODS) == 0) { exit error sprintf("%s/figure_values.gp: no cost.long_run_phase.methods", results) }
-do for [i = 1:words(METHODS)] {   # styles for methods other than these three
-    eval sprintf("set style line %d lc rgb '%s' lw 1.0 pt %d ps 0.7", 60 + i, method_colour(word(METHODS, i)), (2 * i) % 14 + 1)
-}
-LABEL(m) = method_key(m, "001")   # (figures/methods.gpi: the registry's title and 001's equations)
-STYLE(m) = m eq "lobatto" ? LS_LOB : m eq "simpson" ? LS_SIMP : m eq "midpoint" ? LS_MID : 60 + word_index(METHODS, m)
+COST_PAPER = "001"
 COST_NAME = 'lobatto_table_long_run_cost'
 COST_TITLE = sprintf("{/:Bold Cost over the long run of Fig. 2:} oscillator m = 1, ω = 2π, q(0) = π/2, p(0) = 0, %g periods per run\n" \
                      . "wall time: median of %s interleaved runs of ≥ 20 ms, single thread; reference: the closed form, its own error at t_N ≤ %s", \

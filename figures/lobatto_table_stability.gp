@@ -27,14 +27,10 @@ XMIN = STATS_min; XMAX = STATS_max
 NPTS = STATS_records
 # the methods scanned with Lobatto (scene key stability.methods), by label: the columns spectral_radius_<label>
 METHODS = summary_words('methods.stability')
-do for [i = 1:words(METHODS)] {   # styles for methods other than Simpson's
-    eval sprintf("set style line %d lc rgb '%s' lw 1.0", 60 + i, word("#009E73 #CC79A7 #D55E00 #882255 #999999 #000000 #56B4E9 #E69F00 #0072B2", (i - 1) % 9 + 1))
-}
-LABEL(m) = method_key(m, "001")   # (figures/methods.gpi: the registry's title and 001's equations)
-STYLE(m) = m eq "simpson" ? LS_SIMP : 60 + word_index(METHODS, m)
+eval method_styles(METHODS)   # (figures/common.gp: colours and markers from the registry)
 # the compared curves and their key entries as plot clauses (none without compared methods)
-COMPARED = words(METHODS) == 0 ? "" : 'for [m in METHODS] ST using "h_omega":(clip(column("spectral_radius_".m))) with lines ls STYLE(m), '
-COMPARED_KEY = words(METHODS) == 0 ? "" : 'for [m in METHODS] keyentry with lines ls STYLE(m) title LABEL(m), '
+COMPARED = words(METHODS) == 0 ? "" : 'for [m in METHODS] ST using "h_omega":(clip(column("spectral_radius_".m))) with lines ls method_ls(m), '
+COMPARED_KEY = words(METHODS) == 0 ? "" : 'for [m in METHODS] keyentry with lines ls method_ls(m) title method_key(m, "001"), '
 stats ST using (clip(column("spectral_radius"))) nooutput
 YMAX = STATS_max
 do for [m in METHODS] {

@@ -20,6 +20,7 @@ eval ORDER_METHODS
 # a label phi<ell>_<discretization>: its ell and its discretization ("" for rk4)
 ELL(m) = m[1:3] eq "phi" ? m[4:strstrt(m, "_") - 1] : ""
 DISC(m) = m[1:3] eq "phi" ? m[strstrt(m, "_") + 1:] : ""
+COST_OWN_STYLES = 1   # (its curves are Phi^(ell) of a discretization: 003's styles, measure_cloud_style.gpi)
 LABEL(m) = ELL(m) eq "4" ? sprintf("Φ^{(4)}_h, %s", MC_DESC(DISC(m))) \
          : ELL(m) ne "" ? sprintf("Φ^{(%s)}_h, %s", ELL(m), DISC(m)) : m eq "rk4" ? "classical RK4 on (3.8)" : nosub(m)
 # Φ^(4): the colour, marker and dashes of its discretization (figures/measure_cloud_style.gpi); Φ^(0):

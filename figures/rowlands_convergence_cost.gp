@@ -17,10 +17,7 @@ T = STATS_max
 CSV_METHODS = summary_words('cost.phase.methods')
 PREFERRED = "sv rowlands rowlands_cheap forest_ruth odeint_velocity_verlet odeint_rkn_sb3a odeint_rk4"
 eval ORDER_METHODS
-LABEL(m) = method_key(m, "000")   # (figures/methods.gpi: the registry's title and 000's equations)
-STYLE(m) = m eq "sv" ? LS_SV : m eq "rowlands" ? LS_ROW : m eq "rowlands_cheap" ? LS_ROWCH \
-         : m eq "forest_ruth" ? LS_FR : m eq "odeint_rk4" ? LS_RK4 : m eq "odeint_rkn_sb3a" ? LS_RKN \
-         : m eq "odeint_velocity_verlet" ? LS_VV : LS_OTHER
+COST_PAPER = "000"
 PARAMS = sprintf("l = %s, m = %s, k = %s, g = %s, t_{max} = %g", \
                  scene_num('pendulum.l'), scene_num('pendulum.m'), scene_num('pendulum.k'), scene_num('pendulum.g'), T)
 Z0 = sprintf("(x, y, p_x, p_y) = (%s, %s, %s, %s)", scene_num('initial.0.0'), scene_num('initial.0.1'), \

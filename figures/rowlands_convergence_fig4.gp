@@ -25,10 +25,7 @@ HAS_PHASE = in_list(scene_words('observables'), 'phase_error')
 QUANTITIES = (HAS_ENERGY ? "energy " : "") . (HAS_PHASE ? "phase" : "")
 PREFERRED = "sv kernel rowlands_printed rowlands rowlands_cheap forest_ruth"   # (the key's order)
 eval ORDER_METHODS
-LABEL(m) = method_key(m, "000")   # (figures/methods.gpi: the registry's title and 000's equations)
-STYLE(m) = m eq "sv" ? LS_SV : m eq "rowlands" ? LS_ROW : m eq "rowlands_cheap" ? LS_ROWCH \
-         : m eq "kernel" ? LS_KERNEL : m eq "rowlands_printed" ? LS_PRINTED : m eq "forest_ruth" ? LS_FR : LS_OTHER
-FITSTYLE(m) = STYLE(m) + 10
+eval method_styles(METHODS)   # (figures/common.gp: colours and markers from the registry)
 
 # fitted orders of initial condition ic: eval fit_at('sv_energy') defines sv_energy_order, _c,
 # _hmin, _hmax (as getfit in common.gp, which does not tell the initial conditions apart)
@@ -53,7 +50,7 @@ do for [fmt in FORMATS] {
     NP = words(QUANTITIES)    # one panel per observable; the title in more lines on one panel
     SEP = NP == 1 ? "\n" : " "
     eval term(fmt, 'rowlands_convergence_fig4', NP == 1 ? 11 : 17, 12 + 0.5 * (words(METHODS) - 5) + (NP == 1 ? 1 : 0))
-    set multiplot layout 1,NP title sprintf("{/:Bold Fig. 4:} planar elastic pendulum, Cartesian coordinates:%s%s\n%s;%sdashed (dotted) lines: least-squares fits over the h range fitted", SEP, PARAMS, Z0, SEP)
+    set multiplot layout 1,NP title sprintf("{/:Bold Fig. 4:} planar elastic pendulum, Cartesian coordinates:%s%s\n%s;%sdashed lines: least-squares fits over the h range fitted", SEP, PARAMS, Z0, SEP)
     set format x "%g"
     eval LOGTICS("1 2 5")  # the h range may span less than a decade
     set logscale xy
@@ -67,21 +64,21 @@ do for [fmt in FORMATS] {
     if (HAS_ENERGY) {
     set title "energy error, eq. (50)"
     set ylabel "(J^{−1} Σ_{j=0}^{J} (H(q^j, p^j) − H_0)^2)^{1/2}"
-    plot for [m in METHODS] CONV using "h":(sel(m.'_energy_rms')) with points ls STYLE(m) notitle, \
+    plot for [m in METHODS] CONV using "h":(sel(m.'_energy_rms')) with points ls method_ls(m) notitle, \
          for [m in METHODS] [t=0:1:1] '+' using (fit_h(m.'_energy', t)):(fit_err(m.'_energy', t)) \
-                with lines ls FITSTYLE(m) notitle, \
-         for [m in METHODS] keyentry with linespoints ls FITSTYLE(m) \
-                title sprintf("%s, order %.2f", LABEL(m), value(m.'_energy_order'))
+                with lines ls method_fit_ls(m) notitle, \
+         for [m in METHODS] keyentry with linespoints ls method_fit_ls(m) \
+                title sprintf("%s, order %.2f", method_key(m, "000"), value(m.'_energy_order'))
     }
 
     if (HAS_PHASE) {
     set title "phase-space error at t_{max}"
     set ylabel "|z^N − z(t_{max})|_2,  z = (x, y, p_x, p_y)"
-    plot for [m in METHODS] CONV using "h":(sel(m.'_phase')) with points ls STYLE(m) notitle, \
+    plot for [m in METHODS] CONV using "h":(sel(m.'_phase')) with points ls method_ls(m) notitle, \
          for [m in METHODS] [t=0:1:1] '+' using (fit_h(m.'_phase', t)):(fit_err(m.'_phase', t)) \
-                with lines ls FITSTYLE(m) notitle, \
-         for [m in METHODS] keyentry with linespoints ls FITSTYLE(m) \
-                title sprintf("%s, order %.2f", LABEL(m), value(m.'_phase_order'))
+                with lines ls method_fit_ls(m) notitle, \
+         for [m in METHODS] keyentry with linespoints ls method_fit_ls(m) \
+                title sprintf("%s, order %.2f", method_key(m, "000"), value(m.'_phase_order'))
     }
     unset multiplot
     unset output

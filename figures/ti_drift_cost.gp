@@ -18,12 +18,8 @@ eval need_num('REF_TOL', scene_real('work_precision.reference_tol'))
 CSV_METHODS = summary_words('cost.henon_heiles.methods')
 PREFERRED = "sv ti sti"
 eval ORDER_METHODS
-LABEL(m) = method_key(m, "004")   # (figures/methods.gpi: the registry's title and 004's equations)
-# TI and the simplified method coincide on the oscillator: open squares around filled circles keep both visible
-set style line 701 lc rgb method_colour('stormer_verlet') lw 1.0 pt 7 ps 0.55
-set style line 702 lc rgb method_colour('takahashi_imada') lw 1.0 pt 4 ps 0.85
-set style line 703 lc rgb method_colour('simplified_takahashi_imada') lw 1.0 dt (6,3) pt 7 ps 0.45
-STYLE(m) = m eq "sv" ? 701 : m eq "ti" ? 702 : m eq "sti" ? 703 : m eq "forest_ruth" ? LS_FR : LS_OTHER
+COST_PAPER = "004"   # (TI and the simplified method coincide on the oscillator: their markers, an open triangle
+                     # and a plus, keep both visible)
 COST_NAME = 'ti_drift_cost'
 COST_TITLE = sprintf("{/:Bold Cost:} global error at t = %g against computing effort; top: Hénon–Heiles k = 3 (reference: odeint " \
                      . "Bulirsch–Stoer at tolerances %s),\nbottom: harmonic oscillator (exact solution); wall time: median of %s interleaved runs of ≥ 20 ms", \

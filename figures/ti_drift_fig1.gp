@@ -9,7 +9,7 @@
 # TI and the simplified TI are processed (start χ_h^{-1}, output χ_h); on the oscillator the two
 # methods coincide. Vertical lines: the stability bounds in ω h_eff (summary values: equal_work, and
 # TI's bisected 2√3). The methods are those of oscillator.csv (the scene's oscillator.methods).
-# Left, dashed/dotted: the least-squares lines whose slopes are summary values's orders, drawn over the
+# Left, dashed: the least-squares lines whose slopes are summary values's orders, drawn over the
 # points they were fitted on (as in experiments/ti_drift/oscillator.cpp: ω h_eff ≤ 0.5, error above 10^3 ε).
 # Right: the fitted orders in the key only (their lines would hide under the closed forms).
 # Input: oscillator.csv, oscillator_closed_forms.csv; summary values (the methods, orders, stability bounds, force
@@ -38,14 +38,9 @@ do for [m in METHODS] {
     eval need_num('EVALS_'.m, summary_real('equal_work.evals_per_step.'.m))
     eval need_num('BOUND_'.m, summary_real('equal_work.omega_h_eff_bound.'.m))
 }
-# Forest-Ruth and any further method: black crosses / grey stars; fits dotted (style + 10)
-LS_TD_FR    = 104; set style line LS_TD_FR    lc rgb C_FR    lw 1.0 dt (2,3) pt 2 ps 0.75
-LS_TD_OTHER = 105; set style line LS_TD_OTHER lc rgb C_OTHER lw 1.0 dt (2,3) pt 3 ps 0.75
-set style line LS_TD_FR + 10    lc rgb C_FR    lw 0.9 dt (2,3)
-set style line LS_TD_OTHER + 10 lc rgb C_OTHER lw 0.9 dt (2,3)
-STYLE(m) = m eq "sv" ? LS_TD_SV : m eq "ti" ? LS_TD_TI : m eq "sti" ? LS_TD_STI : m eq "forest_ruth" ? LS_TD_FR : LS_TD_OTHER
-SHORT(m) = m eq "sv" ? "SV" : m eq "ti" ? "TI" : m eq "sti" ? "simplified TI" : m eq "forest_ruth" ? "Forest–Ruth" : nosub(m)
-NAME(m) = m eq "sv" ? "SV (1.3)" : m eq "ti" ? "TI (1.4), processed" : m eq "sti" ? "simplified TI (1.6), processed" : SHORT(m)
+eval method_styles(METHODS)   # (figures/common.gp: colours and markers from the registry)
+SHORT(m) = method_title(m)
+NAME(m) = method_key(m, "004")
 STEP(m) = (_e = value('EVALS_'.m)) == 2 ? "h = h_{eff}" : _e == 1 ? "h = h_{eff}/2" : sprintf("h = %gh_{eff}/2", _e)
 LEFT(m) = m eq "sti" ? NAME(m) : sprintf("%s, %s: order %.2f", NAME(m), STEP(m), value('ORD_'.m.'_solution'))
 RIGHT(m) = m eq "sti" ? SHORT(m) : sprintf("%s: order %.2f", SHORT(m), value('ORD_'.m.'_energy'))
@@ -102,13 +97,13 @@ do for [fmt in FORMATS] {
 
     set title "(left) global error, maximum over the run"
     set ylabel "max_n (|ε_p|^2 + ω^2 |ε_q|^2)^{1/2}"
-    plot for [m in METHODS] OSC using "omega_h":(sel(m, "max_global_err")) with points ls STYLE(m) title LEFT(m), \
+    plot for [m in METHODS] OSC using "omega_h":(sel(m, "max_global_err")) with points ls method_ls(m) title LEFT(m), \
          for [m in FITTED] [t=0:1:1] '+' using (fitx(m, "solution", t)):(fitline(m, "solution", fitx(m, "solution", t))) \
-                with lines ls STYLE(m) + 10 notitle
+                with lines ls method_fit_ls(m) notitle
 
     set title "(right) relative energy error, maximum over the run"
     set ylabel "max_n |H(p_n, q_n) − H_0| / H_0   (TI: H(p̂_n, q̂_n))"
-    plot for [m in METHODS] OSC using "omega_h":(sel(m, "max_rel_H_err")) with points ls STYLE(m) title RIGHT(m), \
+    plot for [m in METHODS] OSC using "omega_h":(sel(m, "max_rel_H_err")) with points ls method_ls(m) title RIGHT(m), \
          CF using "omega_h":"sv_rel_H" with lines lc rgb C_SV lw 0.8 title "SV, closed form y^2/(16 − y^2),  y = ωh_{eff}", \
          CF using "omega_h":"ti_rel_H" with lines lc rgb C_TI lw 0.8 title "TI, closed form y^6/(36 (y^4 − 12y^2 + 48))"
     unset multiplot

@@ -64,7 +64,7 @@ void print_json() {
                    {"kernel_order", m.kernel_order}, {"real_bound", bound_json(m.real_bound)},
                    {"oscillatory_bound", bound_json(m.oscillatory_bound)}, {"properties", property_names(m.properties)},
                    {"measure_order", m.measure_order}, {"applies_to", m.applies_to}, {"citation", m.citation},
-                   {"title", m.title}, {"equations", m.equations}, {"colour", m.colour}});
+                   {"title", m.title}, {"equations", m.equations}, {"colour", m.colour}, {"marker", m.marker}});
   std::printf("%s\n", all.dump(2).c_str());
 }
 
@@ -93,14 +93,18 @@ void print_gnuplot() {
       "# figures.methods_gpi fails while it differs from the registry.\n#\n"
       "# For a method m named as a scene or a CSV names it (its registry name or label):\n"
       "#   method_colour(m)        its colour in every figure (C_OTHER for a name the registry does not know)\n"
+      "#   method_point(m)         its marker in every figure, a point type (P_OTHER for an unknown name); colour and\n"
+      "#                           marker together name one method of the registry\n"
       "#   method_title(m)         its name in a figure's key (m itself for an unknown name)\n"
       "#   method_equations(m, p)  the equations that define it in paper p (\"000\", \"001\", \"003\", \"004\"), or \"\"\n"
       "#   method_key(m, p)        method_title(m) followed by method_equations(m, p)\n"
-      "C_OTHER = '#777777'\n");
+      "C_OTHER = '#777777'\nP_OTHER = 3\n");
   std::printf("method_colour(m) = \\\n");
   for (const MethodInfo& m : method_registry())
     std::printf("    %s ? \"%s\" : \\\n", names_it(m).c_str(), std::string(m.colour).c_str());
-  std::printf("    C_OTHER\nmethod_title(m) = \\\n");
+  std::printf("    C_OTHER\nmethod_point(m) = \\\n");
+  for (const MethodInfo& m : method_registry()) std::printf("    %s ? %d : \\\n", names_it(m).c_str(), m.marker);
+  std::printf("    P_OTHER\nmethod_title(m) = \\\n");
   for (const MethodInfo& m : method_registry())
     std::printf("    %s ? \"%s\" : \\\n", names_it(m).c_str(), std::string(m.title).c_str());
   std::printf("    m\nmethod_equations(m, p) = \\\n");

@@ -1,12 +1,13 @@
 #!/usr/bin/env python3
-"""check_palette.py SOURCE_DIR METHODS_BIN [--gpi]: one colour per method, distinct where methods meet.
+"""check_palette.py SOURCE_DIR METHODS_BIN [--gpi]: one colour and marker per method, distinct where methods meet.
 
-Every method of the registry (METHODS_BIN --json) has a colour "#rrggbb" and its equations in the
-form "000 (26)–(28); 004 (1.3)" (or none); and in every paper scene
-(experiments/<name>/*.toml but quick* and published.toml) each list of methods (a key ending in
-"methods", naming methods by registry name or label) has as many colours as methods: methods drawn
-in one figure never share a colour. With --gpi: figures/methods.gpi is what METHODS_BIN --gnuplot
-writes (run `make methods-gpi` after changing the registry).
+Every method of the registry (METHODS_BIN --json) has a colour "#rrggbb", a marker (a gnuplot point
+type 1-15) and its equations in the form "000 (26)–(28); 004 (1.3)" (or none); no two methods share
+both colour and marker, so methods drawn in one figure are told apart whichever of them a scene names;
+and in every paper scene (experiments/<name>/*.toml but quick* and published.toml) each list of methods
+(a key ending in "methods", naming methods by registry name or label) has as many (colour, marker)
+pairs as methods. With --gpi: figures/methods.gpi is what METHODS_BIN --gnuplot writes (run
+`make methods-gpi` after changing the registry).
 """
 import json
 import pathlib
@@ -35,26 +36,32 @@ def main(argv):
         print("figures/methods.gpi: current")
         return 0
     registry = json.loads(subprocess.run([methods_bin, "--json"], capture_output=True, text=True, check=True).stdout)
-    palette = {}
+    palette, owner = {}, {}
     problems = []
     for m in registry:
         if not re.fullmatch(r"#[0-9A-Fa-f]{6}", m["colour"]):
             problems.append(f"{m['name']}: colour {m['colour']!r} is not #rrggbb")
         if m["equations"] and not re.fullmatch(r"\d{3} [^;]+(; \d{3} [^;]+)*", m["equations"]):
             problems.append(f"{m['name']}: equations {m['equations']!r} are not 'PPP (eq); PPP (eq)'")
-        palette[m["name"]] = palette[m["label"]] = m["colour"]
+        if not (isinstance(m.get("marker"), int) and 1 <= m["marker"] <= 15):
+            problems.append(f"{m['name']}: marker {m.get('marker')!r} is not a gnuplot point type 1-15")
+        look = (m["colour"].upper(), m.get("marker"))
+        if look in owner:
+            problems.append(f"{m['name']} and {owner[look]} share the colour {look[0]} and the marker {look[1]}")
+        owner.setdefault(look, m["name"])
+        palette[m["name"]] = palette[m["label"]] = look
     scenes = [p for p in sorted((source / "experiments").glob("*/*.toml"))
               if not p.name.startswith("quick") and p.name != "published.toml"]
     lists = 0
     for scene in scenes:
         for key, methods in method_lists(tomllib.loads(scene.read_text(encoding="utf-8"))):
             lists += 1
-            colours = {}
+            looks = {}
             for m in methods:
-                c = palette.get(m, "").upper()
-                if c and c in colours:
-                    problems.append(f"{scene.relative_to(source)}: {key}: {colours[c]} and {m} share the colour {c}")
-                colours.setdefault(c, m)
+                look = palette.get(m)
+                if look and look in looks:
+                    problems.append(f"{scene.relative_to(source)}: {key}: {looks[look]} and {m} share colour and marker {look}")
+                looks.setdefault(look, m)
     for p in problems:
         print(p)
     print(f"palette: {len(registry)} methods, {lists} method lists in {len(scenes)} scenes: "

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <cstdint>
 #include <stdexcept>
 #include <string>
@@ -140,6 +141,17 @@ TEST(MethodRegistry, FindsByNameOrLabelAndNamesTheValidNames) {
     EXPECT_NE(std::string(e.what()).find("symplectic_euler_pq"), std::string::npos) << e.what();
   }
   EXPECT_EQ(family_name(method_info("rowlands").family), "processed");
+}
+
+// A method's colour and marker name it alone: the methods a figure draws together are told apart by
+// construction, whichever of them a scene names (figures/common.gp method_styles).
+TEST(MethodRegistry, ColourAndMarkerNameOneMethod) {
+  std::map<std::pair<std::string_view, int>, std::string_view> seen;
+  for (const MethodInfo& m : method_registry()) {
+    EXPECT_TRUE(m.marker >= 1 && m.marker <= 15) << m.name << ": marker " << m.marker << " is not a gnuplot point type 1-15";
+    const auto [at, fresh] = seen.emplace(std::pair{m.colour, m.marker}, m.name);
+    EXPECT_TRUE(fresh) << m.name << " and " << at->second << " share the colour " << m.colour << " and the marker " << m.marker;
+  }
 }
 
 TEST(MethodRegistry, WithMethodBindsByNameAndRefusesWhatCannotStepTheSystem) {

@@ -74,7 +74,7 @@ struct ExplicitEuler {
       .name = "explicit_euler", .label = "ee", .family = Family::explicit_method, .order = 1, .kernel_order = 1,
       .real_bound = 2.0, .oscillatory_bound = 0.0,  // |1 + h lambda| <= 1; |1 + i w h| > 1
       .applies_to = "first-order ODE; Hamiltonian as z' = J grad H", .citation = "000 eq. (9)",
-      .title = "explicit Euler", .equations = "000 (9)", .colour = "#D55E00"};
+      .title = "explicit Euler", .equations = "000 (9)", .colour = "#D55E00", .marker = 11};
   template <class Sys>
   static constexpr bool applies = FirstOrderSystem<Sys> || HamiltonianSystem<Sys>;
   template <class Sys>
@@ -89,7 +89,7 @@ struct RungeKutta4 {
       .real_bound = 2.785293563405282, .oscillatory_bound = 2 * std::sqrt(2.0),  // |R(z)| = 1, R the degree-4 Taylor polynomial of e^z
       .applies_to = "first-order ODE; Hamiltonian as z' = J grad H",
       .citation = "classical RK4 (Hairer, Norsett, Wanner I, Table 1.2)",
-      .title = "classical RK4", .equations = "", .colour = "#009E73"};
+      .title = "classical RK4", .equations = "", .colour = "#009E73", .marker = 8};
   template <class Sys>
   static constexpr bool applies = FirstOrderSystem<Sys> || HamiltonianSystem<Sys>;
   template <class Sys>
@@ -103,7 +103,7 @@ struct SymplecticEulerPQ {
       .name = "symplectic_euler_pq", .label = "se", .family = Family::symplectic, .order = 1, .kernel_order = 1,
       .real_bound = no_bound, .oscillatory_bound = 2.0,  // trace of the one-step matrix 2 - (w h)^2
       .properties = property::symplectic, .applies_to = "Hamiltonian", .citation = "000 eq. (42)-(43)",
-      .title = "symplectic Euler", .equations = "000 (42)–(43)", .colour = "#D55E00"};
+      .title = "symplectic Euler", .equations = "000 (42)–(43)", .colour = "#D55E00", .marker = 7};
   template <class Sys>
   static constexpr bool applies = HamiltonianSystem<Sys>;
   template <class Sys>
@@ -117,7 +117,7 @@ struct SymplecticEulerQP {
       .name = "symplectic_euler_qp", .label = "se_qp", .family = Family::symplectic, .order = 1, .kernel_order = 1,
       .real_bound = no_bound, .oscillatory_bound = 2.0, .properties = property::symplectic,
       .applies_to = "Hamiltonian", .citation = "adjoint of 000 eq. (42)-(43) (000 footnote 3)",
-      .title = "symplectic Euler, adjoint", .equations = "", .colour = "#D55E00"};
+      .title = "symplectic Euler, adjoint", .equations = "", .colour = "#D55E00", .marker = 6};
   template <class Sys>
   static constexpr bool applies = HamiltonianSystem<Sys>;
   template <class Sys>
@@ -133,7 +133,7 @@ struct CompensatedSymplecticEuler {
       .kernel_order = 1, .real_bound = no_bound, .oscillatory_bound = no_bound, .properties = property::symplectic,
       .applies_to = "harmonic oscillator (74), amplitude 1",
       .citation = "000 eq. (82), App. B: symplectic Euler (42)-(43) after the point transformation (82), (41)",
-      .title = "symplectic Euler with transformation", .equations = "000 (82)", .colour = "#0072B2"};
+      .title = "symplectic Euler with transformation", .equations = "000 (82)", .colour = "#0072B2", .marker = 13};
   // Not in the dispatch by name: (82) has a parameter k of its own. Pre: (41) with Q of (82); kernel:
   // symplectic Euler in (qbar, pbar); post: the inverse of (41) (NaN where |qhat| >= 1).
   template <class Sys>
@@ -151,7 +151,7 @@ struct StormerVerlet {
       .real_bound = no_bound, .oscillatory_bound = 2.0,  // 004 Sect. 1.4
       .properties = property::symplectic | property::time_reversible, .applies_to = "separable Hamiltonian",
       .citation = "000 eq. (26)-(28)",
-      .title = "Störmer–Verlet", .equations = "000 (26)–(28); 004 (1.3)", .colour = "#D55E00"};
+      .title = "Störmer–Verlet", .equations = "000 (26)–(28); 004 (1.3)", .colour = "#D55E00", .marker = 5};
   template <class Sys>
   static constexpr bool applies = SeparableSystem<Sys>;
   template <class Sys>
@@ -169,7 +169,7 @@ struct RowlandsKernel {
       .real_bound = no_bound, .oscillatory_bound = rowlands_kernel_bound,
       .properties = property::symplectic | property::time_reversible, .applies_to = "separable Hamiltonian",
       .citation = "000 eq. (30)-(31)",
-      .title = "Rowlands kernel", .equations = "000 (30)–(31)", .colour = "#E69F00"};
+      .title = "Rowlands kernel", .equations = "000 (30)–(31)", .colour = "#E69F00", .marker = 12};
   template <class Sys>
   static constexpr bool applies = SeparableSystem<Sys>;
   template <class Sys>
@@ -189,17 +189,17 @@ struct RowlandsProcessed {
 };
 
 constexpr MethodInfo rowlands_info(std::string_view name, int order, std::string_view citation, std::string_view title,
-                                   std::string_view equations, std::string_view colour) {
+                                   std::string_view equations, std::string_view colour, int marker) {
   return {.name = name, .label = name, .family = Family::processed, .order = order, .kernel_order = 2,
           .real_bound = no_bound, .oscillatory_bound = rowlands_kernel_bound,
           .properties = property::symplectic | property::time_reversible, .applies_to = "separable Hamiltonian",
-          .citation = citation, .title = title, .equations = equations, .colour = colour};
+          .citation = citation, .title = title, .equations = equations, .colour = colour, .marker = marker};
 }
 
 struct Rowlands : RowlandsProcessed {
   static constexpr MethodInfo info =
       rowlands_info("rowlands", 4, "000 eq. (30)-(33) with the derived coefficient h^2/12 (transforms/rowlands_processors.hpp)",
-                    "Rowlands, processors h²/12", "000 (32)–(33)", "#0072B2");
+                    "Rowlands, processors h²/12", "000 (32)–(33)", "#0072B2", 14);
   template <class Sys>
   static auto bind(const Sys& sys) {
     return rowlands_method(sys);
@@ -208,7 +208,7 @@ struct Rowlands : RowlandsProcessed {
 
 struct RowlandsCheap : RowlandsProcessed {
   static constexpr MethodInfo info = rowlands_info("rowlands_cheap", 4, "000 eq. (30)-(31), (34)-(37)",
-                                                     "Rowlands, cheap processors", "000 (34)–(37)", "#56B4E9");
+                                                     "Rowlands, cheap processors", "000 (34)–(37)", "#56B4E9", 9);
   template <class Sys>
   static auto bind(const Sys& sys) {
     return rowlands_cheap_method(sys);
@@ -217,7 +217,7 @@ struct RowlandsCheap : RowlandsProcessed {
 
 struct RowlandsPrinted : RowlandsProcessed {
   static constexpr MethodInfo info = rowlands_info("rowlands_printed", 2, "000 eq. (30)-(33) as printed (h^2/24)",
-                                                   "Rowlands, printed processors h²/24", "000 (32)–(33)", "#CC79A7");
+                                                   "Rowlands, printed processors h²/24", "000 (32)–(33)", "#CC79A7", 6);
   template <class Sys>
   static auto bind(const Sys& sys) {
     return rowlands_method(sys, rowlands_processor_coefficient_printed);
@@ -237,7 +237,7 @@ struct TakahashiImada {
       .real_bound = no_bound, .oscillatory_bound = 2 * std::sqrt(3.0),  // 004 Sect. 1.4
       .properties = property::symplectic | property::time_reversible,
       .applies_to = "separable Hamiltonian, unit mass", .citation = "004 (1.4)-(1.5)",
-      .title = "Takahashi–Imada", .equations = "004 (1.4)", .colour = "#0072B2"};
+      .title = "Takahashi–Imada", .equations = "004 (1.4)", .colour = "#0072B2", .marker = 10};
   template <class Sys>
   static constexpr bool applies = SeparableSystem<Sys>;
   template <class Sys>
@@ -257,7 +257,7 @@ struct SimplifiedTakahashiImada {
       .real_bound = no_bound, .oscillatory_bound = 2 * std::sqrt(3.0),  // 004 Sect. 1.4
       .properties = property::volume_preserving | property::time_reversible,
       .applies_to = "separable Hamiltonian, unit mass", .citation = "004 (1.6), (1.5)",
-      .title = "simplified Takahashi–Imada", .equations = "004 (1.6)", .colour = "#009E73"};
+      .title = "simplified Takahashi–Imada", .equations = "004 (1.6)", .colour = "#009E73", .marker = 1};
   template <class Sys>
   static constexpr bool applies = SeparableSystem<Sys>;
   template <class Sys>
@@ -276,7 +276,7 @@ struct ForestRuth {
       .real_bound = no_bound, .oscillatory_bound = 1.5734019474345401,  // the trace of the one-step matrix reaches +2
       .properties = property::symplectic | property::time_reversible, .applies_to = "separable Hamiltonian",
       .citation = "Forest & Ruth (1990), Yoshida (1990): SV(g1 h) SV(g2 h) SV(g1 h), g1 = 1/(2 - 2^(1/3))",
-      .title = "Forest–Ruth", .equations = "", .colour = "#000000"};
+      .title = "Forest–Ruth", .equations = "", .colour = "#000000", .marker = 2};
   template <class Sys>
   static constexpr bool applies = SeparableSystem<Sys>;
   template <class Sys>
@@ -291,7 +291,7 @@ struct ImplicitMidpoint {
       .real_bound = every_h, .oscillatory_bound = every_h,  // R(z) = (1 + z/2)/(1 - z/2)
       .properties = property::symplectic | property::time_reversible, .applies_to = "mechanical Lagrangian",
       .citation = "implicit midpoint rule (001 ref. [10])",
-      .title = "implicit midpoint", .equations = "", .colour = "#D55E00"};
+      .title = "implicit midpoint", .equations = "", .colour = "#D55E00", .marker = 8};
   template <class Sys>
   static constexpr bool applies = MechanicalSystem<Sys>;
   template <class Sys>
@@ -306,7 +306,7 @@ struct Lobatto {
       .real_bound = no_bound, .oscillatory_bound = std::sqrt(42.0 - 6.0 * std::sqrt(29.0)),  // 001 eq. (10)
       .properties = property::symplectic | property::time_reversible, .applies_to = "mechanical Lagrangian",
       .citation = "001 eq. (2)-(11), bound (10)",
-      .title = "Lobatto", .equations = "001 (13)–(14)", .colour = "#0072B2"};
+      .title = "Lobatto", .equations = "001 (13)–(14)", .colour = "#0072B2", .marker = 4};
   template <class Sys>
   static constexpr bool applies = MechanicalSystem<Sys>;
   template <class Sys>
@@ -321,7 +321,7 @@ struct Simpson {
       .real_bound = no_bound, .oscillatory_bound = std::sqrt(8.0),  // spectral radius of the one-step matrix
       .properties = property::symplectic | property::time_reversible, .applies_to = "mechanical Lagrangian",
       .citation = "001 ref. [2] (P2 elements, Simpson's rule)",
-      .title = "Simpson", .equations = "001 [2]", .colour = "#E69F00"};
+      .title = "Simpson", .equations = "001 [2]", .colour = "#E69F00", .marker = 13};
   template <class Sys>
   static constexpr bool applies = MechanicalSystem<Sys>;
   template <class Sys>
@@ -334,37 +334,39 @@ struct Simpson {
 // (integrators/conformal_variational.hpp); symplectic and symmetric for the
 // altered Hamiltonian K_E at fixed E, in the fictitious time.
 constexpr MethodInfo conformal_info(std::string_view name, std::string_view discretization, std::string_view title,
-                                    std::string_view colour) {
+                                    std::string_view colour, int marker) {
   return {.name = name, .label = discretization, .family = Family::conformal, .order = 2, .kernel_order = 2,
           .real_bound = no_bound, .oscillatory_bound = no_bound,
           .properties = property::symplectic | property::time_reversible, .applies_to = "nonholonomic particle (003)",
-          .citation = "003 eq. (5.1), Sec. 4.2", .title = title, .equations = "003 (5.1)", .colour = colour};
+          .citation = "003 eq. (5.1), Sec. 4.2", .title = title, .equations = "003 (5.1)", .colour = colour,
+          .marker = marker};
 }
-struct ConformalM { static constexpr MethodInfo info = conformal_info("conformal_M", "M", "Ψ_{h,E}, M", "#4477AA"); };
-struct ConformalMT { static constexpr MethodInfo info = conformal_info("conformal_MT", "MT", "Ψ_{h,E}, MT", "#228833"); };
-struct ConformalTM { static constexpr MethodInfo info = conformal_info("conformal_TM", "TM", "Ψ_{h,E}, TM", "#EE6677"); };
-struct ConformalTT { static constexpr MethodInfo info = conformal_info("conformal_TT", "TT", "Ψ_{h,E}, TT", "#AA3377"); };
-struct ConformalT { static constexpr MethodInfo info = conformal_info("conformal_T", "T", "Ψ_{h,E}, T", "#CCBB44"); };
+struct ConformalM { static constexpr MethodInfo info = conformal_info("conformal_M", "M", "Ψ_{h,E}, M", "#4477AA", 7); };
+struct ConformalMT { static constexpr MethodInfo info = conformal_info("conformal_MT", "MT", "Ψ_{h,E}, MT", "#228833", 5); };
+struct ConformalTM { static constexpr MethodInfo info = conformal_info("conformal_TM", "TM", "Ψ_{h,E}, TM", "#EE6677", 9); };
+struct ConformalTT { static constexpr MethodInfo info = conformal_info("conformal_TT", "TT", "Ψ_{h,E}, TT", "#AA3377", 13); };
+struct ConformalT { static constexpr MethodInfo info = conformal_info("conformal_T", "T", "Ψ_{h,E}, T", "#CCBB44", 11); };
 
 // Phi^(ell) of 003 eq. (4.5): Psi_{h,E} with E = E^(ell)(z_0), any of (5.1); keeps mu^(ell)_mod to O(h^(ell+2)) (Cor. 4.3).
-constexpr MethodInfo phi_info(std::string_view name, int ell, std::string_view title, std::string_view colour) {
+constexpr MethodInfo phi_info(std::string_view name, int ell, std::string_view title, std::string_view colour,
+                              int marker) {
   return {.name = name, .label = name, .family = Family::conformal, .order = 2, .kernel_order = 2,
           .real_bound = no_bound, .oscillatory_bound = no_bound, .properties = property::modified_measure,
           .measure_order = ell + 2, .applies_to = "nonholonomic particle (003)",
           .citation = "003 eq. (4.5), Cor. 4.3: Psi_{h,E} with E = E^(ell)(z_0)", .title = title,
-          .equations = "003 (4.5)", .colour = colour};
+          .equations = "003 (4.5)", .colour = colour, .marker = marker};
 }
-struct Phi0 { static constexpr MethodInfo info = phi_info("phi0", 0, "Φ^{(0)}_h", "#D55E00"); };
-struct Phi2 { static constexpr MethodInfo info = phi_info("phi2", 2, "Φ^{(2)}_h", "#E69F00"); };
-struct Phi4 { static constexpr MethodInfo info = phi_info("phi4", 4, "Φ^{(4)}_h", "#0072B2"); };
-struct Phi6 { static constexpr MethodInfo info = phi_info("phi6", 6, "Φ^{(6)}_h", "#009E73"); };
+struct Phi0 { static constexpr MethodInfo info = phi_info("phi0", 0, "Φ^{(0)}_h", "#D55E00", 10); };
+struct Phi2 { static constexpr MethodInfo info = phi_info("phi2", 2, "Φ^{(2)}_h", "#E69F00", 9); };
+struct Phi4 { static constexpr MethodInfo info = phi_info("phi4", 4, "Φ^{(4)}_h", "#0072B2", 15); };
+struct Phi6 { static constexpr MethodInfo info = phi_info("phi6", 6, "Φ^{(6)}_h", "#009E73", 3); };
 
 struct OdeintRK4 {
   static constexpr MethodInfo info{
       .name = "odeint_rk4", .label = "odeint_rk4", .family = Family::explicit_method, .order = 4, .kernel_order = 4,
       .real_bound = RungeKutta4::info.real_bound, .oscillatory_bound = RungeKutta4::info.oscillatory_bound,
       .applies_to = "Hamiltonian", .citation = "Boost.Odeint runge_kutta4",
-      .title = "odeint: classical RK4", .equations = "", .colour = "#009E73"};
+      .title = "odeint: classical RK4", .equations = "", .colour = "#009E73", .marker = 10};
   template <class Sys>
   static constexpr bool applies = HamiltonianSystem<Sys>;
   template <class Sys>
@@ -380,7 +382,7 @@ struct OdeintRknSb3a {
       .oscillatory_bound = 2.9218392391961706,  // the trace of the one-step matrix reaches -2 (stable again on (3.297, 4.647))
       .properties = property::symplectic | property::time_reversible, .applies_to = "separable Hamiltonian",
       .citation = "Boost.Odeint symplectic_rkn_sb3a_mclachlan (McLachlan 1995)",
-      .title = "odeint: symplectic RKN SB3a, order 4", .equations = "", .colour = "#882255"};
+      .title = "odeint: symplectic RKN SB3a, order 4", .equations = "", .colour = "#882255", .marker = 10};
   template <class Sys>
   static constexpr bool applies = SeparableSystem<Sys>;
   template <class Sys>
@@ -395,7 +397,7 @@ struct OdeintVelocityVerlet {
       .kernel_order = 2, .real_bound = no_bound, .oscillatory_bound = 2.0,  // Stormer-Verlet
       .properties = property::symplectic | property::time_reversible, .applies_to = "separable Hamiltonian",
       .citation = "Boost.Odeint velocity_verlet",
-      .title = "odeint: velocity Verlet", .equations = "", .colour = "#8C3B00"};
+      .title = "odeint: velocity Verlet", .equations = "", .colour = "#8C3B00", .marker = 6};
   template <class Sys>
   static constexpr bool applies = SeparableSystem<Sys>;
   template <class Sys>
@@ -409,7 +411,7 @@ struct OdeintRKF78 {
       .name = "odeint_rkf78", .label = "odeint_rkf78", .family = Family::explicit_method, .order = 8,
       .kernel_order = 8, .real_bound = no_bound, .oscillatory_bound = no_bound, .applies_to = "Hamiltonian",
       .citation = "Boost.Odeint runge_kutta_fehlberg78, fixed step",
-      .title = "odeint: Runge–Kutta–Fehlberg 7(8), fixed step", .equations = "", .colour = "#CC79A7"};
+      .title = "odeint: Runge–Kutta–Fehlberg 7(8), fixed step", .equations = "", .colour = "#CC79A7", .marker = 10};
   template <class Sys>
   static constexpr bool applies = HamiltonianSystem<Sys>;
   template <class Sys>
@@ -425,7 +427,7 @@ struct OdeintBulirschStoer {
       .kernel_order = 0, .real_bound = no_bound, .oscillatory_bound = no_bound,
       .applies_to = "Hamiltonian; first-order ODE (003 (3.8))",
       .citation = "Boost.Odeint bulirsch_stoer, adaptive, to the stated tolerances",
-      .title = "odeint: Bulirsch–Stoer", .equations = "", .colour = "#000000"};
+      .title = "odeint: Bulirsch–Stoer", .equations = "", .colour = "#000000", .marker = 3};
 };
 
 template <class... Ms>

@@ -35,6 +35,9 @@ struct MethodInfo {
   std::string_view title;       // its name in a figure's key (gnuplot enhanced text)
   std::string_view equations;   // the equations that define it in each paper that prints them: "000 (26)–(28); 004 (1.3)"
   std::string_view colour;      // its colour in every figure ("#rrggbb": Okabe-Ito, and Paul Tol's bright for 003's five)
+  int marker;                   // its marker in every figure (a gnuplot point type, 1-15); (colour, marker) is one
+                                // method's alone (ctest MethodRegistry.ColourAndMarkerNameOneMethod): methods drawn
+                                // together are told apart, whichever of them a scene names
 
   bool has(unsigned p) const { return (properties & p) == p; }
 };
