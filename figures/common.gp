@@ -87,6 +87,10 @@ _get(n, col, var) = sprintf("undefine STATS_*; stats csv('orders.csv') using (_r
 getfit(n) = _get(n, 'order', n.'_order') . _get(n, 'log10_c', n.'_c') \
           . _get(n, 'h_min', n.'_hmin')  . _get(n, 'h_max', n.'_hmax')
 powerlaw(h, c, order) = 10**c * h**order
+# after eval getfit(n): the fitted line from h_min (t = 0) to h_max (t = 1), straight in log-log, for
+# `[t=0:1:1] '+' using (fit_h(n, t)):(fit_err(n, t)) with lines`
+fit_h(n, t)   = value(n.'_hmin') * (value(n.'_hmax') / value(n.'_hmin'))**t
+fit_err(n, t) = powerlaw(fit_h(n, t), value(n.'_c'), value(n.'_order'))
 
 # ---- 000 Sec. 3.3, Rowlands time stepping (figures/rowlands_convergence_*.gp) ----
 # A figure's methods take their colours and markers from the registry (method_styles, above).

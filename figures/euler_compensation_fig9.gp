@@ -1,13 +1,16 @@
-# Fig. 9 of Takács & Fülöp (2025), App. B: convergence of the energy error of symplectic Euler
-# on the harmonic oscillator without and with the compensating transformation (82), RK4 for
-# reference (left); global error of explicit Euler on eqs. (14) and (17) (right).
-# Dashed lines: least-squares fits from orders.csv, drawn over the h range they were fitted on.
-# Input: fig9_convergence.csv, orders.csv.
+# Fig. 9 of Takács & Fülöp (2025), App. B: convergence of the energy error of the methods the scene
+# names on the harmonic oscillator (the paper's: symplectic Euler without and with the compensating
+# transformation (82), RK4 for reference; left), global error of explicit Euler on eqs. (14) and (17)
+# (right). Dashed lines: least-squares fits from orders.csv, drawn over the h range they were fitted on.
+# Input: fig9_convergence.csv, orders.csv, summary values (methods.convergence: the left panel's methods).
 load 'figures/common.gp'
 CONV = csv('fig9_convergence.csv')
 stats CONV using (column("h") * column("steps")) nooutput
 T = STATS_max
-do for [n in "se_energy se_compensated_energy rk4_energy ee_decay ee_gompertz"] { eval getfit(n) }
+METHODS = summary_words('methods.convergence')
+eval method_styles(METHODS)
+do for [n in "ee_decay ee_gompertz"] { eval getfit(n) }
+do for [m in METHODS] { eval getfit(m.'_energy') }
 
 do for [fmt in FORMATS] {
     eval term(fmt, 'euler_compensation_fig9', 17, 9)
@@ -17,24 +20,16 @@ do for [fmt in FORMATS] {
     set format y LOGFMT
     set xlabel "step size h"
     set key outside below center vertical Left reverse
-    set bmargin 8   # same for both panels, so that their axes line up
+    set bmargin (words(METHODS) > 3 ? 5 + words(METHODS) : 8)   # same for both panels, so that their axes line up
     set autoscale xfix
     set offsets graph 0.04, graph 0.04, 0, 0
 
-    set title "symplectic Euler, harmonic oscillator"
+    set title "harmonic oscillator"
     set ylabel "max_{t_j ∈ [0,T]} |H(q_j, p_j) − H_0|"
-    plot CONV using "h":"se_max"           with points ls LS_SE   notitle, \
-         CONV using "h":"se_compensated_max" with points ls LS_COMP notitle, \
-         CONV using "h":"rk4_max"            with points ls LS_RK4  notitle, \
-         [h=se_energy_hmin:se_energy_hmax] '+' using (h):(powerlaw(h, se_energy_c, se_energy_order)) \
-                with lines ls LS_SE_FIT notitle, \
-         [h=se_compensated_energy_hmin:se_compensated_energy_hmax] '+' \
-                using (h):(powerlaw(h, se_compensated_energy_c, se_compensated_energy_order)) with lines ls LS_COMP_FIT notitle, \
-         [h=rk4_energy_hmin:rk4_energy_hmax] '+' using (h):(powerlaw(h, rk4_energy_c, rk4_energy_order)) \
-                with lines ls LS_RK4_FIT notitle, \
-         keyentry with linespoints ls LS_SE_FIT   pt 7 ps 0.55 title sprintf("symplectic Euler, order %.2f", se_energy_order), \
-         keyentry with linespoints ls LS_COMP_FIT pt 4 ps 0.7 title sprintf("with transformation (82), order %.2f", se_compensated_energy_order), \
-         keyentry with linespoints ls LS_RK4_FIT  pt 8 ps 0.7 title sprintf("RK4 (reference), order %.2f", rk4_energy_order)
+    plot for [m in METHODS] CONV using "h":(column(m.'_max')) with points ls method_ls(m) notitle, \
+         for [m in METHODS] [t=0:1:1] '+' using (fit_h(m.'_energy', t)):(fit_err(m.'_energy', t)) with lines ls method_fit_ls(m) notitle, \
+         for [m in METHODS] keyentry with linespoints ls method_fit_ls(m) \
+                title sprintf("%s, order %.2f", method_key(m, "000"), value(m.'_energy_order'))
 
     set title "explicit Euler in y (Figs 2, 3)"
     set ylabel "max_{t_j ∈ [0,T]} |y_j − y(t_j)|"

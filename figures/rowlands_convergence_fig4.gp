@@ -34,9 +34,6 @@ _get_ic(n, col, var) = sprintf("undefine STATS_*; stats csv('orders.csv') using 
 fit_at(n) = _get_ic(n, 'order', n.'_order') . _get_ic(n, 'log10_c', n.'_c') \
           . _get_ic(n, 'h_min', n.'_hmin')  . _get_ic(n, 'h_max', n.'_hmax')
 do for [m in METHODS] { do for [q in QUANTITIES] { eval fit_at(m.'_'.q) } }
-# the fitted line err = 10^c h^order from h_min (t = 0) to h_max (t = 1): straight in log-log
-fit_h(n, t)   = value(n.'_hmin') * (value(n.'_hmax') / value(n.'_hmin'))**t
-fit_err(n, t) = powerlaw(fit_h(n, t), value(n.'_c'), value(n.'_order'))
 
 # t_max from the data; pendulum parameters and the initial condition from the scene (scene values)
 stats CONV using (sel("h") * sel("steps")) nooutput

@@ -76,6 +76,7 @@ void run_convergence(Context& ctx) {
       {"compensated_max_rel_err_odeint", "the same with y(t_j) from odeint's Bulirsch-Stoer at rtol = atol = 1e-14"},
       {"odeint_max_rel_err", "max over the steps of Figs 2/3 of |y_odeint(t_j) - y(t_j)| / |y(t_j)|"}};
   ctx.summary["h_range"]["convergence"] = h_range(hs);
+  ctx.summary["methods"]["convergence"] = labels_of(methods);  // (Fig 9's left panel: its curves, by label)
 }
 
 StudyPlan plan_convergence(const Scene& s) {
