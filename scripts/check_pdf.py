@@ -48,12 +48,13 @@ def log_problems(log):
 
 
 # What a LaTeX source may hold with an underscore: code and paths (\\texttt, \\path, \\url), a value looked up
-# by its key (\\result, \\ifresult, \\verdict), labels, references, math, and comments.
+# by its key (\\result, \\ifresult, \\verdict), a method by its registry name (\\method), labels, references,
+# math, and comments.
 SOURCE_EXEMPT = [re.compile(p, re.S) for p in (
     r"(?<!\\)%[^\n]*", r"\\(?:texttt|path|url|href|label|ref|eqref|cite|input|includegraphics|hyperref|pageref|InputIfFileExists|"
     r"figorbox|exe|genfile|missingbox)"
     r"(?:\[[^]]*\])?\{(?:[^{}]|\{(?:[^{}]|\{[^{}]*\})*\})*\}",
-    r"\\(?:result\w*|ifresult|verdict)(?:\[[^]]*\])?(?:\{[^{}]*\})+", r"\\@namedef\{[^{}]*\}",
+    r"\\(?:result\w*|ifresult|verdict|method)(?:\[[^]]*\])?(?:\{[^{}]*\})+", r"\\@namedef\{[^{}]*\}",
     r"\$\$.*?\$\$", r"(?<!\\)\$.*?(?<!\\)\$", r"\\\[.*?\\\]", r"\\\(.*?\\\)",
     r"\\begin\{(equation|align|gather|multline)\*?\}.*?\\end\{\1\*?\}")]
 RAW_KEY = re.compile(r"\b\w+(?:\\?_(?:\\allowbreak\{\})?\w+)+")

@@ -49,7 +49,8 @@ from xml.etree import ElementTree
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 from paper_runs import why_not_paper_run  # noqa: E402
-from tex_format import FORMATS, code, is_number, key_text, longtable, number, prose, quote_tex, tex_escape, value_text  # noqa: E402
+from tex_format import (FORMATS, code, gnuplot_tex, is_number, key_text, longtable, number, prose, quote_tex,  # noqa: E402
+                        tex_escape, value_text)
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 
@@ -229,6 +230,20 @@ def methods_tex(methods, cites=None):
                    f"{bound(m.get('oscillatory_bound'))} & {', '.join(code(p) for p in m['properties'])} & "
                    f"{prose(m['citation'])}{(cites or {}).get(m['name'], '')}\\\\")
     out += [r"\bottomrule", r"\end{longtable}}"]
+    return "\n".join(out) + "\n"
+
+
+def method_names_tex(methods):
+    """\\method{sti} and \\method[004]{sti} (paper/main.tex): a method's title, and its equations in a paper,
+    as the registry gives them (geomint-methods --json), by registry name or label."""
+    out = ["% The methods' names for \\method (geomint-methods --json; scripts/report.py).", r"\makeatletter"]
+    for m in methods:
+        for key in dict.fromkeys([m["name"], m["label"]]):
+            out.append(f"\\@namedef{{geomint@method@{key}}}{{{gnuplot_tex(m['title'])}}}")
+            for part in filter(None, m["equations"].split("; ")):
+                paper, equations = part.split(" ", 1)
+                out.append(f"\\@namedef{{geomint@method@{key}@{paper}}}{{{tex_escape(equations)}}}")
+    out.append(r"\makeatother")
     return "\n".join(out) + "\n"
 
 
@@ -554,8 +569,9 @@ def main():
              "machine.tex": machine_tex(runs)}
     papers = tomllib.loads(pathlib.Path(args.papers).read_text(encoding="utf-8")) if args.papers else None
     if args.methods:
-        files["methods.tex"] = methods_tex(json.loads(pathlib.Path(args.methods).read_text(encoding="utf-8")),
-                                           method_citations(papers))
+        methods = json.loads(pathlib.Path(args.methods).read_text(encoding="utf-8"))
+        files["methods.tex"] = methods_tex(methods, method_citations(papers))
+        files["method_names.tex"] = method_names_tex(methods)
     if args.quick:
         files["quick.tex"] = quick_tex(ctest, args.quick)
     if args.junit:

@@ -94,6 +94,20 @@ def quote_tex(text):
     return "".join(out)
 
 
+GNUPLOT_MATH = {"Φ": r"\Phi", "Ψ": r"\Psi", "²": "^2", "³": "^3"}
+
+
+def gnuplot_tex(text):
+    """A gnuplot enhanced text (the registry's titles: "Φ^{(4)}_h", "h²/24") as LaTeX: its sub- and
+    superscripts and Greek letters as math, the rest escaped."""
+    text = "".join(GNUPLOT_MATH.get(c, c) for c in text)
+    out, at = [], 0
+    for m in re.finditer(r"(?:\\[A-Za-z]+|[A-Za-z])?(?:[\^_](?:\{[^{}]*\}|\w))+|\\[A-Za-z]+", text):
+        out += [tex_escape(text[at:m.start()]), "$" + m.group(0) + "$"]
+        at = m.end()
+    return "".join(out + [tex_escape(text[at:])])
+
+
 # In free text (published.toml's notes, the registry's citations): a file (a/b.hpp, fig9.csv), a name
 # with an underscore (se_compensated_energy_rms, cost.phase.h_max) or a test's (Lobatto.EquationTwelve),
 # and a symbol with a one-letter subscript (p_x, H_0, Psi_{h,E}).

@@ -91,6 +91,11 @@ def main() -> int:
                  "machine.tex"):
         if not (work / name).is_file():
             problems.append(f"{name} not written")
+    names = (work / "method_names.tex").read_text(encoding="utf-8") if (work / "method_names.tex").is_file() else ""
+    for line in (r"\@namedef{geomint@method@sti@004}{(1.6)}", r"\@namedef{geomint@method@phi4}{$\Phi^{(4)}_h$}",
+                 r"\@namedef{geomint@method@rowlands_printed}{Rowlands, printed processors $h^2$/24}"):
+        if line not in names:  # (\method: the registry's titles as LaTeX, its equations per paper)
+            problems.append(f"method_names.tex has no {line}")
     comparisons = (work / "comparisons.tex").read_text(encoding="utf-8").replace("\\allowbreak{}", "")
     lookups = (work / "results.tex").read_text(encoding="utf-8")
     ledger = (work / "ledger.tex").read_text(encoding="utf-8")
