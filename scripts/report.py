@@ -143,6 +143,27 @@ def results_tex(runs, tex_files, draft):
     return "\n".join(lines) + "\n", missing
 
 
+COMPARISON_HEAD = [r"\toprule quantity & where published & published & reproduced & difference & verdict\\ \midrule",
+                   r"\endhead"]
+
+
+def comparison_rows(comparisons):
+    """One row per comparison (summary.json "comparisons"): key, where printed, the two values, their
+    difference and the verdict with its rule, and its reason or note below it."""
+    out = []
+    for key, c in comparisons.items():
+        how = ", ".join(f"{k} {v:g}" for k, v in (c.get("compare") or {}).items())
+        verdict = c["verdict"] + (f" ({tex_escape(how)})" if how else "")
+        if c.get("expect", "reproduced") != "reproduced":
+            verdict += r", expected: " + tex_escape(c["expect"])
+        out.append(f"{code(key)} & {prose(c['where'])} & {value_text(c.get('published'))} & "
+                   f"{value_text(c.get('reproduced'))} & {value_text(c.get('difference'))} & {verdict}\\\\")
+        remarks = [c[k] for k in ("reason", "note") if c.get(k)]
+        if remarks:
+            out.append(r"\multicolumn{6}{@{}p{0.95\linewidth}@{}}{\emph{" + prose(" ".join(remarks)) + r"}}\\")
+    return out
+
+
 def comparisons_tex(runs):
     out = ["% Published against reproduced, per run (scripts/report.py from summary.json \"comparisons\")."]
     for name, run in runs.items():
@@ -150,21 +171,32 @@ def comparisons_tex(runs):
         if not comparisons:
             continue
         out += [f"\\subsection*{{\\texttt{{{tex_escape(name)}}}}}",
-                longtable("footnotesize", 0.2, 0.26, 0.13, 0.13, 0.12, 0.16),
-                r"\toprule quantity & where published & published & reproduced & difference & verdict\\ \midrule",
-                r"\endhead"]
-        for key, c in comparisons.items():
-            how = ", ".join(f"{k} {v:g}" for k, v in (c.get("compare") or {}).items())
-            verdict = c["verdict"] + (f" ({tex_escape(how)})" if how else "")
-            if c.get("expect", "reproduced") != "reproduced":
-                verdict += r", expected: " + tex_escape(c["expect"])
-            out.append(f"{code(key)} & {prose(c['where'])} & {value_text(c.get('published'))} & "
-                       f"{value_text(c.get('reproduced'))} & {value_text(c.get('difference'))} & {verdict}\\\\")
-            remarks = [c[k] for k in ("reason", "note") if c.get(k)]
-            if remarks:
-                out.append(r"\multicolumn{6}{@{}p{0.95\linewidth}@{}}{\emph{" + prose(" ".join(remarks)) + r"}}\\")
-        out += [r"\bottomrule", r"\end{longtable}}"]
+                longtable("footnotesize", 0.2, 0.26, 0.13, 0.13, 0.12, 0.16), *COMPARISON_HEAD,
+                *comparison_rows(comparisons), r"\bottomrule", r"\end{longtable}}"]
     return "\n".join(out) + "\n"
+
+
+def figure_comparisons_tex(runs):
+    """\\comparisons{000 Fig. 9} (paper/main.tex): the table of one figure's comparisons, those of the run
+    that makes it whose published.toml entries belong to it (summary.json "comparisons", field figure).
+    Returns the index (the file of each figure's table) and the tables, by file name under generated/."""
+    index = ["% The table of each figure's comparisons, for \\comparisons{<paper> <item>} (scripts/report.py).",
+             r"\makeatletter"]
+    tables = {}
+    for run in runs.values():
+        by_figure = {}
+        for key, c in (run["summary"].get("comparisons") or {}).items():
+            by_figure.setdefault(c.get("figure", ""), {})[key] = c
+        for figure, comparisons in by_figure.items():
+            if figure:
+                name = "comparisons-" + re.sub(r"[^a-z0-9]+", "-", figure.lower()).strip("-") + ".tex"
+                index.append(f"\\@namedef{{geomint@comparisons@{figure}}}{{generated/{name}}}")
+                tables[name] = "\n".join([f"% {figure}: its comparisons (scripts/report.py).",
+                                          longtable("footnotesize", 0.2, 0.26, 0.13, 0.13, 0.12, 0.16),
+                                          *COMPARISON_HEAD, *comparison_rows(comparisons), r"\bottomrule",
+                                          r"\end{longtable}}"]) + "\n"
+    index.append(r"\makeatother")
+    return "\n".join(index) + "\n", tables
 
 
 ERRATA_SECTIONS = [  # (title, the comparisons it lists)
@@ -565,7 +597,9 @@ def main():
         ctest = json.loads(pathlib.Path(args.tests).read_text(encoding="utf-8"))["tests"]
         tests = {t["name"] for t in ctest}
     results, missing = results_tex(runs, tex, args.draft)
-    files = {"results.tex": results, "comparisons.tex": comparisons_tex(runs), "errata.tex": errata_tex(runs, tests),
+    figure_index, figure_tables = figure_comparisons_tex(runs)
+    files = {"results.tex": results, "comparisons.tex": comparisons_tex(runs), "figure_comparisons.tex": figure_index,
+             **figure_tables, "errata.tex": errata_tex(runs, tests),
              "machine.tex": machine_tex(runs)}
     papers = tomllib.loads(pathlib.Path(args.papers).read_text(encoding="utf-8")) if args.papers else None
     if args.methods:
