@@ -10,6 +10,8 @@
 #   make paper                    figures + scaling + tables from summary.json + paper/main.pdf
 #   make experiment NAME=x [SCENE=v] ARGS='--study S --set key=value'   one experiment (+ the figures of what ran)
 #   make bench                    throughput benchmarks (Google Benchmark)
+#   make new-study EXPERIMENT=x STUDY=s PAPER=006 ITEM='Fig. 3' [SYSTEM=y]   the skeleton of a new experiment
+#                                 (tools/new_study: README "Adding a figure")
 #   make methods-gpi              rewrite figures/methods.gpi from the method registry (after changing it)
 #   make clean                    remove build/, results/, figures/out/, paper outputs
 
@@ -21,7 +23,7 @@ EXPERIMENTS := $(notdir $(patsubst %/,%,$(dir $(wildcard experiments/*/main.cpp)
 DEPS_STAMP := .deps
 UNCHECKED := figures/out/.unchecked   # figures rendered by make figures whose text is not yet checked
 
-.PHONY: all deps build test figures figure-runs figure-files scaling paper experiment bench methods-gpi clean FORCE
+.PHONY: all deps build test figures figure-runs figure-files scaling paper experiment bench methods-gpi new-study clean FORCE
 all: build
 
 $(DEPS_STAMP)/%.stamp: scripts/install-deps.sh
@@ -132,6 +134,10 @@ bench: $(DEPS_STAMP)/build.stamp $(DEPS_STAMP)/figures.stamp $(BUILD)/CMakeCache
 	cmake --build $(BUILD) -j $(JOBS) --target geomint_bench geomint_energy_map_bench
 	$(BUILD)/bin/geomint_bench
 	bench/run_energy_map_bench.sh $(BUILD)
+
+new-study:
+	@test -n "$(EXPERIMENT)" -a -n "$(STUDY)" -a -n "$(PAPER)" -a -n "$(ITEM)" || { echo "usage: make new-study EXPERIMENT=<name> STUDY=<study> PAPER=<id> ITEM='<item>' [SYSTEM=<system>]"; exit 2; }
+	tools/new_study '$(EXPERIMENT)' '$(STUDY)' --paper '$(PAPER)' --item '$(ITEM)' $(if $(SYSTEM),--system '$(SYSTEM)')
 
 methods-gpi: $(DEPS_STAMP)/build.stamp $(BUILD)/CMakeCache.txt
 	cmake --build $(BUILD) -j $(JOBS) --target geomint-methods
