@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# tools/new_study writes a skeleton that builds, runs, reproduces what its published.toml states and renders:
+# tools/new_study writes a skeleton that builds, runs, reproduces what its published.toml states (the verdict
+# of its figure) and renders:
 # into a temporary directory, a new experiment with a new system, built against this build tree's library
 # (BUILD/geomint-config.cmake: nothing of the library is rebuilt), run on its paper scene, its figure
 # rendered and checked. Also: the generator refuses a name that is not snake_case and a file that exists.
@@ -40,6 +41,6 @@ import json, sys
 s = json.load(open(sys.argv[1]))
 order, verdict = s["orders"]["forest_ruth_energy"], s["figures"]["999 Fig. 7"]["verdict"]
 print(f"new_study_test: the skeleton's order {order:.3f}, 999 Fig. 7 {verdict}")
-sys.exit(0 if abs(order - 4) < 0.1 and verdict == "reproduced" else 1)
+sys.exit(0 if verdict == "reproduced" else 1)  # (its published.toml's comparison, copied from the worked example)
 PY
 "$src/tests/figures/render_figures.sh" "$tmp/out" "$tmp/figs" "$tmp/proj/figures/demo_paper_fig7.gp"
