@@ -78,16 +78,16 @@ StudyPlan plan_cost(const Scene& s) {
 // Per start: where it lies, the reference's own error, the fitted orders and the ranges of eps per
 // system, and its error target (summary work_precision.starts; none where the ranges do not overlap).
 // The fitted orders are recorded in `summary` (runner/fits.hpp) as start `i`'s.
-json start_facts(const std::vector<double>& x0, const ElasticPendulumParams& pendulum, const WorkPrecisionSet& set,
-                 json& summary, std::size_t i) {
+Value start_facts(const std::vector<double>& x0, const ElasticPendulumParams& pendulum, const WorkPrecisionSet& set,
+                  Value& summary, std::size_t i) {
   const double u = std::numeric_limits<double>::epsilon();
   const double x = x0[0], y = x0[1], r = std::hypot(x, y);
   const double spring = 0.5 * pendulum.k * (r - pendulum.l) * (r - pendulum.l), gravity = pendulum.m * pendulum.g * y;
-  json st = {{"x0", x}, {"y0", y}, {"r0", r}, {"H0", spring - gravity},
-             {"r0_over_boundary", r / polar_boundary_radius(pendulum, y / r)},
-             // H_0 is conserved by the flow: the reference is exact, its own error the round-off of
-             // evaluating H, u (|k (r - l)^2 / 2| + |m g y|) at the start
-             {"reference_error", u * (std::abs(spring) + std::abs(gravity))}};
+  Value st = {{"x0", x}, {"y0", y}, {"r0", r}, {"H0", spring - gravity},
+              {"r0_over_boundary", r / polar_boundary_radius(pendulum, y / r)},
+              // H_0 is conserved by the flow: the reference is exact, its own error the round-off of
+              // evaluating H, u (|k (r - l)^2 / 2| + |m g y|) at the start
+              {"reference_error", u * (std::abs(spring) + std::abs(gravity))}};
   double lo = 0, hi = std::numeric_limits<double>::infinity();  // the error range both systems cover
   for (const Coordinates c : systems) {
     std::vector<double> h, e;  // in the order of cost.dt
@@ -108,34 +108,34 @@ json start_facts(const std::vector<double>& x0, const ElasticPendulumParams& pen
 // What the paper quotes of the sets (summary cost, beside cost.start_<i>): per start the polar cost to its
 // target over the Cartesian one (wall time and evaluations) and which system is faster; over the starts,
 // how often either was faster and the range of the ratios of evaluations; the ratio of ns per step.
-void cost_ratios(json& cost, std::size_t ns) {
+void cost_ratios(Value& cost, std::size_t ns) {
   // ns per step: every start shares the timed function; the polar over the Cartesian, with the interval from
   // the quartiles (runner/timing.hpp), which carries over to each start's ratio of wall times
-  const json by0 = cost["start_0"]["by_method"];
-  const auto step = [&](const char* m, const char* q) { return by0[m][q].get<double>(); };
+  const Value by0 = cost.at("start_0").at("by_method");
+  const auto step = [&](const char* m, const char* q) { return by0.at(m).at(q).number(); };
   const double step_ratio = step("polar", "ns_per_step") / step("cartesian", "ns_per_step");
   const double step_lo = step("polar", "ns_per_step_q1") / step("cartesian", "ns_per_step_q3");
   const double step_hi = step("polar", "ns_per_step_q3") / step("cartesian", "ns_per_step_q1");
-  json per_start = json::array();
+  Value per_start = Value::list();
   int polar_faster = 0, cartesian_faster = 0, indistinguishable = 0, compared = 0;
   double evals_lo = std::numeric_limits<double>::infinity(), evals_hi = 0;
   for (std::size_t i = 0; i < ns; ++i) {
-    const json by = cost["start_" + std::to_string(i)]["by_method"];  // (a copy: cost grows below)
+    const Value by = cost.at("start_" + std::to_string(i)).at("by_method");  // (a copy: cost grows below)
     const auto to = [&](const char* c, const char* what) {
-      const json& v = by[c][what];
-      return !v.empty() && v[0].is_number() ? std::optional<double>(v[0].get<double>()) : std::nullopt;
+      const Value& v = by.at(c).at(what);
+      return v.size() > 0 && v.at(0).is_number() ? std::optional<double>(v.at(0).number()) : std::nullopt;
     };
     const auto wc = to("cartesian", "wall_s_to"), wp = to("polar", "wall_s_to");
     const auto ec = to("cartesian", "evals_to"), ep = to("polar", "evals_to");
-    json faster = nullptr;
+    Value faster;
     if (wc && wp) {
       const double r = *wp / *wc, lo = r * step_lo / step_ratio, hi = r * step_hi / step_ratio;
       faster = hi < 1 ? "polar" : lo > 1 ? "cartesian" : "indistinguishable";
       ++compared, (hi < 1 ? polar_faster : lo > 1 ? cartesian_faster : indistinguishable) += 1;
     }
     if (ec && ep) evals_lo = std::min(evals_lo, *ep / *ec), evals_hi = std::max(evals_hi, *ep / *ec);
-    per_start.push_back({{"wall_ratio_polar_over_cartesian", wc && wp ? json(*wp / *wc) : json(nullptr)},
-                         {"evals_ratio_polar_over_cartesian", ec && ep ? json(*ep / *ec) : json(nullptr)},
+    per_start.push_back({{"wall_ratio_polar_over_cartesian", wc && wp ? Value(*wp / *wc) : Value()},
+                         {"evals_ratio_polar_over_cartesian", ec && ep ? Value(*ep / *ec) : Value()},
                          {"faster", faster}});
   }
   cost["ns_per_step_ratio_polar_over_cartesian"] = step_ratio;
@@ -143,7 +143,7 @@ void cost_ratios(json& cost, std::size_t ns) {
   cost["per_start"] = per_start;
   cost["compared"] = compared, cost["polar_faster"] = polar_faster, cost["cartesian_faster"] = cartesian_faster;
   cost["indistinguishable"] = indistinguishable;
-  cost["evals_ratio_range"] = evals_hi > 0 ? json{{"min", evals_lo}, {"max", evals_hi}} : json(nullptr);
+  cost["evals_ratio_range"] = evals_hi > 0 ? Value{{"min", evals_lo}, {"max", evals_hi}} : Value();
 }
 
 // The energy errors (50): one untimed run per system, step and start (split across threads and ranks);
@@ -190,14 +190,14 @@ void run_cost(Context& ctx) {
   const auto sets = timed_sets(s, ctx.threads, starts, [&](double dt) {
     return EnergyMapParams{pendulum.l, pendulum.m, pendulum.k, pendulum.g, dt, steps_to(t_end, dt), s.real("divergence.blowup")};
   });
-  json start_list = json::array(), cost;
+  Value start_list = Value::list(), cost;
   double reference_error = 0;
   for (std::size_t i = 0; i < starts.size(); ++i) {
-    const json st = start_facts(starts[i], pendulum, sets[i], ctx.summary, i);
-    reference_error = std::max(reference_error, st["reference_error"].get<double>());
+    const Value st = start_facts(starts[i], pendulum, sets[i], ctx.summary, i);
+    reference_error = std::max(reference_error, st.at("reference_error").number());
     const std::string name = "start_" + std::to_string(i);
     ctx.write("cost_" + name + ".csv", sets[i].csv());
-    cost[name] = sets[i].summary(st.contains("error_target") ? std::vector{st["error_target"].get<double>()} : std::vector<double>{});
+    cost[name] = sets[i].summary(st.contains("error_target") ? std::vector{st.at("error_target").number()} : std::vector<double>{});
     start_list.push_back(st);
   }
   ctx.summary["work_precision"] = {{"starts", start_list}, {"start_count", starts.size()}, {"t_end", t_end},

@@ -8,14 +8,10 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "geomint/runner/experiment.hpp"
 #include "geomint/sweep/energy_map.hpp"
 
 namespace geomint::energy_map {
-
-using json = nlohmann::ordered_json;
 
 // What the map study measured, for the timing study of the same run.
 struct MapCost {

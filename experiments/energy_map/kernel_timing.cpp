@@ -55,7 +55,7 @@ std::vector<std::vector<EnergyMapPoint>> run_batches(EnergyMapKernel kernel, Coo
 }
 
 // The scalar loop, one trajectory at a time, single thread: ns per step and the spread, per coordinate system.
-void time_scalar_loop(Context& ctx, const MapSetup& g, int repeats, json& scalar_ns, json& scalar_spread) {
+void time_scalar_loop(Context& ctx, const MapSetup& g, int repeats, Value& scalar_ns, Value& scalar_spread) {
   const Scene& s = ctx.scene;
   ctx.progress("cost: scalar reference loop");
   const auto nsc = static_cast<std::size_t>(
@@ -81,7 +81,7 @@ void time_scalar_loop(Context& ctx, const MapSetup& g, int repeats, json& scalar
 
 // Each kernel against its target, the AVX-512 ceiling the scene gives, and its own ceiling in cycles at the
 // clock calibrated in this run (kernel_ceiling_cycles; null where not counted).
-void against_targets(json& timing, const Scene& s, double ns_cart, double ns_polar) {
+void against_targets(Value& timing, const Scene& s, double ns_cart, double ns_polar) {
   const double ns_cycle = ns_per_cycle(static_cast<int>(s.integer("timing.repeats")));
   timing["clock_ghz"] = 1 / ns_cycle;
   for (const auto c : {Coordinates::cartesian, Coordinates::polar}) {
@@ -91,10 +91,10 @@ void against_targets(json& timing, const Scene& s, double ns_cart, double ns_pol
     timing["ceiling_ns"][name] = {{"min", ceiling[0]}, {"max", ceiling[1]}};
     timing["ceiling_fraction"][name] = {{"min", ceiling[0] / ns}, {"max", ceiling[1] / ns}};
     timing["target_verdict"][name] = ns <= s.real("timing.target." + name) ? "meets" : "misses";
-    const double own = kernel_ceiling_cycles(timing["kernel_isa"].get<std::string>(), c);
+    const double own = kernel_ceiling_cycles(timing.at("kernel_isa").text(), c);
     timing["cycles_per_step_per_core"][name] = ns / ns_cycle;
-    timing["own_ceiling_cycles"][name] = own > 0 ? json(own) : json(nullptr);
-    timing["own_ceiling_fraction"][name] = own > 0 ? json(own / (ns / ns_cycle)) : json(nullptr);
+    timing["own_ceiling_cycles"][name] = own > 0 ? Value(own) : Value();
+    timing["own_ceiling_fraction"][name] = own > 0 ? Value(own / (ns / ns_cycle)) : Value();
   }
 }
 
@@ -104,14 +104,14 @@ void run_timing(Context& ctx, const MapCost& map) {
   const Scene& s = ctx.scene;
   const MapSetup g = map_setup(s);
   const auto kernels = energy_map_kernels();
-  json timing;
+  Value timing;
   timing["kernel_isa"] = kernels.front().isa;
   timing["kernel_max_turn"] = kEnergyMapMaxTurn;  // polar: sin/cos by angle addition up to this turn
 
   // The kernel: wall time times threads over the trajectory-steps computed.
   const int repeats = static_cast<int>(s.integer("timing.repeats"));
   double wall_cart = map.wall_cart, wall_polar = map.wall_polar, steps_cart = map.steps_cart, steps_polar = map.steps_polar;
-  json kernel_spread = nullptr;  // the sample's spread; the map's wall time is one run, not repeated
+  Value kernel_spread;  // the sample's spread; the map's wall time is one run, not repeated
   std::string kernel_method = "map: wall time of the batched kernel in the map study of this run, times threads, over "
                               "the trajectory-steps it computed (the map is one long run, not a repeated measurement: "
                               "no median over repeats and no spread)";
@@ -124,7 +124,7 @@ void run_timing(Context& ctx, const MapCost& map) {
       batches[i] = i * g.nbatches / count;
       trajectories += std::min<std::size_t>(kEnergyMapBatch, g.npoints - batches[i] * kEnergyMapBatch);
     }
-    kernel_spread = json::object();
+    kernel_spread = Value::record();
     InterleavedTiming sample(repeats);  // the two coordinate systems together
     for (const auto c : {Coordinates::cartesian, Coordinates::polar})
       sample.add([&, c] {
@@ -143,15 +143,15 @@ void run_timing(Context& ctx, const MapCost& map) {
   const double ns_cart = 1e9 * wall_cart * ctx.threads / steps_cart;
   const double ns_polar = 1e9 * wall_polar * ctx.threads / steps_polar;
 
-  json scalar_ns, scalar_spread;
+  Value scalar_ns, scalar_spread;
   time_scalar_loop(ctx, g, repeats, scalar_ns, scalar_spread);
   timing["ns_per_step_per_core"] = {{"cartesian", ns_cart}, {"polar", ns_polar}};
   timing["scalar_ns_per_step"] = scalar_ns;
   timing["scalar_ns_per_step_spread"] = scalar_spread;
   timing["kernel_sample_spread"] = kernel_spread;
-  timing["speedup_vs_scalar"] = {{"cartesian", scalar_ns["cartesian"].get<double>() / ns_cart},
-                                 {"polar", scalar_ns["polar"].get<double>() / ns_polar}};
-  timing["map_wall_s"] = map.ran ? json{{"cartesian", wall_cart}, {"polar", wall_polar}} : json(nullptr);
+  timing["speedup_vs_scalar"] = {{"cartesian", scalar_ns.at("cartesian").number() / ns_cart},
+                                 {"polar", scalar_ns.at("polar").number() / ns_polar}};
+  timing["map_wall_s"] = map.ran ? Value{{"cartesian", wall_cart}, {"polar", wall_polar}} : Value();
   timing["method"] = "kernel timed on the " + kernel_method +
                      "; scalar: the straightforward scalar loop (one trajectory at a time) on timing.scalar_points "
                      "initial conditions of timing.scalar_steps steps, " + timing_method_text(repeats);

@@ -86,7 +86,7 @@ double polar_mismatch(const ElasticPendulumParams& p, const std::vector<EnergyMa
 // upright line; in polar coordinates theta0 = fl(pi) has sin(theta0) ~ 1.2e-16, and the run falls
 // over like its neighbours. Checked at the column point nearest (0, -l): the Cartesian run started
 // at x0 = r0 sin(fl(pi)), the polar run's own start, against both runs of the map there.
-json upright_column(const MapSetup& g, const std::vector<Point>& points) {
+Value upright_column(const MapSetup& g, const std::vector<Point>& points) {
   const auto zero = std::find(g.xs.begin(), g.xs.end(), 0.0);
   if (zero == g.xs.end() || g.ys.front() >= 0) return nullptr;
   const auto nearest = std::min_element(g.ys.begin(), g.ys.end(), [&](double a, double b) {
@@ -98,11 +98,11 @@ json upright_column(const MapSetup& g, const std::vector<Point>& points) {
                         static_cast<std::size_t>(zero - g.xs.begin());
   const double x_polar = std::abs(y0) * std::sin(std::atan2(0.0, y0));  // 000 eq. (63): x = r sin(theta)
   const EnergyMapPoint tilted = energy_map_scalar(Coordinates::cartesian, g.P, x_polar, y0);
-  const auto value = [](double v) { return std::isfinite(v) ? json(v) : json(nullptr); };
+  const auto value = [](double v) { return std::isfinite(v) ? Value(v) : Value(); };
   const auto difference = [&](std::size_t at) { return value(points[at].cart.eps - points[at].polar.eps); };
   return {{"y0", y0},
           {"eps_difference", difference(i)},
-          {"eps_difference_neighbour", i + 1 < g.npoints && zero + 1 != g.xs.end() ? difference(i + 1) : json(nullptr)},
+          {"eps_difference_neighbour", i + 1 < g.npoints && zero + 1 != g.xs.end() ? difference(i + 1) : Value()},
           {"eps_cartesian", value(points[i].cart.eps)},
           {"eps_polar", value(points[i].polar.eps)},
           {"x0_of_polar_start", x_polar},
@@ -116,7 +116,7 @@ StudyPlan plan_map(const Scene& s) {
   // and map_grid.csv (about 160 and 60 characters)
   const double bytes = padded * (2 * sizeof(double) + sizeof(Point)) + n.points * (sizeof(EnergyMapRow) + 220.0);
   const double steps = 2 * padded * n.steps;  // one run per coordinate system and grid point (padding lanes die at once)
-  return {steps, steps, bytes, kernel_ns_per_step(), std::string("batched kernel; ") + kNsNote, 2 * n.batches};  // (batches of both maps)
+  return {steps, steps, bytes, kernel_ns_per_step(), "batched kernel; " + std::string(kNsNote), 2 * n.batches};  // (batches of both maps)
 }
 
 // ---- Fig. 6: the map, in rounds of batches with a checkpoint after each ----
@@ -197,7 +197,7 @@ void write_map(Context& ctx, const MapSetup& g, const std::vector<Point>& points
   ctx.summary["pendulum"] = {{"dt_omega", dt * spring_frequency(pendulum)},
                              {"dt_omega_bound", method_info("symplectic_euler_pq").oscillatory_bound},  // the registry's
                              {"pivot_energy", pivot_energy(pendulum)}};
-  ctx.summary["map_statistics"] = to_json(energy_map_statistics(rows, pendulum, dt, steps, s.real("map_statistics.ring_half_width")));
+  ctx.summary["map_statistics"] = to_value(energy_map_statistics(rows, pendulum, dt, steps, s.real("map_statistics.ring_half_width")));
   ctx.summary["map_statistics"]["upright_column"] = upright_column(g, points);
 }
 

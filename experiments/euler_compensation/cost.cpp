@@ -51,10 +51,10 @@ void run_cost(Context& ctx) {
   const WorkPrecisionSet energy = energy_set(s, z0, ctx.threads);
   ctx.write("cost_energy.csv", energy.csv());
   // (the paper quotes no target error: the set's wall_s_to and evals_to are empty)
-  json cost = {{"energy", energy.summary({})},
-               {"method", timing_method_text(repeats, ctx.threads) + "; the set's runs from (q0, p0) to convergence.t_end, the "
-                                                        "transformation (41) once before and once after; ns_per_step "
-                                                        "at oscillator.h over timing.steps steps"}};
+  Value cost = {{"energy", energy.summary({})},
+                {"method", timing_method_text(repeats, ctx.threads) + "; the set's runs from (q0, p0) to convergence.t_end, the "
+                                                         "transformation (41) once before and once after; ns_per_step "
+                                                         "at oscillator.h over timing.steps steps"}};
   ctx.progress("cost: ns per step");
   const double h8 = s.real("oscillator.h"), k = s.real("oscillator.k");
   const std::int64_t n_ns = s.integer("timing.steps");
@@ -82,10 +82,10 @@ void run_cost(Context& ctx) {
   const auto b = labels.size() > 1 ? energy.runs(labels[1]) : std::vector<CostRun>{};
   const auto cross = a.empty() || b.empty() ? std::nullopt : crossover(a, b);  // (crossover needs runs on both)
   // (the methods always, so that which keys exist does not depend on the timings)
-  cost["crossover"] = labels.size() > 1 ? json{{"methods", {labels[0], labels[1]}},
-                                               {"wall_s", cross ? json(cross->wall_s) : json(nullptr)},
-                                               {"err", cross ? json(cross->err) : json(nullptr)}}
-                                        : json(nullptr);
+  cost["crossover"] = labels.size() > 1 ? Value{{"methods", std::vector<std::string>{labels[0], labels[1]}},
+                                                {"wall_s", cross ? Value(cross->wall_s) : Value(nullptr)},
+                                                {"err", cross ? Value(cross->err) : Value(nullptr)}}
+                                         : Value(nullptr);
   ctx.summary["cost"] = cost;
   ctx.summary["h_range"]["timing"] = h_range(s.reals("timing.h"));
 }

@@ -9,15 +9,13 @@
 #include <tuple>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "geomint/runner/experiment.hpp"
+#include "geomint/runner/results.hpp"
 #include "geomint/runner/timing.hpp"
 #include "geomint/systems/harmonic_oscillator.hpp"
 
 namespace geomint::euler_compensation {
 
-using json = nlohmann::ordered_json;
 using Oscillator = HarmonicOscillator;
 using State = Oscillator::State;
 

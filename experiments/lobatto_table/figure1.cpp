@@ -28,7 +28,7 @@ void run_figure1(Context& ctx) {
   const auto methods = s.texts("figure1.methods");
   std::vector<std::string> columns = {"j", "t"};
   for (const auto& m : methods) columns.push_back("q_" + label_of(m)), columns.push_back("p_" + label_of(m));
-  json max_error = json::array();  // per mesh and method: max_j |q_j - q(t_j)| and |p_j - p(t_j)|, j = 0..N
+  Value max_error = Value::list();  // per mesh and method: max_j |q_j - q(t_j)| and |p_j - p(t_j)|, j = 0..N
   for (double Nd : s.reals("figure1.meshes")) {
     const auto N = static_cast<std::int64_t>(Nd);
     const double h = T / Nd;
@@ -41,7 +41,7 @@ void run_figure1(Context& ctx) {
       f.end_row();
     }
     ctx.write("fig1_N" + std::to_string(N) + ".csv", f);
-    json errors = json::object();
+    Value errors = Value::record();
     for (std::size_t k = 0; k < methods.size(); ++k) {
       double eq = 0, ep = 0;
       for (std::int64_t j = 0; j <= N; ++j) {

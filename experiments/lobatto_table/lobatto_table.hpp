@@ -9,16 +9,14 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "geomint/core/state.hpp"
 #include "geomint/runner/experiment.hpp"
+#include "geomint/runner/results.hpp"
 #include "geomint/runner/summary.hpp"
 #include "geomint/systems/harmonic_oscillator.hpp"
 
 namespace geomint::lobatto_table {
 
-using json = nlohmann::ordered_json;
 using Z1 = PhaseState<1>;
 
 // The studies, in the order they run.
@@ -97,7 +95,7 @@ constexpr double kPendulumNs = 520;          // one Lobatto step (Newton) on the
 double period_of(const Scene& s);
 
 // summary.cost.method: how the runs of both cost studies (cost, long_run_cost) are timed; the same text
-// from either, so that each may run alone or after the other (merge of runner/summary.hpp).
+// from either, so that each may run alone or after the other (merge of runner/results.hpp).
 std::string cost_method_text(int repeats, int workers);
 
 }  // namespace geomint::lobatto_table

@@ -60,7 +60,7 @@ void run_long_run(Context& ctx) {
   const std::int64_t windows = s.integer("long_run.windows");
   const auto longs = distributed_map(long_h.size(), [&](std::size_t i) { return long_run(s, o, long_h[i], windows); });
   Csv f2({"h", "period", "Hd_err_plain", "Hd_err_compensated", "H_err"});
-  json growth, growth_comp, growth_H;
+  Value growth, growth_comp, growth_H;
   for (std::size_t i = 0; i < long_h.size(); ++i) {
     const std::int64_t n = std::llround(s.real("long_run.periods") * T / long_h[i]);
     const double per_window = static_cast<double>(std::max<std::int64_t>(1, n / windows)) * long_h[i] / T;
@@ -81,22 +81,22 @@ void run_long_run(Context& ctx) {
   // growth rate of the same window maxima in exact arithmetic (the closed-form orbit of (13)-(14)),
   // with what the drift of H_d explains of the difference.
   const auto published = ctx.comparison(ctx.summary, "reproduced.energy_growth_rate");  // 001 Fig. 2, per h
-  json rates = json::array();
+  Value rates = Value::list();
   for (std::size_t i = 0; i < long_h.size(); ++i) {
     const double h = long_h[i];
     const Long& l = longs[i];
-    json r = {{"h", h}, {"steps_per_period", T / h}, {"H_rate", l.slope_H}, {"Hd_rate", l.slope_plain},
-              {"Hd_rate_compensated", l.slope_comp}, {"Hd_err_max", *std::max_element(l.plain.begin(), l.plain.end())},
-              {"Hd_err_max_compensated", *std::max_element(l.comp.begin(), l.comp.end())}};
-    if (published && published->at("published").contains(format_double(h)))
-      r["published_rate"] = published->at("published")[format_double(h)];
+    Value r = {{"h", h}, {"steps_per_period", T / h}, {"H_rate", l.slope_H}, {"Hd_rate", l.slope_plain},
+               {"Hd_rate_compensated", l.slope_comp}, {"Hd_err_max", *std::max_element(l.plain.begin(), l.plain.end())},
+               {"Hd_err_max_compensated", *std::max_element(l.comp.begin(), l.comp.end())}};
+    if (const Value* rate = published ? published->at("published").find(format_double(h)) : nullptr)
+      r["published_rate"] = *rate;
     const auto exact = lobatto_exact_growth(h, osc.m, osc.w, A, s.real("long_run.periods"), windows);
     const auto orbit = lobatto_exact_orbit(h, osc.m, osc.w, A);
     if (exact && orbit) {
       r["exact_rate"] = exact->slope_per_period;
       r["H_rate_minus_exact"] = l.slope_H - exact->slope_per_period;
       r["bound"] = exact->bound;  // |K|
-      r["periods_to_peak"] = or_null(exact->periods_to_peak);
+      r["periods_to_peak"] = Value(exact->periods_to_peak);  // (null: none)
       // a drift of H_d seen in H: (H_0 / H_d(0)) |Hd_rate|; and the relative drift of H_d per step
       r["roundoff_in_H"] = orbit->H0 / orbit->Hd0 * std::abs(l.slope_plain);
       r["Hd_drift_per_step"] = std::abs(l.slope_plain) * h / T / orbit->Hd0;

@@ -125,7 +125,7 @@ void run_long_run_cost(Context& ctx) {
   // of q and p).
   const double t_N = periods * T;
   const double reference_error = std::numeric_limits<double>::epsilon() * osc.w * t_N * std::hypot(A, osc.m * osc.w * A);
-  json errors = json::object();
+  Value errors = Value::record();
   for (const auto& m : methods) {
     const std::string label = label_of(m);
     double phase_min = std::numeric_limits<double>::infinity(), energy_max = 0, energy_min = phase_min;

@@ -35,16 +35,16 @@ void check_stability(const Scene& s) {
 bool stable(double rho) { return rho <= 1.0 + kRadiusTolerance; }
 
 // The scanned stable set: the intervals [lo, hi] of h omega (analysis/linear_stability.hpp), as [[lo, hi], ...].
-json stable_set_of(const std::vector<double>& hw, const std::vector<double>& rho) {
-  json set = json::array();
-  for (const StableInterval& i : stable_intervals(hw, rho, kRadiusTolerance)) set.push_back({i.lo, i.hi});
+Value stable_set_of(const std::vector<double>& hw, const std::vector<double>& rho) {
+  Value set = Value::list();
+  for (const StableInterval& i : stable_intervals(hw, rho, kRadiusTolerance)) set.push_back(std::vector<double>{i.lo, i.hi});
   return set;
 }
 
 // Runs of long_run.periods periods at kBoundFactors times the bound `lo`: by factor, and as a list.
-std::pair<json, json> bound_runs(const Scene& s, const Oscillator& o, double lo) {
+std::pair<Value, Value> bound_runs(const Scene& s, const Oscillator& o, double lo) {
   const auto& [osc, A, T, z0] = o;
-  json runs, run_list = json::array();
+  Value runs, run_list = Value::list();
   for (double factor : kBoundFactors) {
     const double h = factor * lo / osc.w;
     const Mat<2> Phi = lobatto_matrix(osc, h);
@@ -57,10 +57,11 @@ std::pair<json, json> bound_runs(const Scene& s, const Oscillator& o, double lo)
       max_norm = std::max(max_norm, x.norm());
       if (!(x.norm() <= kDivergedFactor * A)) diverged_at = j;
     }
-    runs[format_double(factor)] = {{"h_omega", factor * lo}, {"steps", n}, {"diverged_at_step", diverged_at},
-                                   {"max_norm_over_initial", max_norm / A}};
-    json r = {{"factor", factor}};
-    r.update(runs[format_double(factor)]);
+    const Value run = {{"h_omega", factor * lo}, {"steps", n}, {"diverged_at_step", diverged_at},
+                       {"max_norm_over_initial", max_norm / A}};
+    runs[format_double(factor)] = run;
+    Value r = {{"factor", factor}};  // the factor, then the run's members
+    for (std::size_t i = 0; i < run.size(); ++i) r[run.keys()[i]] = run.at(i);
     run_list.push_back(r);
   }
   return {runs, run_list};
@@ -104,17 +105,19 @@ void run_stability(Context& ctx) {
   lo = stability_boundary([&](double hw) { return stable(radius_at(hw)); }, lo, hi);
   // Runs of long_run.periods periods at kBoundFactors times the bound: bounded below it, diverged above.
   const auto [runs, run_list] = bound_runs(s, o, lo);
-  const json stable_set = stable_set_of(hws, rhos);
+  const Value stable_set = stable_set_of(hws, rhos);
   ctx.summary["reproduced"]["stability_bound"] = lo;
   ctx.summary["reproduced"]["stable_set_h_omega"] = stable_set;
   ctx.summary["reproduced"]["bound_runs"] = runs;
   // The scan of each compared method; the exact stable set of (13)-(14); the bound as h/T and steps
   // per period; the scan point nearest h omega = pi (h = T/2, the paper's remark after (10)).
-  json compared = json::object();
+  Value compared = Value::record();
   for (std::size_t k = 0; k < methods.size(); ++k) {
-    const json set = stable_set_of(hws, rho_m[k]);
+    const Value set = stable_set_of(hws, rho_m[k]);
     compared[label_of(methods[k])] = {{"stable_set_h_omega", set}, {"intervals", set.size()}};
   }
+  Value exact_set = Value::list();  // as [[lo, hi], ...]
+  for (const auto& [a, b] : lobatto_stable_set()) exact_set.push_back(std::vector<double>{a, b});
   std::size_t near_pi = 0;
   for (std::size_t i = 1; i < hws.size(); ++i)
     if (std::abs(hws[i] - std::numbers::pi) < std::abs(hws[near_pi] - std::numbers::pi)) near_pi = i;
@@ -125,7 +128,7 @@ void run_stability(Context& ctx) {
       {"radius_tolerance", kRadiusTolerance},
       {"diverged_factor", kDivergedFactor},
       {"intervals", stable_set.size()},
-      {"exact_set_h_omega", lobatto_stable_set()},
+      {"exact_set_h_omega", exact_set},
       {"compared", compared},
       {"bound_h_over_T", lo / (2 * std::numbers::pi)},
       {"bound_steps_per_period", steps_per_period},

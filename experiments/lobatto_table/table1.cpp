@@ -51,25 +51,27 @@ bool rounds_to_printed(double printed, double reproduced, int digits) {
 
 // Table 1 against the printed values: how many of the errors of p, q and H round to the three printed
 // digits, the largest relative deviation, and the range of the printed H_d errors (round-off, compared apart).
-json printed_table1(const Context& ctx) {
-  const json& summary = ctx.summary;
+Value printed_table1(const Context& ctx) {
   int compared = 0, rounding = 0;
   double deviation = 0;
   std::vector<double> printed_Hd;
   for (const char* quantity : {"p", "q", "H", "Hd"}) {
-    const auto c = ctx.comparison(summary, std::string("reproduced.") + quantity + "_err");  // by N
+    const auto c = ctx.comparison(ctx.summary, std::string("reproduced.") + quantity + "_err");  // by N
     if (!c) continue;
-    for (const auto& [N, printed] : (*c)["published"].items()) {
-      if (!(*c)["reproduced"].contains(N)) continue;
+    const Value &published = c->at("published"), &reproduced = c->at("reproduced");
+    for (std::size_t i = 0; i < published.size(); ++i) {
+      const std::string& N = published.keys()[i];
+      const double printed = published.at(i).number();
+      if (!reproduced.contains(N)) continue;
       if (std::string(quantity) == "Hd") {
         printed_Hd.push_back(printed);
       } else {
-        ++compared, rounding += rounds_to_printed(printed, (*c)["reproduced"][N], 3);
-        deviation = std::max(deviation, std::abs((*c)["difference"][N].get<double>()));  // (relative: compare = rel)
+        ++compared, rounding += rounds_to_printed(printed, reproduced.at(N).number(), 3);
+        deviation = std::max(deviation, std::abs(c->at("difference").at(N).number()));  // (relative: compare = rel)
       }
     }
   }
-  json out = {{"compared", compared}, {"round_to_printed_digits", rounding}, {"max_relative_deviation", deviation}};
+  Value out = {{"compared", compared}, {"round_to_printed_digits", rounding}, {"max_relative_deviation", deviation}};
   if (!printed_Hd.empty()) out["Hd_err_range"] = range_of(printed_Hd);
   return out;
 }
@@ -82,7 +84,7 @@ void run_table1(Context& ctx) {
   const auto methods = s.texts("table1.methods");
   std::vector<double> hs, Ns, ep, eq, eH, eHd, Hd0s, e12;
   std::vector<std::vector<double>> em(methods.size());
-  json reproduced = json::object();
+  Value reproduced = Value::record();
   for (double Nd : s.reals("meshes")) {
     const auto N = static_cast<std::int64_t>(Nd);
     const double h = T / Nd;
@@ -120,10 +122,10 @@ void run_table1(Context& ctx) {
   ctx.summary["norms"]["table1"] = "max over the steps j = 1..N of one period of the absolute error (p, q, H, H_d)";
   // H_d(0) (15) per mesh, the H_d errors relative to it and their range; the compared methods' errors;
   // the comparison with the printed digits.
-  json relative = json::array();
+  Value relative = Value::list();
   for (std::size_t i = 0; i < eHd.size(); ++i) relative.push_back(eHd[i] / Hd0s[i]);
   ctx.summary["methods"]["table1"] = labels_of(methods);
-  json compared = json::object();  // the q errors of the compared methods per mesh, as table1.csv
+  Value compared = Value::record();  // the q errors of the compared methods per mesh, as table1.csv
   for (std::size_t k = 0; k < methods.size(); ++k) compared[label_of(methods[k])] = em[k];
   ctx.summary["table1"] = {{"Hd0", Hd0s},
                            {"Hd_err_relative", relative},

@@ -139,14 +139,14 @@ Sets errors_of(Context& ctx, const PhiStudy& p, const std::vector<TimedRun>& run
 // Per discretization, from its Phi^(4) runs: the Newton iterations per step at h, the errors at T for
 // the steps whose runs end at T itself (n h = T), and the order of the error against h over all the
 // steps (reproduced, ranges, orders). Returns the ns per step at h (the step of 003's figures), by label.
-json report_discretizations(Context& ctx, const PhiStudy& p, const WorkPrecisionSet& trajectory) {
+Value report_discretizations(Context& ctx, const PhiStudy& p, const WorkPrecisionSet& trajectory) {
   const Scene& s = ctx.scene;
   const double T = s.real("energies.t_end");
   const auto hs = s.reals("order_study.h");
-  json h_at_T = json::array();
+  std::vector<double> h_at_T;
   for (double hh : hs)
     if (std::abs(static_cast<double>(steps_within(T, hh)) * hh / T - 1) < 1e-9) h_at_T.push_back(hh);
-  json ns_per_step, newton_at_h, err_at_T, order;
+  Value ns_per_step, newton_at_h, err_at_T, order;
   std::vector<std::string> names;  // Phi^(4) at h: each discretization's time per step against the first's
   std::vector<RunTime> per_step;
   std::vector<double> work;  // (Newton iterations per step)
@@ -180,9 +180,9 @@ json report_discretizations(Context& ctx, const PhiStudy& p, const WorkPrecision
 // the fitted order of each one's trajectory error against h and the reference's own error.
 void report_compared(Context& ctx, Discretization cmp, const Sets& sets) {
   const Scene& s = ctx.scene;
-  json w;
+  Value w;
   w["discretization"] = discretization_name(cmp);
-  w["methods"] = {"phi4", "phi0", "rk4"};
+  w["methods"] = std::vector<std::string>{"phi4", "phi0", "rk4"};
   w["reference_error"] = sets.reference_error;
   w["reference_check_factor"] = reference_check_factor;
   w["target_err"] = s.real("cost.target_err");
@@ -203,9 +203,9 @@ void report_compared(Context& ctx, Discretization cmp, const Sets& sets) {
 // summary.cost: the two sets, the timing method, the ns per step of Phi^(4) at h (by label, and its
 // ranges), and per set the wall time of each method to its target over that of RK4
 // (wall_s_to_target_over_rk4; null where either does not reach it).
-void report_cost(Context& ctx, const Sets& sets, const json& ns_per_step_at_h) {
+void report_cost(Context& ctx, const Sets& sets, const Value& ns_per_step_at_h) {
   const Scene& s = ctx.scene;
-  json& cost = ctx.summary["cost"];
+  Value& cost = ctx.summary["cost"];
   cost["trajectory"] = sets.trajectory.summary({s.real("cost.target_err")});
   cost["energy"] = sets.energy.summary({s.real("cost.target_energy_err")});
   cost["method"] = timing_method_text(static_cast<int>(s.integer("timing.repeats")), ctx.threads) +
@@ -214,13 +214,13 @@ void report_cost(Context& ctx, const Sets& sets, const json& ns_per_step_at_h) {
   cost["ns_per_step_at_h"] = ns_per_step_at_h;
   cost["ns_per_step_at_h_ranges"] = method_ranges(ns_per_step_at_h);
   for (const char* set : {"trajectory", "energy"}) {
-    const json by = cost[set]["by_method"];  // (a copy: cost grows below)
-    const json rk4 = by["rk4"]["wall_s_to"][0];
-    for (const auto& [m, c] : by.items()) {
-      const json x = c["wall_s_to"][0];
+    const Value by = cost.at(set).at("by_method");  // (a copy: cost grows below)
+    const Value& rk4 = by.at("rk4").at("wall_s_to").at(0);
+    for (std::size_t i = 0; i < by.size(); ++i) {
+      const std::string& m = by.keys()[i];
+      const Value& x = by.at(i).at("wall_s_to").at(0);
       if (m != "rk4")
-        cost["wall_s_to_target_over_rk4"][set][m] =
-            x.is_number() && rk4.is_number() ? json(x.get<double>() / rk4.get<double>()) : json(nullptr);
+        cost["wall_s_to_target_over_rk4"][set][m] = x.is_number() && rk4.is_number() ? Value(x.number() / rk4.number()) : Value();
     }
   }
 }
@@ -234,7 +234,7 @@ void run_cost(Context& ctx) {
   const Sets sets = errors_of(ctx, p, runs);
   ctx.write("cost_trajectory.csv", sets.trajectory.csv());
   ctx.write("cost_energy.csv", sets.energy.csv());
-  const json ns_at_h = report_discretizations(ctx, p, sets.trajectory);
+  const Value ns_at_h = report_discretizations(ctx, p, sets.trajectory);
   report_compared(ctx, cmp, sets);
   report_cost(ctx, sets, ns_at_h);
 }

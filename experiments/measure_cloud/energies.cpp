@@ -34,7 +34,7 @@ void run_energies(Context& ctx) {
   put(ctx, "reproduced", "energy_steps", n);
   const double H0 = sys.H(as_state(z0));
   put(ctx, "reproduced", "H0", H0);
-  json H_end, err_end_of;
+  Value H_end, err_end_of;
   for (int ell : {4, 0}) {
     const auto runs = distributed_map(methods.size(), [&](std::size_t k) { return run_phi(methods[k], sys, h, ell, z0, n); });
     std::vector<std::string> cols{"t", "reference_H"};
@@ -58,7 +58,7 @@ void run_energies(Context& ctx) {
       }
       csv.end_row();
     }
-    json Estar, jmax_H, jmax_K, jmax_Kmod, jerr_end, jH_end;
+    Value Estar, jmax_H, jmax_K, jmax_Kmod, jerr_end, jH_end;
     for (std::size_t k = 0; k < M; ++k) {
       const char* name = discretization_name(methods[k]);
       Estar[name] = E_star[k] - H0, jmax_H[name] = max_H[k], jmax_K[name] = max_K[k], jmax_Kmod[name] = max_Kmod[k];
@@ -76,8 +76,8 @@ void run_energies(Context& ctx) {
     H_end[std::to_string(ell)] = jH_end, err_end_of[std::to_string(ell)] = jerr_end;
   }
   // |H(T) - H0| and the error at T under Phi^(0) over those under Phi^(4)
-  put_methods(ctx, pot + "_H_drift_ratio", ratio_per_method(H_end["0"], H_end["4"]));
-  put_methods(ctx, pot + "_err_ratio", ratio_per_method(err_end_of["0"], err_end_of["4"]));
+  put_methods(ctx, pot + "_H_drift_ratio", ratio_per_method(H_end.at("0"), H_end.at("4")));
+  put_methods(ctx, pot + "_err_ratio", ratio_per_method(err_end_of.at("0"), err_end_of.at("4")));
 }
 
 StudyPlan plan_energies(const Scene& s) {

@@ -32,7 +32,7 @@ void run_long_run(Context& ctx) {
   }
   ctx.write("long_run.csv", csv);
   const auto ref = reference_samples(sys, z0, s.real("long_run.t_end"), 1, rtol, atol).back();
-  json H0_end, H4_end, e0, e4;
+  Value H0_end, H4_end, e0, e4;
   for (std::size_t k = 0; k < M; ++k) {
     const char* name = discretization_name(methods[k]);
     H0_end[name] = sys.H(as_state(runs[k].z.back())) - H0, H4_end[name] = sys.H(as_state(runs[M + k].z.back())) - H0;

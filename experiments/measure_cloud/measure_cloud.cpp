@@ -19,7 +19,7 @@ const MethodInfo* as_discretization(const MethodInfo& m) {
 }
 
 // {min, max, abs: {min, max}} of a non-empty list of numbers (abs: of their moduli).
-json range_of(const std::vector<double>& v) {
+Value range_of(const std::vector<double>& v) {
   const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
   double abs_lo = std::abs(v.front()), abs_hi = abs_lo;
   for (double x : v) abs_lo = std::min(abs_lo, std::abs(x)), abs_hi = std::max(abs_hi, std::abs(x));
@@ -146,20 +146,22 @@ std::vector<Point4> cloud_around(const Point4& z0, const std::vector<Point4>& ve
   return scaled_cloud(unit, z0, radius);
 }
 
-void put(Context& ctx, const char* section, const std::string& key, json value) {
+void put(Context& ctx, const char* section, const std::string& key, Value value) {
   ctx.summary[section][key] = std::move(value);
 }
 
-json method_ranges(const json& per_method) {
+Value method_ranges(const Value& per_method) {
   constexpr const char* groups[] = {"all", "N_midpoint", "N_trapezoidal"};
-  json out = json::object();
+  Value out = Value::record();
   for (int g = 0; g < 3; ++g) {
     std::vector<double> v;
     bool complete = true;
-    for (const auto& [label, x] : per_method.items()) {
+    for (std::size_t i = 0; i < per_method.size(); ++i) {
+      const std::string& label = per_method.keys()[i];
+      const Value& x = per_method.at(i);
       if (g > 0 && (g == 1) != n_midpoint(*parse_discretization(label))) continue;
-      if (x.is_number() && std::isfinite(x.get<double>()))
-        v.push_back(x.get<double>());
+      if (x.is_number() && std::isfinite(x.number()))
+        v.push_back(x.number());
       else
         complete = false;
     }
@@ -168,8 +170,8 @@ json method_ranges(const json& per_method) {
   return out;
 }
 
-void put_methods(Context& ctx, const std::string& key, json per_method, const std::string& nest) {
-  json ranges = method_ranges(per_method);
+void put_methods(Context& ctx, const std::string& key, Value per_method, const std::string& nest) {
+  Value ranges = method_ranges(per_method);
   if (nest.empty()) {
     ctx.summary["reproduced"][key] = std::move(per_method);
     ctx.summary["ranges"][key] = std::move(ranges);
@@ -179,16 +181,16 @@ void put_methods(Context& ctx, const std::string& key, json per_method, const st
   }
 }
 
-json ratio_per_method(const json& a, const json& b) {
-  json out;
-  for (const auto& [label, x] : a.items()) out[label] = x.get<double>() / b[label].get<double>();
+Value ratio_per_method(const Value& a, const Value& b) {
+  Value out;
+  for (const std::string& label : a.keys()) out[label] = a.at(label).number() / b.at(label).number();
   return out;
 }
 
 void put_run_facts(Context& ctx, const std::vector<Discretization>& methods) {
   ctx.summary["timing"]["threads"] = ctx.threads;
   if (methods.empty()) return;
-  json labels = json::array();
+  Value labels = Value::list();
   for (Discretization d : methods) labels.push_back(discretization_name(d));
   ctx.summary["methods"] = labels;
 }
@@ -230,7 +232,7 @@ PhiStudy phi_study(Context& ctx) {
   check_modified_series(ctx, sys);
   const double h = s.real("h");
   put_run_facts(ctx, scene_methods(s));
-  json powers;  // Cor. 4.3 of 003: Phi^(ell) preserves mu^(ell)_mod to O(h^(ell + 2))
+  Value powers;  // Cor. 4.3 of 003: Phi^(ell) preserves mu^(ell)_mod to O(h^(ell + 2))
   for (int ell = 0; ell <= max_modified_order; ell += 2) powers["phi" + std::to_string(ell)] = std::pow(h, ell + 2);
   put(ctx, "reproduced", "h_pow_ell_plus_2", powers);
   return {sys, z0, rtol, atol, h, scene_methods(s)};

@@ -11,14 +11,13 @@
 #include <tuple>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "geomint/core/integrate.hpp"  // steps_within, step_count_within
 #include "geomint/core/state.hpp"
 #include "geomint/geometry/clouds.hpp"
 #include "geomint/geometry/hull_volume.hpp"
 #include "geomint/integrators/conformal_variational.hpp"
 #include "geomint/runner/experiment.hpp"
+#include "geomint/runner/results.hpp"
 #include "geomint/systems/nonholonomic_particle.hpp"
 
 namespace geomint {
@@ -27,7 +26,6 @@ class ModifiedSeries;  // systems/nonholonomic_modified_series.hpp
 
 namespace geomint::measure_cloud {
 
-using json = nlohmann::ordered_json;
 using Z = PhaseState<2>;
 
 // The studies, in the order they run.
@@ -110,19 +108,19 @@ std::vector<Point4> cloud_around(const Point4& z0, const std::vector<Point4>& ve
 // ---- what every study reports through ctx.summary ----
 
 // Sets summary[section][key], indexing ctx.summary afresh (no reference into it outlives an insertion).
-void put(Context& ctx, const char* section, const std::string& key, json value);
+void put(Context& ctx, const char* section, const std::string& key, Value value);
 
 // The ranges of a {label: number} object over the methods: "all", and those of each quadrature of N
 // (003 (5.1), the first letter of the label): "N_midpoint" (M, MT) and "N_trapezoidal" (TM, TT, T).
 // A group is left out if one of its values is not a finite number (an order without a fit).
-json method_ranges(const json& per_method);
+Value method_ranges(const Value& per_method);
 
 // Sets summary.reproduced.<key> (or summary.reproduced.<nest>.<key>) to a {label: number} object and
 // summary.ranges.<key> (summary.ranges.<nest>.<key>) to its method_ranges.
-void put_methods(Context& ctx, const std::string& key, json per_method, const std::string& nest = "");
+void put_methods(Context& ctx, const std::string& key, Value per_method, const std::string& nest = "");
 
 // {label: a[label] / b[label]} over the labels of a.
-json ratio_per_method(const json& a, const json& b);
+Value ratio_per_method(const Value& a, const Value& b);
 
 // What every study reports besides its results: the thread count and the labels of the methods it
 // runs (the CSV columns; figure_values.gp: summary_words('methods')).

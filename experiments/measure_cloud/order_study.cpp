@@ -49,10 +49,10 @@ struct Result {
 void fit_orders(Context& ctx, const std::vector<Discretization>& methods, const std::vector<double>& hs,
                 const std::vector<int>& es, const std::vector<Result>& results, double floor) {
   const std::size_t i_max = static_cast<std::size_t>(std::max_element(hs.begin(), hs.end()) - hs.begin());
-  json fits;
+  Value fits;
   for (std::size_t e = 0; e < es.size(); ++e) {
     const std::string key = "measure_ell" + std::to_string(es[e]);
-    json o, f, points, at_h_max;
+    Value o, f, points, at_h_max;
     for (std::size_t k = 0; k < methods.size(); ++k) {
       std::vector<double> ptp;
       for (std::size_t i = 0; i < hs.size(); ++i) ptp.push_back(results[k * (es.size() * hs.size() + 1) + e * hs.size() + i].ptp);
@@ -60,7 +60,7 @@ void fit_orders(Context& ctx, const std::vector<Discretization>& methods, const 
       at_h_max[name] = ptp[i_max];
       try {
         const OrderFit fit = fit_order(hs, ptp, floor, "order study");
-        o[name] = fit.order, f[name] = to_json(fit), points[name] = fit.points;
+        o[name] = fit.order, f[name] = to_value(fit), points[name] = fit.points;
         record_order_fit(ctx.summary, "orders." + key + "." + name,
                          {"order_study.csv", "h", "ptp", {{"method", name}, {"ell", std::to_string(es[e])}}}, fit, floor);
       } catch (const NumericalFailure&) {
@@ -71,9 +71,9 @@ void fit_orders(Context& ctx, const std::vector<Discretization>& methods, const 
     ctx.summary["ranges"][key] = method_ranges(o);
     ctx.summary["ranges"]["fit_points_" + key] = method_ranges(points);
     put_methods(ctx, "order_study_ptp_phi" + std::to_string(es[e]) + "_at_h_max", at_h_max);
-    if (!f.empty()) fits[key] = f;
+    if (f.size() > 0) fits[key] = f;
   }
-  if (!fits.empty()) ctx.summary["fits"] = fits;
+  if (fits.size() > 0) ctx.summary["fits"] = fits;
 }
 
 void run_order_study(Context& ctx) {

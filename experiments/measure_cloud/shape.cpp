@@ -71,11 +71,11 @@ void run_symplecticity(Context& ctx, const NonholonomicParticle& sys, const Poin
     csv.end_row();
   }
   ctx.write("shape_symplecticity.csv", csv);
-  json& r = ctx.summary["reproduced"]["symplecticity"];
+  Value& r = ctx.summary["reproduced"]["symplecticity"];
   r["t_end"] = static_cast<double>(n) * h;
   r["samples"] = n + 1;
   r["conformal_flow_at_t_end"] = symplecticity_defect<4>(flows[0].back().Phi);
-  json at_snapshots = json::array();  // at the snapshot times of Fig. 5.1
+  Value at_snapshots = Value::list();  // at the snapshot times of Fig. 5.1
   const double dt = s.real("shape.snapshot_dt");
   for (std::int64_t k = 0; k <= s.integer("shape.snapshots"); ++k) {
     const std::int64_t j = std::llround(static_cast<double>(k) * dt / h);
@@ -85,7 +85,7 @@ void run_symplecticity(Context& ctx, const NonholonomicParticle& sys, const Poin
   r["conformal_flow_at_snapshots"] = at_snapshots;
   r["hamiltonian_flow_max"] = ham_max;
   r["measure_identity_max_err"] = measure_max;
-  json psi_max;
+  Value psi_max;
   for (std::size_t k = 0; k < methods.size(); ++k)
     psi_max[discretization_name(methods[k])] = *std::max_element(psi[k].begin(), psi[k].end());
   put_methods(ctx, "psi_max", psi_max, "symplecticity");
@@ -107,7 +107,7 @@ void run_shape(Context& ctx) {
   const std::int64_t snaps = s.integer("shape.snapshots");
   const auto paths = distributed_map(cloud.size(), [&](std::size_t i) { return reference_samples(sys, cloud[i], dt, snaps, rtol, atol); });
   Csv pts({"t", "x", "y", "px", "py"}), areas({"t", "area_x_px", "area_y_py", "area_sum"});
-  json sums = json::array();
+  std::vector<double> sums;
   for (std::int64_t j = 0; j <= snaps; ++j) {
     std::vector<std::array<double, 2>> a, b;
     for (const auto& p : paths) {

@@ -103,7 +103,7 @@ void cloud_volumes(Context& ctx, const PhiStudy& p, const std::vector<Point4>& c
   for (int m = 0; m <= max_modified_order; m += 2) all_measures.push_back(m);
   const std::int64_t n = steps_within(s.real("t_end"), p.h);
   const std::size_t window = static_cast<std::size_t>(steps_within(s.real("ptp_window"), p.h)) + 1;
-  const auto put_here = [&](const std::string& key, json value) {
+  const auto put_here = [&](const std::string& key, Value value) {
     if (nest.empty()) put(ctx, "reproduced", key, std::move(value));
     else ctx.summary["reproduced"][nest][key] = std::move(value);
   };
@@ -130,7 +130,7 @@ void cloud_volumes(Context& ctx, const PhiStudy& p, const std::vector<Point4>& c
     const std::string phi = "ptp_phi" + std::to_string(ell) + "_";
     const auto column = [&](std::size_t k, int m) { return std::string(discretization_name(p.methods[k])) + "_" + measure_name(m); };
     for (std::size_t m = 0; m < all_measures.size(); ++m) {
-      json ptp;
+      Value ptp;
       for (std::size_t k = 0; k < p.methods.size(); ++k) {
         ptp[discretization_name(p.methods[k])] = relative_peak_to_peak(vols[k][m], window);
         record_ptp(phi + measure_name(all_measures[m]) + "." + discretization_name(p.methods[k]), file, column(k, all_measures[m]),
@@ -141,7 +141,7 @@ void cloud_volumes(Context& ctx, const PhiStudy& p, const std::vector<Point4>& c
     // the amplitude (half the ptp) in mu^(4)_mod, the quantity 003 reads off Fig. 5.2
     const auto mu4 = std::find(all_measures.begin(), all_measures.end(), 4);
     if (mu4 != all_measures.end()) {
-      json amp;
+      Value amp;
       for (std::size_t k = 0; k < p.methods.size(); ++k)
         amp[discretization_name(p.methods[k])] =
             relative_amplitude(vols[k][static_cast<std::size_t>(mu4 - all_measures.begin())], window),
@@ -151,16 +151,16 @@ void cloud_volumes(Context& ctx, const PhiStudy& p, const std::vector<Point4>& c
     }
     // in its own measure mu^(ell)_mod, less the reference's relative volume (the hull artefact both share)
     const std::size_t own = static_cast<std::size_t>(std::find(all_measures.begin(), all_measures.end(), ell) - all_measures.begin());
-    json corrected;
+    Value corrected;
     for (std::size_t k = 0; k < p.methods.size(); ++k)
       corrected[discretization_name(p.methods[k])] = relative_peak_to_peak_minus(vols[k][own], ref_volumes, window),
       record_ptp(phi + measure_name(ell) + "_minus_reference." + discretization_name(p.methods[k]), file, column(k, ell),
                  "relative_ptp", "reference_mu");
     put_methods(ctx, phi + measure_name(ell) + "_minus_reference", corrected, nest);
   }
-  const json& r = nest.empty() ? ctx.summary["reproduced"] : ctx.summary["reproduced"][nest];
+  const Value& r = nest.empty() ? ctx.summary["reproduced"] : ctx.summary["reproduced"][nest];
   if (r.contains("ptp_phi0_mu4") && r.contains("ptp_phi4_mu4"))  // Fig. 5.4 against Fig. 5.2 in mu^(4)_mod
-    put_methods(ctx, "ptp_mu4_phi0_over_phi4", ratio_per_method(r["ptp_phi0_mu4"], r["ptp_phi4_mu4"]), nest);
+    put_methods(ctx, "ptp_mu4_phi0_over_phi4", ratio_per_method(r.at("ptp_phi0_mu4"), r.at("ptp_phi4_mu4")), nest);
 }
 
 // The reference flow is run once more on the full cloud of this fraction of cloud.radius: the ratio
@@ -185,7 +185,7 @@ void run_volumes(Context& ctx) {
   record_unfittable(ctx.summary, "reproduced.ptp_reference_mu_small_radius",
                     "the reference volumes of the small cloud are not written to a CSV (only their peak-to-peak is reported)");
   put(ctx, "reproduced", "ptp_reference_mu_ratio_to_small_radius",
-      ctx.summary["reproduced"]["ptp_reference_mu"].get<double>() / ptp_small);
+      ctx.summary.at("reproduced").at("ptp_reference_mu").number() / ptp_small);
   if (s.boolean("cloud.authors_cloud"))  // the cloud of the published figures
     cloud_volumes(ctx, p, cloud_around(p.z0, authors_six_hundred_cell_vertices(), r), "volumes_authors_", "authors_cloud");
 }

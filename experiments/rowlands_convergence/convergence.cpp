@@ -67,20 +67,20 @@ Errors convergence_run(const std::string& method, const Sys& sys, const State& z
 // The ranges of the fitted orders (orders_by_initial) over all initial conditions and norms, of the
 // methods whose kernel is of order 2 (Stormer-Verlet, the Rowlands kernel alone and processed), by
 // their declared order: {"order_2": {min, max}, "order_4": {min, max}}.
-json order_ranges(const std::vector<std::string>& methods, const json& by_initial) {
+Value order_ranges(const std::vector<std::string>& methods, const Value& by_initial) {
   std::map<int, std::pair<double, double>> ranges;
   for (const auto& m : methods) {
     if (method_info(m).kernel_order != 2) continue;
     auto& [lo, hi] = ranges.try_emplace(method_info(m).order, std::numeric_limits<double>::infinity(),
                                         -std::numeric_limits<double>::infinity()).first->second;
-    for (const auto& o : by_initial)
+    for (std::size_t i = 0; i < by_initial.size(); ++i)
       for (const char* suffix : {"_energy", "_energy_max", "_phase"})
-        if (o.contains(label_of(m) + suffix)) {
-          const double v = o[label_of(m) + suffix].get<double>();
+        if (const Value* o = by_initial.at(i).find(label_of(m) + suffix)) {
+          const double v = o->number();
           if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
         }
   }
-  json out = json::object();
+  Value out = Value::record();
   for (const auto& [order, range] : ranges)
     if (range.first <= range.second) out["order_" + std::to_string(order)] = {{"min", range.first}, {"max", range.second}};
   return out;
@@ -90,9 +90,9 @@ json order_ranges(const std::vector<std::string>& methods, const json& by_initia
 // smallest h, over all initial conditions and the recorded norms (to leading order the error is
 // proportional to 1/12 - c: the analysis predicts (1/12 - 1/24) / (1/12) = 1/2); nullopt unless the
 // convergence study runs both. runs[i * hs.size() + j][k]: initial condition i, step hs[j], method k.
-std::optional<json> printed_over_kernel(const std::vector<std::string>& methods,
-                                        const std::vector<std::vector<Errors>>& runs, const std::vector<double>& hs,
-                                        std::size_t n_initial, Observables obs) {
+std::optional<Value> printed_over_kernel(const std::vector<std::string>& methods,
+                                         const std::vector<std::vector<Errors>>& runs, const std::vector<double>& hs,
+                                         std::size_t n_initial, Observables obs) {
   const auto index_of = [&](const char* name) {
     const auto it = std::find_if(methods.begin(), methods.end(), [&](const auto& m) { return label_of(m) == label_of(name); });
     return it == methods.end() ? std::nullopt : std::optional(static_cast<std::size_t>(it - methods.begin()));
@@ -110,7 +110,7 @@ std::optional<json> printed_over_kernel(const std::vector<std::string>& methods,
       if (b != 0 && std::isfinite(a / b)) lo = std::min(lo, a / b), hi = std::max(hi, a / b);
   }
   if (!(lo <= hi)) return std::nullopt;
-  return json{{"min", lo}, {"max", hi}, {"h", hs[j_min]}};
+  return Value{{"min", lo}, {"max", hi}, {"h", hs[j_min]}};
 }
 
 // The reference at t_end of an initial condition, and its self-check (odeint Bulirsch-Stoer).
@@ -197,12 +197,12 @@ ConvergenceStudy convergence_table(const Sys& sys, const std::vector<double>& hs
 
 // The fitted orders per initial condition ({name + norm suffix: order}), and the smallest phase error plotted.
 struct Orders {
-  json by_initial;
+  Value by_initial;
   double min_phase;
 };
 
 Orders orders_of(const ConvergenceStudy& conv, std::size_t n_initial, const std::vector<std::string>& methods, Observables obs) {
-  json by_initial = json::array();
+  Value by_initial = Value::list();
   double min_phase = std::numeric_limits<double>::infinity();  // smallest phase error plotted
   for (std::size_t i = 0; i < n_initial; ++i) {
     by_initial.push_back(conv.orders(i));
@@ -220,14 +220,14 @@ void summarize(Context& ctx, const std::vector<double>& hs, std::size_t n_initia
                const Orders& orders, double self_check) {
   const Scene& s = ctx.scene;
   const auto& [by_initial, min_phase] = orders;  // (in the summary already: ConvergenceStudy::write)
-  json reproduced;
+  Value reproduced;
   if (obs.phase) {
     reproduced["reference_self_check"] = self_check;
     reproduced["reference_margin"] = min_phase / self_check;  // must be >= 100 (checked by the tests)
   }
 
-  if (!reproduced.empty()) ctx.summary["reproduced"] = reproduced;
-  json norms;
+  if (reproduced.size() > 0) ctx.summary["reproduced"] = reproduced;
+  Value norms;
   if (obs.energy) {
     norms["energy"] = "eq. (50): sqrt(sum_{j=0}^{N} (H(z_j) - H(z_0))^2 / N), z_j postprocessed at every step";
     norms["energy_max"] = "max over j of |H(z_j) - H(z_0)|";

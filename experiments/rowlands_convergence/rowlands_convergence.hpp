@@ -7,16 +7,14 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "geomint/core/state.hpp"
 #include "geomint/runner/experiment.hpp"
+#include "geomint/runner/results.hpp"
 #include "geomint/runner/summary.hpp"
 #include "geomint/systems/elastic_pendulum.hpp"
 
 namespace geomint::rowlands_convergence {
 
-using json = nlohmann::ordered_json;
 using State = PhaseState<2>;
 
 // The studies, in the order they run.

@@ -47,14 +47,15 @@ void add_runs(WorkPrecisionSet& set, const Scene& s, const std::string& method, 
 
 // summary.cost.cost_ratio_to_<first>.<set>.<label>: the wall time and the force evaluations to reach the
 // target (the set's only one), relative to the first method; only where both reach it.
-json cost_ratios(const json& set, const std::string& first) {
-  json ratio = json::object();
-  const json& by = set["by_method"];
-  for (const auto& [label, m] : by.items()) {
-    const json &a = m["wall_s_to"][0], &b = by[first]["wall_s_to"][0];
+Value cost_ratios(const Value& set, const std::string& first) {
+  Value ratio = Value::record();
+  const Value& by = set.at("by_method");
+  for (const std::string& label : by.keys()) {
+    const Value& m = by.at(label);
+    const Value &a = m.at("wall_s_to").at(0), &b = by.at(first).at("wall_s_to").at(0);
     if (a.is_null() || b.is_null()) continue;  // (evals_to is null exactly where wall_s_to is: the same bracket)
-    ratio[label] = {{"wall_s", a.get<double>() / b.get<double>()},
-                    {"evals", m["evals_to"][0].get<double>() / by[first]["evals_to"][0].get<double>()}};
+    ratio[label] = {{"wall_s", a.number() / b.number()},
+                    {"evals", m.at("evals_to").at(0).number() / by.at(first).at("evals_to").at(0).number()}};
   }
   return ratio;
 }
@@ -90,15 +91,15 @@ void run_cost(Context& ctx) {
   ctx.write("cost_henon_heiles.csv", henon_heiles.csv());
   ctx.write("cost_oscillator.csv", oscillator.csv());
 
-  json cost = {{"henon_heiles", henon_heiles.summary(targets)},
-               {"oscillator", oscillator.summary(targets)},
-               {"method", timing_method_text(repeats, ctx.threads) +
-                              "; one run from the start to work_precision.t_end, processing included, every call inlined"},
-               {"reference", {{"oscillator", "exact solution"},
-                              {"henon_heiles_tol", tol / 100},
-                              {"henon_heiles_error", norm2(ref, ref_coarse)}}}};  // estimate: against tol
+  Value cost = {{"henon_heiles", henon_heiles.summary(targets)},
+                {"oscillator", oscillator.summary(targets)},
+                {"method", timing_method_text(repeats, ctx.threads) +
+                               "; one run from the start to work_precision.t_end, processing included, every call inlined"},
+                {"reference", {{"oscillator", "exact solution"},
+                               {"henon_heiles_tol", tol / 100},
+                               {"henon_heiles_error", norm2(ref, ref_coarse)}}}};  // estimate: against tol
   const std::string first = label_of(methods[0]);
-  for (const char* set : {"henon_heiles", "oscillator"}) cost["cost_ratio_to_" + first][set] = cost_ratios(cost[set], first);
+  for (const char* set : {"henon_heiles", "oscillator"}) cost["cost_ratio_to_" + first][set] = cost_ratios(cost.at(set), first);
   ctx.summary["cost"] = cost;
 }
 

@@ -71,7 +71,7 @@ struct Stats {
   std::vector<double> ts, mus, sigmas;
 };
 
-Stats write_stats(Context& ctx, const Run& run, json& reproduced) {
+Stats write_stats(Context& ctx, const Run& run, Value& reproduced) {
   const auto& series = run.series;
   const std::size_t ns = run.ns;
   const double t_end = run.t_end;
@@ -91,18 +91,18 @@ Stats write_stats(Context& ctx, const Run& run, json& reproduced) {
 
 // Every trajectory's series (thinned to at most 200 times) and the outliers.
 struct Outliers {
-  json outliers;
+  Value outliers;
   std::vector<std::size_t> kept;
   std::size_t stride;  // of the thinned times
 };
 
-Outliers write_trajectories(Context& ctx, const Run& run, json& reproduced) {
+Outliers write_trajectories(Context& ctx, const Run& run, Value& reproduced) {
   const Scene& s = ctx.scene;
   const auto& series = run.series;
   const std::size_t M = run.M, ns = run.ns;
   const auto time_of = [&](std::size_t k) { return run.time_of(k); };
   Csv f4t({"trajectory", "outlier", "t", "E_err"});
-  json outliers = json::array();
+  Value outliers = Value::list();
   std::vector<std::size_t> kept;
   const std::size_t stride = std::max<std::size_t>(1, ns / 200);
   for (std::size_t i = 0; i < M; ++i) {
@@ -119,12 +119,12 @@ Outliers write_trajectories(Context& ctx, const Run& run, json& reproduced) {
 
   // The statistics without the outliers, at the times of fig4_trajectories.csv.
 template <class HH>
-json ensemble_summary(const Context& ctx, const HH& hhk, const Run& run, const Stats& st, const Outliers& out) {
+Value ensemble_summary(const Context& ctx, const HH& hhk, const Run& run, const Stats& st, const Outliers& out) {
   const Scene& s = ctx.scene;
   const std::vector<double>& ts = st.ts;
   const std::vector<double>& mus = st.mus;
   const std::vector<double>& sigmas = st.sigmas;
-  const json& outliers = out.outliers;
+  const Value& outliers = out.outliers;
   const std::vector<std::size_t>& kept = out.kept;
   const std::size_t stride = out.stride;
   const auto& series = run.series;
@@ -133,12 +133,12 @@ json ensemble_summary(const Context& ctx, const HH& hhk, const Run& run, const S
   const double t_fit = fit_t_min(s, "ensemble", t_end);
   const std::int64_t n4 = run.n4;
   const auto time_of = [&](std::size_t k) { return run.time_of(k); };
-  json ensemble = {{"p1", hh_start(hhk, s.real("hh3.q2"), s.real("hh3.p2"), s.real("hh.H0")).p[0]},  // unperturbed
-                   {"steps", n4},
-                   {"sample_dt", time_of(1)},
-                   {"thinned_dt", time_of(stride)},
-                   {"outliers", outliers.size()},
-                   {"kept", kept.size()}};
+  Value ensemble = {{"p1", hh_start(hhk, s.real("hh3.q2"), s.real("hh3.p2"), s.real("hh.H0")).p[0]},  // unperturbed
+                    {"steps", n4},
+                    {"sample_dt", time_of(1)},
+                    {"thinned_dt", time_of(stride)},
+                    {"outliers", outliers.size()},
+                    {"kept", kept.size()}};
   if (kept.size() >= 2) {
     const EnsembleMoments m = ensemble_moments(series, kept, stride);
     std::vector<double> tk;
@@ -155,7 +155,7 @@ json ensemble_summary(const Context& ctx, const HH& hhk, const Run& run, const S
   ensemble["mu_first"] = {{"t", ts.at(1)}, {"mu", mus.at(1)}};
   ensemble["mu_late"] = spread_of(mu_late);
   ensemble["mu_final_stderr"] = standard_error_of_mean(sigmas.back(), static_cast<double>(M));
-  ensemble["mu_final_in_stderr"] = mus.back() / ensemble["mu_final_stderr"].get<double>();  // how far from zero
+  ensemble["mu_final_in_stderr"] = mus.back() / ensemble.at("mu_final_stderr").number();  // how far from zero
   ensemble["sigma_rel_stderr"] = standard_error_of_deviation(1.0, static_cast<double>(M));
   ensemble["sigma_exponent_from_hundredth"] = power_law_exponent(ts, sigmas, t_fit / 10);  // a window ten times longer
   // sigma^2 = c + D t of a random walk: D at t_end, and the slope of sigma^2 over the fit window.
@@ -163,10 +163,10 @@ json ensemble_summary(const Context& ctx, const HH& hhk, const Run& run, const S
   ensemble["sigma2_slope"] = slope_from(ts, sigma2, t_fit);
   ensemble["fit"] = {{"t_min", t_fit}, {"t_max", t_end}};
   // The same from the printed sigma, at the printed time (published.toml: hh5_sigma_final).
-  const Published& printed = ctx.published("hh5_sigma_final");
-  const double printed_sigma = printed.value.get<double>(), printed_t = printed.requires_.at("t_end").get<double>();
+  const double printed_sigma = ctx.published_value("hh5_sigma_final");
+  const double printed_t = ctx.published_requirement("hh5_sigma_final", "t_end");
   ensemble["printed_sigma2_over_t"] = printed_sigma * printed_sigma / printed_t;
-  ensemble["sigma2_over_t_minus_printed"] = ensemble["sigma2_over_t"].get<double>() - printed_sigma * printed_sigma / printed_t;
+  ensemble["sigma2_over_t_minus_printed"] = ensemble.at("sigma2_over_t").number() - printed_sigma * printed_sigma / printed_t;
   // The printed sigma against ours carried to the printed time by the printed law sigma ~ t^gamma (published.toml:
   // hh5_sigma_exponent), in standard errors of ours (relative 1/sqrt(2(M-1))): a check that the quick scene can make.
   const double gamma_printed = ctx.published_value("hh5_sigma_exponent");
@@ -182,10 +182,10 @@ json ensemble_summary(const Context& ctx, const HH& hhk, const Run& run, const S
 template <class HH>
 void ensemble_with(Context& ctx, const HH& hhk, LargestError& largest) {
   const Run run = integrate_with(ctx, hhk);
-  json reproduced;
+  Value reproduced;
   const Stats stats = write_stats(ctx, run, reproduced);
   const Outliers out = write_trajectories(ctx, run, reproduced);
-  const json ensemble = ensemble_summary(ctx, hhk, run, stats, out);
+  const Value ensemble = ensemble_summary(ctx, hhk, run, stats, out);
   merge(ctx.summary, "reproduced", reproduced);
   ctx.summary["ensemble"] = ensemble;
   largest = trajectory_of(run, largest_error(run));  // (Fig. 5: the poincare study of this process)
@@ -206,7 +206,6 @@ void ensemble_with(Context& ctx, const HH& hhk, LargestError& largest) {
        {"fig4_steps", static_cast<double>(M) * static_cast<double>(n4)},  // over the ensemble
        {"fig4_ns_per_step_thread",
         1e9 * wall4 * ctx.threads / (static_cast<double>(M) * static_cast<double>(n4))}});
-  put_differences(ctx, "ensemble");
 }
 
 void run_ensemble(Context& ctx, LargestError& largest) {

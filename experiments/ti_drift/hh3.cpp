@@ -51,7 +51,6 @@ void run_hh3(Context& ctx) {
                         {"H_err_max", worst_H},
                         {"drift_over_run", drift * ts.back()},  // the fitted slope times the span
                         {"drift_over_run_share", std::abs(drift * ts.back()) / worst}};
-  put_differences(ctx, "hh3");
 }
 
 void check_hh3(const Scene& s) {

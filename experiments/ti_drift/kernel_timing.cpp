@@ -23,22 +23,22 @@ namespace {
 // The ensembles' lane kernels against the scalar method (sweep/lanes_timing.hpp): ns per trajectory-step of the
 // trajectories from `starts` (one batch), n steps.
 template <class Sys>
-json lanes_timing(const Sys& sys, const std::vector<typename Sys::State>& starts, double h, std::int64_t n, int repeats) {
+Value lanes_timing(const Sys& sys, const std::vector<typename Sys::State>& starts, double h, std::int64_t n, int repeats) {
   const double steps = static_cast<double>(starts.size()) * static_cast<double>(n);
   const LanesTiming t = time_lanes(sys, starts, h, n, repeats);
   const RunTime scalar = t.scalar.scaled(1e9 / steps);  // ns per trajectory-step
-  json out = {{"trajectories", starts.size()}, {"steps", n}, {"scalar_ns_per_step", scalar.seconds()},
-              {"scalar", to_json(scalar)}, {"scalar_spread", scalar.spread()}};
+  Value out = {{"trajectories", starts.size()}, {"steps", n}, {"scalar_ns_per_step", scalar.seconds()},
+               {"scalar", to_value(scalar)}, {"scalar_spread", scalar.spread()}};
   for (const auto& [name, k] : t.kernels) {
     const RunTime lanes = k.scaled(1e9 / steps);
     const TimeRatio speedup = time_ratio(scalar, lanes);  // (the same arithmetic per trajectory-step: the same work)
-    out["kernels"][name] = {{"ns_per_step", lanes.seconds()},  {"spread", lanes.spread()}, {"time", to_json(lanes)},
+    out["kernels"][name] = {{"ns_per_step", lanes.seconds()},  {"spread", lanes.spread()}, {"time", to_value(lanes)},
                             {"speedup_vs_scalar", speedup.median}, {"speedup_interval", {{"min", speedup.lo}, {"max", speedup.hi}}},
                             {"against_scalar", timing_verdict(time_ratio(lanes, scalar), 1, 1)}};
     if (!out.contains("isa"))  // the one the ensembles use (the widest lanes)
       out["isa"] = name, out["ns_per_step"] = lanes.seconds(), out["spread"] = lanes.spread(),
-      out["speedup_vs_scalar"] = speedup.median, out["speedup_interval"] = out["kernels"][name]["speedup_interval"],
-      out["against_scalar"] = out["kernels"][name]["against_scalar"];
+      out["speedup_vs_scalar"] = speedup.median, out["speedup_interval"] = out.at("kernels").at(name).at("speedup_interval"),
+      out["against_scalar"] = out.at("kernels").at(name).at("against_scalar");
   }
   return out;
 }
@@ -55,7 +55,7 @@ void timing_with(Context& ctx, const HH& hhk) {
   InterleavedTiming timing(repeats);
   for (const auto& m : methods) timing.add(MethodsOn<HH>::timed(m, hhk, {z}, h, n, Bind::kernel));
   const std::vector<RunTime> times = timing.run();
-  json ns_per_step, runs, spread;
+  Value ns_per_step, runs, spread;
   std::vector<std::string> labels;
   std::vector<RunTime> per_step;
   std::vector<double> work;
@@ -65,7 +65,7 @@ void timing_with(Context& ctx, const HH& hhk) {
     work.push_back(static_cast<double>(evals_per_step(methods[k])));
     ns_per_step[label] = per_step.back().seconds();
     spread[label] = per_step.back().spread();
-    runs[label] = to_json(times[k]);
+    runs[label] = to_value(times[k]);
   }
   merge(ctx.summary, "timing",
       {{"ns_per_step", ns_per_step},

@@ -31,13 +31,13 @@ constexpr std::int64_t kStiffnessEvery = 10;   // Fig. 6: the stiffness along th
 
 // The step-size scan and the stiffness of the cluster, as the summary reports them.
 struct Scan {
-  json scan_summary;           // per step of lj.h_scan
+  Value scan_summary;          // per step of lj.h_scan
   std::vector<double> stable;  // the steps at which no run diverged
   double grid_stiffness, along_lo, along_hi;
 };
 
 // The step-size scan (fig6_scan.csv) and the stiffness of the cluster.
-Scan scan_steps(Context& ctx, const LJ& lj, json& reproduced) {
+Scan scan_steps(Context& ctx, const LJ& lj, Value& reproduced) {
   const Scene& s = ctx.scene;
   // The step-size scan: max |H - H0| over t <= lj.scan_t, diverged beyond lj.blowup or when not finite.
   const auto hs = s.reals("lj.h_scan");
@@ -74,7 +74,7 @@ Scan scan_steps(Context& ctx, const LJ& lj, json& reproduced) {
   const auto [along_lo, along_hi] = std::minmax_element(along.begin(), along.end());
   Csv sc({"h", "trajectory", "max_H_err", "diverged", "diverge_step"});
   sc.flags({"diverged"});
-  json stable_h = json::array(), scan_summary = json::array();
+  Value stable_h = Value::list(), scan_summary = Value::list();
   std::vector<double> stable;
   for (std::size_t k = 0; k < hs.size(); ++k) {
     bool all_ok = true;
@@ -87,11 +87,11 @@ Scan scan_steps(Context& ctx, const LJ& lj, json& reproduced) {
       else ok.push_back(w);
     }
     if (all_ok) stable_h.push_back(hs[k]), stable.push_back(hs[k]);
-    json row = {{"h", hs[k]},
-                {"runs", scan_size},
-                {"diverged", t_div.size()},
-                {"omega_max_h_at_grid", std::sqrt(grid_stiffness) * hs[k]},
-                {"omega_max_h_along_starts", {{"min", std::sqrt(*along_lo) * hs[k]}, {"max", std::sqrt(*along_hi) * hs[k]}}}};
+    Value row = {{"h", hs[k]},
+                 {"runs", scan_size},
+                 {"diverged", t_div.size()},
+                 {"omega_max_h_at_grid", std::sqrt(grid_stiffness) * hs[k]},
+                 {"omega_max_h_along_starts", {{"min", std::sqrt(*along_lo) * hs[k]}, {"max", std::sqrt(*along_hi) * hs[k]}}}};
     if (!t_div.empty()) row["t_diverged"] = range_of(t_div);
     if (!ok.empty()) row["max_H_err"] = {{"median", median(ok)}, {"max", *std::max_element(ok.begin(), ok.end())}};
     scan_summary.push_back(row);
@@ -157,7 +157,7 @@ struct Stats {
   double mu_f, sigma_f, mu_se, sigma_se;
 };
 
-Stats write_stats(Context& ctx, const Ensemble& en, json& reproduced) {
+Stats write_stats(Context& ctx, const Ensemble& en, Value& reproduced) {
   const Scene& s = ctx.scene;
   const double hl = en.hl;
   const std::size_t Ml = en.Ml;
@@ -207,7 +207,7 @@ void put_summary(Context& ctx, const LJ& lj, const Scan& scan, const Ensemble& e
   const double hl = en.hl;
   const std::size_t Ml = en.Ml;
   const std::int64_t nl = en.nl, every_l = en.every_l;
-  const json& scan_summary = scan.scan_summary;
+  const Value& scan_summary = scan.scan_summary;
   const std::vector<double>& stable = scan.stable;
   const double grid_stiffness = scan.grid_stiffness;
   const std::vector<double>& ts = st.ts;
@@ -217,7 +217,7 @@ void put_summary(Context& ctx, const LJ& lj, const Scan& scan, const Ensemble& e
   const double mu_f = st.mu_f, sigma_f = st.sigma_f, mu_se = st.mu_se, sigma_se = st.sigma_se;
   // The ensemble's H errors after the start (t > 0): H at (p_n, q_n) and at the processed variables.
   std::vector<double> H_later(H_rms.begin() + 1, H_rms.end()), Hhat_later(Hhat_rms.begin() + 1, Hhat_rms.end());
-  const json H_spread = spread_of(H_later), Hhat_spread = spread_of(Hhat_later);
+  const Value H_spread = spread_of(H_later), Hhat_spread = spread_of(Hhat_later);
   double Hhat_variation = 0;
   for (double b : Hhat_later) Hhat_variation = std::max(Hhat_variation, std::abs(b / Hhat_rms[0] - 1));
   std::vector<double> start_stiffness;
@@ -238,7 +238,7 @@ void put_summary(Context& ctx, const LJ& lj, const Scan& scan, const Ensemble& e
       {"Hhat_err_rms", Hhat_spread},
       {"Hhat_err_rms_start", Hhat_rms[0]},           // the offset H(chi_h(p_0, q_0)) - H_0
       {"Hhat_err_rms_variation", Hhat_variation},   // max |rms / its start - 1| over t > 0
-      {"H_over_Hhat_err_rms", H_spread["mean"].get<double>() / Hhat_spread["mean"].get<double>()},
+      {"H_over_Hhat_err_rms", H_spread.at("mean").number() / Hhat_spread.at("mean").number()},
       // H(p^_n, q^_n) - H(p^_0, q^_0): its root mean square at t_end, against sigma of E, and its growth exponent
       {"Hhat_change_rms_final", Hhat_change.back()},
       {"Hhat_change_over_sigma_final", Hhat_change.back() / sigma_f},
@@ -254,15 +254,16 @@ void put_summary(Context& ctx, const LJ& lj, const Scan& scan, const Ensemble& e
   record_fit(ctx.summary, {"lj.Hhat_change_exponent", {"fig6_stats.csv", "t", "Hhat_change_rms"}, "power_law", t_fit, ts.back(), "lj.fit_from"});
   // the smallest step of the scan: the median of its largest errors of H
   const auto hs = s.reals("lj.h_scan");
-  const auto smallest = std::min_element(hs.begin(), hs.end()) - hs.begin();
-  if (scan_summary[smallest].contains("max_H_err"))
-    ctx.summary["lj"]["smallest_step"] = {{"h", hs[smallest]}, {"max_H_err_median", scan_summary[smallest]["max_H_err"]["median"]}};
+  const auto smallest = static_cast<std::size_t>(std::min_element(hs.begin(), hs.end()) - hs.begin());
+  if (scan_summary.at(smallest).contains("max_H_err"))
+    ctx.summary["lj"]["smallest_step"] = {{"h", hs[smallest]},
+                                          {"max_H_err_median", scan_summary.at(smallest).at("max_H_err").at("median")}};
 }
 
 void run_lj(Context& ctx) {
   ctx.progress("Fig. 6: Lennard-Jones cluster");
   const LJ lj;
-  json reproduced;
+  Value reproduced;
   const Scan scan = scan_steps(ctx, lj, reproduced);
   const Ensemble en = integrate_ensemble(ctx, lj);
   const Stats st = write_stats(ctx, en, reproduced);
@@ -276,7 +277,6 @@ void run_lj(Context& ctx) {
        {"threads", ctx.threads},
        {"fig6_steps", static_cast<double>(Ml) * static_cast<double>(nl)},
        {"fig6_ns_per_step_thread", 1e9 * wall6 * ctx.threads / (static_cast<double>(Ml) * static_cast<double>(nl))}});
-  put_differences(ctx, "lj");
 }
 
 // Fig. 6: lj.h below the bound at the stiffness of the unperturbed grid (omega^2 = 86.8; the perturbed starts and

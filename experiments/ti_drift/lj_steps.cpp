@@ -49,7 +49,7 @@ void run_lj_steps(Context& ctx) {
                              ": E of trajectory " + std::to_string(task % M) + " is not finite at t = " + format_double(T));
   Csv out({"h", "mu", "sigma", "sigma_stderr"});
   std::vector<double> log_h, log_sigma;
-  json per_h = json::array();
+  Value per_h = Value::list();
   for (std::size_t k = 0; k < hs.size(); ++k) {
     const MeanDeviation md = mean_and_deviation(std::span<const double>(err.data() + k * M, M));
     out.row(hs[k], md.mean, md.sd, standard_error_of_deviation(md.sd, static_cast<double>(M)));
@@ -67,7 +67,7 @@ void run_lj_steps(Context& ctx) {
   for (double x : log_h) sxx += (x - mean_log_h) * (x - mean_log_h);
   const double rel_se = standard_error_of_deviation(1.0, static_cast<double>(M));
   const double printed_sigma = ctx.published_value("lj_sigma_final"), printed_gamma = ctx.published_value("lj_sigma_exponent");
-  const double printed_t = ctx.published("lj_sigma_final").requires_.at("lj.t_end").get<double>();
+  const double printed_t = ctx.published_requirement("lj_sigma_final", "lj.t_end");
   const double printed_h = ctx.published_value("lj_h");
   const double carry = std::pow(printed_t / T, printed_gamma);  // sigma(printed t) / sigma(T) of the random walk
   const double implied_h = std::exp((std::log(printed_sigma / carry) - fit.intercept) / fit.slope);

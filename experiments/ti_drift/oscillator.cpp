@@ -145,9 +145,9 @@ void write_closed_forms(Context& ctx) {
 
 // The fitted orders (summary orders) and the equal work (summary equal_work); returns the summary of the
 // study begun.
-json fit_orders(Context& ctx, const std::vector<Method>& methods, const Z1& z0) {
+Value fit_orders(Context& ctx, const std::vector<Method>& methods, const Z1& z0) {
   const Scene& s = ctx.scene;
-  json orders, evals, eff_bound, labels = json::array(), points, fit_points, roundoff, largest;
+  Value orders, evals, eff_bound, labels = Value::list(), points, fit_points, roundoff, largest;
   for (const auto& m : methods) {
     for (const bool energy : {false, true}) {
       const std::string name = m.label + (energy ? "_energy" : "_solution");
@@ -161,7 +161,7 @@ json fit_orders(Context& ctx, const std::vector<Method>& methods, const Z1& z0) 
                        roundoff_floor());
       fit_points[name] = fit.points;
       for (std::size_t i = 0; i < h.size(); ++i)  // the largest step whose error is at the round-off plateau
-        if (!fit.used[i] && (!roundoff.contains(name) || h[i] > roundoff[name].get<double>())) roundoff[name] = h[i];
+        if (!fit.used[i] && (!roundoff.contains(name) || h[i] > roundoff.at(name).number())) roundoff[name] = h[i];
     }
     evals[m.label] = m.evals;
     eff_bound[m.label] = m.bound * 2 / static_cast<double>(m.evals);  // in omega h_eff
@@ -174,23 +174,23 @@ json fit_orders(Context& ctx, const std::vector<Method>& methods, const Z1& z0) 
   ctx.summary["equal_work"] = {{"evals_per_step", evals}, {"omega_h_eff_bound", eff_bound}, {"methods", labels}};
 
   const auto omega_h = s.reals("oscillator.omega_h");
-  json bounds;
+  Value bounds;
   for (const auto& m : methods) bounds[m.label] = m.bound;
-  json o = {{"omega", kOscillator.w},
-            {"start", {{"q", z0.q[0]}, {"p", z0.p[0]}}},
-            {"omega_h_bound", bounds},  // each method's own bound in omega h (the registry's)
-            {"omega_h_eff", range_of(omega_h)},
-            {"points", points},
-            {"fit", {{"max_omega_h", kFitMaxOmegaH}, {"floor", roundoff_floor()}, {"points", fit_points}}},
-            {"roundoff_omega_h", roundoff},
-            {"largest_step", largest}};
+  Value o = {{"omega", kOscillator.w},
+             {"start", {{"q", z0.q[0]}, {"p", z0.p[0]}}},
+             {"omega_h_bound", bounds},  // each method's own bound in omega h (the registry's)
+             {"omega_h_eff", range_of(omega_h)},
+             {"points", points},
+             {"fit", {{"max_omega_h", kFitMaxOmegaH}, {"floor", roundoff_floor()}, {"points", fit_points}}},
+             {"roundoff_omega_h", roundoff},
+             {"largest_step", largest}};
   o["omega_h_eff"]["count"] = omega_h.size();
   return o;
 }
 
 // The sampled maxima against the closed forms (each method at its own step w h = w h_eff e / 2).
-void compare_closed_forms(json& o, const std::vector<Method>& methods) {
-  json closed;
+void compare_closed_forms(Value& o, const std::vector<Method>& methods) {
+  Value closed;
   for (const auto& m : methods) {
     double deviation = 0, ratio = std::numeric_limits<double>::infinity(), at = 0;
     for (const auto& p : m.pts) {
@@ -212,7 +212,7 @@ std::vector<Method>::const_iterator find_label(const std::vector<Method>& method
 }
 
 // TI against Stormer-Verlet at equal work, where both run; the report's example step.
-void compare_ti_sv(json& o, const std::vector<Method>& methods) {
+void compare_ti_sv(Value& o, const std::vector<Method>& methods) {
   if (const auto sv = find_label(methods, "sv"), ti = find_label(methods, "ti"); sv != methods.end() && ti != methods.end()) {
     int common = 0, better_energy = 0, better_global = 0;
     for (const auto& a : ti->pts)
@@ -222,7 +222,7 @@ void compare_ti_sv(json& o, const std::vector<Method>& methods) {
     const auto near = std::min_element(sv->pts.begin(), sv->pts.end(), [](const Pt& a, const Pt& b) {
       return std::abs(a.h - kExampleOmegaH) < std::abs(b.h - kExampleOmegaH);
     });
-    json example = {{"omega_h", near->h}};
+    Value example = {{"omega_h", near->h}};
     for (const auto& m : methods)
       for (const auto& p : m.pts)
         if (p.h == near->h) example[m.label] = {{"max_global_err", p.g}, {"max_rel_H_err", p.e}};
@@ -231,7 +231,7 @@ void compare_ti_sv(json& o, const std::vector<Method>& methods) {
 }
 
 // The stability bound of TI: where the spectral radius of its one-step matrix (the kernel's) leaves 1.
-void bisect_ti_bound(Context& ctx, json& o) {
+void bisect_ti_bound(Context& ctx, Value& o) {
   const auto radius = [&](double wh) {
     return spectral_radius(one_step_matrix(one_step_by_name("takahashi_imada", kOscillator, Bind::kernel), wh));
   };
@@ -246,10 +246,10 @@ void bisect_ti_bound(Context& ctx, json& o) {
 
 // 004 Sect. 1.4 as printed: SV "stable only for w h <= 2"; TI's error "remains bounded (converges to one)"
 // as w h -> 2 sqrt(3), which holds for the start q0 = 0 only: from p0 = 0, at the largest w h_eff TI runs.
-void sect14_as_printed(json& o, const std::vector<Method>& methods, double T1) {
+void sect14_as_printed(Value& o, const std::vector<Method>& methods, double T1) {
   o["sv_growth_exponent_at_bound"] = sv_growth_exponent_at_bound(T1);
   if (const auto ti = find_label(methods, "ti"); ti != methods.end()) {
-    const double wh = o["largest_step"]["ti"]["omega_h"];
+    const double wh = o.at("largest_step").at("ti").at("omega_h").number();
     const Z1 rest = make_state(1.0, 0.0);
     o["from_rest"] = {{"start", {{"q", rest.q[0]}, {"p", rest.p[0]}}},
                       {"omega_h", wh},
@@ -265,7 +265,7 @@ void run_oscillator(Context& ctx) {
   const double T1 = s.real("oscillator.t_omega");
   const std::vector<Method> methods = integrate_methods(ctx, z0, T1);
   write_closed_forms(ctx);
-  json o = fit_orders(ctx, methods, z0);
+  Value o = fit_orders(ctx, methods, z0);
   compare_closed_forms(o, methods);
   compare_ti_sv(o, methods);
   bisect_ti_bound(ctx, o);
@@ -273,7 +273,6 @@ void run_oscillator(Context& ctx) {
   ctx.summary["oscillator"] = o;
   record_unfittable(ctx.summary, "oscillator.sv_growth_exponent_at_bound",
                     "the run of Stormer-Verlet on its bound is not written to a CSV (only its growth exponent is reported)");
-  put_differences(ctx, "oscillator");
 }
 
 StudyPlan plan_oscillator(const Scene& s) {

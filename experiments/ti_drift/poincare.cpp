@@ -151,13 +151,13 @@ Crossings cut_trajectory(Context& ctx, const HH& hhk, const Trajectory& run, con
 }
 
 // Each window: its cuts, and the error of E of the trajectory at its ends (output times).
-json window_summary(const Context& ctx, const Trajectory& run, const std::vector<double>& e, const Windows& win,
-                    Crossings& x) {
+Value window_summary(const Context& ctx, const Trajectory& run, const std::vector<double>& e, const Windows& win,
+                     Crossings& x) {
   const std::size_t ns = run.ns, windows = win.windows, compared = win.compared, per = win.per;
   const std::size_t steep = win.steep, flat = win.flat;
   const double tw = win.tw;
   auto& cuts = x.cuts;
-  json poincare = {{"windows", windows}, {"windows_compared", compared}};
+  Value poincare = {{"windows", windows}, {"windows_compared", compared}};
   for (const auto& [label, w] : {std::pair{"growth", steep}, std::pair{"no_growth", flat}}) {
     const Cuts& c = cuts[label];
     const double E_lo = e[w * per], E_hi = e[(w + 1) * per < ns ? (w + 1) * per : ns - 1];
@@ -173,9 +173,9 @@ json window_summary(const Context& ctx, const Trajectory& run, const std::vector
                        {"E_err_change", E_hi - E_lo},
                        {"E_err_slope", (E_hi - E_lo) / tw}};
     // The printed window (published.toml: poincare_<label>): its length and cuts per unit time.
-    const json& printed_window = ctx.published("poincare_" + std::string(label)).value;
-    const double length = printed_window["t_end"].get<double>() - printed_window["t_start"].get<double>();
-    poincare["printed"][label] = {{"length", length}, {"cuts_per_time", printed_window["cuts"].get<double>() / length}};
+    const Value printed_window = ctx.published_values("poincare_" + std::string(label));
+    const double length = printed_window.at("t_end").number() - printed_window.at("t_start").number();
+    poincare["printed"][label] = {{"length", length}, {"cuts_per_time", printed_window.at("cuts").number() / length}};
   }
   return poincare;
 }
@@ -183,8 +183,8 @@ json window_summary(const Context& ctx, const Trajectory& run, const std::vector
 // The episodes against (4.3): dE/dt = -h^4/2880 U^(5)(p^5) = h^4/120 p2^5 for k = 5 (U_22222 = -24): E rises where
 // the time average of p2^5 over the episode is positive. The change (4.3) predicts, h sum_n dE/dt(p_n, q_n) over the
 // episode's steps, against the recorded change; and the share of the cuts, and of the steps, with p2 < 0.
-json episode_summary(const Scene& s, const Trajectory& run, const std::vector<double>& e, const Episodes& found,
-                     const Crossings& x) {
+Value episode_summary(const Scene& s, const Trajectory& run, const std::vector<double>& e, const Episodes& found,
+                      const Crossings& x) {
   const std::size_t ns = run.ns;
   const double sample_dt = found.sample_dt;
   const std::size_t half = found.half, min_samples = found.min_samples;
@@ -201,7 +201,7 @@ json episode_summary(const Scene& s, const Trajectory& run, const std::vector<do
   };
   double worst_rel = 0;
   int cut_sign_positive = 0;  // growths with a majority of cuts at p2 > 0 and declines with a majority at p2 < 0
-  json eps = json::array();
+  Value eps = Value::list();
   Cuts growth_all, decline_all;
   int agree = 0;
   double growth_time = 0;
@@ -236,32 +236,32 @@ json episode_summary(const Scene& s, const Trajectory& run, const std::vector<do
                    {"sign_agrees_with_43", agrees}});
   }
   const Cuts& rest = ep_cuts[episodes.size()];
-  json ep_summary = {{"rule", {{"half_width", static_cast<double>(half) * sample_dt},
-                               {"half_width_samples", half},
-                               {"threshold", s.real("ensemble.episode_threshold")},
-                               {"min_length", static_cast<double>(min_samples) * sample_dt},
-                               {"slope_median", slope_sn.centre},
-                               {"slope_noise", slope_sn.noise}}},
-                     {"count", episodes.size()},
-                     {"sign_agrees_with_43", agree},                 // episodes whose recorded change has the sign of (4.3)
-                     {"max_rel_difference_from_43", worst_rel},       // max |predicted / recorded - 1| over the episodes
-                     {"cut_majority_on_side_of_change", cut_sign_positive},
-                     {"growth_time", growth_time},
-                     {"list", eps},
-                     {"growth", {{"cuts", growth_all.count}, {"share_p2_negative", share(growth_all)}}},
-                     {"decline", {{"cuts", decline_all.count}, {"share_p2_negative", share(decline_all)}}},
-                     {"complement", {{"cuts", rest.count}, {"share_p2_negative", share(rest)},
-                                     {"share_time_p2_negative", time_share(episodes.size())},
-                                     {"mean_p2", rest.count ? rest.p2_sum / static_cast<double>(rest.count) : 0.0},
-                                     {"E_change_predicted", ep_predicted[episodes.size()]}}}};
-  if (longest < episodes.size()) ep_summary["longest_growth"] = eps[longest];
+  Value ep_summary = {{"rule", {{"half_width", static_cast<double>(half) * sample_dt},
+                                {"half_width_samples", half},
+                                {"threshold", s.real("ensemble.episode_threshold")},
+                                {"min_length", static_cast<double>(min_samples) * sample_dt},
+                                {"slope_median", slope_sn.centre},
+                                {"slope_noise", slope_sn.noise}}},
+                      {"count", episodes.size()},
+                      {"sign_agrees_with_43", agree},                 // episodes whose recorded change has the sign of (4.3)
+                      {"max_rel_difference_from_43", worst_rel},       // max |predicted / recorded - 1| over the episodes
+                      {"cut_majority_on_side_of_change", cut_sign_positive},
+                      {"growth_time", growth_time},
+                      {"list", eps},
+                      {"growth", {{"cuts", growth_all.count}, {"share_p2_negative", share(growth_all)}}},
+                      {"decline", {{"cuts", decline_all.count}, {"share_p2_negative", share(decline_all)}}},
+                      {"complement", {{"cuts", rest.count}, {"share_p2_negative", share(rest)},
+                                      {"share_time_p2_negative", time_share(episodes.size())},
+                                      {"mean_p2", rest.count ? rest.p2_sum / static_cast<double>(rest.count) : 0.0},
+                                      {"E_change_predicted", ep_predicted[episodes.size()]}}}};
+  if (longest < episodes.size()) ep_summary["longest_growth"] = eps.at(longest);
   return ep_summary;
 }
 
 // Fig. 5 of the trajectory (fig5_episodes.csv, fig5_poincare.csv, fig5_episode_cuts.csv, summary.reproduced);
 // returns summary.poincare.
 template <class HH>
-json write_fig5(Context& ctx, const HH& hhk, const Trajectory& run) {
+Value write_fig5(Context& ctx, const HH& hhk, const Trajectory& run) {
   ctx.progress("Fig. 5: Poincare cuts");
   const auto& e = run.e;
   const Windows win = choose_windows(run, e);
@@ -269,12 +269,13 @@ json write_fig5(Context& ctx, const HH& hhk, const Trajectory& run) {
   const double tw = win.tw;
   const Episodes found = find_episodes(ctx, run, e);
   Crossings x = cut_trajectory(ctx, hhk, run, win, found);
-  json reproduced;
+  Value reproduced;
   reproduced["poincare_trajectory"] = run.index;
-  reproduced["poincare_windows"] = {{"growth", {static_cast<double>(steep) * tw, static_cast<double>(steep + 1) * tw}},
-                                    {"no_growth", {static_cast<double>(flat) * tw, static_cast<double>(flat + 1) * tw}}};
+  reproduced["poincare_windows"] = {
+      {"growth", std::vector<double>{static_cast<double>(steep) * tw, static_cast<double>(steep + 1) * tw}},
+      {"no_growth", std::vector<double>{static_cast<double>(flat) * tw, static_cast<double>(flat + 1) * tw}}};
   merge(ctx.summary, "reproduced", reproduced);
-  json poincare = window_summary(ctx, run, e, win, x);
+  Value poincare = window_summary(ctx, run, e, win, x);
   poincare["episodes"] = episode_summary(ctx.scene, run, e, found, x);
   ctx.write("fig5_episode_cuts.csv", x.f5c);
   return poincare;
@@ -290,7 +291,6 @@ void run_poincare(Context& ctx, const LargestError& largest) {
   }
   const Trajectory& worst = largest ? *largest : *own;
   with_ensemble_system(ctx.scene, [&](const auto& hhk) { ctx.summary["poincare"] = write_fig5(ctx, hhk, worst); });
-  put_differences(ctx, "poincare");
 }
 
 void check_poincare(const Scene& s) {
@@ -308,9 +308,9 @@ StudyPlan plan_poincare(const Scene& s) {
   const double rows = kept_samples(n, static_cast<double>(s.integer("samples")));
   const double evals = static_cast<double>(evals_per_step("simplified_takahashi_imada"));
   const StudyPlan taken{n, n * evals, rows * 8 + rows * 200, kNsPerStepHH,
-                        std::string("the trajectory of the ensemble study of this run; ") + kNsNote};
+                        "the trajectory of the ensemble study of this run; " + std::string(kNsNote)};
   StudyPlan alone{(M + 1) * n, (M + 1) * n * evals, M * rows * 8 + rows * 200, kNsPerStepLanesHH,
-                  std::string("the ensemble integrated again (without the ensemble study); ") + kNsLanesNote,
+                  "the ensemble integrated again (without the ensemble study); " + std::string(kNsLanesNote),
                   static_cast<double>(lane_batches(static_cast<std::size_t>(M)))};  // (tasks: batches of lanes)
   alone.reuses = "ensemble", alone.when_reusing = std::make_shared<const StudyPlan>(taken);
   return alone;

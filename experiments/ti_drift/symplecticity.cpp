@@ -25,7 +25,7 @@ HenonHeiles symplecticity_system(const Scene& s) { return {{}, static_cast<int>(
 // 004 Sect. 3.3 as printed: q_{n+1} of (1.6) = q_{n+1} of (1.4) + 1/4 h^6 alpha^2 f''(f, f)(q_{n+1/2}) + O(h^8),
 // both from the same (p_n, q_n). The remainder after the printed term, one step at h / 2^j (j < 4) from z,
 // with the term at q_{n+1/2} = (q_n + q_{n+1}) / 2 as printed, and at q_n.
-json sect33_remainders(const HenonHeiles& hh, const Z2& z, double h) {
+Value sect33_remainders(const HenonHeiles& hh, const Z2& z, double h) {
   std::vector<double> hs, at_mid, at_start;
   for (int j = 0; j < 4; ++j) {
     const double hj = h / std::pow(2.0, j);
@@ -47,14 +47,14 @@ void run_symplecticity(Context& ctx) {
   const HenonHeiles hh = symplecticity_system(s);
   const Z2 z = hh_start(hh, s.real("symplecticity.q2"), s.real("symplecticity.p2"), s.real("hh.H0"));
   const double h = s.real("h"), d = s.real("symplecticity.fd_step");
-  json reproduced;
+  Value reproduced;
   for (const auto& m : s.texts("symplecticity.methods")) {
     const Mat<4> J = step_jacobian_fd(one_step_by_name(m, hh, Bind::kernel), z, h, d);
     reproduced[label_of(m) + "_symplecticity_defect"] = symplecticity_defect(J);
     reproduced[label_of(m) + "_det_minus_one"] = J.determinant() - 1.0;
   }
   merge(ctx.summary, "reproduced", reproduced);
-  const json sect33 = sect33_remainders(hh, z, h);
+  const Value sect33 = sect33_remainders(hh, z, h);
   ctx.summary["sect33"] = sect33;
   record_unfittable(ctx.summary, "sect33.order_at_midpoint", "the one-step remainders of Sect. 3.3 are not written to a CSV");
   ctx.summary["symplecticity"] = {{"p1", z.p[0]}};

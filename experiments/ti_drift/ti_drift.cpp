@@ -19,14 +19,6 @@ namespace geomint::ti_drift {
 
 double slope(const std::vector<double>& x, const std::vector<double>& y) { return linear_fit(x, y).slope; }
 
-void put_differences(Context& ctx, const std::string& study) {
-  for (const Published& e : ctx.published_entries) {
-    const json* r = json_at(ctx.summary, e.summary);
-    if (e.study == study && e.value.is_number() && r && r->is_number())
-      ctx.summary["difference_from_published"][e.key] = r->get<double>() - e.value.get<double>();
-  }
-}
-
 std::int64_t evals_per_step(const std::string& method) {
   std::int64_t n = 0;  // counted from z_0 on: one kernel step (the kernel's processors evaluate no force)
   MethodsOn<Counting<HarmonicOscillator>>::integrate(

@@ -1,26 +1,24 @@
 #pragma once
 // ti_drift: 004 (On energy conservation of the simplified Takahashi-Imada method) Figs 1-6, the
 // symplecticity check and the cost of the methods. One study per file beside this one (main.cpp lists
-// them); here what several of them share: the phase-space types, the summary and published-value
-// helpers, the oscillator of Fig. 1 (whose force evaluations per step every --plan counts), the
-// Lennard-Jones starts of Fig. 6, the step checks and the --plan constants. The Henon-Heiles starts
-// and their checks: henon_heiles_starts.hpp.
+// them); here what several of them share: the phase-space types, the summary helper, the oscillator
+// of Fig. 1 (whose force evaluations per step every --plan counts), the Lennard-Jones starts of Fig. 6,
+// the step checks and the --plan constants. The Henon-Heiles starts and their checks:
+// henon_heiles_starts.hpp.
 #include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "geomint/core/state.hpp"
 #include "geomint/runner/experiment.hpp"
+#include "geomint/runner/results.hpp"
 #include "geomint/runner/summary.hpp"
 #include "geomint/systems/harmonic_oscillator.hpp"
 #include "geomint/systems/lennard_jones.hpp"
 
 namespace geomint::ti_drift {
 
-using json = nlohmann::ordered_json;
 using Z1 = PhaseState<1>;
 using Z2 = PhaseState<2>;
 
@@ -45,11 +43,6 @@ Study kernel_timing_study();   // cost: ns per step of each method              
 
 // The slope of the least-squares line through (x, y).
 double slope(const std::vector<double>& x, const std::vector<double>& y);
-
-// summary.difference_from_published.<key> = reproduced - published for every entry of the study with a
-// number on both sides (the runner's comparisons give the difference relative where the comparison is
-// relative, and none where the value is only reported).
-void put_differences(Context& ctx, const std::string& study);
 
 // ---- The systems
 

@@ -21,6 +21,7 @@
 #include "geomint/analysis/work_precision.hpp"
 #include "geomint/analysis/work_precision_set.hpp"
 #include "geomint/geometry/convex_area.hpp"
+#include "geomint/runner/results_json.hpp"
 
 using namespace geomint;
 
@@ -150,7 +151,7 @@ WorkPrecisionSet two_methods() {
 }
 
 TEST(WorkPrecisionSet, SummaryInTheOneShape) {
-  const auto s = two_methods().summary({1e-3, 1e-9});
+  const auto s = to_json(two_methods().summary({1e-3, 1e-9}));
   EXPECT_EQ(s["methods"], nlohmann::ordered_json({"a", "b"}));
   EXPECT_EQ(s["equal_wall_s"].get<double>(), 0.05);  // b's largest wall time 1e-1 / 2
   EXPECT_EQ(s["equal_evals"].get<double>(), 200.0);  // a's largest: 2 evaluations per step, 100 steps
@@ -182,7 +183,7 @@ TEST(WorkPrecisionSet, CsvHasOneRowPerRecord) {
 // Each method's time per step at its smallest h against the first's, with the force evaluations per
 // step as the work: b at half a's time per step but spreads of 100 %: indistinguishable.
 TEST(WorkPrecisionSet, RelativeTimePerStepKnowsTheNoise) {
-  const auto r = two_methods().relative_ns_per_step();
+  const auto r = to_json(two_methods().relative_ns_per_step());
   EXPECT_EQ(r["reference"], "a");
   EXPECT_DOUBLE_EQ(r["by_method"]["b"]["ratio"].get<double>(), 0.5);
   EXPECT_DOUBLE_EQ(r["by_method"]["b"]["interval"]["min"].get<double>(), 0.75 * 0.5 / 1.75);
@@ -211,8 +212,8 @@ TEST(WorkPrecisionSet, TimesAMethodOfFixedWorkPerStepAtItsEnds) {
   const RunTime expect = affine_in_steps(r[2].wall, 10, r[4].wall, 1000, 300);
   EXPECT_EQ(r[6].wall.median_s, expect.median_s);
   EXPECT_EQ(r[6].wall.q3_s, expect.q3_s);
-  EXPECT_EQ(set.summary({})["by_method"]["fixed"]["timed_runs"], 2);
-  EXPECT_EQ(set.summary({})["spread"]["measurements"], 8);  // the timed runs only
+  EXPECT_EQ(set.summary({})["by_method"]["fixed"]["timed_runs"].integer(), 2);
+  EXPECT_EQ(set.summary({})["spread"]["measurements"].integer(), 8);  // the timed runs only
   const Csv csv = set.csv();
   EXPECT_NE(csv.str().find("\nfixed,0.01,100,"), std::string::npos);
 }
@@ -280,10 +281,10 @@ ConvergenceStudy two_conditions() {
 TEST(ConvergenceStudy, FitsEachColumnPerInitialConditionInOneShape) {
   ConvergenceStudy conv = two_conditions();
   conv.fit("a_energy", "a_err", 1e-13).fit("a_energy_high", "a_err", [](std::size_t i) { return i == 0 ? 1e-13 : 1e-7; });
-  EXPECT_NEAR(conv.orders()["a_energy"].get<double>(), 2.0, 1e-12);
-  EXPECT_NEAR(conv.orders(1)["a_energy"].get<double>(), 4.0, 1e-12);
-  EXPECT_NEAR(conv.fits()["a_energy"]["log10_c"].get<double>(), std::log10(3.0), 1e-12);
-  EXPECT_EQ(conv.fits(1)["a_energy"]["points"], 4);
+  EXPECT_NEAR(conv.orders().at("a_energy").number(), 2.0, 1e-12);
+  EXPECT_NEAR(conv.orders(1).at("a_energy").number(), 4.0, 1e-12);
+  EXPECT_NEAR(conv.fits().at("a_energy").at("log10_c").number(), std::log10(3.0), 1e-12);
+  EXPECT_EQ(conv.fits(1).at("a_energy").at("points").integer(), 4);
   EXPECT_EQ(conv.order("a_energy_high", 1).points, 3);  // h^4 = 2.4e-8 < 1e-7 at the smallest h: left out
   EXPECT_EQ(conv.order("a_energy_high", 1).h_min, 0.025);
   EXPECT_EQ(conv.values("a_evals", 1), (std::vector<double>{20, 40, 80, 160}));
@@ -305,7 +306,7 @@ TEST(ConvergenceStudy, OneInitialConditionHasNoInitialColumn) {
   ConvergenceStudy conv({.csv = "conv.csv", .h = {0.1, 0.05, 0.025}, .steps = {10, 20, 40}});
   conv.column("e", [](std::size_t, std::size_t j) { return 1.0 / static_cast<double>(1 << j); }).fit("e", "e", 0.0);
   EXPECT_EQ(conv.csv().str(), "h,steps,e\n0.10000000000000001,10,1\n0.050000000000000003,20,0.5\n0.025000000000000001,40,0.25\n");
-  EXPECT_NEAR(conv.orders()["e"].get<double>(), 1.0, 1e-12);
+  EXPECT_NEAR(conv.orders().at("e").number(), 1.0, 1e-12);
 }
 
 TEST(ConvergenceStudy, RefusesASeriesWithFewerThanThreePointsAboveItsFloorNamingIt) {

@@ -8,6 +8,7 @@
 
 #include "../hard_case.hpp"
 #include "geomint/runner/published.hpp"
+#include "geomint/runner/results_json.hpp"
 #include "temp_paths.hpp"
 
 using namespace geomint;
@@ -289,6 +290,38 @@ TEST(Published, EachFigureHasOneVerdictFromItsOwnComparisons) {
   apply_figure_verdicts(summary, {"004 Fig. 4", "004 Fig. 5"});
   EXPECT_EQ(summary["figures"].size(), 2u);
   EXPECT_EQ(summary["figures"]["004 Fig. 5"]["verdict"], "partly reproduced");
+}
+
+// What a study reports (runner/results.hpp) reaches summary.json as nlohmann wrote it before: members in
+// the order added, integers as integers (3) and reals as reals (3.0), null for a missing value.
+TEST(Results, WrittenAsJsonWritesIt) {
+  Value v;
+  v["reproduced"]["order"] = 3.0;
+  v["count"] = std::size_t{3};
+  v["shift"] = -2;
+  v["h"] = {{"min", 0.01}, {"max", 0.1}};
+  v["methods"] = std::vector<std::string>{"sv", "ti"};
+  v["none"] = std::optional<double>();
+  v["list"].push_back(1.5);
+  EXPECT_EQ(to_json(v).dump(),
+            R"({"reproduced":{"order":3.0},"count":3,"shift":-2,"h":{"min":0.01,"max":0.1},"methods":["sv","ti"],)"
+            R"("none":null,"list":[1.5]})");
+  EXPECT_EQ(value_of(to_json(v)), v);  // and back, kinds included
+  EXPECT_EQ(v.at("h").at("max").number(), 0.1);
+  EXPECT_EQ(v.at("count").integer(), 3);
+  EXPECT_EQ(v.at("methods").at(1).text(), "ti");
+  EXPECT_TRUE(v.at("none").is_null());
+  EXPECT_THROW(v.at("missing"), std::out_of_range);
+  EXPECT_THROW(v.at("methods").number(), std::logic_error);
+  EXPECT_THROW(v["count"]["x"] = 1, std::logic_error);  // a number is not a record
+}
+
+TEST(Results, MergeAddsMembersAndNothingForNone) {
+  Value summary;
+  merge(summary, "reproduced", {{"a", 1.0}});
+  merge(summary, "reproduced", {{"b", 2.0}, {"a", 3.0}});
+  merge(summary, "orders", Value::record());
+  EXPECT_EQ(to_json(summary).dump(), R"({"reproduced":{"a":3.0,"b":2.0}})");
 }
 
 }  // namespace published_test

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "geomint/runner/results_json.hpp"
 #include "geomint/runner/timing.hpp"
 
 using namespace geomint;
@@ -122,13 +123,13 @@ TEST(TimingProtocol, AMethodDoingMoreWorkTimedFasterIsFlagged) {
 }
 
 TEST(TimingProtocol, RelativeTimingsAgainstTheFirst) {
-  const auto r = relative_timings({"sv", "ti"}, {timing(44, 45.5, 47), timing(40, 60, 110)}, {1, 2});
+  const auto r = to_json(relative_timings({"sv", "ti"}, {timing(44, 45.5, 47), timing(40, 60, 110)}, {1, 2}));
   EXPECT_EQ(r["reference"], "sv");
   EXPECT_EQ(r["by_method"]["sv"]["verdict"], "reference");
   EXPECT_NEAR(r["by_method"]["ti"]["ratio"].get<double>(), 60 / 45.5, 1e-15);
   EXPECT_EQ(r["by_method"]["ti"]["verdict"], "indistinguishable");
   EXPECT_NEAR(r["by_method"]["ti"]["interval"]["min"].get<double>(), 40.0 / 47, 1e-15);
-  EXPECT_EQ(relative_timings({"sv", "ti"}, {timing(44, 45.5, 47), timing(50, 60, 110)}, {1, 2})["by_method"]["ti"]["verdict"],
+  EXPECT_EQ(relative_timings({"sv", "ti"}, {timing(44, 45.5, 47), timing(50, 60, 110)}, {1, 2})["by_method"]["ti"]["verdict"].text(),
             "slower");
   EXPECT_THROW(relative_timings({"sv"}, {}, {1}), std::invalid_argument);
 }

@@ -65,17 +65,17 @@ const OrderFit& ConvergenceStudy::order(const std::string& name, std::size_t i) 
   throw std::logic_error("ConvergenceStudy " + csv_ + ": no order " + name + " of initial condition " + std::to_string(i));
 }
 
-nlohmann::ordered_json ConvergenceStudy::orders(std::size_t i) const {
-  nlohmann::ordered_json out = nlohmann::ordered_json::object();
+Value ConvergenceStudy::orders(std::size_t i) const {
+  Value out = Value::record();
   for (const auto& f : fits_)
     if (f.initial == i) out[f.name] = f.fit.order;
   return out;
 }
 
-nlohmann::ordered_json ConvergenceStudy::fits(std::size_t i) const {
-  nlohmann::ordered_json out = nlohmann::ordered_json::object();
+Value ConvergenceStudy::fits(std::size_t i) const {
+  Value out = Value::record();
   for (const auto& f : fits_)
-    if (f.initial == i) out[f.name] = to_json(f.fit);
+    if (f.initial == i) out[f.name] = to_value(f.fit);
   return out;
 }
 
@@ -122,7 +122,7 @@ void ConvergenceStudy::write(Context& ctx) const {
   }
   merge(ctx.summary, "orders", orders(0));
   if (initial_column_) {
-    nlohmann::ordered_json by_initial = nlohmann::ordered_json::array();
+    Value by_initial = Value::list();
     for (std::size_t i = 0; i < initials_; ++i) by_initial.push_back(orders(i));
     ctx.summary["orders_by_initial"] = by_initial;
   }

@@ -17,10 +17,9 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "geomint/io/csv.hpp"
 #include "geomint/observables/order_fit.hpp"
+#include "geomint/runner/results.hpp"
 
 namespace geomint {
 
@@ -52,8 +51,8 @@ class ConvergenceStudy {
   const std::vector<double>& h() const { return h_; }
   const std::vector<double>& values(const std::string& column, std::size_t i = 0) const;  // by h, of condition i
   const OrderFit& order(const std::string& name, std::size_t i = 0) const;
-  nlohmann::ordered_json orders(std::size_t i = 0) const;  // {name: order} of initial condition i
-  nlohmann::ordered_json fits(std::size_t i = 0) const;    // {name: to_json(fit)}
+  Value orders(std::size_t i = 0) const;  // {name: order} of initial condition i
+  Value fits(std::size_t i = 0) const;    // {name: to_value(fit)}
 
   Csv csv() const;         // <csv>
   Csv orders_csv() const;  // <orders_csv>

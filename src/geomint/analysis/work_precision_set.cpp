@@ -99,16 +99,15 @@ Csv WorkPrecisionSet::csv() const {
   return out;
 }
 
-nlohmann::ordered_json WorkPrecisionSet::summary(const std::vector<double>& targets) const {
-  using json = nlohmann::ordered_json;
+Value WorkPrecisionSet::summary(const std::vector<double>& targets) const {
   const auto labels = methods();
   std::vector<std::vector<CostRun>> curves;
   for (const auto& m : labels) curves.push_back(runs(m));
   const auto wall = equal_cost(curves, &CostRun::wall_s), evals = equal_cost(curves, &CostRun::evals);
-  json by_method = json::object();
+  Value by_method = Value::record();
   for (std::size_t k = 0; k < labels.size(); ++k) {
     const auto& c = curves[k];
-    json m{{"runs", c.size()}, {"timed_runs", std::count_if(records_.begin(), records_.end(), [&](const auto& r) {
+    Value m{{"runs", c.size()}, {"timed_runs", std::count_if(records_.begin(), records_.end(), [&](const auto& r) {
                                   return r.method == labels[k] && r.wall_timed;
                                 })}};
     if (!c.empty()) {
@@ -120,12 +119,12 @@ nlohmann::ordered_json WorkPrecisionSet::summary(const std::vector<double>& targ
       m["ns_per_step_spread"] = per_step.spread();
       m["evals_per_step"] = finest.evals / finest.steps;
     }
-    m["err_at_equal_wall"] = wall ? or_null(error_at_cost(c, *wall, &CostRun::wall_s)) : json(nullptr);
-    m["err_at_equal_evals"] = evals ? or_null(error_at_cost(c, *evals, &CostRun::evals)) : json(nullptr);
-    m["wall_s_to"] = json::array(), m["evals_to"] = json::array();
+    m["err_at_equal_wall"] = wall ? Value(error_at_cost(c, *wall, &CostRun::wall_s)) : Value();
+    m["err_at_equal_evals"] = evals ? Value(error_at_cost(c, *evals, &CostRun::evals)) : Value();
+    m["wall_s_to"] = Value::list(), m["evals_to"] = Value::list();
     for (double t : targets) {
-      m["wall_s_to"].push_back(or_null(cost_to_reach(c, t, &CostRun::wall_s)));
-      m["evals_to"].push_back(or_null(cost_to_reach(c, t, &CostRun::evals)));
+      m["wall_s_to"].push_back(cost_to_reach(c, t, &CostRun::wall_s));
+      m["evals_to"].push_back(cost_to_reach(c, t, &CostRun::evals));
     }
     by_method[labels[k]] = m;
   }
@@ -133,8 +132,8 @@ nlohmann::ordered_json WorkPrecisionSet::summary(const std::vector<double>& targ
   for (const auto& r : records_)
     if (r.wall_timed) spreads.add(r.wall);
   return {{"error", error_},         {"methods", labels},      {"targets", targets},
-          {"equal_wall_s", or_null(wall)}, {"equal_evals", or_null(evals)}, {"by_method", by_method},
-          {"spread", spreads.to_json()}};
+          {"equal_wall_s", wall}, {"equal_evals", evals}, {"by_method", by_method},
+          {"spread", spreads.to_value()}};
 }
 
 const WorkPrecisionRecord& WorkPrecisionSet::finest_run(const std::string& method) const {
@@ -145,7 +144,7 @@ const WorkPrecisionRecord& WorkPrecisionSet::finest_run(const std::string& metho
   return *finest;
 }
 
-nlohmann::ordered_json WorkPrecisionSet::relative_ns_per_step() const {
+Value WorkPrecisionSet::relative_ns_per_step() const {
   std::vector<RunTime> per_step;
   std::vector<double> work;
   const auto labels = methods();

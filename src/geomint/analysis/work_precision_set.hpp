@@ -12,7 +12,6 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
 
 #include "geomint/analysis/work_precision.hpp"
 #include "geomint/io/csv.hpp"
@@ -61,10 +60,10 @@ class WorkPrecisionSet {
   // smallest h), err_at_equal_wall,
   // err_at_equal_evals, wall_s_to, evals_to (per target; null where the measured steps do not reach it)}},
   // timed_runs (of its runs, those timed)}}, spread (of every timed run: runner/timing_report.hpp)}.
-  nlohmann::ordered_json summary(const std::vector<double>& targets) const;
+  Value summary(const std::vector<double>& targets) const;
   // Each method's time per step at its smallest h against the first method's (relative_timings,
   // runner/timing_report.hpp), the force evaluations per step as the work.
-  nlohmann::ordered_json relative_ns_per_step() const;
+  Value relative_ns_per_step() const;
 
  private:
   std::string error_;

@@ -37,7 +37,7 @@ OrderFit fit_order(std::span<const double> h, std::span<const double> err, doubl
   return fit;
 }
 
-nlohmann::ordered_json to_json(const OrderFit& f) {
+Value to_value(const OrderFit& f) {
   return {{"order", f.order}, {"log10_c", f.log10_c}, {"r2", f.r2}, {"points", f.points},
           {"h_min", f.h_min}, {"h_max", f.h_max}};
 }

@@ -4,9 +4,8 @@
 #include <span>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "geomint/core/numerical_failure.hpp"
+#include "geomint/runner/results.hpp"
 
 namespace geomint {
 
@@ -30,6 +29,6 @@ OrderFit fit_order(std::span<const double> h, std::span<const double> err, doubl
                   const char* what = "fit_order");
 
 // The fit as summary.json reports it: order, log10_c, r2, points, h_min, h_max.
-nlohmann::ordered_json to_json(const OrderFit& f);
+Value to_value(const OrderFit& f);
 
 }  // namespace geomint

@@ -98,10 +98,10 @@ CheckpointLog::CheckpointLog(const Context& ctx, const CheckpointSpec& spec, std
       log_(ctx.out.path() / (name_ + kLogSuffix)),
       n_(n),
       run_id_(new_run_id()) {
-  identity_ = {{"format", kFormat},       {"experiment", ctx.experiment},
+  identity_ = std::make_shared<const json>(json{{"format", kFormat},       {"experiment", ctx.experiment},
                {"study", ctx.study},      {"name", name_},
                {"scene", scene_slice(ctx.scene, spec.keys.empty() ? task_keys(ctx.reads) : spec.keys)}, {"build", build_info()},
-               {"n", n}};
+               {"n", n}});
 }
 
 void CheckpointLog::refuse(const fs::path& file, const std::string& why) const {
@@ -149,21 +149,21 @@ CheckpointLog::Records CheckpointLog::load_here(bool resume) {
   for (const char* field : {"format", "experiment", "study", "name", "scene", "build", "n", "run_id", "tasks_done",
                             "log_bytes", "log_crc32c"})
     if (!h.contains(field)) refuse(header_, std::string("no field ") + field);
-  if (h["format"] != identity_["format"])
+  if (h["format"] != (*identity_)["format"])
     refuse(header_, "format is " + shown(h["format"]) + ", this binary reads format " + std::to_string(kFormat));
   for (const char* field : {"experiment", "study", "name"})
-    if (h[field] != identity_[field])
-      refuse(header_, std::string(field) + " is " + shown(h[field]) + ", not " + shown(identity_[field]));
-  for (const auto& [key, value] : identity_["build"].items())
+    if (h[field] != (*identity_)[field])
+      refuse(header_, std::string(field) + " is " + shown(h[field]) + ", not " + shown((*identity_)[field]));
+  for (const auto& [key, value] : (*identity_)["build"].items())
     if (!h["build"].is_object() || !h["build"].contains(key) || h["build"][key] != value)
       refuse(header_, "written by another binary: build." + key + " is " +
                           (h["build"].is_object() && h["build"].contains(key) ? shown(h["build"][key]) : "missing") +
                           ", this binary's " + shown(value));
-  if (h["scene"] != identity_["scene"]) {  // a run of other scene values: nothing of it applies
+  if (h["scene"] != (*identity_)["scene"]) {  // a run of other scene values: nothing of it applies
     reset();
     return records;
   }
-  if (h["n"] != identity_["n"]) refuse(header_, "n is " + shown(h["n"]) + ", not the " + std::to_string(n_) + " tasks of " + name_);
+  if (h["n"] != (*identity_)["n"]) refuse(header_, "n is " + shown(h["n"]) + ", not the " + std::to_string(n_) + " tasks of " + name_);
   if (!h["tasks_done"].is_number_unsigned() || h["tasks_done"].get<std::uint64_t>() > n_)
     refuse(header_, "tasks_done is " + shown(h["tasks_done"]) + ": it must be an integer in [0, " + std::to_string(n_) +
                         "], the tasks of " + name_);
@@ -270,7 +270,7 @@ void CheckpointLog::append(std::span<const double> values, std::span<const std::
   write_all(fd, raw.data(), raw.size(), log_);
   if (::fsync(fd) != 0 || ::close(fd) != 0) throw OutputError("cannot write " + log_.string() + ": " + std::strerror(errno));
   tasks_done_ += lengths.size(), log_bytes_ += raw.size(), log_crc_ = crc32c(raw.data(), raw.size(), log_crc_);
-  json h = identity_;
+  json h = *identity_;
   h["run_id"] = hex16(run_id_), h["tasks_done"] = tasks_done_, h["log_bytes"] = log_bytes_, h["log_crc32c"] = log_crc_;
   write_file_atomic(header_, h.dump(1) + "\n");
   g_write_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

@@ -27,13 +27,14 @@
 #include <cstdint>
 #include <exception>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <span>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>
 
 #include "geomint/runner/distributed_map.hpp"
 #include "geomint/runner/experiment.hpp"
@@ -80,7 +81,7 @@ class CheckpointLog {
 
   std::string name_;
   std::filesystem::path header_, log_;
-  nlohmann::ordered_json identity_;  // the header less tasks_done and log_bytes
+  std::shared_ptr<const nlohmann::ordered_json> identity_;  // the header less tasks_done and log_bytes
   std::size_t n_, tasks_done_ = 0;
   std::uint64_t log_bytes_ = 0;
   std::uint64_t run_id_ = 0;   // of the run that began the log (a resumed run continues it)

@@ -24,6 +24,7 @@
 #include "geomint/io/run_info.hpp"
 #include "geomint/runner/checkpoint.hpp"
 #include "geomint/runner/published.hpp"
+#include "geomint/runner/results_json.hpp"
 #include "geomint/runner/timing.hpp"
 #include "geomint/sweep/mpi.hpp"
 
@@ -76,18 +77,38 @@ double available_memory_bytes() {
 
 }  // namespace
 
-const Published& Context::published(const std::string& key) const {
-  for (const Published& e : published_entries)
+Context::Context(const Scene& s, OutputDir& o, int n_threads) : scene(s), out(o), threads(n_threads) {}
+Context::~Context() = default;
+
+namespace {
+const Published& entry_named(const Context& ctx, const std::string& key) {
+  for (const Published& e : ctx.published_entries)
     if (e.key == key) return e;
-  throw std::logic_error("published.toml of " + experiment + " has no entry " + key);
+  throw std::logic_error("published.toml of " + ctx.experiment + " has no entry " + key);
+}
+}  // namespace
+
+double Context::published_value(const std::string& key) const {
+  const Published& e = entry_named(*this, key);
+  if (!e.value.is_number()) throw std::logic_error("published.toml of " + experiment + ": " + key + " is not a number");
+  return e.value.get<double>();
 }
 
-std::optional<nlohmann::ordered_json> Context::comparison(const nlohmann::ordered_json& partial,
-                                                          const std::string& summary_key) const {
+Value Context::published_values(const std::string& key) const { return value_of(entry_named(*this, key).value); }
+
+double Context::published_requirement(const std::string& key, const std::string& scene_key) const {
+  const Published& e = entry_named(*this, key);
+  if (!e.requires_.contains(scene_key) || !e.requires_.at(scene_key).is_number())
+    throw std::logic_error("published.toml of " + experiment + ": " + key + " requires no number " + scene_key);
+  return e.requires_.at(scene_key).get<double>();
+}
+
+std::optional<Value> Context::comparison(const Value& partial, const std::string& summary_key) const {
+  const nlohmann::ordered_json j = to_json(partial);
   for (const Published& e : published_entries) {
     if (e.summary != summary_key) continue;
-    auto c = compare_published(e, partial, scene.to_json(), {e.study});
-    if (c && c->contains("difference")) return c;
+    auto c = compare_published(e, j, scene.to_json(), {e.study});
+    if (c && c->contains("difference")) return value_of(*c);
   }
   return std::nullopt;
 }
@@ -286,11 +307,6 @@ std::vector<std::string> made_here(const Study& st, const Scene& scene) {
 }
 
 // The ids of every item a study makes.
-std::vector<std::string> item_ids(const Study& st) {
-  std::vector<std::string> ids;
-  for (const Item& item : st.makes) ids.push_back(item.id());
-  return ids;
-}
 
 // Every name a scene or --study may use: the studies' names and their former names.
 std::vector<std::string> accepted_study_names(const ExperimentSpec& spec) {
@@ -574,10 +590,14 @@ std::vector<std::string> Study::uses() const {
   return prefixes;
 }
 
-std::string Study::description() const {
+std::vector<std::string> Study::item_ids() const {
   std::vector<std::string> ids;
   for (const Item& item : makes) ids.push_back(item.id());
-  const std::string items = join(ids);
+  return ids;
+}
+
+std::string Study::description() const {
+  const std::string items = join(item_ids());
   return items.empty() ? about : about.empty() ? items : items + ": " + about;
 }
 
@@ -715,7 +735,7 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
         throw PublishedError(published_file.string() + ": [" + p.key + "]: no study '" + p.study + "' (studies: " +
                              join(study_names(spec)) + ")");
     }
-    resolve_figures(published, published_file, [&](const std::string& study) { return item_ids(*find_study(spec, study)); });
+    resolve_figures(published, published_file, [&](const std::string& study) { return find_study(spec, study)->item_ids(); });
   } catch (const PublishedError& e) {
     std::cerr << name << ": published values: " << e.what() << '\n';
     return 2;
@@ -800,10 +820,11 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
     }
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
-    if (const auto bad = first_non_finite(ctx.summary))
+    const nlohmann::ordered_json reported = to_json(ctx.summary);
+    if (const auto bad = first_non_finite(reported))
       throw NumericalFailure("summary value " + *bad + " is not finite");
     nlohmann::ordered_json summary = {{"experiment", name}, {"studies", ran}};
-    for (auto& [k, v] : ctx.summary.items()) summary[k] = v;
+    for (auto& [k, v] : reported.items()) summary[k] = v;
     apply_published(published, summary, scene->to_json(), ran);
     std::vector<std::string> made;  // the papers' items the studies that ran made under this scene
     for (const std::string& r : ran)
@@ -839,7 +860,7 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
     run["rank_exchange_s"] = mpi::all_gather(std::span<const double>(&exchange, 1));  // and in exchanging their results
     run["checkpoint_write_s"] = checkpoint_write_seconds();
     run["load_average"] = {{"before", load_before}, {"after", load_average()}};  // 1, 5, 15 minutes
-    run["timing_concurrency"] = timing_concurrency_record();  // (runner/timing.hpp; null: no cost study timed)
+    run["timing_concurrency"] = to_json(timing_concurrency_record());  // (runner/timing.hpp; null: no cost study timed)
     run["start_utc"] = utc_iso8601(start);
     run["end_utc"] = utc_iso8601(std::chrono::system_clock::now());
     run["wall_s"] = wall;
@@ -870,6 +891,25 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
     return 1;
   }
   return 0;
+}
+
+namespace {
+std::vector<Study (*)()>& registered_studies() {
+  static std::vector<Study (*)()> makers;
+  return makers;
+}
+}  // namespace
+
+RegisteredStudy::RegisteredStudy(Study (*make)()) { registered_studies().push_back(make); }
+
+int run_registered_experiment(int argc, char** argv, const std::string& name, const std::string& built_from) {
+  ExperimentSpec spec{.name = name};
+  for (const auto make : registered_studies()) spec.studies.push_back(make());
+  std::sort(spec.studies.begin(), spec.studies.end(), [](const Study& a, const Study& b) { return a.name < b.name; });
+  std::vector<std::string> described;
+  for (const Study& st : spec.studies) described.push_back(st.description());
+  spec.description = join(described, "; ");
+  return run_experiment(argc, argv, std::move(spec), built_from);
 }
 
 }  // namespace geomint

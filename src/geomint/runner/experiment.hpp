@@ -19,19 +19,22 @@
 #include <string_view>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "geomint/core/numerical_failure.hpp"
 #include "geomint/io/atomic_file.hpp"
 #include "geomint/io/csv.hpp"
-#include "geomint/runner/published.hpp"
+#include "geomint/runner/results.hpp"
 #include "geomint/scene/scene.hpp"
 
 namespace geomint {
 
+struct Published;  // an entry of published.toml (runner/published.hpp)
+
 class Context {
  public:
-  Context(const Scene& s, OutputDir& o, int n_threads) : scene(s), out(o), threads(n_threads) {}
+  Context(const Scene& s, OutputDir& o, int n_threads);
+  ~Context();
+  Context(const Context&) = delete;
+  Context& operator=(const Context&) = delete;
   const Scene& scene;
   OutputDir& out;
   int threads;
@@ -40,8 +43,8 @@ class Context {
   std::vector<std::string> reads;  // the scene keys the study that runs reads (Study::uses)
   std::string resume_command;     // the command line of the run with --resume (for a stopped run's message)
   // What summary.json reports besides "experiment", "studies" and the wall
-  // times: "published", "reproduced", "orders", "timing", ...
-  nlohmann::ordered_json summary = nlohmann::ordered_json::object();
+  // times: "published", "reproduced", "orders", "timing", ... (runner/results.hpp)
+  Value summary = Value::record();
 
   // (a value that is not finite in a row no flag column marks: NumericalFailure, nothing written)
   void write(const std::string& name, const Csv& csv) {
@@ -50,16 +53,18 @@ class Context {
     out.write(name, csv.str());
   }
   // The entries of the experiment's published.toml, as the runner read and checked them before any
-  // study ran (it sets them against the summary after the run: runner/published.hpp); and the entry
-  // `key` (std::logic_error if there is none).
+  // study ran (it sets them against the summary after the run: runner/published.hpp). A study reads
+  // an entry's printed value (a number: published_value; a record of numbers keyed by a parameter:
+  // published_values) and the scene value it was printed for (published_requirement); each throws
+  // std::logic_error if there is no such entry or value.
   std::vector<Published> published_entries;
-  const Published& published(const std::string& key) const;
-  double published_value(const std::string& key) const { return published(key).value.get<double>(); }  // a number
+  double published_value(const std::string& key) const;
+  Value published_values(const std::string& key) const;
+  double published_requirement(const std::string& key, const std::string& scene_key) const;
   // The comparison the runner will make (runner/published.hpp) of the entry whose reproduced value is
   // at `summary_key` of `partial` (the summary, or a study's part of it), for a study's own text;
   // nullopt if there is none or if this scene cannot make it (no difference).
-  std::optional<nlohmann::ordered_json> comparison(const nlohmann::ordered_json& partial,
-                                                   const std::string& summary_key) const;
+  std::optional<Value> comparison(const Value& partial, const std::string& summary_key) const;
   // Progress on stderr: on a terminal every call, otherwise at most one line every 10 s.
   void progress(std::string_view what) const;
   // The same with `done` of `total` units (e.g. "batches"), the rate since the first call for
@@ -157,6 +162,7 @@ struct Study {
   std::function<std::vector<Item>(const Scene&)> makes_under = {};
 
   std::vector<std::string> uses() const;  // the prefixes of every key it reads: those of `keys`, and `reads`
+  std::vector<std::string> item_ids() const;  // the ids of `makes`: "000 Fig. 9"
   std::string description() const;       // its items' ids and `about`: "000 Fig. 9: error in H against h"
 };
 
@@ -175,6 +181,16 @@ struct ExperimentSpec {
 // `built_from`: the experiment's source directory when the binary was built (its scenes and
 // published.toml); a moved build finds them as find_experiment_dir (experiment.cpp) says.
 int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string& built_from);
+
+// An experiment whose studies share no keys needs no main.cpp (README "Adding a figure"): each study file
+// registers its study at namespace scope,
+//   const RegisteredStudy registered{order_study};   // Study order_study() { return {.name = "order", ...}; }
+// and the executable CMake generates for a directory without main.cpp (cmake/geomint_experiment.cmake) runs
+// them, in the order of their names, as the experiment `name`, described by its studies' items.
+struct RegisteredStudy {
+  explicit RegisteredStudy(Study (*make)());
+};
+int run_registered_experiment(int argc, char** argv, const std::string& name, const std::string& built_from);
 
 // Does a file name match a Study::files pattern ('*' matches any run of characters)?
 bool file_matches(std::string_view pattern, std::string_view name);

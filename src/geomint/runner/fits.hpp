@@ -8,9 +8,8 @@
 #include <utility>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "geomint/observables/order_fit.hpp"
+#include "geomint/runner/results.hpp"
 
 namespace geomint {
 
@@ -44,10 +43,10 @@ struct FitRecord {
   std::string to_key = {};
 };
 
-inline void record_fit(nlohmann::ordered_json& summary, const FitRecord& f) {
-  nlohmann::ordered_json where = nlohmann::ordered_json::object();
+inline void record_fit(Value& summary, const FitRecord& f) {
+  Value where = Value::record();
   for (const auto& [column, value] : f.data.where) where[column] = value;
-  nlohmann::ordered_json r = {{"quantity", f.quantity}, {"csv", f.data.csv}, {"x", f.data.x},   {"y", f.data.y},
+  Value r = {{"quantity", f.quantity}, {"csv", f.data.csv}, {"x", f.data.x},   {"y", f.data.y},
                               {"where", where},         {"kind", f.kind},    {"from", f.from}, {"to", f.to}};
   if (!f.from_key.empty()) r["from_key"] = f.from_key, r["from_factor"] = f.from_factor;
   if (!f.to_key.empty()) r["to_key"] = f.to_key;
@@ -57,12 +56,12 @@ inline void record_fit(nlohmann::ordered_json& summary, const FitRecord& f) {
 }
 
 // An order fitted by fit_order(h, err, floor) to `data`: its window is the range of h it used.
-inline void record_order_fit(nlohmann::ordered_json& summary, const std::string& quantity, const FitData& data,
+inline void record_order_fit(Value& summary, const std::string& quantity, const FitData& data,
                              const OrderFit& f, double floor) {
   record_fit(summary, {.quantity = quantity, .data = data, .kind = "order", .from = f.h_min, .to = f.h_max, .floor = floor});
 }
 
-inline void record_unfittable(nlohmann::ordered_json& summary, const std::string& quantity, const std::string& why) {
+inline void record_unfittable(Value& summary, const std::string& quantity, const std::string& why) {
   summary["fits_not_recomputable"].push_back({{"quantity", quantity}, {"why", why}});
 }
 

@@ -56,7 +56,7 @@ RunTime RunTime::scaled(double factor) const {
   return r;
 }
 
-nlohmann::ordered_json to_json(const RunTime& t) {
+Value to_value(const RunTime& t) {
   return {{"median_s", t.median_s}, {"q1_s", t.q1_s}, {"q3_s", t.q3_s}, {"min_s", t.min_s}, {"max_s", t.max_s},
           {"spread", t.spread()}, {"repeats", t.repeats}, {"inner", t.inner}};
 }
@@ -191,15 +191,16 @@ TimingConcurrency timing_concurrency(int workers, int repeats) {
   return concurrency_measured[workers] = c;
 }
 
-nlohmann::ordered_json to_json(const TimingConcurrency& c) { return {{"workers", c.workers}, {"slowdown", c.slowdown}}; }
+Value to_value(const TimingConcurrency& c) { return {{"workers", c.workers}, {"slowdown", c.slowdown}}; }
 
-nlohmann::ordered_json timing_concurrency_record() {
+Value timing_concurrency_record() {
   const std::lock_guard<std::mutex> lock(concurrency_mutex);
   if (concurrency_measured.empty()) return nullptr;
-  nlohmann::ordered_json out = nlohmann::ordered_json::array();
+  Value out = Value::list();
   for (const auto& [requested, c] : concurrency_measured) {
-    out.push_back(to_json(c));
-    out.back()["requested"] = requested;
+    Value m = to_value(c);
+    m["requested"] = requested;
+    out.push_back(m);
   }
   return out;
 }
@@ -248,7 +249,7 @@ TimeRatio time_ratio(const RunTime& a, const RunTime& b) {
   return r;
 }
 
-nlohmann::ordered_json to_json(const TimeRatio& r) {
+Value to_value(const TimeRatio& r) {
   return {{"median", r.median}, {"lo", r.lo}, {"hi", r.hi}, {"indistinguishable", r.indistinguishable}};
 }
 
@@ -259,16 +260,16 @@ std::string timing_verdict(const TimeRatio& a_over_b, double work_a, double work
   return faster ? "faster" : "slower";
 }
 
-nlohmann::ordered_json relative_timings(const std::vector<std::string>& labels, const std::vector<RunTime>& times,
-                                        const std::vector<double>& work) {
+Value relative_timings(const std::vector<std::string>& labels, const std::vector<RunTime>& times,
+                       const std::vector<double>& work) {
   if (labels.empty() || times.size() != labels.size() || work.size() != labels.size())
     throw std::invalid_argument("relative_timings: labels, times and work differ in length");
-  nlohmann::ordered_json out = {{"reference", labels.front()}, {"by_method", nlohmann::ordered_json::object()}};
+  Value out = {{"reference", labels.front()}, {"by_method", Value::record()}};
   for (std::size_t k = 0; k < labels.size(); ++k) {
     const TimeRatio r = time_ratio(times[k], times.front());
     out["by_method"][labels[k]] = {{"ratio", r.median},
                                    {"interval", {{"min", r.lo}, {"max", r.hi}}},
-                                   {"verdict", k == 0 ? "reference" : timing_verdict(r, work[k], work.front())}};
+                                   {"verdict", k == 0 ? std::string("reference") : timing_verdict(r, work[k], work.front())}};
   }
   return out;
 }

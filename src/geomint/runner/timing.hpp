@@ -24,7 +24,7 @@
 #include <utility>
 #include <vector>
 
-#include <nlohmann/json.hpp>
+#include "geomint/runner/results.hpp"
 
 #include "geomint/core/integrate.hpp"
 
@@ -54,7 +54,7 @@ struct RunTime {
   RunTime scaled(double factor) const;  // per 1/factor of a call (e.g. per step)
 };
 
-nlohmann::ordered_json to_json(const RunTime& t);
+Value to_value(const RunTime& t);
 
 // The quantile q of the sorted non-empty `v`, interpolated linearly between order statistics.
 double sorted_quantile(const std::vector<double>& v, double q);
@@ -73,9 +73,9 @@ struct TimingConcurrency {
   double slowdown = 1;    // the loop's time beside the others over its time alone
 };
 TimingConcurrency timing_concurrency(int workers, int repeats);
-nlohmann::ordered_json to_json(const TimingConcurrency& c);
+Value to_value(const TimingConcurrency& c);
 // The measurements timing_concurrency made in this process (run.json timing_concurrency; null if none).
-nlohmann::ordered_json timing_concurrency_record();
+Value timing_concurrency_record();
 
 // Times configurations under the protocol of the header comment.
 class InterleavedTiming {
@@ -125,7 +125,7 @@ struct TimeRatio {
   bool indistinguishable = true;
 };
 TimeRatio time_ratio(const RunTime& a, const RunTime& b);
-nlohmann::ordered_json to_json(const TimeRatio& r);
+Value to_value(const TimeRatio& r);
 
 // What a timing says of a configuration a against b, given the work per step of each (force evaluations,
 // or operations): "faster" or "slower" where the interval excludes 1, "indistinguishable" where it holds
@@ -136,8 +136,8 @@ std::string timing_verdict(const TimeRatio& a_over_b, double work_a, double work
 // Each timing against the first (the reference): {reference, by_method: {label: {ratio (of the medians),
 // interval: {min, max} (time_ratio), verdict (timing_verdict, with work[k] the work per call)}}}. Labels,
 // times and work are parallel lists.
-nlohmann::ordered_json relative_timings(const std::vector<std::string>& labels, const std::vector<RunTime>& times,
-                                        const std::vector<double>& work);
+Value relative_timings(const std::vector<std::string>& labels, const std::vector<RunTime>& times,
+                       const std::vector<double>& work);
 
 // n steps of eq. (23) (pre once, post once) with every call in the loop inlined: each method is
 // timed with its step inlined, however many other methods the executable instantiates.

@@ -6,9 +6,8 @@
 #include <string>
 #include <vector>
 
-#include <nlohmann/json.hpp>
-
 #include "geomint/observables/ensemble_statistics.hpp"
+#include "geomint/runner/results.hpp"
 #include "geomint/runner/timing.hpp"
 
 namespace geomint {
@@ -36,7 +35,7 @@ inline std::string timing_method_text(int repeats, int workers = 1) {
 class SpreadTally {
  public:
   void add(const RunTime& t) { spreads_.push_back(t.spread()); }
-  nlohmann::ordered_json to_json() const {
+  Value to_value() const {
     if (spreads_.empty()) return nullptr;
     return {{"max", *std::max_element(spreads_.begin(), spreads_.end())},
             {"median", median(spreads_)},

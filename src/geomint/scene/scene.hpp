@@ -20,7 +20,7 @@
 #include <string_view>
 #include <vector>
 
-#include <nlohmann/json.hpp>
+#include <nlohmann/json_fwd.hpp>  // (Scene::to_json; the runner includes the library)
 
 #include "geomint/io/printable.hpp"  // printable(): a value or argument shown on one line
 

@@ -17,8 +17,8 @@
 #include <optional>
 #include <vector>
 
-#include <nlohmann/json.hpp>
 
+#include "geomint/runner/results.hpp"
 #include "geomint/systems/elastic_pendulum.hpp"
 
 namespace geomint {
@@ -165,13 +165,12 @@ inline EnergyMapStatistics energy_map_statistics(const std::vector<EnergyMapRow>
 
 // The statistics as summary.json reports them (null where there is nothing to count, e.g. no
 // polar run diverged inside the boundary).
-inline nlohmann::ordered_json to_json(const EnergyMapStatistics& s) {
-  const auto opt = [](const std::optional<double>& v) { return v ? nlohmann::ordered_json(*v) : nlohmann::ordered_json(nullptr); };
+inline Value to_value(const EnergyMapStatistics& s) {
+  const auto opt = [](const std::optional<double>& v) { return Value(v); };
   const auto steps = [](const std::optional<StepStatistics>& v) {
-    return v ? nlohmann::ordered_json{{"median", v->median}, {"max", v->max}, {"time_max", v->time_max}}
-             : nlohmann::ordered_json(nullptr);
+    return v ? Value{{"median", v->median}, {"max", v->max}, {"time_max", v->time_max}} : Value();
   };
-  const auto frac = [](std::int64_t a, std::int64_t b) { return b ? nlohmann::ordered_json(static_cast<double>(a) / static_cast<double>(b)) : nlohmann::ordered_json(nullptr); };
+  const auto frac = [](std::int64_t a, std::int64_t b) { return b ? Value(static_cast<double>(a) / static_cast<double>(b)) : Value(); };
   return {{"points", s.points},
           {"diverged_polar", s.diverged_polar},
           {"diverged_cartesian", s.diverged_cartesian},
@@ -210,13 +209,12 @@ inline nlohmann::ordered_json to_json(const EnergyMapStatistics& s) {
             {"cartesian_better_beyond_percent", s.cartesian_better_beyond_percent},
             {"polar_better_beyond_percent", s.polar_better_beyond_percent}}},
           {"eps_difference", s.eps_difference_min
-                                 ? nlohmann::ordered_json{{"min", *s.eps_difference_min}, {"max", *s.eps_difference_max}}
-                                 : nlohmann::ordered_json(nullptr)},
+                                 ? Value{{"min", *s.eps_difference_min}, {"max", *s.eps_difference_max}}
+                                 : Value()},
           {"ring_polar_better", opt(s.ring_polar_better)},
           {"off_ring_polar_better", opt(s.off_ring_polar_better)},
           {"ratio_polar_over_cartesian",
-           s.ratio_median ? nlohmann::ordered_json{{"p05", *s.ratio_p05}, {"median", *s.ratio_median}, {"p95", *s.ratio_p95}}
-                          : nlohmann::ordered_json(nullptr)}};
+           s.ratio_median ? Value{{"p05", *s.ratio_p05}, {"median", *s.ratio_median}, {"p95", *s.ratio_p95}} : Value()}};
 }
 
 }  // namespace geomint
