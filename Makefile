@@ -19,7 +19,7 @@ BUILD     ?= build
 RESULTS   ?= results
 JOBS      ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_ARGS ?=
-EXPERIMENTS := $(notdir $(patsubst %/,%,$(dir $(wildcard experiments/*/main.cpp))))
+EXPERIMENTS := $(sort $(notdir $(patsubst %/,%,$(dir $(wildcard experiments/*/*.cpp)))))
 DEPS_STAMP := .deps
 UNCHECKED := figures/out/.unchecked   # figures rendered by make figures whose text is not yet checked
 

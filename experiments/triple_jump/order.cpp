@@ -98,5 +98,6 @@ Study order_study() {
           .validate = check_order,
           .plan = plan_order};
 }
+const RegisteredStudy registered{order_study};  // (no main.cpp: the experiment is its registered studies)
 
 }  // namespace geomint::triple_jump

@@ -32,7 +32,7 @@ def main() -> int:
     text = script.read_text(encoding="utf-8")
     if len(text.splitlines()) > 600:
         problems.append(f"{script}: {len(text.splitlines())} lines (at most 600)")
-    for exp in sorted(p.parent.name for p in (source / "experiments").glob("*/main.cpp")):
+    for exp in sorted({p.parent.name for p in (source / "experiments").glob("*/*.cpp")}):
         if exp in text:
             problems.append(f"{script} names the experiment {exp}")
     work.mkdir(parents=True, exist_ok=True)
@@ -42,9 +42,9 @@ def main() -> int:
     # directories of their own beside them while this one runs.
     results = work / "results"
     shutil.rmtree(results, ignore_errors=True)
-    for exp_dir in sorted((source / "experiments").glob("*/main.cpp")):
-        exp = exp_dir.parent.name
-        variants = [p.stem for p in exp_dir.parent.glob("*.toml")
+    for exp_dir in sorted({p.parent for p in (source / "experiments").glob("*/*.cpp")}):
+        exp = exp_dir.name
+        variants = [p.stem for p in exp_dir.glob("*.toml")
                     if p.stem not in (exp, "published", "quick") and not p.stem.startswith("quick-")
                     and "\n# scale: cluster" not in "\n" + p.read_text(encoding="utf-8")]  # (not a paper scene)
         for run in [exp] + [f"{exp}-{v}" for v in variants]:

@@ -12,9 +12,12 @@ trap 'rm -rf "$tmp"' EXIT
 gen() { "$src/tools/new_study" "$@" --root "$tmp/proj"; }
 
 gen demo_paper energy --paper 999 --item "Fig. 7" --system demo_system
-for f in experiments/demo_paper/main.cpp experiments/demo_paper/energy.cpp experiments/demo_paper/demo_paper.toml \
-         experiments/demo_paper/published.toml figures/demo_paper_fig7.gp src/geomint/systems/demo_system.hpp \
-         src/geomint/methods/on_demo_system.cpp; do
+# five files, no more: the study, its scene, its published values, its figure, its system
+written=$(cd "$tmp/proj" && find . -type f | sort | tr '\n' ' ')
+[ "$written" = "./experiments/demo_paper/demo_paper.toml ./experiments/demo_paper/energy.cpp ./experiments/demo_paper/published.toml ./figures/demo_paper_fig7.gp ./src/geomint/systems/demo_system.hpp " ] ||
+  { echo "new_study_test: wrote $written" >&2; exit 1; }
+for f in experiments/demo_paper/energy.cpp experiments/demo_paper/demo_paper.toml \
+         experiments/demo_paper/published.toml figures/demo_paper_fig7.gp src/geomint/systems/demo_system.hpp; do
   [ -s "$tmp/proj/$f" ] || { echo "new_study_test: $f not written" >&2; exit 1; }
 done
 # it never overwrites, and it refuses names that are not snake_case (exit 2)
@@ -29,8 +32,8 @@ cmake_minimum_required(VERSION 3.25)
 project(demo LANGUAGES CXX)
 find_package(geomint CONFIG REQUIRED)
 set(CMAKE_RUNTIME_OUTPUT_DIRECTORY \${CMAKE_BINARY_DIR}/bin)
-geomint_add_experiment(demo_paper \${CMAKE_SOURCE_DIR}/experiments/demo_paper
-                       \${CMAKE_SOURCE_DIR}/src/geomint/methods/on_demo_system.cpp)
+geomint_methods_on(on_demo_system \${CMAKE_SOURCE_DIR}/src/geomint/systems/demo_system.hpp)
+geomint_add_experiment(demo_paper \${CMAKE_SOURCE_DIR}/experiments/demo_paper \${on_demo_system})
 target_include_directories(demo_paper BEFORE PRIVATE \${CMAKE_SOURCE_DIR}/src)
 CMAKE
 cmake -S "$tmp/proj" -B "$tmp/build" -DCMAKE_BUILD_TYPE=Release -Dgeomint_DIR="$build" >/dev/null

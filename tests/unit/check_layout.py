@@ -3,7 +3,7 @@
 
     check_layout.py SOURCE_DIR BIN_DIR
 
-For every experiment (experiments/<name>/main.cpp):
+For every experiment (a directory experiments/<name> with a .cpp file):
 - every study it lists (`<name> --list-studies`) is declared by `Study <x>_study()` in a file of its own
   (experiments/<name>/<file>.cpp returns a Study whose name is the study's, and no other);
 - main.cpp has under 100 lines, no source file of the directory more than 400, and no function more
@@ -39,8 +39,8 @@ def functions(lines):
 def main() -> int:
     source, bins = pathlib.Path(sys.argv[1]), pathlib.Path(sys.argv[2])
     problems = []
-    for main_cpp in sorted((source / "experiments").glob("*/main.cpp")):
-        d, name = main_cpp.parent, main_cpp.parent.name
+    for d in sorted({p.parent for p in (source / "experiments").glob("*/*.cpp")}):  # (with or without a main.cpp)
+        name = d.name
         listing = subprocess.run([str(bins / name), "--list-studies"], capture_output=True, text=True, check=True)
         studies = [line.split("\t")[0] for line in listing.stdout.splitlines() if line.strip()]
         sources = sorted(d.glob("*.cpp")) + sorted(d.glob("*.hpp"))

@@ -31,7 +31,7 @@ def main() -> int:
         if "/" in first and not first.startswith("--"):
             if not (source / first).exists():
                 problems.append(f"{first}: named in the table, but there is no such file")
-    experiments = sorted(p.parent.name for p in (source / "experiments").glob("*/main.cpp"))
+    experiments = sorted({p.parent.name for p in (source / "experiments").glob("*/*.cpp")})  # (README Layout)
     for name in experiments:
         listing = subprocess.run([str(bins / name), "--list-studies"], capture_output=True, text=True, check=True)
         studies = [line.split("\t")[0] for line in listing.stdout.splitlines() if line.strip()]

@@ -1,7 +1,8 @@
 #pragma once
 // The registered methods by scene name, on one system type. Every (method, system) pair a study
-// runs is compiled once, in the library: methods/on_<system>.cpp instantiates MethodsOn<System>
-// (by_name_impl.hpp, the registry's dispatch of methods.hpp). A study includes this header, never
+// runs is compiled once, in the library: a system header's line "// geomint: MethodsOn<System>" makes
+// CMake generate on_<system>.cpp, which instantiates it (by_name_impl.hpp, the registry's dispatch of
+// methods.hpp; cmake/geomint_experiment.cmake geomint_methods_on). A study includes this header, never
 // methods.hpp, so that editing it recompiles the study alone.
 #include <cstdint>
 #include <functional>

@@ -7,6 +7,12 @@
 // The Cartesian form (73) is separable, H = |p|^2/(2m) + U(q), and is
 // assembled from potential terms, so a scene without gravity compiles a step
 // without a gravity term (not one multiplied by zero).
+//
+// The registered methods run by name on (compiled once each: cmake/geomint_experiment.cmake geomint_methods_on):
+// geomint: MethodsOn<ElasticPendulumWithGravity>
+// geomint: MethodsOn<ElasticPendulumWithoutGravity>
+// geomint: MethodsOn<Counting<ElasticPendulumWithGravity>>
+// geomint: MethodsOn<Counting<ElasticPendulumWithoutGravity>>
 #include <cmath>
 #include <tuple>
 

@@ -1,6 +1,12 @@
 #pragma once
 // The harmonic oscillator H(q, p) = p^2/(2m) + m w^2 q^2/2: with m = w = 1 the
 // dimensionless form 000 eq. (74); with m = 1, w = 2 pi the oscillator of 001.
+//
+// The registered methods run by name on (compiled once each: cmake/geomint_experiment.cmake geomint_methods_on):
+// geomint: MethodsOn<HarmonicOscillator>
+// geomint: MethodsOn<Counting<HarmonicOscillator>>
+// geomint: MethodsOn<NonlinearPendulum>
+// geomint: MethodsOn<Counting<NonlinearPendulum>>
 #include <cmath>
 
 #include "geomint/core/state.hpp"

@@ -1,6 +1,11 @@
 #pragma once
 // The Henon-Heiles-type potential of 004 (simplified Takahashi-Imada), unit mass:
 //   U = (q1^2 + q2^2)/2 + q1^2 q2 - q2^k/k (004 Figs 3-5, k = 3 and 5).
+//
+// The registered methods run by name on (compiled once each: cmake/geomint_experiment.cmake geomint_methods_on):
+// geomint: MethodsOn<HenonHeilesT<true>>
+// geomint: MethodsOn<HenonHeilesT<false>>
+// geomint: MethodsOn<Counting<HenonHeilesT<true>>>
 #include <cmath>
 
 #include "geomint/core/state.hpp"

@@ -1,6 +1,9 @@
 #pragma once
 // The quartic oscillator H(q, p) = p^2/2 + q^4/4 (m = 1): an anharmonic oscillator whose period depends on
 // its energy, the system of the worked example (experiments/triple_jump).
+//
+// The registered methods run by name on (compiled once each: cmake/geomint_experiment.cmake geomint_methods_on):
+// geomint: MethodsOn<QuarticOscillator>
 #include <cmath>
 
 #include "geomint/core/state.hpp"
