@@ -317,6 +317,22 @@ TEST(ConvergenceStudy, RefusesASeriesWithFewerThanThreePointsAboveItsFloorNaming
   EXPECT_REFUSAL_OF(std::logic_error, "a fit of a column that was not added", conv.fit("b", "b_err", 0.0), {"no column b_err"});
 }
 
+// The rule of a fit: a window h <= h_max leaves the larger steps out; a fit that is not required has "no
+// order" where fewer than 3 points remain (null in the summary, no row in orders.csv, nothing to recompute).
+TEST(ConvergenceStudy, FitsInsideItsWindowAndMayHaveNoOrder) {
+  ConvergenceStudy conv = two_conditions();
+  conv.fit("windowed", "a_err", OrderFitRule{.floor = [](std::size_t) { return 0.0; }, .h_max = 0.05});
+  EXPECT_EQ(conv.order("windowed").points, 3);
+  EXPECT_EQ(conv.order("windowed").h_max, 0.05);
+  conv.fit("optional", "a_err", OrderFitRule{.floor = [](std::size_t i) { return i == 0 ? 0.0 : 1e-6; }, .required = false});
+  EXPECT_TRUE(conv.has_order("optional", 0));
+  EXPECT_FALSE(conv.has_order("optional", 1));
+  EXPECT_TRUE(conv.orders(1).at("optional").is_null());
+  EXPECT_FALSE(conv.fits(1).contains("optional"));
+  EXPECT_EQ(conv.orders_csv().rows(), 3u);  // windowed at 0 and 1, optional at 0
+  EXPECT_THROW(conv.order("optional", 1), std::logic_error);
+}
+
 TEST(PoincareSection, UpwardCutInterpolatesTheStepLinearly) {
   const auto z = [](double q1, double q2, double p1, double p2) {
     PhaseState<2> s;

@@ -35,15 +35,26 @@ ConvergenceStudy& ConvergenceStudy::fit(const std::string& name, const std::stri
 ConvergenceStudy& ConvergenceStudy::fit(const std::string& name, const std::string& column,
                                         const std::function<double(std::size_t)>& floor_of,
                                         const std::string& floor_is) {
+  return fit(name, column, OrderFitRule{.floor = floor_of, .floor_is = floor_is});
+}
+
+ConvergenceStudy& ConvergenceStudy::fit(const std::string& name, const std::string& column, const OrderFitRule& rule) {
   const Column& c = column_named(column);
   for (std::size_t i = 0; i < initials_; ++i) {
-    const double floor = floor_of(i);
+    const double floor = rule.floor(i);
+    std::vector<double> err = c.by_initial[i];  // (outside the window: not a point of the fit)
+    for (std::size_t j = 0; j < h_.size(); ++j)
+      if (h_[j] > rule.h_max) err[j] = std::numeric_limits<double>::quiet_NaN();
     try {
-      fits_.push_back({i, name, column, fit_order(h_, c.by_initial[i], floor, name.c_str()), floor});
+      fits_.push_back({i, name, column, fit_order(h_, err, floor, name.c_str()), floor});
     } catch (const NumericalFailure& e) {
+      if (!rule.required) {
+        fits_.push_back({i, name, column, std::nullopt, floor});
+        continue;
+      }
       const std::string initial = initial_column_ ? "initial condition " + std::to_string(i) + ", " : "";
       throw NumericalFailure(std::string(e.what()) + " (" + initial + "floor " + format_double(floor) +
-                             ": below it the errors are " + floor_is + "; add larger h)");
+                             ": below it the errors are " + rule.floor_is + "; add larger h)");
     }
   }
   return *this;
@@ -61,21 +72,27 @@ const std::vector<double>& ConvergenceStudy::values(const std::string& column, s
 
 const OrderFit& ConvergenceStudy::order(const std::string& name, std::size_t i) const {
   for (const auto& f : fits_)
-    if (f.initial == i && f.name == name) return f.fit;
+    if (f.initial == i && f.name == name && f.fit) return *f.fit;
   throw std::logic_error("ConvergenceStudy " + csv_ + ": no order " + name + " of initial condition " + std::to_string(i));
+}
+
+bool ConvergenceStudy::has_order(const std::string& name, std::size_t i) const {
+  for (const auto& f : fits_)
+    if (f.initial == i && f.name == name) return f.fit.has_value();
+  return false;
 }
 
 Value ConvergenceStudy::orders(std::size_t i) const {
   Value out = Value::record();
   for (const auto& f : fits_)
-    if (f.initial == i) out[f.name] = f.fit.order;
+    if (f.initial == i) out[f.name] = f.fit ? Value(f.fit->order) : Value();
   return out;
 }
 
 Value ConvergenceStudy::fits(std::size_t i) const {
   Value out = Value::record();
   for (const auto& f : fits_)
-    if (f.initial == i) out[f.name] = to_value(f.fit);
+    if (f.initial == i && f.fit) out[f.name] = to_value(*f.fit);
   return out;
 }
 
@@ -105,8 +122,9 @@ Csv ConvergenceStudy::csv() const {
 Csv ConvergenceStudy::orders_csv() const {
   Csv out({"initial", "name", "order", "log10_c", "r2", "points", "h_min", "h_max"});
   for (const Fit* f : fits_by_initial())
-    out.row(static_cast<std::int64_t>(f->initial), f->name, f->fit.order, f->fit.log10_c, f->fit.r2, f->fit.points,
-            f->fit.h_min, f->fit.h_max);
+    if (f->fit)
+      out.row(static_cast<std::int64_t>(f->initial), f->name, f->fit->order, f->fit->log10_c, f->fit->r2, f->fit->points,
+              f->fit->h_min, f->fit->h_max);
   return out;
 }
 
@@ -114,11 +132,12 @@ void ConvergenceStudy::write(Context& ctx) const {
   ctx.write(csv_, csv());
   ctx.write(orders_csv_, orders_csv());
   for (const Fit* f : fits_by_initial()) {
+    if (!f->fit) continue;  // ("no order": nothing fitted to recompute)
     if (initial_column_)
       record_order_fit(ctx.summary, "orders_by_initial." + std::to_string(f->initial) + "." + f->name,
-                       {csv_, "h", f->column, {{"initial", std::to_string(f->initial)}}}, f->fit, f->floor);
+                       {csv_, "h", f->column, {{"initial", std::to_string(f->initial)}}}, *f->fit, f->floor);
     else
-      record_order_fit(ctx.summary, "orders." + f->name, {csv_, "h", f->column}, f->fit, f->floor);
+      record_order_fit(ctx.summary, "orders." + f->name, {csv_, "h", f->column}, *f->fit, f->floor);
   }
   merge(ctx.summary, "orders", orders(0));
   if (initial_column_) {

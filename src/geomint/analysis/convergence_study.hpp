@@ -3,7 +3,7 @@
 // the errors of runs at steps h_j (per initial condition i where a study has several) in named columns of
 // one CSV, and the orders fitted to them, in one shape for every order figure and table:
 //   <csv>         [initial,] h, steps, then the columns in the order added: one row per run (i, h_j),
-//   <orders_csv>  initial, name, order, log10_c, r2, points, h_min, h_max: one row per fit, by initial
+//   <orders_csv>  initial, name, order, log10_c, r2, points, h_min, h_max: one row per order, by initial
 //                 condition, then in the order fitted (orders.csv unless a second study of the
 //                 experiment writes one too),
 //   summary     orders.<name> and fits.<name> of the first initial condition (with several,
@@ -11,9 +11,12 @@
 //               (runner/fits.hpp: the CSV, h, the column, the initial condition, the window, the floor).
 // An order is the least-squares slope of log err against log h over the errors above the floor
 // (fit_order, observables/order_fit.hpp): below it the errors are round-off (or a reference's
-// accuracy, `floor_is`), and a series with fewer than 3 points above it fails the study (exit 4).
+// accuracy, `floor_is`), and a series with fewer than 3 points above it fails the study (exit 4), or,
+// where the study says so (OrderFitRule::required false), has "no order": null in the summary, no row.
 #include <cstddef>
 #include <functional>
+#include <limits>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -34,6 +37,16 @@ struct ConvergenceRuns {
   std::string orders_csv = "orders.csv";
 };
 
+// How an order is fitted to a column: over the errors above floor(i) (initial condition i; below it the
+// errors are `floor_is`) at h <= h_max (larger h: before the asymptotic range). `required`: fewer than 3
+// such points fail the study (NumericalFailure); otherwise the order is null ("no order": nothing claimed).
+struct OrderFitRule {
+  std::function<double(std::size_t i)> floor;
+  std::string floor_is = "round-off";
+  double h_max = std::numeric_limits<double>::infinity();
+  bool required = true;
+};
+
 class ConvergenceStudy {
  public:
   explicit ConvergenceStudy(ConvergenceRuns runs);
@@ -47,12 +60,14 @@ class ConvergenceStudy {
                         const std::string& floor_is = "round-off");
   ConvergenceStudy& fit(const std::string& name, const std::string& column,
                         const std::function<double(std::size_t i)>& floor_of, const std::string& floor_is = "round-off");
+  ConvergenceStudy& fit(const std::string& name, const std::string& column, const OrderFitRule& rule);
 
   const std::vector<double>& h() const { return h_; }
   const std::vector<double>& values(const std::string& column, std::size_t i = 0) const;  // by h, of condition i
-  const OrderFit& order(const std::string& name, std::size_t i = 0) const;
-  Value orders(std::size_t i = 0) const;  // {name: order} of initial condition i
-  Value fits(std::size_t i = 0) const;    // {name: to_value(fit)}
+  const OrderFit& order(const std::string& name, std::size_t i = 0) const;  // (std::logic_error if "no order")
+  bool has_order(const std::string& name, std::size_t i = 0) const;
+  Value orders(std::size_t i = 0) const;  // {name: order, or null for "no order"} of initial condition i
+  Value fits(std::size_t i = 0) const;    // {name: to_value(fit)}, the orders only
 
   Csv csv() const;         // <csv>
   Csv orders_csv() const;  // <orders_csv>
@@ -67,7 +82,7 @@ class ConvergenceStudy {
   struct Fit {
     std::size_t initial;
     std::string name, column;
-    OrderFit fit;
+    std::optional<OrderFit> fit;  // none: "no order" (fewer than 3 points, OrderFitRule::required false)
     double floor;
   };
   std::string csv_, orders_csv_;
