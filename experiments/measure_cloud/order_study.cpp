@@ -2,18 +2,18 @@
 // O(h^(ell + 2))). Phi^(ell) of each discretization, ell in order_study.ells, on a tiny 600-cell cloud
 // (radius order_study.radius) at each step of order_study.h: the peak-to-peak volume in its own
 // measure mu^(ell)_mod over t <= ptp_window, and the order fitted to it against h above the
-// round-off noise (measured by a probe at half the smallest step); one checkpointed task per run.
+// round-off noise, measured by a probe at half the smallest step (analysis/convergence_study.hpp:
+// order_study.csv, orders.csv; the probe: order_study_probe.csv); one checkpointed task per run.
 #include <algorithm>
 #include <cstdint>
 #include <string>
 #include <tuple>
 #include <vector>
 
+#include "geomint/analysis/convergence_study.hpp"
 #include "geomint/geometry/clouds.hpp"
 #include "geomint/geometry/hull_volume.hpp"
 #include "geomint/geometry/volume_series.hpp"
-#include "geomint/observables/order_fit.hpp"
-#include "geomint/runner/fits.hpp"
 #include "geomint/runner/checkpoint.hpp"
 #include "geomint/systems/nonholonomic_modified_series.hpp"
 #include "measure_cloud.hpp"
@@ -44,36 +44,33 @@ struct Result {
   auto fields() { return std::tie(ptp, iterations, steps); }
 };
 
-// The orders fitted to the peak-to-peak volumes of each ell over order_study.h (points above `floor`),
-// per method: summary.orders, ranges, fits, and the peak-to-peak at the largest step.
-void fit_orders(Context& ctx, const std::vector<Discretization>& methods, const std::vector<double>& hs,
-                const std::vector<int>& es, const std::vector<Result>& results, double floor) {
+// The column (and order) of the peak-to-peak volumes of Phi^(ell) of discretization d: <label>_ell<ell>.
+std::string column_name(Discretization d, int ell) { return discretization_name(d) + std::string("_ell") + std::to_string(ell); }
+
+// The per-ell records of the orders the study fitted (column <label>_ell<k>): summary.orders.measure_ell<k>,
+// fits.measure_ell<k> and their ranges, and the peak-to-peak at the largest step.
+void record_per_ell(Context& ctx, const ConvergenceStudy& conv, const std::vector<Discretization>& methods,
+                    const std::vector<int>& es) {
+  const auto& hs = conv.h();
   const std::size_t i_max = static_cast<std::size_t>(std::max_element(hs.begin(), hs.end()) - hs.begin());
-  Value fits;
-  for (std::size_t e = 0; e < es.size(); ++e) {
-    const std::string key = "measure_ell" + std::to_string(es[e]);
+  const Value orders = conv.orders(), fits = conv.fits();
+  for (int ell : es) {
+    const std::string key = "measure_ell" + std::to_string(ell);
     Value o, f, points, at_h_max;
-    for (std::size_t k = 0; k < methods.size(); ++k) {
-      std::vector<double> ptp;
-      for (std::size_t i = 0; i < hs.size(); ++i) ptp.push_back(results[k * (es.size() * hs.size() + 1) + e * hs.size() + i].ptp);
-      const char* name = discretization_name(methods[k]);
-      at_h_max[name] = ptp[i_max];
-      try {
-        const OrderFit fit = fit_order(hs, ptp, floor, "order study");
-        o[name] = fit.order, f[name] = to_value(fit), points[name] = fit.points;
-        record_order_fit(ctx.summary, "orders." + key + "." + name,
-                         {"order_study.csv", "h", "ptp", {{"method", name}, {"ell", std::to_string(es[e])}}}, fit, floor);
-      } catch (const NumericalFailure&) {
-        o[name] = nullptr, points[name] = nullptr;  // fewer than 3 steps above the noise: no order is claimed
-      }
+    for (const auto& m : methods) {
+      const char* name = discretization_name(m);
+      const std::string column = column_name(m, ell);
+      o[name] = orders.at(column);
+      at_h_max[name] = conv.values(column)[i_max];
+      points[name] = conv.has_order(column) ? Value(conv.order(column).points) : Value();
+      if (fits.contains(column)) f[name] = fits.at(column);
     }
     ctx.summary["orders"][key] = o;
     ctx.summary["ranges"][key] = method_ranges(o);
     ctx.summary["ranges"]["fit_points_" + key] = method_ranges(points);
-    put_methods(ctx, "order_study_ptp_phi" + std::to_string(es[e]) + "_at_h_max", at_h_max);
-    if (f.size() > 0) fits[key] = f;
+    put_methods(ctx, "order_study_ptp_phi" + std::to_string(ell) + "_at_h_max", at_h_max);
+    if (f.size() > 0) ctx.summary["fits"][key] = f;
   }
-  if (fits.size() > 0) ctx.summary["fits"] = fits;
 }
 
 void run_order_study(Context& ctx) {
@@ -84,6 +81,7 @@ void run_order_study(Context& ctx) {
   put_run_facts(ctx, methods);
   const auto hs = s.reals("order_study.h");
   const auto es = ells(s, "order_study.ells");
+  const double t_end = s.real("order_study.t_end");
   const auto cloud = cloud_around(z0, six_hundred_cell_vertices(), s.real("order_study.radius"));
   std::vector<Task> tasks;
   for (std::size_t k = 0; k < methods.size(); ++k) {
@@ -98,7 +96,7 @@ void run_order_study(Context& ctx) {
     const bool probe = T.e == es.size();
     const double hh = probe ? h_probe : hs[T.i];
     const int ell = probe ? max_modified_order : es[T.e];
-    const std::int64_t n = steps_within(s.real("order_study.t_end"), hh);
+    const std::int64_t n = steps_within(t_end, hh);
     const CloudRun run = cloud_phi(methods[T.k], sys, hh, ell, cloud, n);
     const ModifiedSeries ms(methods[T.k], sys, hh);
     std::vector<double> v;
@@ -110,16 +108,24 @@ void run_order_study(Context& ctx) {
     return Result{relative_peak_to_peak(v, static_cast<std::size_t>(steps_within(s.real("ptp_window"), hh)) + 1), run.iterations,
                   run.steps};
   });
-  Csv csv({"method", "ell", "h", "ptp"});
+  for (const auto& r : results) count_newton(ctx, r.iterations, r.steps);
+  const auto ptp = [&](std::size_t k, std::size_t e, std::size_t i) {  // (of task (k, e, i); e == es.size(): the probe)
+    return results[k * (es.size() * hs.size() + 1) + e * hs.size() + i].ptp;
+  };
+
+  // The round-off probe (order_study_probe.csv: h, steps, <label>_ell<max order>): its largest
+  // peak-to-peak is the noise.
+  std::vector<std::string> probe_columns{"h", "steps"};
+  for (const auto& m : methods) probe_columns.push_back(column_name(m, max_modified_order));
+  Csv probe(probe_columns);
+  probe << h_probe << steps_within(t_end, h_probe);
   double noise = 0;
-  for (std::size_t t = 0; t < tasks.size(); ++t) {
-    const bool probe = tasks[t].e == es.size();
-    if (probe) noise = std::max(noise, results[t].ptp);
-    csv.row(discretization_name(methods[tasks[t].k]), probe ? max_modified_order : es[tasks[t].e],
-            probe ? h_probe : hs[tasks[t].i], results[t].ptp);
-    count_newton(ctx, results[t].iterations, results[t].steps);
+  for (std::size_t k = 0; k < methods.size(); ++k) {
+    probe << ptp(k, es.size(), 0);
+    noise = std::max(noise, ptp(k, es.size(), 0));
   }
-  ctx.write("order_study.csv", csv);
+  probe.end_row();
+  ctx.write("order_study_probe.csv", probe);
   // Points within a factor 2 of the measured round-off noise are left out of the fits.
   const double floor = 2 * noise;
   put(ctx, "reproduced", "order_study_noise", noise);
@@ -128,7 +134,22 @@ void run_order_study(Context& ctx) {
   put(ctx, "reproduced", "order_study_h",
       {{"min", *std::min_element(hs.begin(), hs.end())}, {"max", *std::max_element(hs.begin(), hs.end())}});
   put(ctx, "reproduced", "order_study_h_count", hs.size());
-  fit_orders(ctx, methods, hs, es, results, floor);
+
+  // Record: order_study.csv (h, steps, <label>_ell<k>) and the orders <label>_ell<k> fitted over the
+  // peak-to-peak volumes above the floor (fewer than 3 such points: no order, null).
+  std::vector<double> steps;
+  for (double h : hs) steps.push_back(static_cast<double>(steps_within(t_end, h)));
+  ConvergenceStudy conv({.csv = "order_study.csv", .h = hs, .steps = steps});
+  const OrderFitRule rule{.floor = [floor](std::size_t) { return floor; },
+                          .floor_is = "round-off noise (the probe at half the smallest step)",
+                          .required = false};
+  for (std::size_t e = 0; e < es.size(); ++e)
+    for (std::size_t k = 0; k < methods.size(); ++k) {
+      const std::string column = column_name(methods[k], es[e]);
+      conv.column(column, [&](std::size_t, std::size_t i) { return ptp(k, e, i); }).fit(column, column, rule);
+    }
+  conv.write(ctx);
+  record_per_ell(ctx, conv, methods, es);
 }
 
 StudyPlan plan_order_study(const Scene& s) {
@@ -147,7 +168,7 @@ StudyPlan plan_order_study(const Scene& s) {
 Study order_study_study() {
   return {.name = "order_study",
           .about = "order of measure preservation (003 Cor. 4.3)",
-          .files = {"order_study.csv"},
+          .files = {"order_study.csv", "orders.csv", "order_study_probe.csv"},
           .keys = Schema()
                       .real("order_study.radius", {.gt = 0.0, .ge = {}, .lt = {}, .le = kMaxRadius},
                             "radius of its 600-cell clouds (small enough for no hull artefact)")
