@@ -113,6 +113,9 @@ scene_num(key) = (_i = _fv('scene.' . key), _i > 0 ? sprintf("%g", FV_VAL[_i]) :
 # text, for `do for [m in scene_words('methods')]`; summary_words likewise; "" if there is none.
 scene_words(key) = (_i = _fv('scene.' . key), _i > 0 ? FV_VAL[_i] : "")
 summary_words(key) = (_i = _fv('summary.' . key), _i > 0 ? FV_VAL[_i] : "")
+# made_by('convergence') is what the study made under the run's scene, as its id is spelled everywhere
+# ("000 Fig. 9"): a figure's title names its item with it, never typed in the script; "?" if the study did not run.
+made_by(study) = (_i = _fv('made.' . study), _i > 0 ? FV_VAL[_i] : "?")
 
 # ---- x tics for logarithmic axes spanning few decades ------------------------
 # eval LOGTICS("1 2 5") puts the x tics at 1, 2, 5 × 10^k (labelled with the x format, e.g. "%g")

@@ -99,7 +99,7 @@ W = 17.0; H = 15.4; S = 11.0
 PL = 0.115; PT = 1 - 1.45 / H; PR = PL + S / W; PB = PT - S / H
 set colorbox user origin screen PR + 0.045, screen PB size screen 0.025, screen S / H
 
-TITLE = sprintf("{/:Bold Fig. 6:} symplectic Euler, elastic pendulum: energy error (50) in Cartesian minus polar coordinates\n" \
+TITLE = "{/:Bold " . made_by('map') . ":} " . sprintf("symplectic Euler, elastic pendulum: energy error (50) in Cartesian minus polar coordinates\n" \
               . "l = %g, m = %g, k = %g, g = %g, Δt = %g, t_{max} = %g, p(0) = 0, grid %d × %d in (x_0, y_0)", \
                 L, M, K, G, DT, TMAX, NX, NY)
 do for [fmt in FORMATS] {

@@ -55,7 +55,7 @@ COMP  = N_COMP_POS > 0 ? curve('L_rel_drift_compensated', LS_COMP, \
 
 do for [fmt in FORMATS] {
     eval term(fmt, 'energy_map_first_integrals', 17, 9)
-    set multiplot layout 1,2 title "{/:Bold Sec. 5.2:} free point mass, symplectic Euler: first integrals of the other coordinate system"
+    set multiplot layout 1,2 title "{/:Bold " . made_by('first_integrals') . ":} free point mass, symplectic Euler: first integrals of the other coordinate system"
     set logscale xy
     set format x "%g"
     set format y LOGFMT

@@ -9,7 +9,7 @@ h = STATS_max
 
 do for [fmt in FORMATS] {
     eval term(fmt, 'euler_compensation_fig2', 17, 7.5)
-    set multiplot layout 1,2 title sprintf("{/:Bold Fig. 2:} explicit Euler on ẏ = −αy, h = %g", h)
+    set multiplot layout 1,2 title "{/:Bold " . made_by('decay') . ":} " . sprintf("explicit Euler on ẏ = −αy, h = %g", h)
     set xlabel "t"
     set key top right
     set autoscale fix

@@ -9,7 +9,7 @@ h = STATS_max
 
 do for [fmt in FORMATS] {
     eval term(fmt, 'euler_compensation_fig3', 17, 7.5)
-    set multiplot layout 1,2 title sprintf("{/:Bold Fig. 3:} explicit Euler on the Gompertz equation ẏ = y(a − b ln y), h = %g", h)
+    set multiplot layout 1,2 title "{/:Bold " . made_by('gompertz') . ":} " . sprintf("explicit Euler on the Gompertz equation ẏ = y(a − b ln y), h = %g", h)
     set xlabel "t"
     set key bottom right
     set autoscale fix

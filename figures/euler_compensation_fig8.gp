@@ -11,7 +11,7 @@ steps = STATS_max
 
 do for [fmt in FORMATS] {
     eval term(fmt, 'euler_compensation_fig8', 11, 11.5)
-    set title sprintf("{/:Bold Fig. 8:} symplectic Euler on the harmonic oscillator, h = %g, %d steps", h, steps)
+    set title "{/:Bold " . made_by('oscillator') . ":} " . sprintf("symplectic Euler on the harmonic oscillator, h = %g, %d steps", h, steps)
     set size ratio -1
     set xlabel "q"
     set ylabel "p"

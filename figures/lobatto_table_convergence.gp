@@ -105,7 +105,7 @@ do for [fmt in FORMATS] {
     set lmargin at screen 0.10; set rmargin at screen 0.48
     set xrange [H1MIN / 1.15 : H1MAX * 1.15]
     set key at screen 0.08, screen 0.235 left top
-    set title sprintf("Table 1: harmonic oscillator, q(0) = A, p(0) = 0\none period T = %g, N steps, h = T/N", 2 * pi / OMEGA) offset 0, -0.4
+    set title made_by('table1') . sprintf(": harmonic oscillator, q(0) = A, p(0) = 0\none period T = %g, N steps, h = T/N", 2 * pi / OMEGA) offset 0, -0.4
     set ylabel "max_{j = 1..N} |error at t_j|"
     plot $PUB using 1:2 with points pt 6 ps 1.6 lc rgb C_EXACT lw 0.8 notitle, \
          for [s in S1] T1 using "h":(column(COL1(s))):xtic(sprintf("%g", column("h"))) with points ls STY1(s) notitle, \

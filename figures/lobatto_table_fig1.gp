@@ -42,7 +42,7 @@ ERRS(k, v) = value(sprintf("ERRS_%d_%s", k, v))
 
 do for [fmt in FORMATS] {
     eval term(fmt, 'lobatto_table_fig1', 17, 14)
-    set multiplot title sprintf("{/:Bold Fig. 1:} harmonic oscillator over one period T = 2π/ω = %g: m = %g, ω = %.6g, q(0) = A = %.6g, p(0) = 0\n" \
+    set multiplot title "{/:Bold " . made_by('figure1') . ":} " . sprintf("harmonic oscillator over one period T = 2π/ω = %g: m = %g, ω = %.6g, q(0) = A = %.6g, p(0) = 0\n" \
                                 . "exact: q = A cos ωt, p = −mωA sin ωt (black line); markers: the schemes at t_j = jh, h = T/N", \
                                 T, M, OMEGA, A)
     set border 31; set xtics autofreq; set ytics autofreq; set mxtics; set mytics; set autoscale xy  # (after the key plot)

@@ -59,7 +59,7 @@ RELFIT(i, p) = 100 * value(sprintf("RATE_%d", i)) * (p - value(sprintf("PBAR_%d"
 
 do for [fmt in FORMATS] {
     eval term(fmt, 'lobatto_table_fig2', 17, 17)
-    set multiplot title sprintf("{/:Bold Fig. 2:} Lobatto scheme (13)–(14), harmonic oscillator (T = 2π/ω = %g), %g periods;\n" \
+    set multiplot title "{/:Bold " . made_by('long_run') . ":} " . sprintf("Lobatto scheme (13)–(14), harmonic oscillator (T = 2π/ω = %g), %g periods;\n" \
                                 . "each point: the maximum over one window of %g periods (%d windows per step size h)", \
                                 2 * pi / OMEGA, PERIODS, PER_WINDOW, NWIN_1)
     unset logscale                   # (from panel (c) of the previous format)

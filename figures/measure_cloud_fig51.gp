@@ -59,7 +59,7 @@ AY(k) = value(sprintf("AY_%d", k))
 do for [fmt in FORMATS] {
     eval term(fmt, 'measure_cloud_fig51', 22, 10.5)
     set autoscale xy
-    set multiplot title sprintf("{/:Bold Fig. 5.1:} nonholonomic particle, U = (x^2 + y^2)/2, exact flow: %d points on the 3-sphere " \
+    set multiplot title "{/:Bold " . made_by('shape') . ":} " . sprintf("nonholonomic particle, U = (x^2 + y^2)/2, exact flow: %d points on the 3-sphere " \
         . "of radius %g around z_0 = (x, y, p_x, p_y) = %s,\nat t = 0, %g, …, %g (later times lighter), projected to the (x, p_x) " \
         . "and (y, p_y) planes", NPTS, R, Z0, DT, TK(NSNAP))
     set tmargin at screen 0.85; set bmargin at screen 0.35

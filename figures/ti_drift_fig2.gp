@@ -44,7 +44,7 @@ set style line 204 lc rgb C_STAT lw 1.2                  # (4.3) at the current 
 
 do for [fmt in FORMATS] {
     eval term(fmt, 'ti_drift_fig2', 17, 19)
-    set multiplot title sprintf("{/:Bold Fig. 2:} unsymmetric pendulum U(q) = −cos q + 0.2 sin 2q, start (q_0, p_0) = (%g, %g), " \
+    set multiplot title "{/:Bold " . made_by('pendulum') . ":} " . sprintf("unsymmetric pendulum U(q) = −cos q + 0.2 sin 2q, start (q_0, p_0) = (%g, %g), " \
         . method_key("sti", "004") . ", α = 1/12,\nh = %g, no processing; %d samples, every Δt = %g", Q0, P0, H, NS, DT)
     set xrange [0:TMAX]
     set format x "%g"

@@ -39,7 +39,7 @@ set style line 302 lc rgb C_STAT lw 1.2 dt (8,4)         # the fitted line
 
 do for [fmt in FORMATS] {
     eval term(fmt, 'ti_drift_fig3', 17, 14)
-    set multiplot title sprintf("{/:Bold Fig. 3:} Hénon–Heiles, U = (q_1^2 + q_2^2)/2 + q_1^2q_2 − q_2^3/3, start q_1 = 0, q_2 = %g, p_2 = %g, p_1 > 0 with H = %g;\n" \
+    set multiplot title "{/:Bold " . made_by('hh3') . ":} " . sprintf("Hénon–Heiles, U = (q_1^2 + q_2^2)/2 + q_1^2q_2 − q_2^3/3, start q_1 = 0, q_2 = %g, p_2 = %g, p_1 > 0 with H = %g;\n" \
         . method_key("sti", "004") . ", α = 1/12, h = %g, no processing; %d samples, every Δt = %g", Q2, P2, H0, H, NS, DT)
     set xrange [0:TMAX / XS]
     set format y "%g"

@@ -82,7 +82,7 @@ set style line 408 lc rgb '#555555' lw 1.0 dt (2,2)      # √t guide
 
 do for [fmt in FORMATS] {
     eval term(fmt, 'ti_drift_fig4', 17, 16)
-    set multiplot title sprintf("{/:Bold Fig. 4:} Hénon–Heiles, U = (q_1^2 + q_2^2)/2 + q_1^2q_2 − q_2^%d/%d; " . method_key("sti", "004") . ", α = 1/12, h = %g, no processing;\n" \
+    set multiplot title "{/:Bold " . made_by('ensemble') . ":} " . sprintf("Hénon–Heiles, U = (q_1^2 + q_2^2)/2 + q_1^2q_2 − q_2^%d/%d; " . method_key("sti", "004") . ", α = 1/12, h = %g, no processing;\n" \
         . "%d starts: q_1 = 0, q_2 = %g ± %g, p_2 = %g ± %g (uniform), p_1 > 0 with H = %g; error of the modified energy E = Ĥ + h^4α^2K/2, (4.3)", \
         K, K, H, M, Q2, PERT, P2, PERT, H0)
     set format y "%g"

@@ -74,7 +74,7 @@ set style line 503 lc rgb '#882255' lw 0.9           # running slope
 
 do for [fmt in FORMATS] {
     eval term(fmt, 'ti_drift_fig5', 17, 18)
-    set multiplot title sprintf("{/:Bold Fig. 5:} Poincaré cuts q_1 = 0, p_1 > 0 of trajectory no. %d of Fig. 4 (Hénon–Heiles, k = %d,\n" \
+    set multiplot title "{/:Bold " . made_by('poincare') . ":} " . sprintf("Poincaré cuts q_1 = 0, p_1 > 0 of trajectory no. %d of Fig. 4 (Hénon–Heiles, k = %d,\n" \
                                 . method_key("sti", "004") . ", h = %g): growth episodes of its error of E found from the data (shaded),\n" \
                                 . "the flattest window and the longest growth episode (each cut coloured by its time t)", TRAJ, K, H) font ",9"
     set mxtics; set mytics

@@ -116,7 +116,7 @@ set style line 212 lc rgb C_STAT lw 1.0 dt (3,3)              # (d) sigma of E
 
 do for [fmt in FORMATS] {
     eval term(fmt, 'ti_drift_fig6', 17, 17)
-    set multiplot title sprintf("{/:Bold Fig. 6:} Lennard-Jones cluster, 9 particles in the plane (3×3 grid perturbed by ≤ %g, p_0 = 0), " \
+    set multiplot title "{/:Bold " . made_by('lj') . ":} " . sprintf("Lennard-Jones cluster, 9 particles in the plane (3×3 grid perturbed by ≤ %g, p_0 = 0), " \
         . method_key("sti", "004") . ", α = 1/12,\nno processing; (b)–(d): h = %g, %d trajectories to t = %g " \
         . "%s", PERT, H_LJ, M_LJ, T_END, \
         ALL_DIV eq "" ? "" : sprintf("(in (a) every run diverges at h = %s, the step size printed in the paper)", ALL_DIV))

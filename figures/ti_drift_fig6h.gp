@@ -29,7 +29,7 @@ set style line 603 lc rgb '#777777' lw 1.0 dt (2,3)
 
 do for [fmt in FORMATS] {
     eval term(fmt, 'ti_drift_fig6h', 12, 9)
-    set title sprintf("{/:Bold Fig. 6, the step:} Lennard-Jones cluster, " . method_key("sti", "004") . ":\nσ of the error of E at t = %g over %d trajectories against h", T_END, M) font ",9"
+    set title "{/:Bold " . made_by('lj_steps') . ", the step:} " . sprintf("Lennard-Jones cluster, " . method_key("sti", "004") . ":\nσ of the error of E at t = %g over %d trajectories against h", T_END, M) font ",9"
     set logscale xy
     set format x "%g"
     set format y LOGFMT

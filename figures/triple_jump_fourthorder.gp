@@ -7,6 +7,6 @@ CONV_CSV = 'order.csv'
 CONV_QUANTITIES = "energy"
 CONV_YLABEL(q) = "max_{t_j ∈ [0,T]} |H(q_j, p_j) − H_0|"
 METHODS = summary_words('methods.order')
-CONV_TITLE = sprintf("{/:Bold 005:} quartic oscillator H = p^2/2 + q^4/4, (q_0, p_0) = (%s, %s),\nerrors as maxima over the steps t_j ∈ [0, T], T = %s; dashed: least-squares fits", \
+CONV_TITLE = "{/:Bold " . made_by('order') . ":} " . sprintf("quartic oscillator H = p^2/2 + q^4/4, (q_0, p_0) = (%s, %s),\nerrors as maxima over the steps t_j ∈ [0, T], T = %s; dashed: least-squares fits", \
                      scene_num('order.q0'), scene_num('order.p0'), scene_num('order.t_end'))
 load 'figures/convergence.gpi'

@@ -304,9 +304,7 @@ def ledger_tex(runs, papers, tests):
                 for t in tests_cited:
                     if t not in tests:
                         raise SystemExit(f"report.py: the ledger cites the test '{t}', which ctest does not list")
-            label = item.get("label", "")
-            shown = (f"{'Table' if label.startswith('tab:') else 'Fig.'}~\\ref{{{label}}}, p.~\\pageref{{{label}}}"
-                     if label else "")
+            shown = f"\\itemref{{{figure}}}"  # (paper/main.tex: the figure or table carrying \\itemlabel{id})
             rerun = "; ".join(commands) + ("; " + ", ".join(code(f"figures/{g}") for g in scripts) if scripts else "") + \
                 "; " + ", ".join(code(t) for t in dict.fromkeys(tests_cited))
             cells = {cell: ledger_cell(cell, text, where) for cell, text in

@@ -6,6 +6,7 @@
 // order figure and table (analysis/convergence_study.hpp).
 #include <array>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numbers>
 #include <string>
@@ -331,6 +332,25 @@ TEST(ConvergenceStudy, FitsInsideItsWindowAndMayHaveNoOrder) {
   EXPECT_FALSE(conv.fits(1).contains("optional"));
   EXPECT_EQ(conv.orders_csv().rows(), 3u);  // windowed at 0 and 1, optional at 0
   EXPECT_THROW(conv.order("optional", 1), std::logic_error);
+}
+
+// A run that was not made (beyond a method's stability bound) is NaN in a row its flag column marks: the
+// CSV may hold it, and the fit leaves it out.
+TEST(ConvergenceStudy, RunsNotMadeAreNaNInFlaggedRows) {
+  ConvergenceStudy conv({.csv = "conv.csv", .h = {0.4, 0.2, 0.1, 0.05}, .steps = {10, 20, 40, 80}});
+  const auto beyond = [](std::size_t, std::size_t j) { return j == 0; };  // (h = 0.4 beyond the bound)
+  conv.column("e", [&](std::size_t i, std::size_t j) {
+        return beyond(i, j) ? std::numeric_limits<double>::quiet_NaN() : std::pow(0.4 / std::pow(2.0, static_cast<double>(j)), 2);
+      })
+      .flag("e_beyond_bound", beyond)
+      .fit("e", "e", 0.0);
+  EXPECT_EQ(conv.csv().unflagged_non_finite(), "");
+  EXPECT_NE(conv.csv().str().find("0.40000000000000002,10,nan,1\n"), std::string::npos) << conv.csv().str();
+  EXPECT_EQ(conv.order("e").points, 3);
+  EXPECT_NEAR(conv.order("e").order, 2.0, 1e-12);
+  ConvergenceStudy unflagged({.csv = "conv.csv", .h = {0.4, 0.2}, .steps = {10, 20}});
+  unflagged.column("e", [](std::size_t, std::size_t j) { return j == 0 ? std::numeric_limits<double>::quiet_NaN() : 1.0; });
+  EXPECT_NE(unflagged.csv().unflagged_non_finite(), "");  // (the runner refuses to write it)
 }
 
 TEST(PoincareSection, UpwardCutInterpolatesTheStepLinearly) {

@@ -27,6 +27,12 @@ ConvergenceStudy& ConvergenceStudy::column(const std::string& name,
   return *this;
 }
 
+ConvergenceStudy& ConvergenceStudy::flag(const std::string& name,
+                                         const std::function<bool(std::size_t, std::size_t)>& marked) {
+  flags_.push_back(name);
+  return column(name, [&](std::size_t i, std::size_t j) { return marked(i, j) ? 1.0 : 0.0; });
+}
+
 ConvergenceStudy& ConvergenceStudy::fit(const std::string& name, const std::string& column, double floor,
                                         const std::string& floor_is) {
   return fit(name, column, [floor](std::size_t) { return floor; }, floor_is);
@@ -109,6 +115,7 @@ Csv ConvergenceStudy::csv() const {
   names.insert(names.end(), {"h", "steps"});
   for (const auto& c : columns_) names.push_back(c.name);
   Csv out(names);
+  out.flags(flags_);
   for (std::size_t i = 0; i < initials_; ++i)
     for (std::size_t j = 0; j < h_.size(); ++j) {
       if (initial_column_) out << static_cast<std::int64_t>(i);

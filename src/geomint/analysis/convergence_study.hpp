@@ -53,6 +53,10 @@ class ConvergenceStudy {
 
   // A column: value(i, j) of the run of initial condition i at step h[j] (i = 0 with one condition).
   ConvergenceStudy& column(const std::string& name, const std::function<double(std::size_t i, std::size_t j)>& value);
+  // A flag column: 1 where run (i, j) was not made (a method beyond its stability bound, say), else 0. The
+  // CSV declares it a flag (io/csv.hpp), so that the other columns may hold NaN ("no run") in its rows; a
+  // fit leaves NaN out (fit_order fits finite errors only).
+  ConvergenceStudy& flag(const std::string& name, const std::function<bool(std::size_t i, std::size_t j)>& marked);
   // The order `name` of column `column` against h over its errors above `floor` (of initial condition
   // i: floor_of(i)), for every initial condition; throws NumericalFailure naming the series, the
   // initial condition and what errors below the floor are (`floor_is`) where fewer than 3 are above.
@@ -90,6 +94,7 @@ class ConvergenceStudy {
   std::size_t initials_;
   bool initial_column_;
   std::vector<Column> columns_;
+  std::vector<std::string> flags_;  // the names of the columns that are flags
   std::vector<Fit> fits_;  // in the order fitted
   std::vector<const Fit*> fits_by_initial() const;  // stably sorted by initial condition
   const Column& column_named(const std::string& name) const;

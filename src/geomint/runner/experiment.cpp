@@ -218,7 +218,8 @@ constexpr const char* kStudiesKey = "studies";
 // has no maps and truncates long names, so they are two arrays, FV_KEY (the dotted key, prefixed
 // "scene." or "summary."; array elements by index from 0) and FV_VAL; integers are written with
 // ".0" (gnuplot would divide them as integers). A list of texts is also one text under its own key,
-// its words separated by spaces (scene_words, summary_words).
+// its words separated by spaces (scene_words, summary_words). And the papers' items each study that ran
+// made under the scene, "made.<study>" (made_by: a figure's title names its item as the study does).
 using Entry = std::pair<std::string, std::string>;  // (key, gnuplot literal)
 
 std::string gnuplot_quoted(const std::string& s) {  // '...' with '' for ' and no newlines
@@ -252,7 +253,8 @@ void drop_numbers(nlohmann::ordered_json& j) {
     for (auto& v : j) drop_numbers(v);
 }
 
-std::string figure_values(const nlohmann::ordered_json& scene, nlohmann::ordered_json summary) {
+std::string figure_values(const nlohmann::ordered_json& scene, nlohmann::ordered_json summary,
+                          const std::vector<Entry>& made) {
   // (wall times differ from run to run; this file does not): the run's timing, and the numbers of the
   // cost studies' work-precision sets (analysis/work_precision_set.hpp), whose method lists the figures read
   summary.erase("timing");
@@ -260,12 +262,14 @@ std::string figure_values(const nlohmann::ordered_json& scene, nlohmann::ordered
   std::vector<Entry> values;
   collect_values(scene, "scene", true, values);
   collect_values(summary, "summary", false, values);
+  values.insert(values.end(), made.begin(), made.end());
   std::set<std::string> seen;
   for (const auto& [k, v] : values)
     if (!seen.insert(k).second) throw std::logic_error("figure_values.gp: the key " + k + " twice");
   std::string out =
       "# The numbers of this run for its figures (figures/common.gp: scene_num, summary_num): the resolved\n"
-      "# scene (numbers and texts) and the numbers of summary.json without its timings.\n";
+      "# scene (numbers and texts), the numbers of summary.json without its timings, and the items each study\n"
+      "# made (made.<study>: \"000 Fig. 9\", for a figure's title: made_by).\n";
   const std::string n = std::to_string(values.size());
   out += "array FV_KEY[" + n + "]\narray FV_VAL[" + n + "]\n";
   for (std::size_t i = 0; i < values.size(); ++i) {
@@ -833,7 +837,10 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
     summary["timing"]["wall_s"] = wall;
     summary["timing"]["study_wall_s"] = study_wall;
     out->write("summary.json", summary.dump(2) + "\n");
-    out->write("figure_values.gp", figure_values(scene->to_json(), summary));
+    std::vector<Entry> made_by;  // (the papers' items of each study that ran, for the figures' titles)
+    for (const std::string& r : ran)
+      made_by.emplace_back("made." + r, gnuplot_quoted(join(made_here(*find_study(spec, r), *scene), ", ")));
+    out->write("figure_values.gp", figure_values(scene->to_json(), summary, made_by));
 
     std::string command;
     for (int i = 0; i < argc; ++i) command += (i ? " " : "") + std::string(argv[i]);
