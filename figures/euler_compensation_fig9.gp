@@ -20,6 +20,6 @@ CONV2_KEYS = "'ẏ = −αy' 'Gompertz'"
 CONV2_YLABEL = "max_{t_j ∈ [0,T]} |y_j − y(t_j)|"
 CONV2_NOTE = "Euler in ȳ: exact up to round-off (not shown)"
 CONV_PANEL_TITLES = "'harmonic oscillator' 'explicit Euler in y (Figs 2, 3)'"
-CONV_TITLE = sprintf("{/:Bold Fig. 9:} convergence in h, errors as maxima over the steps t_j ∈ [0, T], T = %s; dashed: least-squares fits", \
+CONV_TITLE = "{/:Bold " . made_by('convergence') . ":} " . sprintf("convergence in h, errors as maxima over the steps t_j ∈ [0, T], T = %s; dashed: least-squares fits", \
                      scene_num('convergence.t_end'))
 load 'figures/convergence.gpi'

@@ -34,6 +34,6 @@ PARAMS = sprintf("l = %s, m = %s, k = %s, g = %s, t_{max} = %s", scene_num('pend
 Z0 = sprintf("initial condition (x, y, p_x, p_y) = (%s, %s, %s, %s)", scene_num(sprintf('initial.%d.0', ic)), \
              scene_num(sprintf('initial.%d.1', ic)), scene_num(sprintf('initial.%d.2', ic)), scene_num(sprintf('initial.%d.3', ic)))
 SEP = words(CONV_QUANTITIES) == 1 ? "\n" : " "   # (the title in more lines on one panel)
-CONV_TITLE = sprintf("{/:Bold Fig. 4:} planar elastic pendulum, Cartesian coordinates:%s%s\n%s;%sdashed lines: least-squares fits over the h range fitted", \
+CONV_TITLE = "{/:Bold " . made_by('convergence') . ":} " . sprintf("planar elastic pendulum, Cartesian coordinates:%s%s\n%s;%sdashed lines: least-squares fits over the h range fitted", \
                      SEP, PARAMS, Z0, SEP)
 load 'figures/convergence.gpi'
