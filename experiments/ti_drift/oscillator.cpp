@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "geomint/analysis/convergence_study.hpp"
 #include "geomint/analysis/linear_stability.hpp"
 #include "geomint/core/integrate.hpp"
 #include "geomint/integrators/takahashi_imada.hpp"
@@ -108,24 +109,19 @@ struct Method {
   std::vector<Pt> pts;
 };
 
-// Each method of oscillator.methods at each oscillator.omega_h within its bound, at equal work (oscillator.csv).
-std::vector<Method> integrate_methods(Context& ctx, const Z1& z0, double T1) {
-  const Scene& s = ctx.scene;
+// Each method of oscillator.methods at each oscillator.omega_h within its bound, at equal work.
+std::vector<Method> integrate_methods(const Scene& s, const Z1& z0, double T1) {
   std::vector<Method> methods;
   for (const auto& m : s.texts("oscillator.methods"))
     methods.push_back({m, label_of(m), evals_per_step(m), method_info(m).oscillatory_bound, {}});
-
-  Csv oc({"method", "omega_h", "h_eff", "max_global_err", "max_rel_H_err"});
   for (double wh : s.reals("oscillator.omega_h")) {
     for (auto& m : methods) {
       const double h = step_at_equal_work(wh, m.evals);
       if (beyond_bound(kOscillator.w * h, m.bound)) continue;  // (TI at h = h_eff: omega h_eff < 2 sqrt(3))
       const auto [g, e] = oscillator_errors(m.name, z0, h, T1);
-      oc.row(m.label, wh, wh, g, e);
       m.pts.push_back({wh, g, e});
     }
   }
-  ctx.write("oscillator.csv", oc);
   return methods;
 }
 
@@ -143,39 +139,54 @@ void write_closed_forms(Context& ctx) {
   ctx.write("oscillator_closed_forms.csv", cf);
 }
 
-// The fitted orders (summary orders) and the equal work (summary equal_work); returns the summary of the
-// study begun.
-Value fit_orders(Context& ctx, const std::vector<Method>& methods, const Z1& z0) {
-  const Scene& s = ctx.scene;
-  Value orders, evals, eff_bound, labels = Value::list(), points, fit_points, roundoff, largest;
+// The run of a method at omega h_eff = wh, or nullptr where it is beyond its bound (not run).
+const Pt* run_at(const Method& m, double wh) {
+  const auto p = std::find_if(m.pts.begin(), m.pts.end(), [&](const Pt& q) { return q.h == wh; });
+  return p == m.pts.end() ? nullptr : &*p;
+}
+
+// Record: oscillator.csv (h = omega h_eff; per method <label>_solution, <label>_energy: the largest global and
+// relative energy errors, NaN where <label>_beyond_bound), the orders fitted over omega h_eff <= 0.5 above
+// round-off (orders.csv, summary orders), the equal work (summary equal_work); returns the summary of the study begun.
+Value fit_orders(Context& ctx, const std::vector<Method>& methods, const Z1& z0, double T1) {
+  const auto omega_h = ctx.scene.reals("oscillator.omega_h");
+  // steps: the count of the Takahashi-Imada methods (h = h_eff, 2 evaluations per step), whose step is the
+  // axis's; every method runs over the same t <= t_omega / omega, at its own h = h_eff e/2.
+  std::vector<double> steps;
+  for (double wh : omega_h) steps.push_back(static_cast<double>(steps_within(T1, step_at_equal_work(wh, 2))));
+  ConvergenceStudy conv({.csv = "oscillator.csv", .h = omega_h, .steps = steps});
+  const OrderFitRule rule{.floor = [](std::size_t) { return roundoff_floor(); }, .h_max = kFitMaxOmegaH};
+  const double nan = std::numeric_limits<double>::quiet_NaN();
   for (const auto& m : methods) {
-    for (const bool energy : {false, true}) {
-      const std::string name = m.label + (energy ? "_energy" : "_solution");
-      std::vector<double> h, e;
-      for (const auto& p : m.pts)
-        if (p.h <= kFitMaxOmegaH) h.push_back(p.h), e.push_back(energy ? p.e : p.g);
-      const OrderFit fit = fit_order(h, e, roundoff_floor(), name.c_str());
-      orders[name] = fit.order;
-      record_order_fit(ctx.summary, "orders." + name,
-                       {"oscillator.csv", "omega_h", energy ? "max_rel_H_err" : "max_global_err", {{"method", m.label}}}, fit,
-                       roundoff_floor());
+    conv.column(m.label + "_solution", [&](std::size_t, std::size_t j) { const Pt* p = run_at(m, omega_h[j]); return p ? p->g : nan; })
+        .column(m.label + "_energy", [&](std::size_t, std::size_t j) { const Pt* p = run_at(m, omega_h[j]); return p ? p->e : nan; })
+        .flag(m.label + "_beyond_bound", [&](std::size_t, std::size_t j) { return run_at(m, omega_h[j]) == nullptr; })
+        .fit(m.label + "_solution", m.label + "_solution", rule)
+        .fit(m.label + "_energy", m.label + "_energy", rule);
+  }
+  conv.write(ctx);
+
+  Value evals, eff_bound, labels = Value::list(), points, fit_points, roundoff, largest, bounds;
+  for (const auto& m : methods) {
+    for (const std::string& name : {m.label + "_solution", m.label + "_energy"}) {
+      const OrderFit& fit = conv.order(name);
+      const auto& err = conv.values(name);
       fit_points[name] = fit.points;
-      for (std::size_t i = 0; i < h.size(); ++i)  // the largest step whose error is at the round-off plateau
-        if (!fit.used[i] && (!roundoff.contains(name) || h[i] > roundoff.at(name).number())) roundoff[name] = h[i];
+      for (std::size_t j = 0; j < omega_h.size(); ++j)  // the largest step whose error is at the round-off plateau
+        if (omega_h[j] <= kFitMaxOmegaH && std::isfinite(err[j]) && !fit.used[j] &&
+            (!roundoff.contains(name) || omega_h[j] > roundoff.at(name).number()))
+          roundoff[name] = omega_h[j];
     }
     evals[m.label] = m.evals;
     eff_bound[m.label] = m.bound * 2 / static_cast<double>(m.evals);  // in omega h_eff
     labels.push_back(m.label);
     points[m.label] = m.pts.size();
+    bounds[m.label] = m.bound;
     const Pt& last = *std::max_element(m.pts.begin(), m.pts.end(), [](const Pt& a, const Pt& b) { return a.h < b.h; });
     largest[m.label] = {{"omega_h", last.h}, {"max_global_err", last.g}, {"max_rel_H_err", last.e}};
   }
-  merge(ctx.summary, "orders", orders);
   ctx.summary["equal_work"] = {{"evals_per_step", evals}, {"omega_h_eff_bound", eff_bound}, {"methods", labels}};
 
-  const auto omega_h = s.reals("oscillator.omega_h");
-  Value bounds;
-  for (const auto& m : methods) bounds[m.label] = m.bound;
   Value o = {{"omega", kOscillator.w},
              {"start", {{"q", z0.q[0]}, {"p", z0.p[0]}}},
              {"omega_h_bound", bounds},  // each method's own bound in omega h (the registry's)
@@ -263,9 +274,9 @@ void run_oscillator(Context& ctx) {
   ctx.progress("Fig. 1: oscillator");
   const Z1 z0 = make_state(0.0, 1.0);
   const double T1 = s.real("oscillator.t_omega");
-  const std::vector<Method> methods = integrate_methods(ctx, z0, T1);
+  const std::vector<Method> methods = integrate_methods(s, z0, T1);
   write_closed_forms(ctx);
-  Value o = fit_orders(ctx, methods, z0);
+  Value o = fit_orders(ctx, methods, z0, T1);
   compare_closed_forms(o, methods);
   compare_ti_sv(o, methods);
   bisect_ti_bound(ctx, o);
@@ -303,7 +314,7 @@ Study oscillator_study() {
   return {.name = "oscillator",
           .makes = {{"004", "Fig. 1"}},
           .about = "the harmonic oscillator at equal work: global and energy errors, their orders, the closed forms",
-          .files = {"oscillator.csv", "oscillator_closed_forms.csv"},
+          .files = {"oscillator.csv", "orders.csv", "oscillator_closed_forms.csv"},
           .keys = Schema()
                       .reals("oscillator.omega_h", positive(), 3,
                              "effective steps omega h_eff of Fig. 1 (equal work: h = h_eff e/2 for e force evaluations "
