@@ -3,7 +3,7 @@
 # transformation (82), RK4 for reference; left), global error of explicit Euler on eqs. (14) and (17)
 # (right). Dashed lines: least-squares fits from orders.csv, drawn over the h range they were fitted on.
 # Input: fig9_convergence.csv, orders.csv, scene values (convergence.t_end), summary values
-# (methods.convergence: the left panel's methods).
+# (methods.convergence: the left panel's methods; methods.convergence_scalar: the right panel's).
 load 'figures/common.gp'
 CONV_NAME = 'euler_compensation_fig9'
 CONV_CSV = 'fig9_convergence.csv'
@@ -12,8 +12,8 @@ METHODS = summary_words('methods.convergence')
 CONV_QUANTITIES = "energy"                    # fits <method>_energy of the columns <method>_max
 CONV_COLUMNS = "max"
 CONV_YLABEL(q) = "max_{t_j ∈ [0,T]} |H(q_j, p_j) − H_0|"
-# right: the study's explicit Euler on (14) and (17), columns ee_decay_max, ee_gompertz_max (no scene's methods)
-CONV2_METHODS = "ee"
+# right: the study's explicit Euler on (14) and (17), columns <method>_decay_max, <method>_gompertz_max
+CONV2_METHODS = summary_words('methods.convergence_scalar')
 CONV2_QUANTITIES = "decay gompertz"
 CONV2_COLUMNS = "decay_max gompertz_max"
 CONV2_KEYS = "'ẏ = −αy' 'Gompertz'"

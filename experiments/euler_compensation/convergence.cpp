@@ -59,12 +59,13 @@ void run_convergence(Context& ctx) {
   per_method("_max", [](const EnergyRun& r) { return r.max_err; });
   per_method("_rms", [](const EnergyRun& r) { return r.rms_err; });
   per_method("_evals", [](const EnergyRun& r) { return static_cast<double>(r.force_evals); });
-  conv.column("ee_decay_max", [&](std::size_t, std::size_t j) { return rows[j].ee_decay; })
-      .column("ee_gompertz_max", [&](std::size_t, std::size_t j) { return rows[j].ee_gompertz; });
+  const std::string ee = label_of("explicit_euler");  // (the right panel's method, on (14) and (17))
+  conv.column(ee + "_decay_max", [&](std::size_t, std::size_t j) { return rows[j].ee_decay; })
+      .column(ee + "_gompertz_max", [&](std::size_t, std::size_t j) { return rows[j].ee_gompertz; });
 
   // Orders: least squares on log-log over the points above round-off.
-  conv.fit("ee_decay", "ee_decay_max", roundoff_floor(s.real("decay.y0")))
-      .fit("ee_gompertz", "ee_gompertz_max", roundoff_floor(gompertz.equilibrium()));
+  conv.fit(ee + "_decay", ee + "_decay_max", roundoff_floor(s.real("decay.y0")))
+      .fit(ee + "_gompertz", ee + "_gompertz_max", roundoff_floor(gompertz.equilibrium()));
   const double floor = roundoff_floor(std::max(H0, 1.0));
   for (const auto& m : methods) conv.fit(label_of(m) + "_energy", label_of(m) + "_max", floor);
   for (const auto& m : methods) conv.fit(label_of(m) + "_energy_rms", label_of(m) + "_rms", floor);
@@ -77,6 +78,7 @@ void run_convergence(Context& ctx) {
       {"odeint_max_rel_err", "max over the steps of Figs 2/3 of |y_odeint(t_j) - y(t_j)| / |y(t_j)|"}};
   ctx.summary["h_range"]["convergence"] = h_range(hs);
   ctx.summary["methods"]["convergence"] = labels_of(methods);  // (Fig 9's left panel: its curves, by label)
+  ctx.summary["methods"]["convergence_scalar"] = labels_of({"explicit_euler"});  // (its right panel's)
 }
 
 StudyPlan plan_convergence(const Scene& s) {
