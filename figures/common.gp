@@ -82,16 +82,13 @@ LOGFMT = "10^{%L}"                       # tic labels on logarithmic axes
 # eval getfit('se_energy') defines se_energy_order, se_energy_c (log10 of the
 # constant), se_energy_hmin and se_energy_hmax: the fitted line is
 # err = 10^c h^order over [hmin, hmax]. A name missing from orders.csv is an error.
-_row(n, col) = (strcol("name") eq n) ? column(col) : NaN
-_get(n, col, var) = sprintf("undefine STATS_*; stats csv('orders.csv') using (_row('%s','%s')) nooutput; %s = STATS_max; ", n, col, var)
-getfit(n) = _get(n, 'order', n.'_order') . _get(n, 'log10_c', n.'_c') \
-          . _get(n, 'h_min', n.'_hmin')  . _get(n, 'h_max', n.'_hmax')
 # eval getfit_at('sv_energy', 0): the same from the rows of initial condition 0 alone (orders.csv's
-# column initial), for a study of several initial conditions (getfit does not tell them apart)
-_row_at(n, ic, col) = (strcol("name") eq n && column("initial") == ic) ? column(col) : NaN
+# column initial), for a study of several initial conditions (getfit takes the name's rows of any)
+_row_at(n, ic, col) = (strcol("name") eq n && (ic < 0 || column("initial") == ic)) ? column(col) : NaN
 _get_at(n, ic, col, var) = sprintf("undefine STATS_*; stats csv('orders.csv') using (_row_at('%s',%d,'%s')) nooutput; %s = STATS_max; ", n, ic, col, var)
 getfit_at(n, ic) = _get_at(n, ic, 'order', n.'_order') . _get_at(n, ic, 'log10_c', n.'_c') \
                  . _get_at(n, ic, 'h_min', n.'_hmin')  . _get_at(n, ic, 'h_max', n.'_hmax')
+getfit(n) = getfit_at(n, -1)
 powerlaw(h, c, order) = 10**c * h**order
 # after eval getfit(n): the fitted line from h_min (t = 0) to h_max (t = 1), straight in log-log, for
 # `[t=0:1:1] '+' using (fit_h(n, t)):(fit_err(n, t)) with lines`

@@ -7,6 +7,7 @@
 #include "geomint/core/integrate.hpp"
 #include "geomint/methods/registry.hpp"
 #include "geomint/reference/odeint_reference.hpp"
+#include "geomint/runner/summary.hpp"
 #include "geomint/systems/nonholonomic_golden.hpp"
 #include "geomint/systems/nonholonomic_modified_series.hpp"
 
@@ -19,11 +20,12 @@ const MethodInfo* as_discretization(const MethodInfo& m) {
 }
 
 // {min, max, abs: {min, max}} of a non-empty list of numbers (abs: of their moduli).
-Value range_of(const std::vector<double>& v) {
-  const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+Value signed_range_of(const std::vector<double>& v) {
+  Value r = range_of(v);
   double abs_lo = std::abs(v.front()), abs_hi = abs_lo;
   for (double x : v) abs_lo = std::min(abs_lo, std::abs(x)), abs_hi = std::max(abs_hi, std::abs(x));
-  return {{"min", *lo}, {"max", *hi}, {"abs", {{"min", abs_lo}, {"max", abs_hi}}}};
+  r["abs"] = {{"min", abs_lo}, {"max", abs_hi}};
+  return r;
 }
 
 // Newton iterations per step, over the studies of this run that ran Phi^(ell) (one run per process).
@@ -165,7 +167,7 @@ Value method_ranges(const Value& per_method) {
       else
         complete = false;
     }
-    if (complete && !v.empty()) out[groups[g]] = range_of(v);
+    if (complete && !v.empty()) out[groups[g]] = signed_range_of(v);
   }
   return out;
 }
