@@ -10,6 +10,7 @@
 #   make paper                    figures + scaling + tables from summary.json + paper/main.pdf
 #   make experiment NAME=x [SCENE=v] ARGS='--study S --set key=value'   one experiment (+ the figures of what ran)
 #   make bench                    throughput benchmarks (Google Benchmark)
+#   make plan-rates               measure --plan's rates on the paper scenes' runs, rewrite experiments/plan_rates.toml
 #   make new-study EXPERIMENT=x STUDY=s PAPER=006 ITEM='Fig. 3' [SYSTEM=y]   the skeleton of a new experiment
 #                                 (tools/new_study: README "Adding a figure")
 #   make methods-gpi              rewrite figures/methods.gpi from the method registry (after changing it)
@@ -23,7 +24,7 @@ EXPERIMENTS := $(sort $(notdir $(patsubst %/,%,$(dir $(wildcard experiments/*/*.
 DEPS_STAMP := .deps
 UNCHECKED := figures/out/.unchecked   # figures rendered by make figures whose text is not yet checked
 
-.PHONY: all deps build test figures figure-runs figure-files scaling paper experiment bench methods-gpi new-study clean FORCE
+.PHONY: all deps build test figures figure-runs figure-files scaling paper experiment bench plan-rates methods-gpi new-study clean FORCE
 all: build
 
 $(DEPS_STAMP)/%.stamp: scripts/install-deps.sh
@@ -134,6 +135,9 @@ bench: $(DEPS_STAMP)/build.stamp $(DEPS_STAMP)/figures.stamp $(BUILD)/CMakeCache
 	cmake --build $(BUILD) -j $(JOBS) --target geomint_bench geomint_energy_map_bench
 	$(BUILD)/bin/geomint_bench
 	bench/run_energy_map_bench.sh $(BUILD)
+
+plan-rates: figure-runs
+	python3 scripts/plan_rates.py $(RESULTS) $(BUILD)
 
 new-study:
 	@test -n "$(EXPERIMENT)" -a -n "$(STUDY)" -a -n "$(PAPER)" -a -n "$(ITEM)" || { echo "usage: make new-study EXPERIMENT=<name> STUDY=<study> PAPER=<id> ITEM='<item>' [SYSTEM=<system>]"; exit 2; }

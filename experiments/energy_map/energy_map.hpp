@@ -41,6 +41,7 @@ struct MapSetup {
 MapSetup map_setup(const Scene& s);
 
 const char* coordinates_name(Coordinates c);
+const char* coordinates_label(Coordinates c);  // its name in a figure, with its equation of 000: "polar (72)"
 // sqrt(pendulum.k / pendulum.m), the spring's frequency that bounds the step; refuses one that is not finite and positive.
 double spring_frequency(const Scene& s);
 
@@ -50,10 +51,6 @@ void check_map(const Scene& s);
 
 // ---- plans (--plan, and the counts checked before any work): counts in double from the scene ----
 
-// The batched kernel's ns per trajectory-step and core, the mean of the Cartesian and polar kernels, for the
-// instruction set it runs on this CPU (paper-scene summary.json timing.ns_per_step_per_core, 2 threads):
-// AVX-512 0.47 and 1.05 (an AVX-512 machine), AVX2 2.15 and 3.21 (an AVX2 EPYC), SSE2 4.37 and 6.71 (make
-// bench on the AVX-512 machine). The scalar loop: about 20-29 ns per step.
 // The batched kernel's own ceiling in cycles per trajectory-step: its multiplies and FMAs on two multiply
 // pipes, counted in its compiled object (bench/README.md); 0 where not counted (SSE2).
 inline double kernel_ceiling_cycles(const std::string& isa, Coordinates c) {
@@ -61,12 +58,10 @@ inline double kernel_ceiling_cycles(const std::string& isa, Coordinates c) {
   return isa == "avx512" ? (polar ? 2.7 : 1.5) : isa == "avx2" ? (polar ? 5.4 : 3.125) : 0.0;
 }
 
-inline double kernel_ns_per_step() {
-  const std::string isa = energy_map_kernels().front().isa;
-  return isa == "avx512" ? 0.76 : isa == "avx2" ? 2.68 : 5.54;
-}
-constexpr double kScalarNsPerStep = 25.0;  // the scalar loop (energy_map_scalar, symplectic Euler step loops)
-constexpr const char* kNsNote = "ns per step measured from the paper-scene summary.json timing";
+// --plan's rates (experiments/plan_rates.toml): the batched kernel of the instruction set it runs on this CPU,
+// and the scalar loop.
+inline const PlanRate& kernel_rate() { return plan_rate("energy map kernel " + energy_map_kernels().front().isa); }
+inline const PlanRate& scalar_rate() { return plan_rate("energy map scalar loop"); }
 
 struct GridCount {
   double points, batches, steps;  // grid points, batches of 64 (padded), steps per trajectory (t_max / dt)

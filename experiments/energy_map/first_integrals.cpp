@@ -28,7 +28,7 @@ void check_first_integrals(const Scene& s) {
 StudyPlan plan_first_integrals(const Scene& s) {
   const double polar = static_cast<double>(s.reals("first_integrals.h").size() * s.real_rows("first_integrals.initial").size());
   const double steps = polar + 2 * (static_cast<double>(s.integer("first_integrals.steps")) + 1);  // plain and compensated
-  return {steps, steps, 1001 * 100.0, kScalarNsPerStep, kNsNote};  // angular_momentum.csv: at most 1001 rows
+  return {steps, steps, 1001 * 100.0, scalar_rate().ns_per_step, scalar_rate().note};  // angular_momentum.csv: at most 1001 rows
 }
 
 // The local order between the two smallest step sizes: the slope of log(err) against log(h) there.

@@ -32,11 +32,11 @@ StudyPlan plan_timing(const Scene& s) {
   const double scalar = std::min(static_cast<double>(s.integer("timing.scalar_points")), n.points) *
                         static_cast<double>(s.integer("timing.scalar_steps"));
   StudyPlan p;
-  p.memory_bytes = n.batches * kEnergyMapBatch * 2 * sizeof(double), p.ns_per_step = kScalarNsPerStep;
-  p.note = "the timing protocol; the kernel sample only without the map study; " + std::string(kNsNote);
+  p.memory_bytes = n.batches * kEnergyMapBatch * 2 * sizeof(double), p.ns_per_step = scalar_rate().ns_per_step;
+  p.note = "the timing protocol; the kernel sample only without the map study; " + scalar_rate().note;
   const double repeats = static_cast<double>(s.integer("timing.repeats"));
-  const TimedPlan sample = timing_plan({{kernel, kernel_ns_per_step()}, {kernel, kernel_ns_per_step()}}, repeats);
-  const TimedPlan loop = timing_plan({{scalar, kScalarNsPerStep}, {scalar, kScalarNsPerStep}}, repeats);
+  const TimedPlan sample = timing_plan({{kernel, kernel_rate().ns_per_step}, {kernel, kernel_rate().ns_per_step}}, repeats);
+  const TimedPlan loop = timing_plan({{scalar, scalar_rate().ns_per_step}, {scalar, scalar_rate().ns_per_step}}, repeats);
   p.timed_seconds = sample.seconds + loop.seconds, p.timed_steps = sample.steps + loop.steps;
   p.reuses = "map", p.reused_seconds = sample.seconds, p.reused_steps = sample.steps;  // (the map's wall time instead)
   return p;

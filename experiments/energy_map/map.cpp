@@ -116,7 +116,7 @@ StudyPlan plan_map(const Scene& s) {
   // and map_grid.csv (about 160 and 60 characters)
   const double bytes = padded * (2 * sizeof(double) + sizeof(Point)) + n.points * (sizeof(EnergyMapRow) + 220.0);
   const double steps = 2 * padded * n.steps;  // one run per coordinate system and grid point (padding lanes die at once)
-  return {steps, steps, bytes, kernel_ns_per_step(), "batched kernel; " + std::string(kNsNote), 2 * n.batches};  // (batches of both maps)
+  return {steps, steps, bytes, kernel_rate().ns_per_step, kernel_rate().note, 2 * n.batches};  // (batches of both maps)
 }
 
 // ---- Fig. 6: the map, in rounds of batches with a checkpoint after each ----

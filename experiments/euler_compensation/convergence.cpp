@@ -85,7 +85,7 @@ StudyPlan plan_convergence(const Scene& s) {
   const double methods = static_cast<double>(s.texts("convergence.methods").size());
   const double steps = (methods + 2) * steps_to_each(s.real("convergence.t_end"), s.reals("convergence.h"));  // and Euler on (14), (17)
   return {steps, steps * kEvalsPerStep, static_cast<double>(s.reals("convergence.h").size()) * (4 + 3 * methods) * kCellBytes,
-          kOscillatorNs, kOscillatorNsNote};
+          oscillator_rate().ns_per_step, oscillator_rate().note};
 }
 
 

@@ -94,12 +94,12 @@ StudyPlan plan_cost(const Scene& s) {
   const auto methods = s.texts("timing.methods");
   const double counted = static_cast<double>(methods.size()) * steps_to_each(s.real("convergence.t_end"), s.reals("timing.h"));
   std::vector<TimedCall> calls;  // the set's runs, then a run of timing.steps per method
-  for (double h : s.reals("timing.h")) calls.insert(calls.end(), methods.size(), TimedCall{s.real("convergence.t_end") / h, kOscillatorNs});
-  calls.insert(calls.end(), methods.size(), TimedCall{static_cast<double>(s.integer("timing.steps")), kOscillatorNs});
+  for (double h : s.reals("timing.h")) calls.insert(calls.end(), methods.size(), TimedCall{s.real("convergence.t_end") / h, oscillator_rate().ns_per_step});
+  calls.insert(calls.end(), methods.size(), TimedCall{static_cast<double>(s.integer("timing.steps")), oscillator_rate().ns_per_step});
   StudyPlan p;
   p.steps = counted, p.force_evals = counted * kEvalsPerStep;
-  p.memory_bytes = static_cast<double>(calls.size()) * 8 * kCellBytes, p.ns_per_step = kOscillatorNs;
-  p.note = "counting runs, then the timing protocol; " + std::string(kOscillatorNsNote);
+  p.memory_bytes = static_cast<double>(calls.size()) * 8 * kCellBytes, p.ns_per_step = oscillator_rate().ns_per_step;
+  p.note = "counting runs, then the timing protocol; " + oscillator_rate().note;
   const TimedPlan timed = timing_plan(calls, static_cast<double>(s.integer("timing.repeats")));
   p.timed_seconds = timed.seconds, p.timed_steps = timed.steps;
   return p;

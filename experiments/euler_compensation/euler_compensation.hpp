@@ -58,12 +58,9 @@ void check_oscillator_step(const Scene& s, const char* key, double h);
 // once, every step below its bound (and (82) defined, if named), and each h dividing t_end.
 void check_steps(const Scene& s, const char* key, const char* methods_key);
 
-// ---- --plan: steps in double; ns per step are constants measured on the paper scene
-// (results/euler_compensation, summary cost.ns_per_step: symplectic Euler with (82), the most
-// expensive, for the oscillator; study wall time over its steps for Figs 2, 3).
+// ---- --plan: steps in double; ns per step from experiments/plan_rates.toml
 constexpr double kCellBytes = 24;      // one CSV cell held in memory
-constexpr double kOscillatorNs = 272;  // compensated symplectic Euler (82), the most expensive method
+inline const PlanRate& oscillator_rate() { return plan_rate("oscillator compensated symplectic euler"); }
 constexpr double kEvalsPerStep = 4;    // the most of the paper scene's methods (rk4)
-constexpr const char* kOscillatorNsNote = "ns per step: symplectic Euler with (82) (paper-scene summary cost.ns_per_step)";
 
 }  // namespace geomint::euler_compensation

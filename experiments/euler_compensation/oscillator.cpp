@@ -53,7 +53,7 @@ void run_oscillator(Context& ctx) {
 
 StudyPlan plan_oscillator(const Scene& s) {
   const double n = static_cast<double>(s.integer("oscillator.steps"));
-  return {2 * n, 2 * n, (n + 1) * (sizeof(State) + 8 * kCellBytes), kOscillatorNs, kOscillatorNsNote};
+  return {2 * n, 2 * n, (n + 1) * (sizeof(State) + 8 * kCellBytes), oscillator_rate().ns_per_step, oscillator_rate().note};
 }
 
 }  // namespace

@@ -15,7 +15,6 @@
 namespace geomint::euler_compensation {
 
 constexpr double kReferenceTolerance = 1e-14;  // rtol = atol of the odeint reference of Figs 2-3
-constexpr double kScalarNs = 5000;             // --plan: a step with its odeint reference from t = 0
 
 struct ScalarFigure {
   Csv trajectory{{"j", "t", "y_exact", "y_euler", "y_compensated", "ybar_exact", "ybar_euler", "ybar_compensated"}};
@@ -87,9 +86,9 @@ void write_scalar_figure(Context& ctx, const std::string& figure, const std::str
 
 // --plan of Figs 2, 3: the steps of Euler in y and in ybar, and the trajectory CSV (8 columns) held in memory.
 inline StudyPlan plan_scalar(double steps, double figures) {
-  return {2 * figures * steps, 2 * figures * steps, (steps + 1) * 8 * kCellBytes, kScalarNs,
-          "each step also integrates its odeint reference from t = 0 (not counted); ns per step: paper-scene "
-          "study wall time over its steps"};
+  const PlanRate& rate = plan_rate("scalar equation with reference");
+  return {2 * figures * steps, 2 * figures * steps, (steps + 1) * 8 * kCellBytes, rate.ns_per_step,
+          "each step also integrates its odeint reference from t = 0 (not counted); " + rate.note};
 }
 
 }  // namespace geomint::euler_compensation

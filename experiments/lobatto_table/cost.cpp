@@ -56,13 +56,13 @@ void run_cost(Context& ctx) {
 StudyPlan plan_cost(const Scene& s) {
   const double t_end = s.real("nonlinear.t_end");
   const auto methods = s.texts("timing.methods");
+  const PlanRate& rate = plan_rate("pendulum lobatto");
   double steps = 0;
   std::vector<TimedCall> calls;
   for (std::size_t m = 0; m < methods.size(); ++m)
-    for (double h : s.reals("nonlinear.h")) steps += t_end / h, calls.push_back(TimedCall{t_end / h, kPendulumNs});
-  StudyPlan p{steps, steps * kPendulumEvals, static_cast<double>(calls.size()) * 8 * kCellBytes, kPendulumNs,
-              "a counting run per method and h, then the timing protocol; ns per step: Lobatto on the pendulum "
-              "(paper-scene summary cost.pendulum)"};
+    for (double h : s.reals("nonlinear.h")) steps += t_end / h, calls.push_back(TimedCall{t_end / h, rate.ns_per_step});
+  StudyPlan p{steps, steps * kPendulumEvals, static_cast<double>(calls.size()) * 8 * kCellBytes, rate.ns_per_step,
+              "a counting run per method and h, then the timing protocol; " + rate.note};
   const TimedPlan timed = timing_plan(calls, static_cast<double>(s.integer("timing.repeats")));
   p.timed_seconds = timed.seconds, p.timed_steps = timed.steps;
   return p;

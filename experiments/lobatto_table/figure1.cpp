@@ -68,8 +68,9 @@ StudyPlan plan_figure1(const Scene& s) {
   const double methods = static_cast<double>(s.texts("figure1.methods").size());
   double steps = 0, largest = 0;
   for (double n : s.reals("figure1.meshes")) steps += methods * n, largest = std::max(largest, n);
+  const PlanRate& rate = plan_rate("oscillator lobatto");
   return {steps, steps * kOscillatorEvals, (largest + 1) * (methods * kStateBytes + (2 + 2 * methods) * kCellBytes),
-          kOscillatorNs, "ns per step: Lobatto on the oscillator (paper-scene summary cost.long_run_phase)"};
+          rate.ns_per_step, rate.note};
 }
 
 }  // namespace

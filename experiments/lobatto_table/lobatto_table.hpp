@@ -79,18 +79,13 @@ Pendulum pendulum(const Scene& s);
 // ---- What each study would cost (--plan), from the scene before any work ----
 //
 // Steps are counted in double (t_end = 1e300 gives a huge count, refused by the runner, not an overflowed
-// integer). The ns per step are constants measured on the paper scene (results/lobatto_table, 2 threads):
-// summary cost.pendulum.by_method.*.ns_per_step and cost.long_run_phase.by_method.*.ns_per_step, and study wall
-// time over steps for the linear iterations; force evaluations per step are the largest of summary
-// cost.pendulum.by_method.*.evals_per_step.
+// integer). The ns per step are experiments/plan_rates.toml's; force evaluations per step are the largest
+// of summary cost.pendulum.by_method.*.evals_per_step.
 
 constexpr double kCellBytes = 24;            // one CSV cell held in memory (text and separator)
 constexpr double kStateBytes = sizeof(Z1);   // one stored (q, p)
 constexpr double kOscillatorEvals = 11;      // force evaluations per step on the oscillator (Lobatto, the most)
 constexpr double kPendulumEvals = 16;        // per step on the nonlinear pendulum (Lobatto's Newton, the most)
-constexpr double kMatrixNs = 25;             // one step of a 2x2 one-step matrix (Fig. 2, stability runs)
-constexpr double kOscillatorNs = 280;        // one Lobatto step through integrate on the oscillator
-constexpr double kPendulumNs = 520;          // one Lobatto step (Newton) on the nonlinear pendulum
 
 double period_of(const Scene& s);
 

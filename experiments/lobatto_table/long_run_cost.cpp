@@ -150,17 +150,17 @@ StudyPlan plan_long_run_cost(const Scene& s) {
   const double periods = s.real("long_run.periods"), T = period_of(s);
   const double methods = static_cast<double>(s.texts("long_run_cost.methods").size());
   const double timed = static_cast<double>(s.integer("long_run_cost.timing_steps"));
+  const PlanRate& rate = plan_rate("oscillator lobatto");
   double counted = 0;
   std::vector<TimedCall> calls;
   for (double h : s.reals("long_run_cost.h")) {
     const double n = periods * T / h;
     counted += methods * n;
-    calls.insert(calls.end(), s.texts("long_run_cost.methods").size(), TimedCall{std::min(n, timed), kOscillatorNs});
+    calls.insert(calls.end(), s.texts("long_run_cost.methods").size(), TimedCall{std::min(n, timed), rate.ns_per_step});
   }
   StudyPlan p{counted, counted * kOscillatorEvals,
-              methods * static_cast<double>(s.reals("long_run_cost.h").size()) * 9 * kCellBytes, kOscillatorNs,
-              "the runs, then the timing protocol on their segments; ns per step: Lobatto on the oscillator "
-              "(paper-scene summary cost.long_run_phase)"};
+              methods * static_cast<double>(s.reals("long_run_cost.h").size()) * 9 * kCellBytes, rate.ns_per_step,
+              "the runs, then the timing protocol on their segments; " + rate.note};
   const TimedPlan protocol = timing_plan(calls, static_cast<double>(s.integer("timing.repeats")));
   p.timed_seconds = protocol.seconds, p.timed_steps = protocol.steps;
   return p;

@@ -124,8 +124,9 @@ StudyPlan plan_nonlinear(const Scene& s) {
   const double runs = 2.0 + static_cast<double>(s.texts("nonlinear.methods").size());  // both pendulums, compared
   double steps = 0;
   for (double h : s.reals("nonlinear.h")) steps += runs * t_end / h;
+  const PlanRate& rate = plan_rate("pendulum lobatto");
   return {steps, steps * kPendulumEvals, static_cast<double>(s.reals("nonlinear.h").size()) * runs * 4 * sizeof(double),
-          kPendulumNs, "odeint reference steps not counted; ns per step: Lobatto on the pendulum (paper-scene summary cost.pendulum)"};
+          rate.ns_per_step, "odeint reference steps not counted; " + rate.note};
 }
 
 }  // namespace

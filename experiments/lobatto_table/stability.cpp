@@ -143,8 +143,9 @@ StudyPlan plan_stability(const Scene& s) {
   const double periods = s.real("long_run.periods");
   double steps = points * (1 + methods);  // one one-step matrix per point and method
   for (double factor : kBoundFactors) steps += periods * 2 * std::numbers::pi / (factor * method_info("lobatto").oscillatory_bound);
-  return {steps, 0, points * (2 + methods) * (sizeof(double) + kCellBytes), kMatrixNs,
-          "runs at the bound iterate the one-step matrix (13); ns per step: paper-scene study wall time over its steps"};
+  const PlanRate& rate = plan_rate("oscillator one-step matrix");
+  return {steps, 0, points * (2 + methods) * (sizeof(double) + kCellBytes), rate.ns_per_step,
+          "runs at the bound iterate the one-step matrix (13); " + rate.note};
 }
 
 }  // namespace

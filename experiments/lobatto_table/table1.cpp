@@ -138,8 +138,8 @@ StudyPlan plan_table1(const Scene& s) {
   double steps = 0, largest = 0;
   const double runs = 2.0 + static_cast<double>(s.texts("table1.methods").size());  // Lobatto, (12), compared
   for (double n : s.reals("meshes")) steps += runs * n, largest = std::max(largest, n);
-  return {steps, steps * kOscillatorEvals, 2 * (largest + 1) * kStateBytes, kOscillatorNs,
-          "ns per step: Lobatto on the oscillator (paper-scene summary cost.long_run_phase)"};
+  const PlanRate& rate = plan_rate("oscillator lobatto");
+  return {steps, steps * kOscillatorEvals, 2 * (largest + 1) * kStateBytes, rate.ns_per_step, rate.note};
 }
 
 }  // namespace

@@ -241,17 +241,18 @@ void run_cost(Context& ctx) {
 StudyPlan plan_cost(const Scene& s) {
   const double T = s.real("energies.t_end");
   const double M = static_cast<double>(s.texts("methods").size());
+  const PlanRate& rate = plan_rate("cloud cost");
   double steps = 0, kept = 0;
   std::vector<TimedCall> calls;  // the timed runs: Phi^(4) of each method and Phi^(0) at each h, RK4 at each of its steps
   for (double h : s.reals("order_study.h")) {
     steps += (M + 1) * step_count_within(T, h), kept += 2 * (step_count_within(T, h) + 1);
-    calls.insert(calls.end(), static_cast<std::size_t>(M) + 1, TimedCall{step_count_within(T, h), 119000});
+    calls.insert(calls.end(), static_cast<std::size_t>(M) + 1, TimedCall{step_count_within(T, h), rate.ns_per_step});
   }
   for (double h : s.reals("cost.rk4_h")) {
     steps += step_count_within(T, h), kept += step_count_within(T, h) + 1;
-    calls.push_back(TimedCall{step_count_within(T, h), 119000});
+    calls.push_back(TimedCall{step_count_within(T, h), rate.ns_per_step});
   }
-  StudyPlan p = make_plan(steps, kept * kPointBytes, 119000, "the runs, then the timing protocol");
+  StudyPlan p = make_plan(steps, kept * kPointBytes, rate, "the runs, then the timing protocol");
   const TimedPlan timed = timing_plan(calls, static_cast<double>(s.integer("timing.repeats")));
   p.timed_seconds = timed.seconds, p.timed_steps = timed.steps;
   return p;

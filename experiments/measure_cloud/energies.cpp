@@ -83,7 +83,7 @@ void run_energies(Context& ctx) {
 StudyPlan plan_energies(const Scene& s) {
   const double n = step_count_within(s.real("energies.t_end"), s.real("h")), M = static_cast<double>(s.texts("methods").size());
   const double runs = M * (max_modified_order / 2 + 1) + 2;
-  return make_plan(runs * n, runs * (n + 1) * kPointBytes, 7500);
+  return make_plan(runs * n, runs * (n + 1) * kPointBytes, plan_rate("cloud energies"));
 }
 
 }  // namespace

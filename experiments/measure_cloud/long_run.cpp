@@ -46,7 +46,7 @@ void run_long_run(Context& ctx) {
 
 StudyPlan plan_long_run(const Scene& s) {
   const double n = step_count_within(s.real("long_run.t_end"), s.real("h")), M = static_cast<double>(s.texts("methods").size());
-  return make_plan(2 * M * n, 2 * M * (n + 1) * kPointBytes, 1800);
+  return make_plan(2 * M * n, 2 * M * (n + 1) * kPointBytes, plan_rate("cloud long run"));
 }
 
 }  // namespace

@@ -34,7 +34,6 @@ struct NewtonCount {
 } newton_count;
 
 constexpr double kNewtonPerStep = 3.86;  // force evaluations per step of make_plan (measure_cloud.hpp)
-const char* const kPlanNote = "ns per step: the paper scene's study wall time on 2 threads over its steps (summary.json)";
 
 }  // namespace
 
@@ -240,8 +239,8 @@ PhiStudy phi_study(Context& ctx) {
   return {sys, z0, rtol, atol, h, scene_methods(s)};
 }
 
-StudyPlan make_plan(double steps, double memory, double ns_per_step, const std::string& extra) {
-  return {steps, kNewtonPerStep * steps, memory, ns_per_step, extra.empty() ? kPlanNote : extra + "; " + kPlanNote};
+StudyPlan make_plan(double steps, double memory, const PlanRate& rate, const std::string& extra) {
+  return {steps, kNewtonPerStep * steps, memory, rate.ns_per_step, extra.empty() ? rate.note : extra + "; " + rate.note};
 }
 
 }  // namespace geomint::measure_cloud

@@ -160,12 +160,11 @@ struct PhiStudy {
 PhiStudy phi_study(Context& ctx);
 
 // ---- what each study costs (--plan), from the scene before any work ----
-// ns per step and thread of each study: its wall time in the paper scenes on 2 threads (summary.json
-// timing.study_wall_s) times 2 over its steps below -- the hull volumes, references and timed repeats included;
-// force evaluations: Newton iterations, 3.86 per step (timing.newton_iterations_mean there). The odeint
-// reference samples count as steps.
+// ns per step and thread of each study: its rate in experiments/plan_rates.toml, measured on its wall time in
+// the paper scenes (the hull volumes, references and timed repeats included); force evaluations: Newton
+// iterations, 3.86 per step (timing.newton_iterations_mean there). The odeint reference samples count as steps.
 constexpr double kPointBytes = 4 * 8;
 
-StudyPlan make_plan(double steps, double memory, double ns_per_step, const std::string& extra = {});
+StudyPlan make_plan(double steps, double memory, const PlanRate& rate, const std::string& extra = {});
 
 }  // namespace geomint::measure_cloud

@@ -158,7 +158,7 @@ StudyPlan plan_order_study(const Scene& s) {
   const double ells_n = static_cast<double>(s.reals("order_study.ells").size()), h_min = *std::min_element(hs.begin(), hs.end());
   double steps = M * 120 * step_count_within(T, h_min / 2);  // the round-off probes
   for (double h : hs) steps += M * ells_n * 120 * step_count_within(T, h);
-  StudyPlan p = make_plan(steps, 2 * (step_count_within(T, h_min / 2) + 1) * 121 * kPointBytes, 8100, "the snapshots of two runs at once");
+  StudyPlan p = make_plan(steps, 2 * (step_count_within(T, h_min / 2) + 1) * 121 * kPointBytes, plan_rate("cloud order study"), "the snapshots of two runs at once");
   p.tasks = M * (ells_n * static_cast<double>(hs.size()) + 1);  // (a cloud run each)
   return p;
 }

@@ -142,7 +142,7 @@ void run_shape(Context& ctx) {
 StudyPlan plan_shape(const Scene& s) {
   const double snaps = static_cast<double>(s.integer("shape.snapshots")), points = static_cast<double>(s.integer("shape.points"));
   const double n = step_count_within(snaps * s.real("shape.snapshot_dt"), s.real("h")), M = static_cast<double>(s.texts("methods").size());
-  return make_plan(M * n + points * snaps + 2 * n, points * (snaps + 1) * kPointBytes * 2 + (2 + M) * (n + 1) * 20 * 8, 15700);
+  return make_plan(M * n + points * snaps + 2 * n, points * (snaps + 1) * kPointBytes * 2 + (2 + M) * (n + 1) * 20 * 8, plan_rate("cloud shape"));
 }
 
 }  // namespace

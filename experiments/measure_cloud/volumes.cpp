@@ -194,7 +194,7 @@ StudyPlan plan_volumes(const Scene& s) {
   const double n = step_count_within(s.real("t_end"), s.real("h")), M = static_cast<double>(s.texts("methods").size());
   const double runs = M * static_cast<double>(s.reals("cloud.ells").size()) + 1;  // + the reference
   const double points = 2 * 121.0;  // the full cloud and the authors' (at most)
-  return make_plan(runs * points * n, runs * (n + 1) * 121 * kPointBytes, 9500);
+  return make_plan(runs * points * n, runs * (n + 1) * 121 * kPointBytes, plan_rate("cloud volumes"));
 }
 
 }  // namespace

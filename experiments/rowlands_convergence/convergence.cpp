@@ -269,7 +269,7 @@ StudyPlan plan_convergence(const Scene& s) {
   const double steps = runs * steps_to_each(s.real("t_end"), s.reals("h"));
   const double rows = static_cast<double>(s.real_rows("initial").size() * s.reals("h").size());
   return {steps, steps * kEvalsPerStep, rows * (3 + 4 * static_cast<double>(s.texts("methods").size())) * kCellBytes,
-          kNsPerStep, "odeint reference steps not counted; ns per step: the processed Rowlands method (paper-scene summary timing)"};
+          step_rate().ns_per_step, "odeint reference steps not counted; " + step_rate().note};
 }
 
 

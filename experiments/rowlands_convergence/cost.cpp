@@ -77,10 +77,9 @@ StudyPlan plan_cost(const Scene& s) {
   const double counted = methods * steps_to_each(s.real("t_end"), s.reals("h"));
   std::vector<TimedCall> calls;  // the timed configurations: a run per method and h
   for (std::size_t m = 0; m < s.texts("timing.methods").size(); ++m)
-    for (double h : s.reals("h")) calls.push_back(TimedCall{s.real("t_end") / h, kNsPerStep});
+    for (double h : s.reals("h")) calls.push_back(TimedCall{s.real("t_end") / h, step_rate().ns_per_step});
   StudyPlan p{counted, counted * kEvalsPerStep, methods * static_cast<double>(s.reals("h").size()) * 8 * kCellBytes,
-              kNsPerStep, "a counting run per method and h, then the timing protocol; ns per step: the processed "
-              "Rowlands method (paper-scene summary timing)"};
+              step_rate().ns_per_step, "a counting run per method and h, then the timing protocol; " + step_rate().note};
   const TimedPlan timed = timing_plan(calls, static_cast<double>(s.integer("timing.repeats")));
   p.timed_seconds = timed.seconds, p.timed_steps = timed.steps;
   return p;

@@ -41,11 +41,11 @@ void check_methods(const Scene& s, const char* key);
 void check_common(const Scene& s);
 
 // ---- What each study would cost (--plan), from the scene before any work ----
-// Steps in double (t_end / h summed over the runs); the ns per step and force evaluations per step are
-// constants measured on the paper scene (results/rowlands_convergence, summary timing.ns_per_step and
-// timing.cost.*.evals_per_step: the processed Rowlands method and the most evaluations per step, odeint_rkn_sb3a).
+// Steps in double (t_end / h summed over the runs); ns per step from experiments/plan_rates.toml; force
+// evaluations per step measured on the paper scene (results/rowlands_convergence, summary
+// timing.cost.*.evals_per_step: the most evaluations per step, odeint_rkn_sb3a).
 
-constexpr double kNsPerStep = 40;   // the processed Rowlands method on the elastic pendulum
+inline const PlanRate& step_rate() { return plan_rate("elastic pendulum rowlands"); }
 constexpr double kEvalsPerStep = 6; // the most of the paper scene's methods (odeint_rkn_sb3a)
 constexpr double kCellBytes = 24;   // one CSV cell held in memory
 

@@ -124,13 +124,13 @@ StudyPlan plan_cost(const Scene& s) {
   for (const auto& m : s.texts("work_precision.methods"))
     for (double h : s.reals("work_precision.h")) {
       p.steps += 2 * 2 * T / h, p.force_evals += 2 * 2 * T / h * static_cast<double>(evals_per_step(m));
-      calls.insert(calls.end(), 2, TimedCall{T / h, kNsPerStepHH});  // (Henon-Heiles and the oscillator)
+      calls.insert(calls.end(), 2, TimedCall{T / h, hh_rate().ns_per_step});  // (Henon-Heiles and the oscillator)
     }
   p.memory_bytes = 1e5;
-  p.ns_per_step = kNsPerStepHH;
+  p.ns_per_step = hh_rate().ns_per_step;
   const TimedPlan timed = timing_plan(calls, static_cast<double>(s.integer("timing.repeats")));
   p.timed_seconds = timed.seconds, p.timed_steps = timed.steps;
-  p.note = "counting and error runs, then the timing protocol; " + std::string(kNsNote);
+  p.note = "counting and error runs, then the timing protocol; " + hh_rate().note;
   return p;
 }
 

@@ -217,7 +217,7 @@ StudyPlan plan_ensemble(const Scene& s) {
   const double rows = kept_samples(n, static_cast<double>(s.integer("samples")));
   // M trajectories; the series of all M (and the copy of the one handed to Fig. 5), and the CSVs
   return {M * n, M * n * static_cast<double>(evals_per_step("simplified_takahashi_imada")),
-          (M + 1) * rows * 8 + M * std::min(rows, 201.0) * 60, kNsPerStepLanesHH, kNsLanesNote,
+          (M + 1) * rows * 8 + M * std::min(rows, 201.0) * 60, hh_lanes_rate().ns_per_step, hh_lanes_rate().note,
           static_cast<double>(lane_batches(static_cast<std::size_t>(M)))};  // (tasks: batches of lanes)
 }
 

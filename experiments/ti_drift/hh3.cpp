@@ -61,7 +61,7 @@ void check_hh3(const Scene& s) {
 StudyPlan plan_hh3(const Scene& s) {
   const double n = s.real("hh3.t_end") / s.real("h");
   return {n, n * static_cast<double>(evals_per_step("simplified_takahashi_imada")),
-          kept_samples(n, static_cast<double>(s.integer("samples"))) * (2 * 8 + 80), kNsPerStepHH, kNsNote};
+          kept_samples(n, static_cast<double>(s.integer("samples"))) * (2 * 8 + 80), hh_rate().ns_per_step, hh_rate().note};
 }
 
 }  // namespace

@@ -102,16 +102,16 @@ StudyPlan plan_timing(const Scene& s) {
   const double n = static_cast<double>(s.integer("timing.steps")), lanes = static_cast<double>(kEnsembleLanes);
   const double lj_n = static_cast<double>(s.integer("timing.lj_steps"));
   const std::size_t kernels = simplified_ti_lanes_kernels<LJ>().size();
-  std::vector<TimedCall> calls(s.texts("timing.methods").size(), TimedCall{n, kNsPerStepHH});
-  calls.push_back(TimedCall{lanes * n, kNsPerStepHH});
-  calls.insert(calls.end(), kernels, TimedCall{lanes * n, kNsPerStepLanesHH});
-  calls.insert(calls.end(), 1 + kernels, TimedCall{lanes * lj_n, kNsPerStepLanesLJ});
+  std::vector<TimedCall> calls(s.texts("timing.methods").size(), TimedCall{n, hh_rate().ns_per_step});
+  calls.push_back(TimedCall{lanes * n, hh_rate().ns_per_step});
+  calls.insert(calls.end(), kernels, TimedCall{lanes * n, hh_lanes_rate().ns_per_step});
+  calls.insert(calls.end(), 1 + kernels, TimedCall{lanes * lj_n, lj_lanes_rate().ns_per_step});
   StudyPlan p;
   p.memory_bytes = 1e4;
-  p.ns_per_step = kNsPerStepHH;
+  p.ns_per_step = hh_rate().ns_per_step;
   const TimedPlan timed = timing_plan(calls, static_cast<double>(s.integer("timing.repeats")));
   p.timed_seconds = timed.seconds, p.timed_steps = timed.steps;
-  p.note = "the timing protocol; " + std::string(kNsNote);
+  p.note = "the timing protocol; " + hh_rate().note;
   return p;
 }
 

@@ -300,8 +300,8 @@ StudyPlan plan_lj(const Scene& s) {
   p.steps += scan_size * scan_t / hl + M * n;
   p.force_evals = p.steps * static_cast<double>(evals_per_step("simplified_takahashi_imada"));
   p.memory_bytes = M * kept_samples(n, static_cast<double>(s.integer("samples"))) * 3 * 8;  // E, H, H^ of each trajectory
-  p.ns_per_step = kNsPerStepLanesLJ;
-  p.note = kNsLanesNote;
+  p.ns_per_step = lj_lanes_rate().ns_per_step;
+  p.note = lj_lanes_rate().note;
   p.tasks = static_cast<double>(lane_batches(static_cast<std::size_t>(M)));  // the ensemble's batches of lanes (the scan before it: a small part)
   return p;
 }

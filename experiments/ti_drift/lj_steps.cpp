@@ -102,8 +102,8 @@ StudyPlan plan_lj_steps(const Scene& s) {
   for (double h : s.reals("lj_steps.h")) p.steps += M * s.real("lj_steps.t_end") / h;
   p.force_evals = p.steps * static_cast<double>(evals_per_step("simplified_takahashi_imada"));
   p.memory_bytes = M * static_cast<double>(s.reals("lj_steps.h").size()) * 8;
-  p.ns_per_step = kNsPerStepLanesLJ;
-  p.note = kNsLanesNote;
+  p.ns_per_step = lj_lanes_rate().ns_per_step;
+  p.note = lj_lanes_rate().note;
   p.tasks = static_cast<double>(lane_batches(static_cast<std::size_t>(M)) * s.reals("lj_steps.h").size());
   return p;
 }

@@ -303,8 +303,8 @@ StudyPlan plan_oscillator(const Scene& s) {
   p.steps += sv_steps + (largest_ti > 0 ? T / largest_ti : 0.0);
   p.force_evals += sv_steps + (largest_ti > 0 ? 2 * T / largest_ti : 0.0);
   p.memory_bytes = 16 * sv_steps + 1e5;  // the sampled growth of SV at its bound: 2 doubles per step
-  p.ns_per_step = 10.8;
-  p.note = "ns per step: Stormer-Verlet's (summary.json timing.ns_per_step.sv of the paper scene)";
+  const PlanRate& rate = plan_rate("oscillator splitting");
+  p.ns_per_step = rate.ns_per_step, p.note = rate.note;
   return p;
 }
 

@@ -161,12 +161,10 @@ StudyPlan plan_pendulum(const Scene& s) {
   StudyPlan p;
   p.steps = n + static_cast<double>(kReferenceSteps);
   p.force_evals = e * n + 4 * static_cast<double>(kReferenceSteps);
-  // the reference's RK4 steps, with their observer, cost about 190 ns each (0.39 s for 2e6 on an AVX2 EPYC)
-  const double reference_ns = 190;
+  const PlanRate& reference = plan_rate("pendulum odeint reference");
   p.memory_bytes = kept_samples(n, static_cast<double>(s.integer("samples"))) * (3 * 8 + 80);  // 3 series + the CSV rows
-  p.ns_per_step = (n * kNsPerStepHH + static_cast<double>(kReferenceSteps) * reference_ns) / p.steps;
-  p.note = kNsNote;
-  p.note += "; the reference's steps: 190 ns";
+  p.ns_per_step = (n * hh_rate().ns_per_step + static_cast<double>(kReferenceSteps) * reference.ns_per_step) / p.steps;
+  p.note = hh_rate().note + "; " + reference.note;
   return p;
 }
 

@@ -307,10 +307,10 @@ StudyPlan plan_poincare(const Scene& s) {
   const double n = s.real("t_end") / s.real("h"), M = static_cast<double>(s.integer("ensemble.size"));
   const double rows = kept_samples(n, static_cast<double>(s.integer("samples")));
   const double evals = static_cast<double>(evals_per_step("simplified_takahashi_imada"));
-  const StudyPlan taken{n, n * evals, rows * 8 + rows * 200, kNsPerStepHH,
-                        "the trajectory of the ensemble study of this run; " + std::string(kNsNote)};
-  StudyPlan alone{(M + 1) * n, (M + 1) * n * evals, M * rows * 8 + rows * 200, kNsPerStepLanesHH,
-                  "the ensemble integrated again (without the ensemble study); " + std::string(kNsLanesNote),
+  const StudyPlan taken{n, n * evals, rows * 8 + rows * 200, hh_rate().ns_per_step,
+                        "the trajectory of the ensemble study of this run; " + hh_rate().note};
+  StudyPlan alone{(M + 1) * n, (M + 1) * n * evals, M * rows * 8 + rows * 200, hh_lanes_rate().ns_per_step,
+                  "the ensemble integrated again (without the ensemble study); " + hh_lanes_rate().note,
                   static_cast<double>(lane_batches(static_cast<std::size_t>(M)))};  // (tasks: batches of lanes)
   alone.reuses = "ensemble", alone.when_reusing = std::make_shared<const StudyPlan>(taken);
   return alone;

@@ -63,7 +63,7 @@ void run_symplecticity(Context& ctx) {
 StudyPlan plan_symplecticity(const Scene& s) {
   // per method: 16 central differences of one step; Sect. 3.3: 4 steps of each of two methods
   const double m = static_cast<double>(s.texts("symplecticity.methods").size());
-  return {16 * m + 8, 2 * (16 * m + 8), 1e4, kNsPerStepHH, kNsNote};
+  return {16 * m + 8, 2 * (16 * m + 8), 1e4, hh_rate().ns_per_step, hh_rate().note};
 }
 
 }  // namespace

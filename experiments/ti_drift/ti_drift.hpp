@@ -74,13 +74,10 @@ void check_step_bound(const Scene& s, const char* step_key, double h, double ome
 // The samples a run of n steps keeps: every max(1, floor(n / samples)) steps, from step 0.
 double kept_samples(double n, double samples);
 
-// ns per (trajectory-)step and thread, measured (the paper scene's summary.json, timing): one Henon-Heiles
-// trajectory (24.3, the scalar method, before the ensembles ran in lanes); the ensembles in SIMD lanes on a 2-core
-// AVX2 machine (fig4_ns_per_step_thread 5.6, Henon-Heiles, its registers of lanes stepped together;
-// fig6_ns_per_step_thread 158, Lennard-Jones with its processing every sample).
-constexpr double kNsPerStepHH = 24.3, kNsPerStepLanesHH = 5.6, kNsPerStepLanesLJ = 158.0;
-const char* const kNsNote = "ns per step: measured (paper scene, summary.json timing.fig4_ns_per_step_thread before the lanes)";
-const char* const kNsLanesNote = "ns per trajectory-step: measured (paper scene, summary.json timing.fig4/fig6_ns_per_step_thread, "
-                                 "the ensembles in SIMD lanes; 2-core AVX2 machine)";
+// --plan's rates (experiments/plan_rates.toml): a Henon-Heiles trajectory by a scalar method, and the
+// ensembles in SIMD lanes (Henon-Heiles; Lennard-Jones with its processing every sample).
+inline const PlanRate& hh_rate() { return plan_rate("henon-heiles splitting"); }
+inline const PlanRate& hh_lanes_rate() { return plan_rate("henon-heiles lanes"); }
+inline const PlanRate& lj_lanes_rate() { return plan_rate("lennard-jones lanes"); }
 
 }  // namespace geomint::ti_drift

@@ -6,6 +6,8 @@
 For every experiment (a directory experiments/<name> with a .cpp file):
 - every study it lists (`<name> --list-studies`) is declared by `Study <x>_study()` in a file of its own
   (experiments/<name>/<file>.cpp returns a Study whose name is the study's, and no other);
+- no --plan rate is typed in a study (a number as ns_per_step, as a TimedCall's rate or as a k...Ns constant):
+  rates come from experiments/plan_rates.toml (runner/plan_rates.hpp);
 - main.cpp has under 100 lines, no source file of the directory more than 400, and no function more
   than 120 (a function: from a line in column 0 that opens a definition to the next line in column 0
   that starts with '}', the style of this tree).
@@ -17,6 +19,7 @@ import subprocess
 import sys
 
 MAX_MAIN, MAX_FILE, MAX_FUNCTION = 100, 400, 120
+TYPED_RATE = re.compile(r"ns_per_step\s*=\s*[0-9]|TimedCall\{[^{}]*,\s*[0-9][0-9.e]*\}|constexpr double k\w*Ns\w*\s*=")
 NOT_A_FUNCTION = ("//", "#", "namespace", "}", "template", "using", "struct", "class", "enum", "static_assert",
                   "constexpr", "inline constexpr", "extern", "[[")
 
@@ -51,6 +54,9 @@ def main() -> int:
             limit = MAX_MAIN if f.name == "main.cpp" else MAX_FILE
             if len(lines) > limit:
                 problems.append(f"{f.relative_to(source)}: {len(lines)} lines (at most {limit})")
+            for i, line in enumerate(lines, 1):
+                if TYPED_RATE.search(line):
+                    problems.append(f"{f.relative_to(source)}:{i}: a --plan rate typed in a study (experiments/plan_rates.toml)")
             for first, length in functions(lines):
                 if length > MAX_FUNCTION:
                     problems.append(f"{f.relative_to(source)}:{first}: a function of {length} lines (at most {MAX_FUNCTION})")

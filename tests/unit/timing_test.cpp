@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "geomint/runner/plan_rates.hpp"
 #include "geomint/runner/results_json.hpp"
 #include "geomint/runner/timing.hpp"
 
@@ -141,6 +142,16 @@ TEST(TimingProtocol, PlansItsOwnTime) {
   const double f = kTimingFloorS, short_runs = f / 8 + 7 * 1.1 * f;
   EXPECT_NEAR(p.seconds, (1e-3 + short_runs) + (1e-6 + short_runs) + 8 * 0.05, 1e-15);
   EXPECT_NEAR(p.steps, (1000 + short_runs / 1e-6) + (1 + short_runs / 1e-6) + 8 * 50000, 1e-6);
+}
+
+// --plan's rates come from experiments/plan_rates.toml, compiled in: a rate names what it is and the CPU it was
+// measured on, and a name the table lacks is a study's error, not a silent 0.
+TEST(PlanRates, ComeFromTheTableWithWhereTheyWereMeasured) {
+  const geomint::PlanRate& r = geomint::plan_rate("pendulum lobatto");
+  EXPECT_GT(r.ns_per_step, 0);
+  EXPECT_NE(r.note.find("Lobatto"), std::string::npos) << r.note;
+  EXPECT_NE(r.note.find(" ns on "), std::string::npos) << r.note;
+  EXPECT_THROW(geomint::plan_rate("pendulum no such method"), std::logic_error);
 }
 
 }  // namespace timing_test

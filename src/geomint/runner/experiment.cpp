@@ -218,7 +218,8 @@ constexpr const char* kStudiesKey = "studies";
 // has no maps and truncates long names, so they are two arrays, FV_KEY (the dotted key, prefixed
 // "scene." or "summary."; array elements by index from 0) and FV_VAL; integers are written with
 // ".0" (gnuplot would divide them as integers). A list of texts is also one text under its own key,
-// its words separated by spaces (scene_words, summary_words). And the papers' items each study that ran
+// its words separated by spaces (scene_words, summary_words); of the summary's texts, those under a key
+// "labels" (a figure's names of a study's curves, e.g. work_precision.labels.polar). And the papers' items each study that ran
 // made under the scene, "made.<study>" (made_by: a figure's title names its item as the study does).
 using Entry = std::pair<std::string, std::string>;  // (key, gnuplot literal)
 
@@ -236,7 +237,8 @@ void collect_values(const nlohmann::ordered_json& j, const std::string& key, boo
   }
   if (j.is_object() || j.is_array()) {
     std::size_t i = 0;
-    for (const auto& [k, v] : j.items()) collect_values(v, key + "." + (j.is_array() ? std::to_string(i++) : k), texts, out);
+    for (const auto& [k, v] : j.items())
+      collect_values(v, key + "." + (j.is_array() ? std::to_string(i++) : k), texts || k == "labels", out);
   } else if (j.is_number() && std::isfinite(j.get<double>())) {
     std::string v = format_double(j.get<double>());
     if (v.find_first_of(".e") == std::string::npos) v += ".0";
@@ -504,7 +506,10 @@ void check_plan(const Study& st, const StudyPlan& p, const std::vector<std::stri
 // planned by that one then.
 nlohmann::ordered_json plan_json(const std::vector<const Study*>& studies, const std::vector<StudyPlan>& plans, int ranks,
                                  int threads) {
-  nlohmann::ordered_json j = {{"ranks", ranks}, {"threads", threads}, {"studies", nlohmann::ordered_json::array()}};
+  nlohmann::ordered_json j = {{"ranks", ranks},
+                              {"threads", threads},
+                              {"study_overhead_s", kStudyOverheadS},
+                              {"studies", nlohmann::ordered_json::array()}};
   double total = 0;
   bool all = true;
   for (std::size_t i = 0; i < studies.size(); ++i) {

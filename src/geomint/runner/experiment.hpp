@@ -22,6 +22,7 @@
 #include "geomint/core/numerical_failure.hpp"
 #include "geomint/io/atomic_file.hpp"
 #include "geomint/io/csv.hpp"
+#include "geomint/runner/plan_rates.hpp"
 #include "geomint/runner/results.hpp"
 #include "geomint/scene/scene.hpp"
 
