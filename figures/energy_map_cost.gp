@@ -6,11 +6,11 @@
 # share of one timed function per system and step) and the number of force evaluations of one run
 # (right; one gradient of U per step in either system). One row per start: the work-precision set
 # start_<i> of the cost study (figures/cost.gpi). Colours as in Fig. 6 (blue Cartesian, red polar: the
-# method, symplectic Euler, is the same). The reference is H_0 = H(z_0), conserved by the flow; its
+# method, symplectic Euler, is the same: the first coordinate system of the run blue, the second red). The reference is H_0 = H(z_0), conserved by the flow; its
 # own error is the round-off of evaluating H (summary value work_precision.reference_error_max).
 # Input: cost_start_<i>.csv (one per start: method = coordinate system, h, steps, wall_s, wall_q1_s,
 # wall_q3_s, wall_spread, wall_timed, force_evals, err = ε); scene values (cost.t_end, cost.starts, pendulum, timing.repeats);
-# summary values (work_precision: start_count, dt_range, reference_error_max).
+# summary values (work_precision: start_count, dt_range, reference_error_max, labels; cost.start_0.methods).
 if (!exists("results")) results = 'results/energy_map'
 load 'figures/common.gp'
 set encoding utf8    # (so that the key width counts characters, not bytes)
@@ -19,14 +19,12 @@ eval need_num('REF_ERR', summary_real('work_precision.reference_error_max'))
 eval need_num('NSTARTS', summary_num('work_precision.start_count'))
 eval need_num('H_MAX', summary_num('work_precision.dt_range.max'))
 eval need_num('H_MIN', summary_num('work_precision.dt_range.min'))
-C_CART  = '#2166ac'   # Fig. 6's blue (Cartesian better there)
-C_POLAR = '#b2182b'   # Fig. 6's red (polar better there)
-set style line 201 lc rgb C_CART lw 1.0 pt 7 ps 0.6
-set style line 221 lc rgb C_POLAR lw 1.0 dt (5,3) pt 6 ps 0.7
-METHODS = "cartesian polar"
-COST_OWN_STYLES = 1   # (its curves are coordinate systems, not registry methods)
-LABEL(m) = m eq "cartesian" ? "Cartesian (73)" : "polar (72)"
-STYLE(m) = m eq "cartesian" ? 201 : 221
+set style line 201 lc rgb '#2166ac' lw 1.0 pt 7 ps 0.6            # Fig. 6's blue
+set style line 202 lc rgb '#b2182b' lw 1.0 dt (5,3) pt 6 ps 0.7   # Fig. 6's red
+METHODS = summary_words('cost.start_0.methods')
+COST_OWN_STYLES = 1   # (its curves are coordinate systems, not registry methods: named by the run)
+LABEL(m) = summary_words('work_precision.labels.' . m)
+STYLE(m) = 200 + word_index(METHODS, m)
 start_x(i) = scene_num(sprintf('cost.starts.%d.0', i))
 start_y(i) = scene_num(sprintf('cost.starts.%d.1', i))
 COST_SETS = ""

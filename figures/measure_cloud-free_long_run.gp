@@ -53,8 +53,10 @@ do for [fmt in FORMATS] {
     set xlabel ""
     set ylabel "H(z_j) − H(z_0)" . MC_UNIT(A0) offset 1, 0
     sc = MC_SCALE(A0)
+    MC_Y(m) = column(m . "_H_phi0") / sc
     plot 0 with lines ls MC_LS_REF notitle, \
-         for [m in MC_METHODS] LR using "t":(column(m . "_H_phi0") / sc) with lines ls MC_LS(m) notitle
+         for [m in MC_METHODS] LR using "t":(MC_Y(m)) with lines ls method_ls(m) notitle, \
+         for [m in MC_METHODS] LR every 25::mc_first(m, 25) using "t":(MC_Y(m)) with points ls method_ls(m) notitle
 
     # ---- (b) Φ^(4) ----
     set tmargin at screen 0.485; set bmargin at screen 0.195
@@ -62,8 +64,10 @@ do for [fmt in FORMATS] {
     set xlabel "time t" offset 0, 0.4
     set ylabel "H(z_j) − H(z_0)" . MC_UNIT(A4)
     sc = MC_SCALE(A4)
+    MC_Y(m) = column(m . "_H_phi4") / sc
     plot 0 with lines ls MC_LS_REF notitle, \
-         for [m in MC_METHODS] LR using "t":(column(m . "_H_phi4") / sc) with lines ls MC_LS(m) notitle
+         for [m in MC_METHODS] LR using "t":(MC_Y(m)) with lines ls method_ls(m) notitle, \
+         for [m in MC_METHODS] LR every 25::mc_first(m, 25) using "t":(MC_Y(m)) with points ls method_ls(m) notitle
 
     # ---- key: the values at the final time ----
     set lmargin at screen 0.10; set rmargin at screen 0.97
@@ -72,12 +76,12 @@ do for [fmt in FORMATS] {
     set xrange [0:1]; set yrange [0:1]
     set key at screen 0.06, screen 0.105 left top vertical Left reverse maxrows 3 samplen 2.5 width -3 spacing 1.1 font ",8" nobox
     set label 1 sprintf("at t = %g:  H − H(z_0) for Φ^{(0)} / Φ^{(4)};  error ‖z − z_{ref}‖_2 for Φ^{(0)} / Φ^{(4)}   " \
-        . "(M, MT, TM, TT, T: first letter the quadrature of N, second of L; M midpoint, T trapezoidal)", TMAX) \
+        . "((5.1): first letter the quadrature of N, second of L; M midpoint, T trapezoidal)", TMAX) \
         at screen 0.06, screen 0.125 left font ",8"
     plot NaN notitle, \
          keyentry with lines ls MC_LS_REF title "exact flow: H − H(z_0) = 0", \
-         for [m in MC_METHODS] keyentry with lines ls MC_LS(m) \
-             title sprintf("%s:  %s / %s;  %s / %s", m, g3(DH(0, m)), g3(DH(4, m)), g3(ER(0, m)), g3(ER(4, m)))
+         for [m in MC_METHODS] keyentry with linespoints ls method_ls(m) \
+             title sprintf("%s:  %s / %s;  %s / %s", method_key(m, '003'), g3(DH(0, m)), g3(DH(4, m)), g3(ER(0, m)), g3(ER(4, m)))
     unset label 1
     set border; set tics; set grid
     set autoscale xy

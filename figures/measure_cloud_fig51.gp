@@ -99,7 +99,7 @@ do for [fmt in FORMATS] {
         at graph 0.5, graph 0.25 center front font ",7.5"
     plot SY using "t":(column("conformal_flow") > 0 ? column("conformal_flow") : NaN) with lines ls MC_LS_REF notitle, \
          SY using "t":(column("hamiltonian_flow") > 0 ? column("hamiltonian_flow") : NaN) with lines ls MC_LS_GUIDE notitle, \
-         for [m in MC_METHODS] SY using "t":(column("psi_" . m) > 0 ? column("psi_" . m) : NaN) with points ls MC_LS(m) notitle
+         for [m in MC_METHODS] SY using "t":(column("psi_" . m) > 0 ? column("psi_" . m) : NaN) with points ls method_ls(m) notitle
     unset label 2; unset label 3
     unset logscale y; set format y "%g"; set autoscale xy
 

@@ -64,12 +64,12 @@ StudyPlan plan_cost(const Scene& s) {
   for (double dt : s.reals("cost.dt")) {
     const double n = std::round(s.real("cost.t_end") / dt);
     steps += 2 * starts * n;  // (the untimed runs, both systems)
-    calls.insert(calls.end(), 2, TimedCall{starts * n, kScalarNsPerStep});
+    calls.insert(calls.end(), 2, TimedCall{starts * n, scalar_rate().ns_per_step});
   }
   StudyPlan p;
-  p.steps = steps, p.force_evals = steps, p.ns_per_step = kScalarNsPerStep;
+  p.steps = steps, p.force_evals = steps, p.ns_per_step = scalar_rate().ns_per_step;
   p.memory_bytes = starts * static_cast<double>(s.reals("cost.dt").size()) * 2 * 200.0;
-  p.note = "the untimed runs, then the timing protocol; " + std::string(kNsNote);
+  p.note = "the untimed runs, then the timing protocol; " + scalar_rate().note;
   const TimedPlan timed = timing_plan(calls, static_cast<double>(s.integer("timing.repeats")));
   p.timed_seconds = timed.seconds, p.timed_steps = timed.steps;
   return p;
@@ -200,7 +200,10 @@ void run_cost(Context& ctx) {
     cost[name] = sets[i].summary(st.contains("error_target") ? std::vector{st.at("error_target").number()} : std::vector<double>{});
     start_list.push_back(st);
   }
+  Value labels;  // the sets' methods (coordinate systems) as a figure names them
+  for (Coordinates c : systems) labels[coordinates_name(c)] = coordinates_label(c);
   ctx.summary["work_precision"] = {{"starts", start_list}, {"start_count", starts.size()}, {"t_end", t_end},
+                                   {"labels", labels},
                                    {"reference_error_max", reference_error},
                                    {"dt_range", range_of(dts)},
                                    {"error", "eq. (50) over [0, cost.t_end] against H_0 = H(z_0), per start"}};

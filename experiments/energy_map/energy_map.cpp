@@ -35,6 +35,7 @@ MapSetup map_setup(const Scene& s) {
 }
 
 const char* coordinates_name(Coordinates c) { return c == Coordinates::cartesian ? "cartesian" : "polar"; }
+const char* coordinates_label(Coordinates c) { return c == Coordinates::cartesian ? "Cartesian (73)" : "polar (72)"; }
 
 double spring_frequency(const Scene& s) {
   const double omega = std::sqrt(s.real("pendulum.k") / s.real("pendulum.m"));
