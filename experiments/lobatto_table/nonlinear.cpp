@@ -10,7 +10,7 @@
 
 #include "geomint/analysis/convergence_study.hpp"
 #include "geomint/core/integrate.hpp"
-#include "geomint/integrators/galerkin_variational.hpp"
+#include "geomint/integrators/galerkin_steps.hpp"
 #include "geomint/methods/by_name.hpp"
 #include "geomint/methods/registry.hpp"
 #include "geomint/methods/scene_methods.hpp"
