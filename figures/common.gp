@@ -41,10 +41,12 @@ load 'figures/methods.gpi'
 # method_fit_ls(m) = 300 + i, its least-squares fit (dashed, its marker for the key). Colour and marker
 # name one method of the registry, so the methods of any figure are told apart without a map per script.
 _ps(pt) = pt == 5 || pt == 7 ? 0.55 : pt == 1 || pt == 2 || pt == 3 || pt == 12 || pt == 13 ? 0.8 : 0.7
-_method_style(m, i) = sprintf("set style line %d lc rgb '%s' lw 1.0 pt %d ps %g; ", 200 + i, method_colour(m), \
-                              method_point(m), _ps(method_point(m))) \
-                    . sprintf("set style line %d lc rgb '%s' lw 0.9 dt (8,4) pt %d ps %g; ", 300 + i, method_colour(m), \
-                              method_point(m), _ps(method_point(m)))
+# eval method_look(m, pt, ls, fit_ls) defines line style ls, points in method m's colour with marker pt, and fit_ls,
+# its fit (dashed, the marker for the key): method_styles with the registry's marker, or another for a method's
+# further curves in one panel (figures/convergence.gpi)
+method_look(m, pt, ls, fit_ls) = sprintf("set style line %d lc rgb '%s' lw 1.0 pt %d ps %g; ", ls, method_colour(m), pt, _ps(pt)) \
+                               . sprintf("set style line %d lc rgb '%s' lw 0.9 dt (8,4) pt %d ps %g; ", fit_ls, method_colour(m), pt, _ps(pt))
+_method_style(m, i) = method_look(m, method_point(m), 200 + i, 300 + i)
 _method_styles(list, i) = i > words(list) ? "" : _method_style(word(list, i), i) . _method_styles(list, i + 1)
 method_styles(list) = _method_styles(list, 1)
 # unique_words("a b a c") = "a b c" (a figure's METHODS from several lists name each method once)
@@ -84,10 +86,13 @@ LOGFMT = "10^{%L}"                       # tic labels on logarithmic axes
 # err = 10^c h^order over [hmin, hmax]. A name missing from orders.csv is an error.
 # eval getfit_at('sv_energy', 0): the same from the rows of initial condition 0 alone (orders.csv's
 # column initial), for a study of several initial conditions (getfit takes the name's rows of any)
+# eval getfit_in('table1_orders.csv', 'lobatto_p', -1): getfit_at from another orders CSV (a study's
+# ConvergenceRuns::orders_csv where two studies of an experiment fit orders)
 _row_at(n, ic, col) = (strcol("name") eq n && (ic < 0 || column("initial") == ic)) ? column(col) : NaN
-_get_at(n, ic, col, var) = sprintf("undefine STATS_*; stats csv('orders.csv') using (_row_at('%s',%d,'%s')) nooutput; %s = STATS_max; ", n, ic, col, var)
-getfit_at(n, ic) = _get_at(n, ic, 'order', n.'_order') . _get_at(n, ic, 'log10_c', n.'_c') \
-                 . _get_at(n, ic, 'h_min', n.'_hmin')  . _get_at(n, ic, 'h_max', n.'_hmax')
+_get_in(f, n, ic, col, var) = sprintf("undefine STATS_*; stats csv('%s') using (_row_at('%s',%d,'%s')) nooutput; %s = STATS_max; ", f, n, ic, col, var)
+getfit_in(f, n, ic) = _get_in(f, n, ic, 'order', n.'_order') . _get_in(f, n, ic, 'log10_c', n.'_c') \
+                    . _get_in(f, n, ic, 'h_min', n.'_hmin')  . _get_in(f, n, ic, 'h_max', n.'_hmax')
+getfit_at(n, ic) = getfit_in('orders.csv', n, ic)
 getfit(n) = getfit_at(n, -1)
 powerlaw(h, c, order) = 10**c * h**order
 # after eval getfit(n): the fitted line from h_min (t = 0) to h_max (t = 1), straight in log-log, for
@@ -113,6 +118,8 @@ summary_words(key) = (_i = _fv('summary.' . key), _i > 0 ? FV_VAL[_i] : "")
 # made_by('convergence') is what the study made under the run's scene, as its id is spelled everywhere
 # ("000 Fig. 9"): a figure's title names its item with it, never typed in the script; "?" if the study did not run.
 made_by(study) = (_i = _fv('made.' . study), _i > 0 ? FV_VAL[_i] : "?")
+# made_item('fig52') is the item this run made that a script named <run>_fig52*.gp draws ("003 Fig. 5.2")
+made_item(slug) = (_i = _fv('item.' . slug), _i > 0 ? FV_VAL[_i] : "?")
 
 # ---- x tics for logarithmic axes spanning few decades ------------------------
 # eval LOGTICS("1 2 5") puts the x tics at 1, 2, 5 × 10^k (labelled with the x format, e.g. "%g")
@@ -129,16 +136,9 @@ need_num(var, s) = (s eq "?") \
     : sprintf("%s = %s", var, s)
 
 # ---- 001 Dubois & Rojas-Quintero, Lobatto variational integrator (figures/lobatto_table_*.gp) ----
-# The paper's method is blue, its quantities told apart by their markers (the compared methods: method_styles).
+# The paper's method is blue (its quantities in one order panel: told apart by marker, figures/convergence.gpi).
 C_LOB   = method_colour('lobatto')            # Lobatto P3 variational scheme (13)–(14); nonlinear: Newton on the internal nodes
 LS_LOB   = 41; set style line LS_LOB   lc rgb C_LOB   lw 1.0 pt 4  ps 0.70   # open squares
-LS_LOB2  = 45; set style line LS_LOB2  lc rgb C_LOB   lw 1.0 pt 5  ps 0.60   # filled squares: second quantity / problem
-LS_LOB3  = 46; set style line LS_LOB3  lc rgb C_LOB   lw 1.0 pt 8  ps 0.70   # open triangles: third quantity
-LS_LOB4  = 47; set style line LS_LOB4  lc rgb C_LOB   lw 1.0 pt 6  ps 0.65   # open circles: fourth quantity
-# fits and guides: dashed, in the method's colour, with its marker for the key sample; LS_<X>_FIT = LS_<X> + 10
-LS_LOB_FIT   = 51; set style line LS_LOB_FIT   lc rgb C_LOB   lw 0.9 dt (8,4) pt 4  ps 0.70
-LS_LOB2_FIT  = 55; set style line LS_LOB2_FIT  lc rgb C_LOB   lw 0.9 dt (8,4) pt 5  ps 0.60
-LS_LOB3_FIT  = 56; set style line LS_LOB3_FIT  lc rgb C_LOB   lw 0.9 dt (8,4) pt 8  ps 0.70
 # Fig. 2 compares step sizes of the Lobatto scheme alone: a ramp of its blue, light = large h
 C_LOB_H1 = '#56B4E9';  C_LOB_H2 = '#0072B2';  C_LOB_H3 = '#002338'
 C_STABLE = '#CFE8F6'   # shading: h ω where the Lobatto map is stable (spectral radius 1)

@@ -10,5 +10,5 @@ ELL = 4
 POT = "free"
 LAST = "err"
 NAME = 'measure_cloud-free_fig55'
-FIGNO = "5.5"
+ITEM = 'fig55'
 load 'figures/measure_cloud_energies.gpi'

@@ -10,5 +10,5 @@ ELL = 0
 POT = "free"
 LAST = "err"
 NAME = 'measure_cloud-free_fig56'
-FIGNO = "5.6"
+ITEM = 'fig56'
 load 'figures/measure_cloud_energies.gpi'

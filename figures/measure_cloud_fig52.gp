@@ -14,5 +14,5 @@ load 'figures/common.gp'
 load 'figures/measure_cloud_style.gpi'
 ELL = 4
 NAME = 'measure_cloud_fig52'
-FIGNO = "5.2"
+ITEM = 'fig52'
 load 'figures/measure_cloud_volumes.gpi'

@@ -10,5 +10,5 @@ ELL = 4
 POT = "harmonic"
 LAST = "E4"
 NAME = 'measure_cloud_fig53'
-FIGNO = "5.3"
+ITEM = 'fig53'
 load 'figures/measure_cloud_energies.gpi'

@@ -11,5 +11,5 @@ load 'figures/common.gp'
 load 'figures/measure_cloud_style.gpi'
 ELL = 0
 NAME = 'measure_cloud_fig54'
-FIGNO = "5.4"
+ITEM = 'fig54'
 load 'figures/measure_cloud_volumes.gpi'

@@ -55,7 +55,9 @@ def figure_comparisons_tex(runs):
             if figure:
                 name = "comparisons-" + re.sub(r"[^a-z0-9]+", "-", figure.lower()).strip("-") + ".tex"
                 index.append(f"\\@namedef{{geomint@comparisons@{figure}}}{{generated/{name}}}")
+                paper, _, item = figure.partition(" ")
                 tables[name] = "\n".join([f"% {figure}: its comparisons (scripts/report.py).",
+                                          f"\\noindent {{[{paper}]}} {tex_escape(item)}:",
                                           longtable("footnotesize", 0.2, 0.26, 0.13, 0.13, 0.12, 0.16),
                                           *COMPARISON_HEAD, *comparison_rows(comparisons), r"\bottomrule",
                                           r"\end{longtable}}"]) + "\n"

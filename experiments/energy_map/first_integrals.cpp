@@ -13,6 +13,7 @@
 #include "geomint/analysis/convergence_study.hpp"
 #include "geomint/core/state.hpp"
 #include "geomint/integrators/symplectic_euler.hpp"
+#include "geomint/runner/summary.hpp"
 #include "geomint/runner/distributed_map.hpp"
 #include "geomint/systems/elastic_pendulum.hpp"
 #include "geomint/transforms/polar.hpp"
@@ -87,6 +88,7 @@ void run_first_integrals(Context& ctx) {
   }
   ctx.write("angular_momentum.csv", lcsv);
 
+  ctx.summary["methods"]["first_integrals"] = labels_of({"symplectic_euler_pq"});  // (42)-(43), stepped above
   ctx.summary["reproduced"]["cartesian_L_max_rel_drift"] = L_drift;  // with compensated summation
   ctx.summary["reproduced"]["cartesian_L_max_rel_drift_plain"] = L_drift_plain;
   // |q_J| at the end of the angular-momentum run, and the round-off of evaluating L = x p_y - y p_x

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <csignal>
@@ -220,7 +221,8 @@ constexpr const char* kStudiesKey = "studies";
 // ".0" (gnuplot would divide them as integers). A list of texts is also one text under its own key,
 // its words separated by spaces (scene_words, summary_words); of the summary's texts, those under a key
 // "labels" (a figure's names of a study's curves, e.g. work_precision.labels.polar). And the papers' items each study that ran
-// made under the scene, "made.<study>" (made_by: a figure's title names its item as the study does).
+// made under the scene, "made.<study>" (made_by: a figure's title names its item as the study does), and each
+// item by its script's spelling, "item.fig52" (made_item).
 using Entry = std::pair<std::string, std::string>;  // (key, gnuplot literal)
 
 std::string gnuplot_quoted(const std::string& s) {  // '...' with '' for ' and no newlines
@@ -301,6 +303,15 @@ const Study* find_study(const ExperimentSpec& spec, std::string_view name) {
 }
 
 // The ids of the items a study makes under a scene (Study::makes_under): a part of those it declares.
+// An item's name as its figure script spells it (figures/<run>_<slug>*.gp; scripts/report.py item_slug):
+// "003 Fig. 5.2" -> "fig52", "001 Table 1" -> "table1".
+std::string item_slug(const std::string& id) {
+  std::string slug;
+  for (char c : id.substr(id.find(' ') + 1))
+    if (std::isalnum(static_cast<unsigned char>(c))) slug += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return slug;
+}
+
 std::vector<std::string> made_here(const Study& st, const Scene& scene) {
   const std::vector<Item> here = st.makes_under ? st.makes_under(scene) : st.makes;
   std::vector<std::string> ids;
@@ -845,6 +856,8 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
     std::vector<Entry> made_by;  // (the papers' items of each study that ran, for the figures' titles)
     for (const std::string& r : ran)
       made_by.emplace_back("made." + r, gnuplot_quoted(join(made_here(*find_study(spec, r), *scene), ", ")));
+    for (const std::string& item : std::set<std::string>(made.begin(), made.end()))  // (two studies' item once)
+      made_by.emplace_back("item." + item_slug(item), gnuplot_quoted(item));
     out->write("figure_values.gp", figure_values(scene->to_json(), summary, made_by));
 
     std::string command;
