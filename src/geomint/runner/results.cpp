@@ -7,6 +7,12 @@
 
 namespace geomint {
 
+Value::Value(const Value&) = default;
+Value::Value(Value&&) noexcept = default;
+Value& Value::operator=(const Value&) = default;
+Value& Value::operator=(Value&&) noexcept = default;
+Value::~Value() = default;
+
 Value::Value(const std::optional<double>& v) {
   if (v) kind_ = Kind::real, d_ = *v;
 }

@@ -22,6 +22,12 @@ class Value {
   struct Field;  // {key, value}: a record's member, for Value{{"min", a}, {"max", b}}
 
   Value() = default;  // null
+  // (copied, moved and destroyed in results.cpp: compiled once, not in every file that writes a summary)
+  Value(const Value&);
+  Value(Value&&) noexcept;
+  Value& operator=(const Value&);
+  Value& operator=(Value&&) noexcept;
+  ~Value();
   Value(std::nullptr_t) {}
   Value(bool b) : kind_(Kind::boolean), i_(b) {}
   Value(int v) : Value(static_cast<long long>(v)) {}

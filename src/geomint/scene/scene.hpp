@@ -63,6 +63,14 @@ class Schema {
     std::string doc;
   };
 
+  // (copied, moved and destroyed in scene.cpp: compiled once, not in every study that declares keys)
+  Schema();
+  Schema(const Schema&);
+  Schema(Schema&&) noexcept;
+  Schema& operator=(const Schema&);
+  Schema& operator=(Schema&&) noexcept;
+  ~Schema();
+
   Schema& real(std::string key, Bound b, std::string doc = {});
   Schema& integer(std::string key, Bound b, std::string doc = {});
   Schema& reals(std::string key, Bound each, std::size_t min_len, std::string doc = {});
