@@ -16,7 +16,7 @@
 #include "geomint/core/integrate.hpp"
 #include "geomint/integrators/runge_kutta4.hpp"
 #include "geomint/integrators/symplectic_euler.hpp"
-#include "geomint/methods/methods.hpp"
+#include "geomint/methods/dispatch.hpp"
 #include "geomint/systems/counting.hpp"
 #include "geomint/systems/exponential_decay.hpp"
 #include "geomint/systems/hamiltonian_field.hpp"

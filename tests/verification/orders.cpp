@@ -1,5 +1,5 @@
 // Verification (verification.hpp): the declared orders of a method with a generic binding.
-#include "geomint/methods/methods.hpp"
+#include "geomint/methods/dispatch.hpp"
 #include "verification.hpp"
 
 namespace geomint::verification {

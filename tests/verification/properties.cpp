@@ -1,5 +1,5 @@
 // Verification (verification.hpp): the declared properties of a method with a generic binding.
-#include "geomint/methods/methods.hpp"
+#include "geomint/methods/dispatch.hpp"
 #include "geomint/observables/symplecticity.hpp"
 #include "verification.hpp"
 

@@ -2,7 +2,7 @@
 #include "geomint/geometry/clouds.hpp"
 #include "geomint/geometry/hull_volume.hpp"
 #include "geomint/integrators/conformal_variational.hpp"
-#include "geomint/methods/methods.hpp"
+#include "geomint/methods/dispatch.hpp"
 #include "geomint/observables/symplecticity.hpp"
 #include "geomint/systems/nonholonomic_modified_series.hpp"
 #include "geomint/transforms/point_transform.hpp"

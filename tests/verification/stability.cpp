@@ -1,6 +1,6 @@
 // Verification (verification.hpp): the declared linear-stability bounds of a method with a generic binding.
 #include "geomint/analysis/linear_stability.hpp"
-#include "geomint/methods/methods.hpp"
+#include "geomint/methods/dispatch.hpp"
 #include "verification.hpp"
 
 namespace geomint::verification {

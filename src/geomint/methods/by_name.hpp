@@ -2,7 +2,7 @@
 // The registered methods by scene name, on one system type. Every (method, system) pair a study
 // runs is compiled once, in the library: a system header's line "// geomint: MethodsOn<System>" makes
 // CMake generate on_<system>.cpp, which instantiates it (by_name_impl.hpp, the registry's dispatch of
-// methods.hpp; cmake/geomint_experiment.cmake geomint_methods_on). A study includes this header, never
+// dispatch.hpp; cmake/geomint_experiment.cmake geomint_methods_on). A study includes this header, never
 // methods.hpp, so that editing it recompiles the study alone.
 #include <cstdint>
 #include <functional>

@@ -1,7 +1,7 @@
 #pragma once
 // The definitions of MethodsOn (by_name.hpp), for the files that instantiate it: the generated on_<system>.cpp.
 #include "geomint/methods/by_name.hpp"
-#include "geomint/methods/methods.hpp"
+#include "geomint/methods/dispatch.hpp"
 #include "geomint/methods/scene_methods.hpp"
 
 namespace geomint {

@@ -21,7 +21,6 @@
 #include "geomint/integrators/symplectic_euler.hpp"
 #include "geomint/integrators/takahashi_imada.hpp"
 #include "geomint/methods/registry.hpp"
-#include "geomint/reference/odeint_steppers.hpp"
 #include "geomint/systems/hamiltonian_field.hpp"
 #include "geomint/core/integrate.hpp"
 #include "geomint/transforms/point_transform.hpp"
@@ -361,6 +360,18 @@ struct Phi2 { static constexpr MethodInfo info = phi_info("phi2", 2, "Φ^{(2)}_h
 struct Phi4 { static constexpr MethodInfo info = phi_info("phi4", 4, "Φ^{(4)}_h", "#0072B2", 15); };
 struct Phi6 { static constexpr MethodInfo info = phi_info("phi6", 6, "Φ^{(6)}_h", "#009E73", 3); };
 
+// The odeint methods' steppers, declared here and defined in reference/odeint_steppers.hpp, which a file that
+// binds one includes (methods/dispatch.hpp does): a file that binds another method of this header does not
+// parse Boost.Odeint.
+template <class Sys>
+auto odeint_rk4_method(const Sys& sys);
+template <class Sys>
+auto odeint_rkf78_method(const Sys& sys);
+template <class Sys>
+auto odeint_rkn_sb3a_method(const Sys& sys);
+template <class Sys>
+auto odeint_velocity_verlet_method(const Sys& sys);
+
 struct OdeintRK4 {
   static constexpr MethodInfo info{
       .name = "odeint_rk4", .label = "odeint_rk4", .family = Family::explicit_method, .order = 4, .kernel_order = 4,
@@ -446,57 +457,6 @@ template <class M, class Sys>
 concept Binds = requires { requires M::template applies<Sys>; };
 
 namespace detail {
-struct BindMethod {
-  template <class M, class Sys>
-  static auto bind(const Sys& sys) { return M::bind(sys); }
-};
-struct BindKernel {
-  template <class M, class Sys>
-  static auto bind(const Sys& sys) {
-    if constexpr (requires { M::bind_kernel(sys); }) return M::bind_kernel(sys);
-    else return M::bind(sys);
-  }
-};
-
-template <class Binder, class Sys, class F, class M>
-struct BoundResult {
-  using type = std::invoke_result_t<F&, decltype(Binder::template bind<M>(std::declval<const Sys&>()))>;
-};
-// What f returns for the first method of the list that binds to Sys (void if none does).
-template <class Binder, class Sys, class F, class... Ms>
-struct DispatchResult {
-  using type = void;
-};
-template <class Binder, class Sys, class F, class M, class... Ms>
-struct DispatchResult<Binder, Sys, F, M, Ms...> {
-  using type = typename std::conditional_t<Binds<M, Sys>, BoundResult<Binder, Sys, F, M>,
-                                           DispatchResult<Binder, Sys, F, Ms...>>::type;
-};
-
-template <class R, class Binder, class Sys, class F, class M, class... Ms>
-R dispatch(std::string_view name, const Sys& sys, F& f) {
-  if (name == M::info.name || name == M::info.label) {
-    if constexpr (Binds<M, Sys>) {
-      return f(Binder::template bind<M>(sys));
-    } else {
-      throw std::invalid_argument("method " + std::string(M::info.name) + " cannot step this system (it steps: " +
-                                  std::string(M::info.applies_to) + ")");
-    }
-  }
-  if constexpr (sizeof...(Ms) > 0) {
-    return dispatch<R, Binder, Sys, F, Ms...>(name, sys, f);
-  } else {
-    method_info(name);  // throws, naming the valid names
-    throw std::logic_error("registered_methods and method_registry() disagree");
-  }
-}
-
-template <class Binder, class Sys, class F, class... Ms>
-decltype(auto) with(MethodList<Ms...>, std::string_view name, const Sys& sys, F& f) {
-  using R = typename DispatchResult<Binder, Sys, F, Ms...>::type;
-  return dispatch<R, Binder, Sys, F, Ms...>(name, sys, f);
-}
-
 template <class Sys, class... Ms>
 std::vector<std::string> names_for(MethodList<Ms...>) {
   std::vector<std::string> names;
@@ -506,18 +466,6 @@ std::vector<std::string> names_for(MethodList<Ms...>) {
   return names;
 }
 }  // namespace detail
-
-// f(method bound to sys); throws std::invalid_argument if the name is unknown or the method cannot step Sys.
-template <class Sys, class F>
-decltype(auto) with_method(std::string_view name_or_label, const Sys& sys, F&& f) {
-  return detail::with<detail::BindMethod>(registered_methods{}, name_or_label, sys, f);
-}
-
-// The same with the kernel of a processed method, with trivial processors (the method itself otherwise).
-template <class Sys, class F>
-decltype(auto) with_kernel(std::string_view name_or_label, const Sys& sys, F&& f) {
-  return detail::with<detail::BindKernel>(registered_methods{}, name_or_label, sys, f);
-}
 
 // The scene names of the methods that can step Sys.
 template <class Sys>
