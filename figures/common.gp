@@ -153,9 +153,10 @@ scene_real(key)   = (_i = _fv('scene.' . key), _i > 0 ? sprintf("%.17e", FV_VAL[
 summary_real(key) = (_i = _fv('summary.' . key), _i > 0 ? sprintf("%.17e", FV_VAL[_i]) : "?")
 # sci(x): x as "−6.52·10^{−6}" (3 significant digits; enhanced text)
 sci(x) = x == 0 ? "0" : gprintf("%.2t·10^{%T}", x)
-# the simplified method (1.6) of Figs 2–5 in its registry colour, Takahashi–Imada (1.4) beside it; statistics black
+# Takahashi–Imada (1.4) in its registry colour; statistics black. A figure of 004 names the method of its
+# trajectories as the run does, summary methods.<study>, and its alpha, TI_ALPHA: "α = 1/12"
 C_TI   = method_colour('takahashi_imada')
-C_STI  = method_colour('simplified_takahashi_imada')
+TI_ALPHA = (_a = summary_num('ti_alpha'), _a eq "?" ? "α = ?" : sprintf("α = 1/%g", 1 / real(_a)))
 C_STAT = '#000000'
 # time as the colour of points (Fig. 5): eval PALETTE_TIME (viridis, cut before its light yellow end)
 PALETTE_TIME = "set palette defined (0 '#440154', 0.25 '#3B528B', 0.5 '#21908C', 0.75 '#5DC863', 1 '#B5DE2B')"

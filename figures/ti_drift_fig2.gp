@@ -16,6 +16,8 @@
 # Input: fig2_pendulum.csv, fig2_local_slope.csv; summary values (drift rates); scene values (h, pendulum start).
 if (!exists("results")) results = 'results/ti_drift'
 load 'figures/common.gp'
+TRAJ_METHOD = summary_words('methods.pendulum')   # the method of its trajectories, as the run names it
+C_M = method_colour(TRAJ_METHOD)
 set encoding utf8    # (so that the key width counts characters, not bytes)
 F2 = csv('fig2_pendulum.csv')
 LS = csv('fig2_local_slope.csv')
@@ -37,15 +39,15 @@ HBAR = STATS_mean
 drift(t) = EBAR + RATE * (t - TBAR)
 hdrift(t) = HBAR + RATE * (t - TBAR)     # (b): the same slope through the centroid of the H error
 
-set style line 201 lc rgb C_STI lw 1.0 pt 7 ps 0.25      # samples
+set style line 201 lc rgb C_M lw 1.0 pt 7 ps 0.25      # samples
 set style line 202 lc rgb C_STAT lw 1.2 dt (8,4)         # the fitted drift
-set style line 203 lc rgb C_STI lw 1.0 pt 6 ps 0.6       # local slopes
+set style line 203 lc rgb C_M lw 1.0 pt 6 ps 0.6       # local slopes
 set style line 204 lc rgb C_STAT lw 1.2                  # (4.3) at the current energy
 
 do for [fmt in FORMATS] {
     eval term(fmt, 'ti_drift_fig2', 17, 19)
     set multiplot title "{/:Bold " . made_by('pendulum') . ":} " . sprintf("unsymmetric pendulum U(q) = −cos q + 0.2 sin 2q, start (q_0, p_0) = (%g, %g), " \
-        . method_key("sti", "004") . ", α = 1/12,\nh = %g, no processing; %d samples, every Δt = %g", Q0, P0, H, NS, DT)
+        . method_key(TRAJ_METHOD, "004") . ", " . TI_ALPHA . ",\nh = %g, no processing; %d samples, every Δt = %g", Q0, P0, H, NS, DT)
     set xrange [0:TMAX]
     set format x "%g"
     set format y "%g"

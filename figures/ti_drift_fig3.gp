@@ -10,6 +10,8 @@
 # Input: fig3_hh3.csv; summary values (slopes, max error); scene values (h, start, H_0).
 if (!exists("results")) results = 'results/ti_drift'
 load 'figures/common.gp'
+TRAJ_METHOD = summary_words('methods.hh3')   # the method of its trajectories, as the run names it
+C_M = method_colour(TRAJ_METHOD)
 set encoding utf8    # (so that the key width counts characters, not bytes)
 F3 = csv('fig3_hh3.csv')
 
@@ -34,13 +36,13 @@ XK = TMAX >= 1e5 ? 3 * floor(log10(TMAX) / 3 + 1e-9) : 0; XS = 10.0**XK     # ti
 XLABEL = XK == 0 ? "time t" : sprintf("time t  [10^{%d}]", XK)
 line(t) = EBAR + SLOPE * (t - TBAR)
 
-set style line 301 lc rgb C_STI lw 1.0 pt 7 ps 0.25      # samples
+set style line 301 lc rgb C_M lw 1.0 pt 7 ps 0.25      # samples
 set style line 302 lc rgb C_STAT lw 1.2 dt (8,4)         # the fitted line
 
 do for [fmt in FORMATS] {
     eval term(fmt, 'ti_drift_fig3', 17, 14)
     set multiplot title "{/:Bold " . made_by('hh3') . ":} " . sprintf("Hénon–Heiles, U = (q_1^2 + q_2^2)/2 + q_1^2q_2 − q_2^3/3, start q_1 = 0, q_2 = %g, p_2 = %g, p_1 > 0 with H = %g;\n" \
-        . method_key("sti", "004") . ", α = 1/12, h = %g, no processing; %d samples, every Δt = %g", Q2, P2, H0, H, NS, DT)
+        . method_key(TRAJ_METHOD, "004") . ", " . TI_ALPHA . ", h = %g, no processing; %d samples, every Δt = %g", Q2, P2, H0, H, NS, DT)
     set xrange [0:TMAX / XS]
     set format y "%g"
     set mxtics; set mytics

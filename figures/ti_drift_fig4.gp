@@ -17,6 +17,8 @@
 # published; outlier ids); scene values (h, k, H_0, the ensemble).
 if (!exists("results")) results = 'results/ti_drift'
 load 'figures/common.gp'
+TRAJ_METHOD = summary_words('methods.ensemble')   # the method of its trajectories, as the run names it
+C_M = method_colour(TRAJ_METHOD)
 set encoding utf8    # (so that the key width counts characters, not bytes)
 TRJ = csv('fig4_trajectories.csv')
 STA = csv('fig4_stats.csv')
@@ -71,18 +73,18 @@ seg_dx(o) = _xp - _x0
 seg_dy(o) = _yp - _y0
 reset_seg = "_tp = -1; _xp = 0; _yp = 0; _ok = 0; _x0 = 0; _y0 = 0"
 
-set style line 401 lc rgb C_STI lw 1.0                   # outliers
+set style line 401 lc rgb C_M lw 1.0                   # outliers
 set style line 402 lc rgb '#A8A8A8' lw 0.35              # the other trajectories
 set style line 403 lc rgb C_STAT lw 2.2                  # μ
 set style line 404 lc rgb '#882255' lw 1.8                # μ ± σ
 set style line 405 lc rgb '#B0B0B0' lw 0.8 dt (3,3)      # threshold
-set style line 406 lc rgb C_STI lw 1.6                   # σ(t)
+set style line 406 lc rgb C_M lw 1.6                   # σ(t)
 set style line 407 lc rgb C_STAT lw 1.0 dt (8,4)         # fitted power law
 set style line 408 lc rgb '#555555' lw 1.0 dt (2,2)      # √t guide
 
 do for [fmt in FORMATS] {
     eval term(fmt, 'ti_drift_fig4', 17, 16)
-    set multiplot title "{/:Bold " . made_by('ensemble') . ":} " . sprintf("Hénon–Heiles, U = (q_1^2 + q_2^2)/2 + q_1^2q_2 − q_2^%d/%d; " . method_key("sti", "004") . ", α = 1/12, h = %g, no processing;\n" \
+    set multiplot title "{/:Bold " . made_by('ensemble') . ":} " . sprintf("Hénon–Heiles, U = (q_1^2 + q_2^2)/2 + q_1^2q_2 − q_2^%d/%d; " . method_key(TRAJ_METHOD, "004") . ", " . TI_ALPHA . ", h = %g, no processing;\n" \
         . "%d starts: q_1 = 0, q_2 = %g ± %g, p_2 = %g ± %g (uniform), p_1 > 0 with H = %g; error of the modified energy E = Ĥ + h^4α^2K/2, (4.3)", \
         K, K, H, M, Q2, PERT, P2, PERT, H0)
     set format y "%g"

@@ -16,6 +16,8 @@
 # episodes); scene values (h, k, ensemble.episode_*).
 if (!exists("results")) results = 'results/ti_drift'
 load 'figures/common.gp'
+TRAJ_METHOD = summary_words('methods.poincare')   # the method of its trajectories, as the run names it
+C_M = method_colour(TRAJ_METHOD)
 set encoding utf8    # (so that the key width counts characters, not bytes)
 eval PALETTE_TIME
 PC  = csv('fig5_poincare.csv')
@@ -75,7 +77,7 @@ set style line 503 lc rgb '#882255' lw 0.9           # running slope
 do for [fmt in FORMATS] {
     eval term(fmt, 'ti_drift_fig5', 17, 18)
     set multiplot title "{/:Bold " . made_by('poincare') . ":} " . sprintf("Poincaré cuts q_1 = 0, p_1 > 0 of trajectory no. %d of Fig. 4 (Hénon–Heiles, k = %d,\n" \
-                                . method_key("sti", "004") . ", h = %g): growth episodes of its error of E found from the data (shaded),\n" \
+                                . method_key(TRAJ_METHOD, "004") . ", h = %g): growth episodes of its error of E found from the data (shaded),\n" \
                                 . "the flattest window and the longest growth episode (each cut coloured by its time t)", TRAJ, K, H) font ",9"
     set mxtics; set mytics
     set lmargin at screen 0.09; set rmargin at screen 0.92

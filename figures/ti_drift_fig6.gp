@@ -23,6 +23,8 @@
 # exponent, max |H − H_0|, published values); scene values (lj.*).
 if (!exists("results")) results = 'results/ti_drift'
 load 'figures/common.gp'
+TRAJ_METHOD = summary_words('methods.lj')   # the method of its trajectories, as the run names it
+C_M = method_colour(TRAJ_METHOD)
 set encoding utf8    # (so that the key width counts characters, not bytes)
 SCAN  = csv('fig6_scan.csv')
 STATF = csv('fig6_stats.csv')
@@ -101,14 +103,14 @@ TPOS_MIN = STATS_min
 pos(col) = column("t") > 0 ? column(col) : NaN
 
 # ---- styles ----
-set style line 201 lc rgb C_STI  lw 1.0 pt 6 ps 0.55          # (a) max |H − H0|, open circles
-set style line 202 lc rgb C_STI  lw 1.0 pt 9 ps 0.85          # (a) diverged, filled triangles
+set style line 201 lc rgb C_M  lw 1.0 pt 6 ps 0.55          # (a) max |H − H0|, open circles
+set style line 202 lc rgb C_M  lw 1.0 pt 9 ps 0.85          # (a) diverged, filled triangles
 set style line 203 lc rgb '#777777' lw 0.8 dt (5,3)           # (a) threshold; (d) value at t = 0
 set style line 204 lc rgb C_STAT lw 0.9 dt (2,3)              # guides: h^2, t^{1/2}
 set style line 205 lc rgb '#a6a6a6' lw 0.35                   # (b) single trajectories
 set style line 206 lc rgb C_STAT lw 2.0                       # (b) μ
 set style line 207 lc rgb C_STAT lw 2.0 dt (6,3)              # (b) μ ± σ
-set style line 208 lc rgb C_STI  lw 1.4                       # (c) σ
+set style line 208 lc rgb C_M  lw 1.4                       # (c) σ
 set style line 209 lc rgb C_STAT lw 1.0 dt (8,4)              # (c) fit
 set style line 210 lc rgb C_SV   lw 1.2                       # (d) H error
 set style line 211 lc rgb C_TI   lw 1.2                       # (d) H at the processed variables
@@ -117,7 +119,7 @@ set style line 212 lc rgb C_STAT lw 1.0 dt (3,3)              # (d) sigma of E
 do for [fmt in FORMATS] {
     eval term(fmt, 'ti_drift_fig6', 17, 17)
     set multiplot title "{/:Bold " . made_by('lj') . ":} " . sprintf("Lennard-Jones cluster, 9 particles in the plane (3×3 grid perturbed by ≤ %g, p_0 = 0), " \
-        . method_key("sti", "004") . ", α = 1/12,\nno processing; (b)–(d): h = %g, %d trajectories to t = %g " \
+        . method_key(TRAJ_METHOD, "004") . ", " . TI_ALPHA . ",\nno processing; (b)–(d): h = %g, %d trajectories to t = %g " \
         . "%s", PERT, H_LJ, M_LJ, T_END, \
         ALL_DIV eq "" ? "" : sprintf("(in (a) every run diverges at h = %s, the step size printed in the paper)", ALL_DIV))
 

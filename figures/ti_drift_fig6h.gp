@@ -8,6 +8,8 @@
 # Input: fig6_steps.csv; summary values (lj_steps.*); scene values (lj_steps.*).
 if (!exists("results")) results = 'results/ti_drift'
 load 'figures/common.gp'
+TRAJ_METHOD = summary_words('methods.lj_steps')   # the method of its trajectories, as the run names it
+C_M = method_colour(TRAJ_METHOD)
 set encoding utf8
 ST = csv('fig6_steps.csv')
 
@@ -23,13 +25,13 @@ LH = STATS_mean_x; LS = STATS_mean_y
 HMIN = exp(STATS_min_x); HMAX = exp(STATS_max_x)
 line(h, p) = exp(LS + p * (log(h) - LH))
 
-set style line 601 lc rgb method_colour('simplified_takahashi_imada') lw 1.0 pt 7 ps 0.7
-set style line 602 lc rgb method_colour('simplified_takahashi_imada') lw 1.2
+set style line 601 lc rgb C_M lw 1.0 pt 7 ps 0.7
+set style line 602 lc rgb C_M lw 1.2
 set style line 603 lc rgb '#777777' lw 1.0 dt (2,3)
 
 do for [fmt in FORMATS] {
     eval term(fmt, 'ti_drift_fig6h', 12, 9)
-    set title "{/:Bold " . made_by('lj_steps') . ", the step:} " . sprintf("Lennard-Jones cluster, " . method_key("sti", "004") . ":\nσ of the error of E at t = %g over %d trajectories against h", T_END, M) font ",9"
+    set title "{/:Bold " . made_by('lj_steps') . ", the step:} " . sprintf("Lennard-Jones cluster, " . method_key(TRAJ_METHOD, "004") . ":\nσ of the error of E at t = %g over %d trajectories against h", T_END, M) font ",9"
     set logscale xy
     set format x "%g"
     set format y LOGFMT

@@ -209,6 +209,7 @@ void ensemble_with(Context& ctx, const HH& hhk, LargestError& largest) {
 }
 
 void run_ensemble(Context& ctx, LargestError& largest) {
+  put_trajectory_method(ctx, "ensemble");
   with_ensemble_system(ctx.scene, [&](const auto& hhk) { ensemble_with(ctx, hhk, largest); });
 }
 

@@ -17,6 +17,7 @@ namespace geomint::ti_drift {
 namespace {
 
 void run_hh3(Context& ctx) {
+  put_trajectory_method(ctx, "hh3");
   const Scene& s = ctx.scene;
   ctx.progress("Fig. 3: Henon-Heiles k = 3");
   const double h = s.real("h");

@@ -261,6 +261,7 @@ void put_summary(Context& ctx, const LJ& lj, const Scan& scan, const Ensemble& e
 }
 
 void run_lj(Context& ctx) {
+  put_trajectory_method(ctx, "lj");
   ctx.progress("Fig. 6: Lennard-Jones cluster");
   const LJ lj;
   Value reproduced;

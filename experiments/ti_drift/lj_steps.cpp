@@ -23,6 +23,7 @@ namespace geomint::ti_drift {
 namespace {
 
 void run_lj_steps(Context& ctx) {
+  put_trajectory_method(ctx, "lj_steps");
   const Scene& s = ctx.scene;
   ctx.progress("Fig. 6: sigma against h");
   const LJ lj;

@@ -65,6 +65,7 @@ void write_local_slopes(Context& ctx, const UnsymmetricPendulum& up, const Z1& p
 }
 
 void run_pendulum(Context& ctx) {
+  put_trajectory_method(ctx, "pendulum");
   const Scene& s = ctx.scene;
   ctx.progress("Fig. 2: unsymmetric pendulum");
   const double h = s.real("h");

@@ -284,6 +284,7 @@ Value write_fig5(Context& ctx, const HH& hhk, const Trajectory& run) {
 // The trajectory with the largest error: the ensemble study's of this process, or that of the ensemble integrated
 // here when that study did not run (the same function, starts and checkpoint: the same trajectory).
 void run_poincare(Context& ctx, const LargestError& largest) {
+  put_trajectory_method(ctx, "poincare");
   LargestError own;
   if (!largest) {
     const Run run = integrate_ensemble(ctx);

@@ -9,13 +9,20 @@
 
 #include "geomint/methods/by_name.hpp"
 #include "geomint/methods/scene_methods.hpp"
+#include "geomint/integrators/takahashi_imada.hpp"
 #include "geomint/observables/linear_fit.hpp"
 #include "geomint/observables/stiffness.hpp"
+#include "geomint/runner/summary.hpp"
 #include "geomint/runner/timing.hpp"
 #include "geomint/systems/counting.hpp"
 #include "henon_heiles_starts.hpp"
 
 namespace geomint::ti_drift {
+
+void put_trajectory_method(Context& ctx, const std::string& study) {
+  ctx.summary["methods"][study] = labels_of({"simplified_takahashi_imada"});
+  ctx.summary["ti_alpha"] = takahashi_imada_alpha;
+}
 
 double slope(const std::vector<double>& x, const std::vector<double>& y) { return linear_fit(x, y).slope; }
 

@@ -41,6 +41,10 @@ Study kernel_timing_study();   // cost: ns per step of each method              
 
 // ---- summary.json
 
+// The method a figure's trajectories are stepped with, the simplified method (1.6) unprocessed at the alpha of
+// (1.4): summary methods.<study> (its label) and ti_alpha, which the figure's title names.
+void put_trajectory_method(Context& ctx, const std::string& study);
+
 // The slope of the least-squares line through (x, y).
 double slope(const std::vector<double>& x, const std::vector<double>& y);
 
