@@ -136,9 +136,8 @@ need_num(var, s) = (s eq "?") \
     : sprintf("%s = %s", var, s)
 
 # ---- 001 Dubois & Rojas-Quintero, Lobatto variational integrator (figures/lobatto_table_*.gp) ----
-# The paper's method is blue (its quantities in one order panel: told apart by marker, figures/convergence.gpi).
-C_LOB   = method_colour('lobatto')            # Lobatto P3 variational scheme (13)–(14); nonlinear: Newton on the internal nodes
-LS_LOB   = 41; set style line LS_LOB   lc rgb C_LOB   lw 1.0 pt 4  ps 0.70   # open squares
+# The paper's method is blue, as the registry colours it (its quantities in one order panel: told apart by marker,
+# figures/convergence.gpi).
 # Fig. 2 compares step sizes of the Lobatto scheme alone: a ramp of its blue, light = large h
 C_LOB_H1 = '#56B4E9';  C_LOB_H2 = '#0072B2';  C_LOB_H3 = '#002338'
 C_STABLE = '#CFE8F6'   # shading: h ω where the Lobatto map is stable (spectral radius 1)

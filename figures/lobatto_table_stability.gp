@@ -13,6 +13,7 @@
 # Input: stability.csv; summary values (methods, stable sets, bound, tolerance); scene values (scan range).
 if (!exists("results")) results = 'results/lobatto_table'
 load 'figures/common.gp'
+LOB = summary_words('methods.stability_scheme')   # the method of column spectral_radius, as the run names it
 set encoding utf8    # (so that the key width counts characters, not bytes)
 ST = csv('stability.csv')
 
@@ -68,8 +69,8 @@ do for [fmt in FORMATS] {
     eval term(fmt, 'lobatto_table_stability', 17, 11)
     # the plot and, below it, its key (a second plot of key entries only: the same in pdf and png)
     set multiplot title sprintf("{/:Bold Stability:} spectral radius ρ of the one-step map, harmonic oscillator, %d values of hω in [%g, %g]\n" \
-                                . "Lobatto stable (shaded) on %s;  first bound: computed %.8g, eq. (10) %.8g", \
-                                NPTS, XMIN, XMAX, SET, BOUND, BOUND_PAPER)
+                                . "%s stable (shaded) on %s;  first bound: computed %.8g, eq. (10) %.8g", \
+                                NPTS, XMIN, XMAX, method_title(LOB), SET, BOUND, BOUND_PAPER)
     set lmargin at screen 0.09; set rmargin at screen 0.98
     set tmargin at screen 0.885; set bmargin at screen 0.23
     set border 31; set mxtics 2; set mytics
@@ -95,7 +96,7 @@ do for [fmt in FORMATS] {
             offset (LLEFT(i) ? -0.4 : 0.4), 0
         if (LLEFT(i)) { set label i right } else { set label i left }
     }
-    plot @COMPARED ST using "h_omega":(clip(column("spectral_radius"))) with lines ls LS_LOB lw 1.4
+    plot @COMPARED ST using "h_omega":(clip(column("spectral_radius"))) with lines lc rgb method_colour(LOB) lw 1.4
 
     unset object; unset arrow; unset label
     set lmargin at screen 0.02; set rmargin at screen 0.98
@@ -104,9 +105,9 @@ do for [fmt in FORMATS] {
     set border 0; set xtics ("" 5); set ytics ("" 5); unset mxtics; unset mytics; set xrange [0:1]; set yrange [0:1]
     set key center center horizontal Left reverse maxrows 3 samplen 3 width -2
     plot 2 with lines notitle, \
-         keyentry with lines ls LS_LOB lw 1.4 title "Lobatto (13)–(14)", \
+         keyentry with lines lc rgb method_colour(LOB) lw 1.4 title method_key(LOB, "001"), \
          @COMPARED_KEY \
-         keyentry with boxes fillcolor rgb C_STABLE fillstyle solid 1.0 noborder title sprintf("Lobatto stable (ρ ≤ 1 + %s)", TOLTXT), \
+         keyentry with boxes fillcolor rgb C_STABLE fillstyle solid 1.0 noborder title sprintf("%s stable (ρ ≤ 1 + %s)", method_title(LOB), TOLTXT), \
          for [k = 1:3] keyentry with lines ls 90 + k title (k == 1 ? "computed first bound ≈ √(42−6√29), eq. (10)" \
                                                              : k == 2 ? "h ω = √10, √30: δ = 0, eq. (7)" \
                                                              : "h ω = √60, √(42+6√29): other roots of Δ, Sec. 4")   # (2: off the yrange)

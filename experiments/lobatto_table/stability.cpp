@@ -123,6 +123,7 @@ void run_stability(Context& ctx) {
     if (std::abs(hws[i] - std::numbers::pi) < std::abs(hws[near_pi] - std::numbers::pi)) near_pi = i;
   const double steps_per_period = 2 * std::numbers::pi / lo;  // N = T/h = 2 pi / (h omega)
   ctx.summary["methods"]["stability"] = labels_of(methods);
+  ctx.summary["methods"]["stability_scheme"] = labels_of({"lobatto"});  // (the spectral_radius column's method)
   ctx.summary["stability"] = {
       {"grid_step", (hw1 - hw0) / static_cast<double>(npts - 1)},
       {"radius_tolerance", kRadiusTolerance},
