@@ -13,9 +13,8 @@
 #include <vector>
 
 #include "geomint/core/integrate.hpp"
-#include "geomint/integrators/takahashi_imada.hpp"
+#include "geomint/integrators/takahashi_imada_lj.hpp"
 #include "geomint/observables/ensemble_statistics.hpp"
-#include "geomint/observables/modified_energy.hpp"
 #include "geomint/observables/stiffness.hpp"
 #include "geomint/runner/checkpoint.hpp"
 #include "geomint/runner/fits.hpp"

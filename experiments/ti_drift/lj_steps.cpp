@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "geomint/core/integrate.hpp"
+#include "geomint/integrators/takahashi_imada_lj.hpp"
 #include "geomint/observables/ensemble_statistics.hpp"
 #include "geomint/observables/linear_fit.hpp"
 #include "geomint/observables/modified_energy.hpp"
