@@ -243,7 +243,7 @@ def ledger_cell(cell, text, where):
 
 def item_slug(name):
     """An item's name as figure scripts spell it (figures/<run>_<slug>*.gp): "Fig. 5.2" -> "fig52",
-    "Table 1" -> "table1", "energy error" -> "energyerror"."""
+    "Table 1" -> "table1", "energy error" -> "energyerror" (the runner's item_slug, figure_values.gp item.<slug>)."""
     return re.sub(r"[^a-z0-9]", "", name.lower())
 
 

@@ -21,10 +21,10 @@ Mat<2> pq_matrix(const std::string& method, const HarmonicOscillator& osc, doubl
   return in_pq_order(one_step_matrix(one_step_by_name(method, osc, Bind::kernel), h));
 }
 
-Mat<2> lobatto_matrix(const HarmonicOscillator& osc, double h) { return pq_matrix("lobatto", osc, h); }
+Mat<2> lobatto_matrix(const HarmonicOscillator& osc, double h) { return pq_matrix(kScheme, osc, h); }
 
 void check_lobatto(const Scene& s, const char* key, double hw, const std::string& what) {
-  check_oscillatory_bound(s, key, key, "lobatto", hw, what + "; 001 eq. (10)", "sqrt(42 - 6 sqrt(29))");
+  check_oscillatory_bound(s, key, key, kScheme, hw, what + "; 001 eq. (10)", "sqrt(42 - 6 sqrt(29))");
 }
 
 void check_meshes(const Scene& s, const char* key, const char* methods_key, bool lobatto) {

@@ -17,6 +17,9 @@
 
 namespace geomint::lobatto_table {
 
+// 001's scheme (13)-(14), by its registry name: the method of Table 1, Fig. 2 and the stability scan.
+inline constexpr const char* kScheme = "lobatto";
+
 using Z1 = PhaseState<1>;
 
 // The studies, in the order they run.

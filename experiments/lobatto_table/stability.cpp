@@ -123,7 +123,7 @@ void run_stability(Context& ctx) {
     if (std::abs(hws[i] - std::numbers::pi) < std::abs(hws[near_pi] - std::numbers::pi)) near_pi = i;
   const double steps_per_period = 2 * std::numbers::pi / lo;  // N = T/h = 2 pi / (h omega)
   ctx.summary["methods"]["stability"] = labels_of(methods);
-  ctx.summary["methods"]["stability_scheme"] = labels_of({"lobatto"});  // (the spectral_radius column's method)
+  ctx.summary["methods"]["stability_scheme"] = labels_of({kScheme});  // (the spectral_radius column's method)
   ctx.summary["stability"] = {
       {"grid_step", (hw1 - hw0) / static_cast<double>(npts - 1)},
       {"radius_tolerance", kRadiusTolerance},
@@ -143,7 +143,7 @@ StudyPlan plan_stability(const Scene& s) {
   const double methods = static_cast<double>(s.texts("stability.methods").size());
   const double periods = s.real("long_run.periods");
   double steps = points * (1 + methods);  // one one-step matrix per point and method
-  for (double factor : kBoundFactors) steps += periods * 2 * std::numbers::pi / (factor * method_info("lobatto").oscillatory_bound);
+  for (double factor : kBoundFactors) steps += periods * 2 * std::numbers::pi / (factor * method_info(kScheme).oscillatory_bound);
   const PlanRate& rate = plan_rate("oscillator one-step matrix");
   return {steps, 0, points * (2 + methods) * (sizeof(double) + kCellBytes), rate.ns_per_step,
           "runs at the bound iterate the one-step matrix (13); " + rate.note};

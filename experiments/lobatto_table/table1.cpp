@@ -90,7 +90,7 @@ void run_table1(Context& ctx) {
     const double h = T / Nd;
     const Mat<2> Phi = lobatto_matrix(osc, h);
     double p = 0, q = 0, H = 0, Hd = 0;
-    const auto lobatto = trajectory("lobatto", osc, z0, h, N);
+    const auto lobatto = trajectory(kScheme, osc, z0, h, N);
     const double H0 = osc.H(z0), Hd0 = discrete_energy(Phi, z0);
     for (std::int64_t j = 1; j <= N; ++j) {
       const Z1& zl = lobatto[static_cast<std::size_t>(j)];
@@ -125,7 +125,7 @@ void run_table1(Context& ctx) {
   Value relative = Value::list();
   for (std::size_t i = 0; i < eHd.size(); ++i) relative.push_back(eHd[i] / Hd0s[i]);
   ctx.summary["methods"]["table1"] = labels_of(methods);
-  ctx.summary["methods"]["table1_scheme"] = labels_of({"lobatto"});  // (the fits lobatto_*: Table 1's method)
+  ctx.summary["methods"]["table1_scheme"] = labels_of({kScheme});  // (the fits lobatto_*: Table 1's method)
   Value compared = Value::record();  // the q errors of the compared methods per mesh, as table1.csv
   for (std::size_t k = 0; k < methods.size(); ++k) compared[label_of(methods[k])] = em[k];
   ctx.summary["table1"] = {{"Hd0", Hd0s},

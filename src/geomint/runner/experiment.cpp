@@ -220,9 +220,9 @@ constexpr const char* kStudiesKey = "studies";
 // "scene." or "summary."; array elements by index from 0) and FV_VAL; integers are written with
 // ".0" (gnuplot would divide them as integers). A list of texts is also one text under its own key,
 // its words separated by spaces (scene_words, summary_words); of the summary's texts, those under a key
-// "labels" (a figure's names of a study's curves, e.g. work_precision.labels.polar). And the papers' items each study that ran
-// made under the scene, "made.<study>" (made_by: a figure's title names its item as the study does), and each
-// item by its script's spelling, "item.fig52" (made_item).
+// "labels" (a figure's names of a study's curves, e.g. work_precision.labels.polar). And the papers' items
+// each study that ran made under the scene, "made.<study>" (made_by: a figure's title names its item as the
+// study does), and each item by its script's spelling, "item.fig52" (made_item).
 using Entry = std::pair<std::string, std::string>;  // (key, gnuplot literal)
 
 std::string gnuplot_quoted(const std::string& s) {  // '...' with '' for ' and no newlines
@@ -302,16 +302,18 @@ const Study* find_study(const ExperimentSpec& spec, std::string_view name) {
   return nullptr;
 }
 
-// The ids of the items a study makes under a scene (Study::makes_under): a part of those it declares.
 // An item's name as its figure script spells it (figures/<run>_<slug>*.gp; scripts/report.py item_slug):
 // "003 Fig. 5.2" -> "fig52", "001 Table 1" -> "table1".
 std::string item_slug(const std::string& id) {
   std::string slug;
-  for (char c : id.substr(id.find(' ') + 1))
-    if (std::isalnum(static_cast<unsigned char>(c))) slug += static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  for (char c : id.substr(id.find(' ') + 1)) {
+    const auto u = static_cast<unsigned char>(c);
+    if (std::isalnum(u)) slug += static_cast<char>(std::tolower(u));
+  }
   return slug;
 }
 
+// The ids of the items a study makes under a scene (Study::makes_under): a part of those it declares.
 std::vector<std::string> made_here(const Study& st, const Scene& scene) {
   const std::vector<Item> here = st.makes_under ? st.makes_under(scene) : st.makes;
   std::vector<std::string> ids;

@@ -11,7 +11,8 @@ namespace geomint {
 namespace {
 
 std::map<std::string, PlanRate, std::less<>> read_table() {
-  const toml::table table = toml::parse(std::string_view(kPlanRatesToml), std::string_view("experiments/plan_rates.toml"));
+  const toml::table table =
+      toml::parse(std::string_view(kPlanRatesToml), std::string_view("experiments/plan_rates.toml"));
   std::map<std::string, PlanRate, std::less<>> rates;
   if (const toml::table* entries = table["rates"].as_table()) {
     for (const auto& [name, node] : *entries) {
