@@ -1,14 +1,21 @@
 """The report's generated tables of comparisons and methods (scripts/report.py writes them):
-comparisons.tex (per run), one table per figure for \\comparisons{<paper> <item>}, the method registry
-(methods.tex) and the methods' names for \\method (method_names.tex)."""
+comparisons.tex (per run), one table per figure for \\comparisons{<paper> <item>} and, where its comparisons
+form a grid, one in the paper's shape for \\comparisongrid{<paper> <item>}, the method registry (methods.tex)
+and the methods' names for \\method (method_names.tex)."""
 import math
 import re
 
-from tex_format import FORMATS, code, gnuplot_tex, is_number, longtable, prose, tex_escape, value_text
+from tex_format import FORMATS, code, gnuplot_tex, is_number, key_text, longtable, number, prose, tex_escape, \
+    value_text
 
 
 COMPARISON_HEAD = [r"\toprule quantity & where published & published & reproduced & difference & verdict\\ \midrule",
                    r"\endhead"]
+
+
+def rule_text(c):
+    """A comparison's tolerance as published.toml gives it ("rel 0.03", "abs 1e-13")."""
+    return ", ".join(f"{k} {v:g}" for k, v in (c.get("compare") or {}).items())
 
 
 def comparison_rows(comparisons):
@@ -16,7 +23,7 @@ def comparison_rows(comparisons):
     difference and the verdict with its rule, and its reason or note below it."""
     out = []
     for key, c in comparisons.items():
-        how = ", ".join(f"{k} {v:g}" for k, v in (c.get("compare") or {}).items())
+        how = rule_text(c)
         verdict = c["verdict"] + (f" ({tex_escape(how)})" if how else "")
         if c.get("expect", "reproduced") != "reproduced":
             verdict += r", expected: " + tex_escape(c["expect"])
@@ -40,12 +47,95 @@ def comparisons_tex(runs):
     return "\n".join(out) + "\n"
 
 
+# In a grid, a comparison's `where` reads "<item>, <quantity>, <columns>: <definition>" (published.toml), e.g.
+# "001 Table 1, Energy H(p, q), N = 10, 20, 40 meshes per period: max |H(p_j, q_j) - H_0|, j = 1..N".
+SYMBOL = r"[A-Za-z](?:_\{?\w+\}?)?(?:\([^()]*\))?"  # a quantity's symbol: p, N, H_d, H(p, q)
+QUANTITY_COLUMN = r">{\raggedright\arraybackslash}p{0.14\linewidth}"  # (a long name wraps)
+
+
+def where_fields(item, c):
+    """(quantity, columns) of a comparison's `where` written "<item>, <quantity>, <columns>: ...", else None."""
+    m = re.match(re.escape(item) + r", ((?:[^,()]|\([^()]*\))+), ([^:]+):", c.get("where", ""))
+    return m.groups() if m else None
+
+
+def symbol_math(symbol):
+    """A symbol as math: its subscript braced (H_d(p, q) -> H_{d}(p, q))."""
+    return re.sub(r"_\{?(\w+)\}?", r"_{\1}", symbol)
+
+
+def quantity_tex(text):
+    """A quantity's name as `where` gives it ("Energy H(p, q)"), its trailing symbol as math."""
+    m = re.search(rf"(?:^|(?<=\s)){SYMBOL}$", text)
+    return prose(text) if m is None else prose(text[:m.start()]) + "$" + symbol_math(m.group(0)) + "$"
+
+
+def grid_head(columns, key):
+    """A key's column head: "$N=10$" where the columns read "N = 10, 20, 40 ...", else the key."""
+    m = re.match(rf"({SYMBOL}) = ", columns)
+    return f"${symbol_math(m.group(1))}={key_text(key)}$" if m else prose(key_text(key))
+
+
+def grid_cell(v, fmt):
+    """One published or reproduced value of a grid, --- where it has none."""
+    text = number(v, fmt)
+    return "---" if text is None else f"${text}$"
+
+
+def comparison_grid(item, comparisons):
+    """\\comparisongrid{001 Table 1}: an item's comparisons in the paper's shape, or None if they do not form a
+    grid. A grid has a row per quantity (the value comparisons, published by key, all with the same keys) and a
+    column pair, published and reproduced, per key; an order comparison (compare "order") fills the order column
+    pair of the row whose quantity its `where` names, and a row without one shows its tolerance there instead."""
+    values, orders = {}, {}
+    for c in comparisons.values():
+        fields = where_fields(item, c)
+        if fields is None:
+            return None
+        if isinstance(c.get("published"), dict) and fields[0] not in values:
+            values[fields[0]] = (c, fields[1])
+        elif "order" in (c.get("compare") or {}) and is_number(c.get("published")) and fields[0] not in orders:
+            orders[fields[0]] = (c, fields[1])
+        else:
+            return None
+    key_sets = {frozenset(c["published"]) for c, _ in values.values()}
+    order_heads = {columns for _, columns in orders.values()}
+    if len(key_sets) != 1 or len(order_heads) > 1 or not set(orders) <= set(values):
+        return None
+    first, columns = next(iter(values.values()))
+    keys = list(first["published"])
+    if all(re.fullmatch(r"[-+]?[\d.]+(?:[eE][-+]?\d+)?", k) for k in keys):  # (numbers: by value, not as text)
+        keys.sort(key=float)
+    heads = [grid_head(columns, k) for k in keys] + [prose(h[:1].upper() + h[1:]) for h in order_heads]
+    rows = []
+    for quantity, (c, _) in values.items():
+        digits = "err" if "abs" in (c.get("compare") or {}) else "sci4"  # (to an absolute tolerance: two digits)
+        cells = [quantity_tex(quantity)]
+        for k in keys:
+            cells += [grid_cell(c["published"][k], "sci3"), grid_cell((c.get("reproduced") or {}).get(k), digits)]
+        if quantity in orders:
+            order = orders[quantity][0]
+            cells += [grid_cell(order["published"], "porder"), grid_cell(order.get("reproduced"), "order")]
+        elif orders:
+            cells.append(rf"\multicolumn{{2}}{{c}}{{{tex_escape(rule_text(c))}}}")
+        rows.append(" & ".join(cells) + r" \\")
+    last = len(heads) - 1
+    return "\n".join([f"% {item}: its comparisons as a grid, a row per quantity (scripts/report.py).",
+                      rf"\begin{{tabular}}{{@{{}}{QUANTITY_COLUMN}{'r' * 2 * len(heads)}@{{}}}}", r"\toprule",
+                      "".join(rf" & \multicolumn{{2}}{{c}}{{{h}}}" for h in heads) + r" \\",
+                      "".join(rf"\cmidrule({'l' if i == last else 'lr'}){{{2 * i + 2}-{2 * i + 3}}}"
+                              for i in range(len(heads))),
+                      "Quantity" + " & Pub. & Rep." * len(heads) + r" \\", r"\midrule", *rows, r"\bottomrule",
+                      r"\end{tabular}"]) + "\n"
+
+
 def figure_comparisons_tex(runs):
     """\\comparisons{000 Fig. 9} (paper/main.tex): the table of one figure's comparisons, those of the run
-    that makes it whose published.toml entries belong to it (summary.json "comparisons", field figure).
-    Returns the index (the file of each figure's table) and the tables, by file name under generated/."""
-    index = ["% The table of each figure's comparisons, for \\comparisons{<paper> <item>} (scripts/report.py).",
-             r"\makeatletter"]
+    that makes it whose published.toml entries belong to it (summary.json "comparisons", field figure), and
+    \\comparisongrid{001 Table 1}: the same in the paper's shape, for a figure whose comparisons form a grid.
+    Returns the index (the file of each figure's tables) and the tables, by file name under generated/."""
+    index = ["% The tables of each figure's comparisons, for \\comparisons{<paper> <item>} and "
+             "\\comparisongrid{<paper> <item>} (scripts/report.py).", r"\makeatletter"]
     tables = {}
     for run in runs.values():
         by_figure = {}
@@ -53,7 +143,8 @@ def figure_comparisons_tex(runs):
             by_figure.setdefault(c.get("figure", ""), {})[key] = c
         for figure, comparisons in by_figure.items():
             if figure:
-                name = "comparisons-" + re.sub(r"[^a-z0-9]+", "-", figure.lower()).strip("-") + ".tex"
+                slug = re.sub(r"[^a-z0-9]+", "-", figure.lower()).strip("-") + ".tex"
+                name = "comparisons-" + slug
                 index.append(f"\\@namedef{{geomint@comparisons@{figure}}}{{generated/{name}}}")
                 paper, _, item = figure.partition(" ")
                 tables[name] = "\n".join([f"% {figure}: its comparisons (scripts/report.py).",
@@ -61,6 +152,10 @@ def figure_comparisons_tex(runs):
                                           longtable("footnotesize", 0.2, 0.26, 0.13, 0.13, 0.12, 0.16),
                                           *COMPARISON_HEAD, *comparison_rows(comparisons), r"\bottomrule",
                                           r"\end{longtable}}"]) + "\n"
+                grid = comparison_grid(figure, comparisons)
+                if grid:
+                    index.append(f"\\@namedef{{geomint@comparisongrid@{figure}}}{{generated/comparisongrid-{slug}}}")
+                    tables["comparisongrid-" + slug] = grid
     index.append(r"\makeatother")
     return "\n".join(index) + "\n", tables
 

@@ -1,0 +1,61 @@
+#!/usr/bin/env python3
+"""check_report_tables.py SOURCE_DIR: \\comparisongrid (scripts/report_tables.py) from a synthetic summary, no
+run needed. An item whose value comparisons share one key set gets a grid: a row per quantity named by its
+`where`, a column pair per key (in numeric order, headed by the parameter `where` names), the order column
+filled from the order comparison of the same quantity and, for a quantity without one, its tolerance. An item
+whose keys differ, or whose order names a quantity no value comparison has, gets none."""
+import pathlib
+import sys
+
+sys.path.insert(0, str(pathlib.Path(sys.argv[1]) / "scripts"))
+import report_tables  # noqa: E402
+
+
+def value(item, quantity, published, reproduced, compare):
+    """A value comparison published by mesh n, as summary.json "comparisons" carries it."""
+    return {"figure": item, "where": f"{item}, {quantity}, n = 5, 10 meshes: the largest error",
+            "published": published, "reproduced": reproduced, "compare": compare, "verdict": "reproduced"}
+
+
+def order(item, quantity, published, reproduced):
+    return {"figure": item, "where": f"{item}, {quantity}, order: the slope of the errors",
+            "published": published, "reproduced": reproduced, "compare": {"order": 0.3}, "verdict": "reproduced"}
+
+
+GRID, UNEQUAL, UNPAIRED = "900 Table 2", "900 Table 3", "900 Table 4"
+comparisons = {  # (keys as the summary writes them: "10" before "5")
+    "b_err": value(GRID, "Energy B(x, y)", {"10": 2.5e-4, "5": 8e-4}, {"10": 2.4567e-4, "5": 8.0123e-4}, {"rel": 0.1}),
+    "c_err": value(GRID, "Discrete energy C_d(x, y)", {"10": 1.1e-15, "5": 2.2e-15}, {"10": 3.3e-15, "5": 4.4e-15},
+                   {"abs": 1e-13}),
+    "slope": order(GRID, "Energy B(x, y)", 2, 1.98765),
+    "u_err": value(UNEQUAL, "State u", {"10": 1.0, "5": 2.0}, {"10": 1.0, "5": 2.0}, {"rel": 0.1}),
+    "v_err": value(UNEQUAL, "State v", {"10": 1.0, "20": 2.0}, {"10": 1.0, "20": 2.0}, {"rel": 0.1}),
+    "w_err": value(UNPAIRED, "State w", {"10": 1.0, "5": 2.0}, {"10": 1.0, "5": 2.0}, {"rel": 0.1}),
+    "w_order": order(UNPAIRED, "State z", 2, 2.0),
+}
+index, tables = report_tables.figure_comparisons_tex({"run": {"summary": {"comparisons": comparisons}}})
+problems = []
+grid = tables.get("comparisongrid-900-table-2.tex", "")
+for expected in (r"\@namedef{geomint@comparisongrid@900 Table 2}{generated/comparisongrid-900-table-2.tex}",):
+    if expected not in index:
+        problems.append(f"the index has no {expected}")
+for expected in (r" & \multicolumn{2}{c}{$n=5$} & \multicolumn{2}{c}{$n=10$} & \multicolumn{2}{c}{Order} \\",
+                 r"Quantity & Pub. & Rep. & Pub. & Rep. & Pub. & Rep. \\",
+                 r"Energy $B(x, y)$ & $8.00\times10^{-4}$ & $8.012\times10^{-4}$ & $2.50\times10^{-4}$ & "
+                 r"$2.457\times10^{-4}$ & $2$ & $1.988$ \\",
+                 r"Discrete energy $C_{d}(x, y)$ & $2.20\times10^{-15}$ & $4.4\times10^{-15}$ & $1.10\times10^{-15}$ & "
+                 r"$3.3\times10^{-15}$ & \multicolumn{2}{c}{abs 1e-13} \\"):
+    if expected not in grid:
+        problems.append(f"the grid of {GRID} has no line {expected}")
+for item in (UNEQUAL, UNPAIRED):
+    slug = item.lower().replace(" ", "-")
+    if f"comparisongrid-{slug}.tex" in tables or f"comparisongrid@{item}" in index:
+        problems.append(f"{item} gets a grid")
+    if f"comparisons-{slug}.tex" not in tables:
+        problems.append(f"{item} lost its list of comparisons")
+for p in problems:
+    print("check_report_tables:", p)
+if problems:
+    print(grid)
+print(f"check_report_tables: {len(problems)} problems")
+sys.exit(1 if problems else 0)
