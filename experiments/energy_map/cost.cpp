@@ -70,8 +70,7 @@ StudyPlan plan_cost(const Scene& s) {
   p.steps = steps, p.force_evals = steps, p.ns_per_step = scalar_rate().ns_per_step;
   p.memory_bytes = starts * static_cast<double>(s.reals("cost.dt").size()) * 2 * 200.0;
   p.note = "the untimed runs, then the timing protocol; " + scalar_rate().note;
-  const TimedPlan timed = timing_plan(calls, static_cast<double>(s.integer("timing.repeats")));
-  p.timed_seconds = timed.seconds, p.timed_steps = timed.steps;
+  p.time(s, calls);
   return p;
 }
 

@@ -5,6 +5,7 @@
 // transformation (41) applied once before and once after), serial. Beside the set, what the paper
 // quotes: ns per step at oscillator.h over timing.steps steps, and where the first two methods'
 // curves cross.
+#include <algorithm>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -63,29 +64,19 @@ void run_cost(Context& ctx) {
   const std::vector<RunTime> times = timing.run();
   std::vector<std::string> labels;
   std::vector<RunTime> per_step;
-  std::vector<double> work;  // force evaluations per step, from the set's runs
+  std::vector<double> work;  // force evaluations per step, from the set's first run of the method
   for (std::size_t i = 0; i < methods.size(); ++i) {
     const std::string label = label_of(methods[i]);
     labels.push_back(label), per_step.push_back(times[i].scaled(1e9 / static_cast<double>(n_ns)));
-    for (const auto& r : energy.records())
-      if (r.method == label) {
-        work.push_back(r.evals / r.steps);
-        break;
-      }
+    const auto& r = *std::ranges::find(energy.records(), label, &WorkPrecisionRecord::method);
+    work.push_back(r.evals / r.steps);
     cost["ns_per_step"][label] = per_step.back().seconds();
     cost["ns_per_step_spread"][label] = per_step.back().spread();
   }
   // ns per step relative to the first method of timing.methods
   cost["relative_ns_per_step"] = relative_timings(labels, per_step, work);
-  // Where the work-precision curves of the first two methods cross (null: not in the measured range).
-  const auto a = labels.size() > 1 ? energy.runs(labels[0]) : std::vector<CostRun>{};
-  const auto b = labels.size() > 1 ? energy.runs(labels[1]) : std::vector<CostRun>{};
-  const auto cross = a.empty() || b.empty() ? std::nullopt : crossover(a, b);  // (crossover needs runs on both)
-  // (the methods always, so that which keys exist does not depend on the timings)
-  cost["crossover"] = labels.size() > 1 ? Value{{"methods", std::vector<std::string>{labels[0], labels[1]}},
-                                                {"wall_s", cross ? Value(cross->wall_s) : Value(nullptr)},
-                                                {"err", cross ? Value(cross->err) : Value(nullptr)}}
-                                         : Value(nullptr);
+  // Where the work-precision curves of the first two methods cross (null with one method).
+  cost["crossover"] = labels.size() > 1 ? energy.crossing(labels[0], labels[1]) : Value(nullptr);
   ctx.summary["cost"] = cost;
   ctx.summary["h_range"]["timing"] = h_range(s.reals("timing.h"));
 }
@@ -100,8 +91,7 @@ StudyPlan plan_cost(const Scene& s) {
   p.steps = counted, p.force_evals = counted * kEvalsPerStep;
   p.memory_bytes = static_cast<double>(calls.size()) * 8 * kCellBytes, p.ns_per_step = oscillator_rate().ns_per_step;
   p.note = "counting runs, then the timing protocol; " + oscillator_rate().note;
-  const TimedPlan timed = timing_plan(calls, static_cast<double>(s.integer("timing.repeats")));
-  p.timed_seconds = timed.seconds, p.timed_steps = timed.steps;
+  p.time(s, calls);
   return p;
 }
 

@@ -63,8 +63,7 @@ StudyPlan plan_cost(const Scene& s) {
     for (double h : s.reals("nonlinear.h")) steps += t_end / h, calls.push_back(TimedCall{t_end / h, rate.ns_per_step});
   StudyPlan p{steps, steps * kPendulumEvals, static_cast<double>(calls.size()) * 8 * kCellBytes, rate.ns_per_step,
               "a counting run per method and h, then the timing protocol; " + rate.note};
-  const TimedPlan timed = timing_plan(calls, static_cast<double>(s.integer("timing.repeats")));
-  p.timed_seconds = timed.seconds, p.timed_steps = timed.steps;
+  p.time(s, calls);
   return p;
 }
 

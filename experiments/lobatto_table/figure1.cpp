@@ -11,7 +11,6 @@
 #include "geomint/methods/registry.hpp"
 #include "geomint/methods/scene_methods.hpp"
 #include "lobatto_table.hpp"
-#include "trajectory.hpp"
 
 namespace geomint::lobatto_table {
 namespace {

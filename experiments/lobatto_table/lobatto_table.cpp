@@ -27,6 +27,10 @@ void check_lobatto(const Scene& s, const char* key, double hw, const std::string
   check_oscillatory_bound(s, key, key, kScheme, hw, what + "; 001 eq. (10)", "sqrt(42 - 6 sqrt(29))");
 }
 
+void check_lobatto_steps(const Scene& s, const char* key, double omega, const std::string& at) {
+  for (double h : s.reals(key)) check_lobatto(s, key, h * omega, "h = " + format_double(h) + at);
+}
+
 void check_meshes(const Scene& s, const char* key, const char* methods_key, bool lobatto) {
   for (double n : s.reals(key)) {
     if (n != std::floor(n)) s.reject(key, "every entry must be a whole number of steps per period");

@@ -48,6 +48,8 @@ Mat<2> lobatto_matrix(const HarmonicOscillator& osc, double h);
 
 // The Lobatto scheme at h omega = hw (001 eq. (10)).
 void check_lobatto(const Scene& s, const char* key, double hw, const std::string& what);
+// The Lobatto scheme at every step h of `key` at frequency omega (`at`: said of the frequency, e.g. ", frequency 1").
+void check_lobatto_steps(const Scene& s, const char* key, double omega, const std::string& at = "");
 
 // Whole numbers of steps per period N at `key`; Lobatto (the subject, if `lobatto`) and the
 // methods of `methods_key` stable at h omega = 2 pi / N.

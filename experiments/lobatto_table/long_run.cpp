@@ -1,7 +1,6 @@
-// 001 Fig. 2: the discrete energy H_d of (15) and the energy H over long_run.periods periods of the
-// oscillator, iterating the Lobatto one-step matrix (13) with plain and with compensated summation;
-// the window maxima of their errors, their growth rates per period, and the growth in exact
-// arithmetic (the closed-form orbit of (13)-(14)).
+// 001 Fig. 2: the discrete energy H_d of (15) and the energy H over long_run.periods periods of the oscillator,
+// iterating the Lobatto one-step matrix (13) with plain and with compensated summation; the window maxima of their
+// errors, their growth rates per period, and the growth in exact arithmetic (the closed-form orbit of (13)-(14)).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -10,6 +9,7 @@
 
 #include "geomint/analysis/lobatto_oscillator.hpp"
 #include "geomint/core/compensated_sum.hpp"
+#include "geomint/core/integrate.hpp"
 #include "geomint/observables/drift.hpp"
 #include "geomint/runner/distributed_map.hpp"
 #include "lobatto_table.hpp"
@@ -17,27 +17,20 @@
 namespace geomint::lobatto_table {
 namespace {
 
-void check_long_run(const Scene& s) {
-  for (double h : s.reals("long_run.h"))
-    check_lobatto(s, "long_run.h", h * s.real("oscillator.omega"), "h = " + format_double(h));
-}
-
 // One run of Fig. 2 (a record of runner/distributed_map.hpp).
 struct Long {
   std::vector<double> plain, comp, H;       // window maxima
-  double slope_plain, slope_comp, slope_H;  // per period
-  auto fields() { return std::tie(plain, comp, H, slope_plain, slope_comp, slope_H); }
+  double slope_plain, slope_comp, slope_H, per_window;  // per period; the periods of a window
+  auto fields() { return std::tie(plain, comp, H, slope_plain, slope_comp, slope_H, per_window); }
 };
 
 // One run at step h: the window maxima of |H_d - H_d(0)| (plain and compensated) and of |H - H(0)|.
 Long long_run(const Scene& s, const Oscillator& o, double h, std::int64_t windows) {
   const auto& [osc, A, T, z0] = o;
-  const std::int64_t n = std::llround(s.real("long_run.periods") * T / h);
-  const Mat<2> Phi = lobatto_matrix(osc, h);
-  const Mat<2> PhiI = Phi - Mat<2>::Identity();
+  const std::int64_t n = std::llround(s.real("long_run.periods") * T / h), per = std::max<std::int64_t>(1, n / windows);
+  const Mat<2> Phi = lobatto_matrix(osc, h), PhiI = Phi - Mat<2>::Identity();
   const double Hd0 = discrete_energy(Phi, z0), H0 = osc.H(z0);
-  WindowMaxima wp(std::max<std::int64_t>(1, n / windows)), wc(std::max<std::int64_t>(1, n / windows)),
-      wH(std::max<std::int64_t>(1, n / windows));
+  WindowMaxima wp(per), wc(per), wH(per);
   Vec<2> x(z0.p[0], z0.q[0]), y = x, c = Vec<2>::Zero();
   for (std::int64_t j = 1; j <= n; ++j) {
     x = Phi * x;                              // (13)
@@ -46,9 +39,9 @@ Long long_run(const Scene& s, const Oscillator& o, double h, std::int64_t window
     wc.add(discrete_energy(Phi, make_state(y[1], y[0])) - Hd0);
     wH.add(osc.H(make_state(x[1], x[0])) - H0);
   }
-  const double per_window = static_cast<double>(std::max<std::int64_t>(1, n / windows)) * h / T;
+  const double per_window = static_cast<double>(per) * h / T;
   return Long{wp.maxima(), wc.maxima(), wH.maxima(), wp.slope_per_window() / per_window,
-              wc.slope_per_window() / per_window, wH.slope_per_window() / per_window};
+              wc.slope_per_window() / per_window, wH.slope_per_window() / per_window, per_window};
 }
 
 void run_long_run(Context& ctx) {
@@ -62,24 +55,19 @@ void run_long_run(Context& ctx) {
   Csv f2({"h", "period", "Hd_err_plain", "Hd_err_compensated", "H_err"});
   Value growth, growth_comp, growth_H;
   for (std::size_t i = 0; i < long_h.size(); ++i) {
-    const std::int64_t n = std::llround(s.real("long_run.periods") * T / long_h[i]);
-    const double per_window = static_cast<double>(std::max<std::int64_t>(1, n / windows)) * long_h[i] / T;
-    for (std::size_t k = 0; k < longs[i].plain.size(); ++k)
-      f2.row(long_h[i], static_cast<double>(k + 1) * per_window, longs[i].plain[k], longs[i].comp[k], longs[i].H[k]);
-    growth[format_double(long_h[i])] = longs[i].slope_plain;
-    growth_comp[format_double(long_h[i])] = longs[i].slope_comp;
-    growth_H[format_double(long_h[i])] = longs[i].slope_H;
+    const Long& l = longs[i];
+    for (std::size_t k = 0; k < l.plain.size(); ++k)
+      f2.row(long_h[i], static_cast<double>(k + 1) * l.per_window, l.plain[k], l.comp[k], l.H[k]);
+    const std::string h = format_double(long_h[i]);
+    growth[h] = l.slope_plain, growth_comp[h] = l.slope_comp, growth_H[h] = l.slope_H;
   }
   ctx.write("fig2_energy.csv", f2);
-  // Growth rates: least-squares slope, per period, of the window maxima of |H - H(0)| (Fig. 2's
-  // quantity, compared in published.toml), and of |H_d - H_d(0)| with plain and with compensated
-  // summation (the round-off of the discrete energy (15)).
-  ctx.summary["reproduced"]["energy_growth_rate"] = growth_H;
-  ctx.summary["reproduced"]["energy_growth_rate_Hd"] = growth;
-  ctx.summary["reproduced"]["energy_growth_rate_Hd_compensated"] = growth_comp;
-  // Per step size (by index): the rates again, with the printed one; the largest H_d errors; and the
-  // growth rate of the same window maxima in exact arithmetic (the closed-form orbit of (13)-(14)),
-  // with what the drift of H_d explains of the difference.
+  // Growth rates: least-squares slope, per period, of the window maxima of |H - H(0)| (Fig. 2's quantity, compared
+  // in published.toml), and of |H_d - H_d(0)| with plain and with compensated summation (the round-off of (15)).
+  merge(ctx.summary, "reproduced", {{"energy_growth_rate", growth_H}, {"energy_growth_rate_Hd", growth},
+                                    {"energy_growth_rate_Hd_compensated", growth_comp}});
+  // Per step size (by index): the rates again, with the printed one; the largest H_d errors; and the growth rate of
+  // the same window maxima in exact arithmetic (the orbit of (13)-(14)), with what the drift of H_d explains of it.
   const auto published = ctx.comparison(ctx.summary, "reproduced.energy_growth_rate");  // 001 Fig. 2, per h
   Value rates = Value::list();
   for (std::size_t i = 0; i < long_h.size(); ++i) {
@@ -91,15 +79,13 @@ void run_long_run(Context& ctx) {
     if (const Value* rate = published ? published->at("published").find(format_double(h)) : nullptr)
       r["published_rate"] = *rate;
     const auto exact = lobatto_exact_growth(h, osc.m, osc.w, A, s.real("long_run.periods"), windows);
-    const auto orbit = lobatto_exact_orbit(h, osc.m, osc.w, A);
-    if (exact && orbit) {
+    if (const auto orbit = lobatto_exact_orbit(h, osc.m, osc.w, A); exact && orbit) {
       r["exact_rate"] = exact->slope_per_period;
       r["H_rate_minus_exact"] = l.slope_H - exact->slope_per_period;
       r["bound"] = exact->bound;  // |K|
       r["periods_to_peak"] = Value(exact->periods_to_peak);  // (null: none)
-      // a drift of H_d seen in H: (H_0 / H_d(0)) |Hd_rate|; and the relative drift of H_d per step
-      r["roundoff_in_H"] = orbit->H0 / orbit->Hd0 * std::abs(l.slope_plain);
-      r["Hd_drift_per_step"] = std::abs(l.slope_plain) * h / T / orbit->Hd0;
+      r["roundoff_in_H"] = orbit->H0 / orbit->Hd0 * std::abs(l.slope_plain);  // a drift of H_d seen in H
+      r["Hd_drift_per_step"] = std::abs(l.slope_plain) * h / T / orbit->Hd0;  // relative, per step
     }
     rates.push_back(r);
   }
@@ -108,10 +94,8 @@ void run_long_run(Context& ctx) {
 
 StudyPlan plan_long_run(const Scene& s) {
   const double periods = s.real("long_run.periods"), T = period_of(s);
-  const double windows = static_cast<double>(s.integer("long_run.windows"));
-  double steps = 0;
-  for (double h : s.reals("long_run.h")) steps += periods * T / h;
-  const double runs = static_cast<double>(s.reals("long_run.h").size());
+  const double windows = static_cast<double>(s.integer("long_run.windows")), runs = static_cast<double>(s.reals("long_run.h").size());
+  const double steps = steps_to_each(periods * T, s.reals("long_run.h"));
   const PlanRate& rate = plan_rate("oscillator one-step matrix");
   return {steps, 0, runs * windows * (3 * sizeof(double) + 5 * kCellBytes), rate.ns_per_step,
           "iterates the one-step matrix (13), no force evaluations; " + rate.note};
@@ -129,7 +113,7 @@ Study long_run_study() {
                       .integer("long_run.windows", at_least(2), "windows for the maxima of the energy error"),
           .reads = {"long_run.periods", "oscillator"},
           .run = run_long_run,
-          .validate = check_long_run,
+          .validate = [](const Scene& s) { check_lobatto_steps(s, "long_run.h", s.real("oscillator.omega")); },
           .plan = plan_long_run};
 }
 

@@ -161,8 +161,7 @@ StudyPlan plan_long_run_cost(const Scene& s) {
   StudyPlan p{counted, counted * kOscillatorEvals,
               methods * static_cast<double>(s.reals("long_run_cost.h").size()) * 9 * kCellBytes, rate.ns_per_step,
               "the runs, then the timing protocol on their segments; " + rate.note};
-  const TimedPlan protocol = timing_plan(calls, static_cast<double>(s.integer("timing.repeats")));
-  p.timed_seconds = protocol.seconds, p.timed_steps = protocol.steps;
+  p.time(s, calls);
   return p;
 }
 

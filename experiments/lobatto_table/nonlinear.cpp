@@ -32,8 +32,7 @@ void check_nonlinear(const Scene& s) {
   check_nonlinear_steps(s);
   const auto e = s.real_rows("nonlinear.elastic_initial")[0];
   if (std::hypot(e[0], e[1]) == 0.0) s.reject("nonlinear.elastic_initial", "the spring force is singular at x = y = 0");
-  for (double h : s.reals("nonlinear.h"))
-    check_lobatto(s, "nonlinear.h", h * kNonlinearOmega, "h = " + format_double(h) + ", frequency 1");
+  check_lobatto_steps(s, "nonlinear.h", kNonlinearOmega, ", frequency 1");
   for (const auto& m : s.texts("nonlinear.methods")) check_pendulum_steps(s, "nonlinear.methods", m);
 }
 
@@ -103,19 +102,17 @@ void run_nonlinear(Context& ctx) {
       .fit("lobatto_elastic_pendulum", "elastic_err", nfloor, below);
   for (const auto& m : methods) conv.fit(label_of(m) + "_nonlinear_pendulum", label_of(m) + "_pendulum_err", nfloor, below);
   conv.write(ctx);
-  std::vector<double> it_p, it_e;
-  for (const auto& r : rows) it_p.push_back(r.pendulum_iterations), it_e.push_back(r.elastic_iterations);
   ctx.summary["methods"]["nonlinear"] = labels_of(methods);
   ctx.summary["nonlinear"] = {{"h_range", range_of(nh)},
                               {"error_floor", nfloor},
                               {"error_floor_over_atol", kReferenceFloorFactor},
-                              {"newton_iterations", {{"pendulum", range_of(it_p)}, {"elastic", range_of(it_e)}}},
+                              {"newton_iterations", {{"pendulum", range_of(conv.values("pendulum_newton_iterations"))},
+                                                     {"elastic", range_of(conv.values("elastic_newton_iterations"))}}},
                               {"fits", conv.fits()}};
   // Symplecticity of the nonlinear one-step maps: max |J^T Omega J - Omega|.
-  ctx.summary["reproduced"]["symplecticity_defect_pendulum"] =
-      symplecticity_defect(galerkin_step_jacobian(lob, pend, pz0, nh.front()));
-  ctx.summary["reproduced"]["symplecticity_defect_elastic"] =
-      symplecticity_defect(galerkin_step_jacobian(lob, elastic, ez0, nh.front()));
+  merge(ctx.summary, "reproduced",
+        {{"symplecticity_defect_pendulum", symplecticity_defect(galerkin_step_jacobian(lob, pend, pz0, nh.front()))},
+         {"symplecticity_defect_elastic", symplecticity_defect(galerkin_step_jacobian(lob, elastic, ez0, nh.front()))}});
   ctx.summary["norms"]["nonlinear"] = "|z_N - z(t_end)|_2 against the odeint Bulirsch-Stoer reference";
 }
 

@@ -5,7 +5,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -15,7 +14,6 @@
 #include "geomint/methods/scene_methods.hpp"
 #include "geomint/analysis/convergence_study.hpp"
 #include "lobatto_table.hpp"
-#include "trajectory.hpp"
 
 namespace geomint::lobatto_table {
 namespace {
@@ -33,48 +31,9 @@ double max_q_error(const std::vector<Z1>& zs, const Oscillator& o, double h) {
   return e;
 }
 
-// z_0..z_N of a linear one-step matrix Phi on (p, q), 001's order of eq. (13).
-std::vector<Z1> iterate_pq(const Mat<2>& Phi, const Z1& z0, std::int64_t N) {
-  std::vector<Z1> zs = {z0};
-  Vec<2> x(z0.p[0], z0.q[0]);
-  for (std::int64_t j = 1; j <= N; ++j) x = Phi * x, zs.push_back(make_state(x[1], x[0]));
-  return zs;
-}
-
-// Does `reproduced` round to the printed value with its `digits` significant digits?
-bool rounds_to_printed(double printed, double reproduced, int digits) {
-  char a[32], b[32];
-  std::snprintf(a, sizeof a, "%.*e", digits - 1, printed);
-  std::snprintf(b, sizeof b, "%.*e", digits - 1, reproduced);
-  return std::string(a) == b;
-}
-
-// Table 1 against the printed values: how many of the errors of p, q and H round to the three printed
-// digits, the largest relative deviation, and the range of the printed H_d errors (round-off, compared apart).
-Value printed_table1(const Context& ctx) {
-  int compared = 0, rounding = 0;
-  double deviation = 0;
-  std::vector<double> printed_Hd;
-  for (const char* quantity : {"p", "q", "H", "Hd"}) {
-    const auto c = ctx.comparison(ctx.summary, std::string("reproduced.") + quantity + "_err");  // by N
-    if (!c) continue;
-    const Value &published = c->at("published"), &reproduced = c->at("reproduced");
-    for (std::size_t i = 0; i < published.size(); ++i) {
-      const std::string& N = published.keys()[i];
-      const double printed = published.at(i).number();
-      if (!reproduced.contains(N)) continue;
-      if (std::string(quantity) == "Hd") {
-        printed_Hd.push_back(printed);
-      } else {
-        ++compared, rounding += rounds_to_printed(printed, reproduced.at(N).number(), 3);
-        deviation = std::max(deviation, std::abs(c->at("difference").at(N).number()));  // (relative: compare = rel)
-      }
-    }
-  }
-  Value out = {{"compared", compared}, {"round_to_printed_digits", rounding}, {"max_relative_deviation", deviation}};
-  if (!printed_Hd.empty()) out["Hd_err_range"] = range_of(printed_Hd);
-  return out;
-}
+// Table 1's errors by N, which 001 prints (published.toml): p, q and H, and H_d (round-off, compared apart).
+const std::vector<std::string> kTable1Errors = {"reproduced.p_err", "reproduced.q_err", "reproduced.H_err",
+                                                "reproduced.Hd_err"};
 
 void run_table1(Context& ctx) {
   const Scene& s = ctx.scene;
@@ -103,16 +62,13 @@ void run_table1(Context& ctx) {
     reproduced["p_err"][n] = p, reproduced["q_err"][n] = q, reproduced["H_err"][n] = H, reproduced["Hd_err"][n] = Hd;
     hs.push_back(h), Ns.push_back(Nd), ep.push_back(p), eq.push_back(q), eH.push_back(H), eHd.push_back(Hd), Hd0s.push_back(Hd0);
     // 001 eq. (12) as printed, iterated as a scheme of its own (it is not (13)-(14): see the unit tests)
-    e12.push_back(max_q_error(iterate_pq(lobatto_map_12(h, osc.m, osc.w, Eq12::printed), z0, N), o, h));
+    e12.push_back(max_q_error(pq_orbit(lobatto_map_12(h, osc.m, osc.w, Eq12::printed), z0, N), o, h));
   }
   // table1.csv (h, steps N, the errors) and the orders fitted to them over the errors above round-off.
   ConvergenceStudy conv({.csv = "table1.csv", .h = hs, .steps = Ns, .orders_csv = "table1_orders.csv"});
-  const auto column = [&](const std::string& name, const std::vector<double>& err) {
-    conv.column(name, [&](std::size_t, std::size_t j) { return err[j]; });
-  };
-  column("p_err", ep), column("q_err", eq), column("H_err", eH), column("Hd_err", eHd);
-  for (std::size_t k = 0; k < methods.size(); ++k) column(label_of(methods[k]) + "_q_err", em[k]);
-  column("printed_eq12_q_err", e12);
+  conv.column("p_err", ep).column("q_err", eq).column("H_err", eH).column("Hd_err", eHd);
+  for (std::size_t k = 0; k < methods.size(); ++k) conv.column(label_of(methods[k]) + "_q_err", em[k]);
+  conv.column("printed_eq12_q_err", e12);
   const double floor = roundoff_floor();
   conv.fit("lobatto_p", "p_err", floor).fit("lobatto_q", "q_err", floor).fit("lobatto_H", "H_err", floor);
   for (const auto& m : methods) conv.fit(label_of(m), label_of(m) + "_q_err", floor);
@@ -120,8 +76,7 @@ void run_table1(Context& ctx) {
   conv.write(ctx);
   merge(ctx.summary, "reproduced", reproduced);
   ctx.summary["norms"]["table1"] = "max over the steps j = 1..N of one period of the absolute error (p, q, H, H_d)";
-  // H_d(0) (15) per mesh, the H_d errors relative to it and their range; the compared methods' errors;
-  // the comparison with the printed digits.
+  // H_d(0) (15) per mesh, the H_d errors relative to it, the compared methods' errors, the printed digits.
   Value relative = Value::list();
   for (std::size_t i = 0; i < eHd.size(); ++i) relative.push_back(eHd[i] / Hd0s[i]);
   ctx.summary["methods"]["table1"] = labels_of(methods);
@@ -132,7 +87,7 @@ void run_table1(Context& ctx) {
                            {"Hd_err_relative", relative},
                            {"Hd_err_range", range_of(eHd)},
                            {"q_err", compared},
-                           {"printed", printed_table1(ctx)}};
+                           {"printed", printed_digits_agreement(ctx, kTable1Errors, 3)}};  // (001 prints 3 digits)
 }
 
 StudyPlan plan_table1(const Scene& s) {

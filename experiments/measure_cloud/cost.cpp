@@ -253,8 +253,7 @@ StudyPlan plan_cost(const Scene& s) {
     calls.push_back(TimedCall{step_count_within(T, h), rate.ns_per_step});
   }
   StudyPlan p = make_plan(steps, kept * kPointBytes, rate, "the runs, then the timing protocol");
-  const TimedPlan timed = timing_plan(calls, static_cast<double>(s.integer("timing.repeats")));
-  p.timed_seconds = timed.seconds, p.timed_steps = timed.steps;
+  p.time(s, calls);
   return p;
 }
 

@@ -80,8 +80,7 @@ StudyPlan plan_cost(const Scene& s) {
     for (double h : s.reals("h")) calls.push_back(TimedCall{s.real("t_end") / h, step_rate().ns_per_step});
   StudyPlan p{counted, counted * kEvalsPerStep, methods * static_cast<double>(s.reals("h").size()) * 8 * kCellBytes,
               step_rate().ns_per_step, "a counting run per method and h, then the timing protocol; " + step_rate().note};
-  const TimedPlan timed = timing_plan(calls, static_cast<double>(s.integer("timing.repeats")));
-  p.timed_seconds = timed.seconds, p.timed_steps = timed.steps;
+  p.time(s, calls);
   return p;
 }
 

@@ -5,60 +5,21 @@
 // error at work_precision.t_end, the wall time of one run (runner/timing.hpp) and the force evaluations
 // of a counting run; the cost to reach work_precision.target, and the errors at equal cost (equal_cost).
 #include <cmath>
-#include <cstdint>
-#include <span>
 #include <string>
 #include <vector>
 
-#include "geomint/analysis/work_precision_set.hpp"
-#include "geomint/core/integrate.hpp"
 #include "geomint/methods/by_name.hpp"
 #include "geomint/methods/registry.hpp"
 #include "geomint/methods/scene_methods.hpp"
+#include "geomint/methods/work_precision_runs.hpp"
 #include "geomint/reference/odeint_reference.hpp"
 #include "geomint/runner/timing.hpp"
 #include "geomint/runner/timing_report.hpp"
 #include "geomint/systems/counting.hpp"
-#include "henon_heiles_starts.hpp"
 #include "ti_drift.hpp"
 
 namespace geomint::ti_drift {
 namespace {
-
-// The runs of one method into `set`: evals by a counting run, error(z_end) of the processed end state by a
-// run of its own, and a run to time (WorkPrecisionSet::time, with every other method's).
-template <class Sys, class Err>
-void add_runs(WorkPrecisionSet& set, const Scene& s, const std::string& method, const Sys& sys,
-              const typename Sys::State& z0, const Err& error) {
-  const double T = s.real("work_precision.t_end");
-  for (double h : s.reals("work_precision.h")) {
-    const std::int64_t n = steps_to(T, h);
-    std::int64_t evals = 0;
-    const Counting<Sys> counted{sys, &evals};
-    MethodsOn<Counting<Sys>>::integrate(method, counted, z0, h, n);
-    const double err = error(MethodsOn<Sys>::integrate(method, sys, z0, h, n));
-    if (!std::isfinite(err))
-      throw NumericalFailure(method + " at h = " + format_double(h) + ": the error at t = " +
-                             format_double(T) + " is not finite");
-    set.add({label_of(method), h, static_cast<double>(n), {}, static_cast<double>(evals), err},
-            MethodsOn<Sys>::timed(method, sys, {z0}, h, n));
-  }
-}
-
-// summary.cost.cost_ratio_to_<first>.<set>.<label>: the wall time and the force evaluations to reach the
-// target (the set's only one), relative to the first method; only where both reach it.
-Value cost_ratios(const Value& set, const std::string& first) {
-  Value ratio = Value::record();
-  const Value& by = set.at("by_method");
-  for (const std::string& label : by.keys()) {
-    const Value& m = by.at(label);
-    const Value &a = m.at("wall_s_to").at(0), &b = by.at(first).at("wall_s_to").at(0);
-    if (a.is_null() || b.is_null()) continue;  // (evals_to is null exactly where wall_s_to is: the same bracket)
-    ratio[label] = {{"wall_s", a.number() / b.number()},
-                    {"evals", m.at("evals_to").at(0).number() / by.at(first).at("evals_to").at(0).number()}};
-  }
-  return ratio;
-}
 
 void run_cost(Context& ctx) {
   const Scene& s = ctx.scene;
@@ -69,20 +30,19 @@ void run_cost(Context& ctx) {
   // estimated by the difference to the solution at work_precision.reference_tol
   ctx.progress("cost: Henon-Heiles reference (odeint Bulirsch-Stoer)");
   const HenonHeiles hh{{}, 3};
-  const Z2 hh0 = hh_start(hh, s.real("hh3.q2"), s.real("hh3.p2"), s.real("hh.H0"));
+  const Z2 hh0 = hh.start(s.real("hh3.q2"), s.real("hh3.p2"), s.real("hh.H0"));
   const double tol = s.real("work_precision.reference_tol");
-  const Z2 ref = reference_solution(hh, hh0, T, tol / 100, tol / 100);
-  const Z2 ref_coarse = reference_solution(hh, hh0, T, tol, tol);
+  const Z2 ref = reference_solution(hh, hh0, T, tol / 100, tol / 100), ref_coarse = reference_solution(hh, hh0, T, tol, tol);
   const auto norm2 = [](const Z2& a, const Z2& b) { return std::sqrt((a.q - b.q).squaredNorm() + (a.p - b.p).squaredNorm()); };
-  const Z1 osc0 = make_state(0.0, 1.0);
-  const Z1 osc_end = kOscillator.exact(osc0, T);
+  const Z1 osc0 = make_state(0.0, 1.0), osc_end = kOscillator.exact(osc0, T);
 
   ctx.progress("cost: work-precision");
   WorkPrecisionSet henon_heiles("l2 phase-space error |z_N - z(t_end)| against the odeint reference, Henon-Heiles k = 3");
   WorkPrecisionSet oscillator("sqrt((p_N - p(t_end))^2 + (omega (q_N - q(t_end)))^2) against the exact solution, omega = 1");
-  for (const auto& m : methods) add_runs(henon_heiles, s, m, hh, hh0, [&](const Z2& z) { return norm2(z, ref); });
+  const auto hs = s.reals("work_precision.h");
+  for (const auto& m : methods) add_method_runs(henon_heiles, m, hh, hh0, hs, T, [&](const Z2& z) { return norm2(z, ref); });
   for (const auto& m : methods)
-    add_runs(oscillator, s, m, kOscillator, osc0, [&](const Z1& z) {
+    add_method_runs(oscillator, m, kOscillator, osc0, hs, T, [&](const Z1& z) {
       return std::hypot(z.p[0] - osc_end.p[0], kOscillator.w * (z.q[0] - osc_end.q[0]));
     });
   ctx.progress("cost: timed runs");
@@ -99,7 +59,8 @@ void run_cost(Context& ctx) {
                                {"henon_heiles_tol", tol / 100},
                                {"henon_heiles_error", norm2(ref, ref_coarse)}}}};  // estimate: against tol
   const std::string first = label_of(methods[0]);
-  for (const char* set : {"henon_heiles", "oscillator"}) cost["cost_ratio_to_" + first][set] = cost_ratios(cost.at(set), first);
+  for (const char* set : {"henon_heiles", "oscillator"})
+    cost["cost_ratio_to_" + first][set] = WorkPrecisionSet::cost_ratios(cost.at(set), first);
   ctx.summary["cost"] = cost;
 }
 
@@ -126,11 +87,9 @@ StudyPlan plan_cost(const Scene& s) {
       p.steps += 2 * 2 * T / h, p.force_evals += 2 * 2 * T / h * static_cast<double>(evals_per_step(m));
       calls.insert(calls.end(), 2, TimedCall{T / h, hh_rate().ns_per_step});  // (Henon-Heiles and the oscillator)
     }
-  p.memory_bytes = 1e5;
-  p.ns_per_step = hh_rate().ns_per_step;
-  const TimedPlan timed = timing_plan(calls, static_cast<double>(s.integer("timing.repeats")));
-  p.timed_seconds = timed.seconds, p.timed_steps = timed.steps;
+  p.memory_bytes = 1e5, p.ns_per_step = hh_rate().ns_per_step;
   p.note = "counting and error runs, then the timing protocol; " + hh_rate().note;
+  p.time(s, calls);
   return p;
 }
 

@@ -12,14 +12,12 @@
 #include <utility>
 #include <vector>
 
-#include "ensemble.hpp"
 #include "geomint/core/integrate.hpp"
 #include "geomint/observables/ensemble_statistics.hpp"
 #include "geomint/observables/modified_energy.hpp"
 #include "geomint/runner/checkpoint.hpp"
 #include "geomint/runner/fits.hpp"
 #include "geomint/sweep/ensemble_kernels.hpp"
-#include "henon_heiles_starts.hpp"
 #include "ti_drift.hpp"
 
 namespace geomint::ti_drift {
@@ -133,7 +131,7 @@ Value ensemble_summary(const Context& ctx, const HH& hhk, const Run& run, const 
   const double t_fit = fit_t_min(s, "ensemble", t_end);
   const std::int64_t n4 = run.n4;
   const auto time_of = [&](std::size_t k) { return run.time_of(k); };
-  Value ensemble = {{"p1", hh_start(hhk, s.real("hh3.q2"), s.real("hh3.p2"), s.real("hh.H0")).p[0]},  // unperturbed
+  Value ensemble = {{"p1", hhk.start(s.real("hh3.q2"), s.real("hh3.p2"), s.real("hh.H0")).p[0]},  // unperturbed
                     {"steps", n4},
                     {"sample_dt", time_of(1)},
                     {"thinned_dt", time_of(stride)},

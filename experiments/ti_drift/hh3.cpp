@@ -9,7 +9,6 @@
 #include "geomint/core/integrate.hpp"
 #include "geomint/integrators/takahashi_imada.hpp"
 #include "geomint/observables/modified_energy.hpp"
-#include "henon_heiles_starts.hpp"
 #include "geomint/runner/fits.hpp"
 #include "ti_drift.hpp"
 
@@ -23,7 +22,7 @@ void run_hh3(Context& ctx) {
   const double h = s.real("h");
   const std::int64_t samples = s.integer("samples");
   const HenonHeiles hh{{}, 3};
-  const Z2 start = hh_start(hh, s.real("hh3.q2"), s.real("hh3.p2"), s.real("hh.H0"));
+  const Z2 start = hh.start(s.real("hh3.q2"), s.real("hh3.p2"), s.real("hh.H0"));
   const std::int64_t n = steps_to(s.real("hh3.t_end"), h), every = std::max<std::int64_t>(1, n / samples);
   const double E0 = simplified_ti_modified_energy(hh, start, h);
   Csv f3({"t", "E_err", "H_err"});

@@ -3,7 +3,6 @@
 // first start (runner/timing.hpp); and the ensembles' lane kernels of Figs 4 and 6 against the scalar method.
 #include <algorithm>
 #include <cstdint>
-#include <span>
 #include <string>
 #include <vector>
 
@@ -14,34 +13,10 @@
 #include "geomint/runner/timing_report.hpp"
 #include "geomint/sweep/ensemble_kernels.hpp"
 #include "geomint/sweep/lanes_timing.hpp"
-#include "henon_heiles_starts.hpp"
 #include "ti_drift.hpp"
 
 namespace geomint::ti_drift {
 namespace {
-
-// The ensembles' lane kernels against the scalar method (sweep/lanes_timing.hpp): ns per trajectory-step of the
-// trajectories from `starts` (one batch), n steps.
-template <class Sys>
-Value lanes_timing(const Sys& sys, const std::vector<typename Sys::State>& starts, double h, std::int64_t n, int repeats) {
-  const double steps = static_cast<double>(starts.size()) * static_cast<double>(n);
-  const LanesTiming t = time_lanes(sys, starts, h, n, repeats);
-  const RunTime scalar = t.scalar.scaled(1e9 / steps);  // ns per trajectory-step
-  Value out = {{"trajectories", starts.size()}, {"steps", n}, {"scalar_ns_per_step", scalar.seconds()},
-               {"scalar", to_value(scalar)}, {"scalar_spread", scalar.spread()}};
-  for (const auto& [name, k] : t.kernels) {
-    const RunTime lanes = k.scaled(1e9 / steps);
-    const TimeRatio speedup = time_ratio(scalar, lanes);  // (the same arithmetic per trajectory-step: the same work)
-    out["kernels"][name] = {{"ns_per_step", lanes.seconds()},  {"spread", lanes.spread()}, {"time", to_value(lanes)},
-                            {"speedup_vs_scalar", speedup.median}, {"speedup_interval", {{"min", speedup.lo}, {"max", speedup.hi}}},
-                            {"against_scalar", timing_verdict(time_ratio(lanes, scalar), 1, 1)}};
-    if (!out.contains("isa"))  // the one the ensembles use (the widest lanes)
-      out["isa"] = name, out["ns_per_step"] = lanes.seconds(), out["spread"] = lanes.spread(),
-      out["speedup_vs_scalar"] = speedup.median, out["speedup_interval"] = out.at("kernels").at(name).at("speedup_interval"),
-      out["against_scalar"] = out.at("kernels").at(name).at("against_scalar");
-  }
-  return out;
-}
 
 template <class HH>
 void timing_with(Context& ctx, const HH& hhk) {
@@ -74,12 +49,13 @@ void timing_with(Context& ctx, const HH& hhk) {
        {"method", timing_method_text(repeats) + "; a run is " + std::to_string(n) + " steps of a method's kernel, "
                   "every call inlined; fig4_wall_s, fig6_wall_s: the ensembles on --threads threads, one run"}});
   // The ensembles of Figs 4 and 6 in SIMD lanes against the scalar method: their first kEnsembleLanes starts.
+  const std::int64_t n_lj = s.integer("timing.lj_steps");
   std::vector<Z2> hh_starts;
   std::vector<Z18> lj_starts;
   for (std::size_t i = 0; i < kEnsembleLanes; ++i) hh_starts.push_back(ensemble_start(s, hhk, i)), lj_starts.push_back(lj_start_of(s, i));
   merge(ctx.summary, "timing",
-      {{"lanes", {{"fig4", lanes_timing(hhk, hh_starts, h, n, repeats)},
-                  {"fig6", lanes_timing(LJ{}, lj_starts, s.real("lj.h"), s.integer("timing.lj_steps"), repeats)},
+      {{"lanes", {{"fig4", time_lanes(hhk, hh_starts, h, n, repeats).summary(kEnsembleLanes, n)},
+                  {"fig6", time_lanes(LJ{}, lj_starts, s.real("lj.h"), n_lj, repeats).summary(kEnsembleLanes, n_lj)},
                   {"method", "ns per trajectory-step of " + std::to_string(kEnsembleLanes) + " trajectories (the first starts of "
                              "Figs 4 and 6), simplified Takahashi-Imada unprocessed: scalar, one trajectory after another "
                              "(integrate, every call inlined), against each lane kernel this CPU runs (all lanes at once, the "
@@ -109,8 +85,7 @@ StudyPlan plan_timing(const Scene& s) {
   StudyPlan p;
   p.memory_bytes = 1e4;
   p.ns_per_step = hh_rate().ns_per_step;
-  const TimedPlan timed = timing_plan(calls, static_cast<double>(s.integer("timing.repeats")));
-  p.timed_seconds = timed.seconds, p.timed_steps = timed.steps;
+  p.time(s, calls);
   p.note = "the timing protocol; " + hh_rate().note;
   return p;
 }

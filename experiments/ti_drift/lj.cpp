@@ -59,9 +59,7 @@ Scan scan_steps(Context& ctx, const LJ& lj, Value& reproduced) {
   // The stiffness omega_max^2 (largest eigenvalue of the Hessian): at the grid, at the starts of the
   // ensemble, and along the scan starts integrated at lj.h to lj.scan_t (its largest value on each).
   const double hl = s.real("lj.h");
-  Vec<18> grid_q;
-  for (int k = 0; k < 9; ++k) grid_q.segment<2>(2 * k) = lj_grid(k);
-  const double grid_stiffness = max_hessian_eigenvalue(lj, grid_q);
+  const double grid_stiffness = lj_grid_stiffness();
   const auto along = distributed_map(scan_size, [&](std::size_t i) {
     double largest = 0;
     integrate(simplified_ti_method(lj, false), lj_start_of(s, i), hl, steps_to(s.real("lj.scan_t"), hl),
@@ -282,10 +280,7 @@ void run_lj(Context& ctx) {
 // Fig. 6: lj.h below the bound at the stiffness of the unperturbed grid (omega^2 = 86.8; the perturbed starts and
 // the motion are stiffer: a run that diverges anyway ends with a numerical failure, exit 4).
 void check_lj(const Scene& s) {
-  const LJ lj;
-  Vec<18> grid_q;
-  for (int k = 0; k < 9; ++k) grid_q.segment<2>(2 * k) = lj_grid(k);
-  check_step_bound(s, "lj.h", s.real("lj.h"), std::sqrt(max_hessian_eigenvalue(lj, grid_q)),
+  check_step_bound(s, "lj.h", s.real("lj.h"), std::sqrt(lj_grid_stiffness()),
                    "omega^2 = max eig U'' at the 3 x 3 grid of Fig. 6");
   if (s.real("lj.t_end") / s.real("lj.h") < 2) s.reject("lj.t_end", "must be at least two steps lj.h");
   for (double h : s.reals("lj.h_scan"))

@@ -1,7 +1,6 @@
-// 004 Fig. 6, the printed step: sigma of the error of the modified energy E against h (a small ensemble of
-// the starts of Fig. 6 over a short span). The random walk of (4.3) gives sigma ~ h^4 t^(1/2); the fitted
-// exponent in h, and the step at which the published sigma at the published time would be reached (carried
-// there by the published t^(1/2)).
+// 004 Fig. 6, the printed step: sigma of the error of the modified energy E against h (a small ensemble of the starts
+// of Fig. 6 over a short span). The random walk of (4.3) gives sigma ~ h^4 t^(1/2); the fitted exponent in h, and the
+// step at which the published sigma at the published time would be reached (carried there by the published t^(1/2)).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -62,15 +61,8 @@ void run_lj_steps(Context& ctx) {
   const LinearFit fit = linear_fit(log_h, log_sigma);
   record_fit(ctx.summary, {"lj_steps.exponent", {"fig6_steps.csv", "h", "sigma"}, "power_law", *std::min_element(hs.begin(), hs.end()),
                            *std::max_element(hs.begin(), hs.end())});
-  // the standard error of the slope from the relative standard error 1/sqrt(2(M-1)) of each sigma (independent starts
-  // per h are not assumed: the same starts are used at every h, so this is a scale, not a confidence bound)
-  double sxx = 0, mean_log_h = 0;
-  for (double x : log_h) mean_log_h += x / static_cast<double>(log_h.size());
-  for (double x : log_h) sxx += (x - mean_log_h) * (x - mean_log_h);
-  const double rel_se = standard_error_of_deviation(1.0, static_cast<double>(M));
   const double printed_sigma = ctx.published_value("lj_sigma_final"), printed_gamma = ctx.published_value("lj_sigma_exponent");
-  const double printed_t = ctx.published_requirement("lj_sigma_final", "lj.t_end");
-  const double printed_h = ctx.published_value("lj_h");
+  const double printed_t = ctx.published_requirement("lj_sigma_final", "lj.t_end"), printed_h = ctx.published_value("lj_h");
   const double carry = std::pow(printed_t / T, printed_gamma);  // sigma(printed t) / sigma(T) of the random walk
   const double implied_h = std::exp((std::log(printed_sigma / carry) - fit.intercept) / fit.slope);
   ctx.summary["lj_steps"] = {
@@ -78,7 +70,9 @@ void run_lj_steps(Context& ctx) {
       {"size", M},
       {"sigma", per_h},
       {"exponent", fit.slope},
-      {"exponent_stderr", rel_se / std::sqrt(sxx)},
+      // the slope's standard error from the relative standard error 1/sqrt(2(M-1)) of each sigma (the same starts
+      // at every h, not independent ones: a scale, not a confidence bound)
+      {"exponent_stderr", standard_error_of_deviation(1.0, static_cast<double>(M)) / std::sqrt(fit.sxx)},
       {"printed_sigma", printed_sigma},
       {"printed_t", printed_t},
       {"carry_to_printed_t", carry},
@@ -88,10 +82,7 @@ void run_lj_steps(Context& ctx) {
 }
 
 void check_lj_steps(const Scene& s) {
-  const LJ lj;
-  Vec<18> grid_q;
-  for (int k = 0; k < 9; ++k) grid_q.segment<2>(2 * k) = lj_grid(k);
-  const double omega = std::sqrt(max_hessian_eigenvalue(lj, grid_q));
+  const double omega = std::sqrt(lj_grid_stiffness());
   for (double h : s.reals("lj_steps.h")) {
     check_step_bound(s, "lj_steps.h", h, omega, "omega^2 = max eig U'' at the 3 x 3 grid of Fig. 6");
     if (s.real("lj_steps.t_end") / h < 1) s.reject("lj_steps.t_end", "must be at least one step of every lj_steps.h");
@@ -99,15 +90,12 @@ void check_lj_steps(const Scene& s) {
 }
 
 StudyPlan plan_lj_steps(const Scene& s) {
-  const double M = static_cast<double>(s.integer("lj_steps.size"));
-  StudyPlan p;
-  for (double h : s.reals("lj_steps.h")) p.steps += M * s.real("lj_steps.t_end") / h;
-  p.force_evals = p.steps * static_cast<double>(evals_per_step("simplified_takahashi_imada"));
-  p.memory_bytes = M * static_cast<double>(s.reals("lj_steps.h").size()) * 8;
-  p.ns_per_step = lj_lanes_rate().ns_per_step;
-  p.note = lj_lanes_rate().note;
-  p.tasks = static_cast<double>(lane_batches(static_cast<std::size_t>(M)) * s.reals("lj_steps.h").size());
-  return p;
+  const double M = static_cast<double>(s.integer("lj_steps.size")), hs = static_cast<double>(s.reals("lj_steps.h").size());
+  double steps = 0;
+  for (double h : s.reals("lj_steps.h")) steps += M * s.real("lj_steps.t_end") / h;
+  const double evals = steps * static_cast<double>(evals_per_step("simplified_takahashi_imada"));
+  return {steps, evals, M * hs * 8, lj_lanes_rate().ns_per_step, lj_lanes_rate().note,
+          static_cast<double>(lane_batches(static_cast<std::size_t>(M))) * hs};
 }
 
 }  // namespace

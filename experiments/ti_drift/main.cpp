@@ -7,18 +7,16 @@
 //   Fig 4      its random walk over an ensemble for k = 5                             ensemble.cpp
 //   Fig 5      Poincare cuts and growth episodes of the ensemble's trajectory with
 //              the largest error (from the ensemble study of the same run, or the
-//              ensemble integrated again: ensemble.hpp)                               poincare.cpp
+//              ensemble integrated again: ti_drift.hpp)                               poincare.cpp
 //   Fig 6      the Lennard-Jones cluster: a step-size scan and the ensemble statistics lj.cpp
 //   Fig 6      sigma against h (the printed step)                                     lj_steps.cpp
 //   Sect. 1.3  symplecticity against volume preservation                              symplecticity.cpp
 // plus the cost: error against wall time and force evaluations (study `cost`)         cost.cpp
 //            and ns per step of each method's kernel (study `kernel_timing`)          kernel_timing.cpp
 // One study per figure (or analysis); the scene's sections say which run. Here: the studies, and the
-// scene keys that several of them read (what they share otherwise: ti_drift.hpp, henon_heiles_starts.hpp,
-// ensemble.hpp).
+// scene keys that several of them read (what they share otherwise: ti_drift.hpp).
 #include <utility>
 
-#include "ensemble.hpp"
 #include "ti_drift.hpp"
 
 using namespace geomint;

@@ -14,14 +14,12 @@
 #include <utility>
 #include <vector>
 
-#include "ensemble.hpp"
 #include "geomint/analysis/growth_episodes.hpp"
 #include "geomint/analysis/poincare.hpp"
 #include "geomint/core/integrate.hpp"
 #include "geomint/integrators/takahashi_imada.hpp"
 #include "geomint/observables/modified_energy.hpp"
 #include "geomint/sweep/ensemble_kernels.hpp"
-#include "henon_heiles_starts.hpp"
 #include "ti_drift.hpp"
 
 namespace geomint::ti_drift {

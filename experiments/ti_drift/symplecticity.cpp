@@ -13,7 +13,6 @@
 #include "geomint/methods/scene_methods.hpp"
 #include "geomint/observables/order_fit.hpp"
 #include "geomint/observables/symplecticity.hpp"
-#include "henon_heiles_starts.hpp"
 #include "geomint/runner/fits.hpp"
 #include "ti_drift.hpp"
 
@@ -45,7 +44,7 @@ void run_symplecticity(Context& ctx) {
   const Scene& s = ctx.scene;
   ctx.progress("symplecticity");
   const HenonHeiles hh = symplecticity_system(s);
-  const Z2 z = hh_start(hh, s.real("symplecticity.q2"), s.real("symplecticity.p2"), s.real("hh.H0"));
+  const Z2 z = hh.start(s.real("symplecticity.q2"), s.real("symplecticity.p2"), s.real("hh.H0"));
   const double h = s.real("h"), d = s.real("symplecticity.fd_step");
   Value reproduced;
   for (const auto& m : s.texts("symplecticity.methods")) {

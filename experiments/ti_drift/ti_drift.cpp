@@ -1,4 +1,4 @@
-// ti_drift: what its studies share (ti_drift.hpp, henon_heiles_starts.hpp).
+// ti_drift: what its studies share (ti_drift.hpp).
 #include "ti_drift.hpp"
 
 #include <algorithm>
@@ -15,7 +15,6 @@
 #include "geomint/runner/summary.hpp"
 #include "geomint/runner/timing.hpp"
 #include "geomint/systems/counting.hpp"
-#include "henon_heiles_starts.hpp"
 
 namespace geomint::ti_drift {
 
@@ -41,6 +40,12 @@ double fit_t_min(const Scene& s, const std::string& section, double t_end) {
 
 Vec<2> lj_grid(int k) { return Vec<2>(1 + k % 3, 1 + k / 3); }  // (i, j), i, j in {1, 2, 3}
 
+double lj_grid_stiffness() {
+  Vec<18> grid_q;
+  for (int k = 0; k < 9; ++k) grid_q.segment<2>(2 * k) = lj_grid(k);
+  return max_hessian_eigenvalue(LJ{}, grid_q);
+}
+
 Z18 lj_start_of(const Scene& s, std::size_t i) {
   std::seed_seq seq{static_cast<std::uint64_t>(s.integer("lj.seed")), static_cast<std::uint64_t>(i)};
   std::mt19937_64 rng(seq);
@@ -65,25 +70,12 @@ std::string short_num(double v) {
   return buf;
 }
 
-// The escape energy of U = (q1^2 + q2^2)/2 + c q1^2 q2 - q2^k/k: the lowest of its saddles, on the axis
-// (q1 = 0, |q2| = 1: U = 1/2 - 1/k) and, for c != 0, at q2 = -1/(2c), q1^2 = (q2^(k-1) - q2)/c where that is
-// positive (1/6 for k = 3, c = 1, the triangle of 004 Fig. 3). Below it the motion from a start inside stays bounded.
-template <class HH>
-double hh_escape_energy(const HH& hh) {
-  double e = 0.5 - 1.0 / hh.k;
-  if (hh.c != 0.0) {
-    const double q2 = -1 / (2 * hh.c), q1sq = (int_pow(q2, hh.k - 1) - q2) / hh.c;
-    if (q1sq > 0) e = std::min(e, hh.U(Vec<2>(std::sqrt(q1sq), q2)));
-  }
-  return e;
-}
-
 }  // namespace
 
 template <class HH>
 void check_hh_starts(const Scene& s, const std::string& section, const HH& hh, double d, bool check_h) {
   const double H0 = s.real("hh.H0"), q2 = s.real(section + ".q2"), p2 = s.real(section + ".p2");
-  const double escape = hh_escape_energy(hh);
+  const double escape = hh.escape_energy();
   if (!(H0 < escape))
     s.reject("hh.H0", "must be below the escape energy " + format_double(escape) + " of U (k = " + std::to_string(hh.k) +
                           ", c = " + format_double(hh.c) + ": its lowest saddle); here " + format_double(H0));

@@ -3,10 +3,11 @@
 // symplecticity check and the cost of the methods. One study per file beside this one (main.cpp lists
 // them); here what several of them share: the phase-space types, the summary helper, the oscillator
 // of Fig. 1 (whose force evaluations per step every --plan counts), the Lennard-Jones starts of Fig. 6,
-// the step checks and the --plan constants. The Henon-Heiles starts and their checks:
-// henon_heiles_starts.hpp.
+// the step checks and the --plan rates, the Henon-Heiles starts of Figs 3-5 and their checks, and the ensemble
+// of Figs 4-5.
 #include <cstdint>
 #include <optional>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -15,6 +16,7 @@
 #include "geomint/runner/results.hpp"
 #include "geomint/runner/summary.hpp"
 #include "geomint/systems/harmonic_oscillator.hpp"
+#include "geomint/systems/henon_heiles.hpp"
 #include "geomint/systems/lennard_jones.hpp"
 
 namespace geomint::ti_drift {
@@ -22,7 +24,7 @@ namespace geomint::ti_drift {
 using Z1 = PhaseState<1>;
 using Z2 = PhaseState<2>;
 
-// The ensemble study's trajectory with the largest error (ensemble.hpp), for the poincare study of the same
+// The ensemble study's trajectory with the largest error (Trajectory, below), for the poincare study of the same
 // process: empty until the ensemble study has run in it (the poincare study then integrates the ensemble itself).
 struct Trajectory;
 using LargestError = std::optional<Trajectory>;
@@ -64,6 +66,7 @@ using LJ = LennardJones<9>;
 using Z18 = PhaseState<18>;
 
 Vec<2> lj_grid(int k);  // (i, j), i, j in {1, 2, 3}
+double lj_grid_stiffness();  // omega_max^2 = max eig U'' at the grid (observables/stiffness.hpp)
 
 // Start i of Fig. 6: the grid with each coordinate perturbed uniformly by at most lj.perturbation, p = 0, from the
 // stream seeded by (lj.seed, i).
@@ -83,5 +86,81 @@ double kept_samples(double n, double samples);
 inline const PlanRate& hh_rate() { return plan_rate("henon-heiles splitting"); }
 inline const PlanRate& hh_lanes_rate() { return plan_rate("henon-heiles lanes"); }
 inline const PlanRate& lj_lanes_rate() { return plan_rate("lennard-jones lanes"); }
+
+// ---- Figs 3-5: the Henon-Heiles system and its starts
+
+// Calls f with the Henon-Heiles system of Figs 4-5: exponent hh.k, coupling hh.coupling (compiled out if 0).
+template <class F>
+decltype(auto) with_ensemble_system(const Scene& s, F&& f) {
+  return with_henon_heiles(static_cast<int>(s.integer("hh.k")), s.real("hh.coupling"), f);
+}
+
+// Start i of the Fig. 4 ensemble: (hh3.q2, hh3.p2) perturbed, each trajectory its own stream seeded by (seed, i).
+template <class HH>
+Z2 ensemble_start(const Scene& s, const HH& hhk, std::size_t i) {
+  std::seed_seq seq{static_cast<std::uint64_t>(s.integer("ensemble.seed")), static_cast<std::uint64_t>(i)};
+  std::mt19937_64 rng(seq);
+  std::uniform_real_distribution<double> u(-s.real("ensemble.perturbation"), s.real("ensemble.perturbation"));
+  const double dq = u(rng), dp = u(rng);
+  return hhk.start(s.real("hh3.q2") + dq, s.real("hh3.p2") + dp, s.real("hh.H0"));
+}
+
+// The Henon-Heiles starts q1 = 0, q2 in [q2 - d, q2 + d], p2 in [p2 - d, p2 + d] (d: the ensemble's
+// perturbation, 0 for one start) lie in the bounded well below the escape energy (the lowest saddle of
+// U): hh.H0 below it, every q2 between the saddles on the axis (q2 < 1, and q2 > -1 for even k: U(0, .)
+// is monotone on either side of 0 there, so p1^2 = 2 (H0 - U(0, q2)) - p2^2 > 0 at the corners of the
+// box holds on all of it), and the step h below the bound at the frequency of the linearisation at the
+// start, max eig U''(0, q2) (a necessary condition).
+// Compiled once, in ti_drift.cpp, for HenonHeilesT<true> and HenonHeilesT<false>.
+template <class HH>
+void check_hh_starts(const Scene& s, const std::string& section, const HH& hh, double d, bool check_h);
+
+// ---- Figs 4-5: the ensemble, which Fig. 4 (study ensemble, ensemble.cpp) and Fig. 5 (study poincare,
+// poincare.cpp) read: the error of the modified energy E of (3.3) and (4.2) of every trajectory at its output times,
+// and the trajectory with the largest error, which Fig. 5 cuts. The poincare study takes that trajectory from the
+// ensemble study when both run in one process, and integrates the ensemble itself otherwise (integrate_ensemble:
+// the same starts, checkpoint and numbers).
+
+// The ensemble as run: the error of E of each trajectory at its ns output times, every4 steps apart.
+struct Run {
+  double h, t_end;
+  std::size_t M;
+  std::int64_t n4, every4;
+  std::vector<Z2> starts;
+  std::vector<std::vector<double>> series;  // per trajectory
+  std::size_t ns;
+  double wall4;  // (on --resume: the part run since)
+  double time_of(std::size_t k) const { return static_cast<double>(k) * static_cast<double>(every4) * h; }
+};
+
+// The scene keys the ensemble depends on (its checkpoint "ensemble"): both studies read them.
+const std::vector<std::string> kEnsembleKeys = {"h", "t_end", "samples", "hh", "ensemble.size", "ensemble.seed",
+                                                "ensemble.perturbation", "hh3.q2", "hh3.p2"};
+
+// The ensemble of the scene along the simplified method (1.6), in SIMD lanes (bit for bit the scalar method),
+// checkpointed (checkpoint "ensemble"; --resume), whichever study runs it (ensemble.cpp).
+Run integrate_ensemble(Context& ctx);
+
+// The checks of the ensemble's scene values before any work: the starts in the bounded well, two steps at least.
+void check_ensemble_run(const Scene& s);
+
+// The trajectory with the largest max_k |E_k - E_0| (the first of equal ones).
+std::size_t largest_error(const Run& run);
+
+// One trajectory of a run: its index in the ensemble, its start and recorded error, and the run's steps and
+// output times (LargestError: the one the ensemble study hands to the poincare study).
+struct Trajectory {
+  std::size_t index;
+  Z2 start;
+  std::vector<double> e;
+  double h, t_end;
+  std::int64_t n4, every4;
+  std::size_t ns;
+  double time_of(std::size_t k) const { return static_cast<double>(k) * static_cast<double>(every4) * h; }
+};
+
+inline Trajectory trajectory_of(const Run& run, std::size_t i) {
+  return {i, run.starts[i], run.series[i], run.h, run.t_end, run.n4, run.every4, run.ns};
+}
 
 }  // namespace geomint::ti_drift

@@ -210,7 +210,7 @@ TEST(TiDrift, PoincareEpisodesChangeEAsTheIntegratedRateOf43Predicts) {
 
 // ---- Fig. 5 is its own study (poincare), of the trajectory of the Fig. 4 ensemble (study ensemble) with the largest
 // error: after the ensemble study of the same run it takes that study's trajectory, alone it integrates the ensemble
-// again (ensemble.hpp) ----
+// again (integrate_ensemble, ensemble.cpp) ----
 
 TEST(TiDrift, ListStudiesNamesFig4ForTheEnsembleAndFig5ForPoincare) {
   const BinaryOutcome r = run_binary("ti_drift", "--list-studies");

@@ -9,16 +9,21 @@ For every experiment (a directory experiments/<name> with a .cpp file):
 - no --plan rate is typed in a study (a number as ns_per_step, as a TimedCall's rate or as a k...Ns constant):
   rates come from experiments/plan_rates.toml (runner/plan_rates.hpp);
 - main.cpp has under 100 lines, no source file of the directory more than 400, and no function more
-  than 120 (a function: from a line in column 0 that opens a definition to the next line in column 0
-  that starts with '}', the style of this tree).
+  than 80 (a function: from a line in column 0 that opens a definition to the next line in column 0
+  that starts with '}', the style of this tree);
+- a study file includes at most one header of its experiment's directory (what a reader opens beside the
+  study: that header, the scene, the gnuplot script and the library's headers);
+- over all experiments, the median study file (a .cpp other than main.cpp and <name>.cpp) has at most 120 lines.
 Exit 1 listing what is wrong.
 """
 import pathlib
 import re
+import statistics
 import subprocess
 import sys
 
-MAX_MAIN, MAX_FILE, MAX_FUNCTION = 100, 400, 120
+MAX_MAIN, MAX_FILE, MAX_FUNCTION, MEDIAN_STUDY = 100, 400, 80, 120
+LOCAL_INCLUDE = re.compile(r'^#include "([^/"]+\.hpp)"', re.M)
 TYPED_RATE = re.compile(r"ns_per_step\s*=\s*[0-9]|TimedCall\{[^{}]*,\s*[0-9][0-9.e]*\}|constexpr double k\w*Ns\w*\s*=")
 NOT_A_FUNCTION = ("//", "#", "namespace", "}", "template", "using", "struct", "class", "enum", "static_assert",
                   "constexpr", "inline constexpr", "extern", "[[")
@@ -41,7 +46,7 @@ def functions(lines):
 
 def main() -> int:
     source, bins = pathlib.Path(sys.argv[1]), pathlib.Path(sys.argv[2])
-    problems = []
+    problems, study_lines = [], []
     for d in sorted({p.parent for p in (source / "experiments").glob("*/*.cpp")}):  # (with or without a main.cpp)
         name = d.name
         listing = subprocess.run([str(bins / name), "--list-studies"], capture_output=True, text=True, check=True)
@@ -52,6 +57,12 @@ def main() -> int:
             text = f.read_text(encoding="utf-8")
             lines = text.splitlines()
             limit = MAX_MAIN if f.name == "main.cpp" else MAX_FILE
+            if f.suffix == ".cpp" and f.stem not in ("main", name):
+                study_lines.append(len(lines))
+                local = LOCAL_INCLUDE.findall(text)
+                if len(local) > 1:
+                    problems.append(f"{f.relative_to(source)}: includes {len(local)} headers of its experiment "
+                                    f"({', '.join(local)}; at most one)")
             if len(lines) > limit:
                 problems.append(f"{f.relative_to(source)}: {len(lines)} lines (at most {limit})")
             for i, line in enumerate(lines, 1):
@@ -68,6 +79,9 @@ def main() -> int:
                 problems.append(f"{name}: study {study} is declared in {len(files)} files (one: experiments/{name}/<study>.cpp)")
             elif sum(len(v) for k, v in owner.items() if files[0] in v) > 1:
                 problems.append(f"{files[0].relative_to(source)}: declares more than one study")
+    median = statistics.median(study_lines) if study_lines else 0
+    if median > MEDIAN_STUDY:
+        problems.append(f"the median study file has {median:g} lines (at most {MEDIAN_STUDY}; {len(study_lines)} files)")
     for p in problems:
         print(p)
     print("layout: " + ("ok" if not problems else f"{len(problems)} problems"))

@@ -27,6 +27,12 @@ ConvergenceStudy& ConvergenceStudy::column(const std::string& name,
   return *this;
 }
 
+ConvergenceStudy& ConvergenceStudy::column(const std::string& name, const std::vector<double>& by_h) {
+  if (initials_ != 1 || by_h.size() != h_.size())
+    throw std::logic_error("ConvergenceStudy column " + name + ": one value per step of one initial condition");
+  return column(name, [&](std::size_t, std::size_t j) { return by_h[j]; });
+}
+
 ConvergenceStudy& ConvergenceStudy::flag(const std::string& name,
                                          const std::function<bool(std::size_t, std::size_t)>& marked) {
   flags_.push_back(name);

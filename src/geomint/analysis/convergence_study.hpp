@@ -53,6 +53,8 @@ class ConvergenceStudy {
 
   // A column: value(i, j) of the run of initial condition i at step h[j] (i = 0 with one condition).
   ConvergenceStudy& column(const std::string& name, const std::function<double(std::size_t i, std::size_t j)>& value);
+  // A column of one initial condition: by_h[j] at step h[j] (std::logic_error unless one value per step).
+  ConvergenceStudy& column(const std::string& name, const std::vector<double>& by_h);
   // A flag column: 1 where run (i, j) was not made (a method beyond its stability bound, say), else 0. The
   // CSV declares it a flag (io/csv.hpp), so that the other columns may hold NaN ("no run") in its rows; a
   // fit leaves NaN out (fit_order fits finite errors only).

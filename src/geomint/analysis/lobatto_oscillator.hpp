@@ -60,6 +60,15 @@ inline Mat<2> lobatto_map_12(double h, double m, double w, Eq12 form) {
   return lhs.inverse() * rhs;
 }
 
+// z_0..z_N of a one-step matrix Phi on (p, q), 001's order of eq. (13) (in floating point: (12) as printed,
+// iterated as a scheme of its own).
+inline std::vector<PhaseState<1>> pq_orbit(const Mat<2>& Phi, const PhaseState<1>& z0, std::int64_t N) {
+  std::vector<PhaseState<1>> zs = {z0};
+  Vec<2> x(z0.p[0], z0.q[0]);
+  for (std::int64_t j = 1; j <= N; ++j) x = Phi * x, zs.push_back(make_state(x[1], x[0]));
+  return zs;
+}
+
 // The orbit of (13)-(14) from q = A, p = 0 in exact arithmetic where b < 0 < c (the first and the
 // third stability interval): with cos theta = a/delta~, sin theta = sqrt(-bc)/delta~ (det Phi = 1),
 // q_j = A cos(j theta), p_j = -sqrt(-b/c) A sin(j theta), so H_j - H_0 = K sin^2(j theta).

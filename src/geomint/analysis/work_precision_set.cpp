@@ -20,6 +20,27 @@ std::vector<std::string> WorkPrecisionSet::methods() const {
   return out;
 }
 
+Value WorkPrecisionSet::crossing(const std::string& a, const std::string& b) const {
+  const std::vector<CostRun> ra = runs(a), rb = runs(b);
+  const auto cross = ra.empty() || rb.empty() ? std::nullopt : crossover(ra, rb);  // (crossover needs runs on both)
+  return {{"methods", std::vector<std::string>{a, b}},
+          {"wall_s", cross ? Value(cross->wall_s) : Value(nullptr)},
+          {"err", cross ? Value(cross->err) : Value(nullptr)}};
+}
+
+Value WorkPrecisionSet::cost_ratios(const Value& summary, const std::string& first) {
+  Value ratio = Value::record();
+  const Value& by = summary.at("by_method");
+  for (const std::string& label : by.keys()) {
+    const Value& m = by.at(label);
+    const Value &a = m.at("wall_s_to").at(0), &b = by.at(first).at("wall_s_to").at(0);
+    if (a.is_null() || b.is_null()) continue;  // (evals_to is null exactly where wall_s_to is: the same bracket)
+    ratio[label] = {{"wall_s", a.number() / b.number()},
+                    {"evals", m.at("evals_to").at(0).number() / by.at(first).at("evals_to").at(0).number()}};
+  }
+  return ratio;
+}
+
 std::vector<CostRun> WorkPrecisionSet::runs(const std::string& method) const {
   std::vector<CostRun> out;
   for (const auto& r : records_)

@@ -64,6 +64,13 @@ class WorkPrecisionSet {
   // Each method's time per step at its smallest h against the first method's (relative_timings,
   // runner/timing_report.hpp), the force evaluations per step as the work.
   Value relative_ns_per_step() const;
+  // Where the work-precision curves (error against wall time) of methods a and b cross (crossover,
+  // analysis/work_precision.hpp): {methods, wall_s, err}, wall_s and err null where they do not cross in the
+  // measured range or a method has no measurable run (the keys the same whatever the timings).
+  Value crossing(const std::string& a, const std::string& b) const;
+  // Of a set's summary(): each method's wall time and force evaluations to reach the (first) target relative to
+  // method `first`'s, where both reach it: {label: {wall_s, evals}}.
+  static Value cost_ratios(const Value& summary, const std::string& first);
 
  private:
   std::string error_;

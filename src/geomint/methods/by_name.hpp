@@ -41,6 +41,16 @@ struct MethodsOn {
                                      std::int64_t n, Bind bind = Bind::method);
 };
 
+// The trajectory z_0..z_n of a method by name (pre once, post once), for the studies that draw or tabulate whole
+// trajectories (001 Table 1 and Fig. 1).
+template <class Sys>
+std::vector<typename Sys::State> trajectory(std::string_view method, const Sys& sys, const typename Sys::State& z0,
+                                            double h, std::int64_t n) {
+  std::vector<typename Sys::State> zs;
+  MethodsOn<Sys>::integrate(method, sys, z0, h, n, [&](std::int64_t, const typename Sys::State& z) { zs.push_back(z); });
+  return zs;
+}
+
 // One step of a method by name as a one-step map (core/integrate.hpp), for the analyses that take a
 // method: one_step_matrix (analysis/linear_stability.hpp), step_jacobian_fd (observables/symplecticity.hpp).
 // `method` and `sys` must outlive it.

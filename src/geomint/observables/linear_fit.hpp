@@ -11,6 +11,7 @@ namespace geomint {
 struct LinearFit {
   double slope = 0, intercept = 0;
   double r2 = 1;  // coefficient of determination (1 when y is constant)
+  double sxx = 0;  // sum of (x_i - mean x)^2: with errors of standard deviation s in y, the slope's is s / sqrt(sxx)
 };
 
 // Needs at least two distinct x; with all x equal the slope is reported as 0.
@@ -26,6 +27,7 @@ inline LinearFit linear_fit(std::span<const double> x, std::span<const double> y
     syy += (y[i] - my) * (y[i] - my);
   }
   LinearFit f;
+  f.sxx = sxx;
   f.slope = sxx > 0 ? sxy / sxx : 0.0;
   f.intercept = my - f.slope * mx;
   f.r2 = syy > 0 && sxx > 0 ? sxy * sxy / (sxx * syy) : 1.0;

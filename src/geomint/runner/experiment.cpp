@@ -89,6 +89,11 @@ const Published& entry_named(const Context& ctx, const std::string& key) {
 }
 }  // namespace
 
+void StudyPlan::time(const Scene& s, const std::vector<TimedCall>& calls) {
+  const TimedPlan timed = timing_plan(calls, static_cast<double>(s.integer("timing.repeats")));
+  timed_seconds = timed.seconds, timed_steps = timed.steps;
+}
+
 double Context::published_value(const std::string& key) const {
   const Published& e = entry_named(*this, key);
   if (!e.value.is_number()) throw std::logic_error("published.toml of " + experiment + ": " + key + " is not a number");

@@ -113,6 +113,7 @@ struct Interrupted : std::runtime_error {
 // and synced to disk (measured: energy_map's quick map, 4.6 ms of steps, takes 15-22 ms).
 inline constexpr double kStudyOverheadS = 0.01;
 
+struct TimedCall;  // (runner/timing.hpp)
 struct StudyPlan {
   double steps = 0;         // integration steps, all trajectories and runs together
   double force_evals = 0;   // force (gradient) evaluations
@@ -132,6 +133,9 @@ struct StudyPlan {
   // them itself otherwise: its whole plan in the first case, which plan_json takes instead of this one (null:
   // the two differ only by the timed part above).
   std::shared_ptr<const StudyPlan> when_reusing = {};
+  // The timing protocol over `calls` at the scene's timing.repeats (timing_plan, runner/timing.hpp): sets
+  // timed_seconds and timed_steps.
+  void time(const Scene& s, const std::vector<TimedCall>& calls);
 };
 
 // A figure, table or statement of a paper (paper/papers.toml): `paper` its number ("000"), `item` as the

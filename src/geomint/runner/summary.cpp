@@ -1,6 +1,12 @@
 #include "geomint/runner/summary.hpp"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <utility>
+
+#include "geomint/runner/experiment.hpp"
 
 namespace geomint {
 
@@ -27,6 +33,46 @@ Value h_range(const std::vector<double>& hs) {
   Value r = range_of(hs);
   r["count"] = hs.size();
   return r;
+}
+
+namespace {
+
+// Does `reproduced` round to `printed` at `digits` significant digits?
+bool rounds_to_printed(double printed, double reproduced, int digits) {
+  char a[32], b[32];
+  std::snprintf(a, sizeof a, "%.*e", digits - 1, printed);
+  std::snprintf(b, sizeof b, "%.*e", digits - 1, reproduced);
+  return std::string(a) == b;
+}
+
+}  // namespace
+
+Value printed_digits_agreement(const Context& ctx, const std::vector<std::string>& keys, int digits) {
+  int compared = 0, rounding = 0;
+  double deviation = 0;
+  std::vector<std::pair<std::string, std::vector<double>>> roundoff;  // the printed values compared absolutely
+  for (const std::string& key : keys) {
+    const auto c = ctx.comparison(ctx.summary, key);
+    if (!c) continue;
+    const Value &published = c->at("published"), &reproduced = c->at("reproduced");
+    const bool relative = c->at("compare").contains("rel");
+    if (!relative) roundoff.push_back({key.substr(key.rfind('.') + 1), {}});
+    for (std::size_t i = 0; i < published.size(); ++i) {
+      const std::string& at = published.keys()[i];
+      const double printed = published.at(i).number();
+      if (!reproduced.contains(at)) continue;
+      if (!relative) {
+        roundoff.back().second.push_back(printed);
+      } else {
+        ++compared, rounding += rounds_to_printed(printed, reproduced.at(at).number(), digits);
+        deviation = std::max(deviation, std::abs(c->at("difference").at(at).number()));  // (relative: compare = rel)
+      }
+    }
+  }
+  Value out = {{"compared", compared}, {"round_to_printed_digits", rounding}, {"max_relative_deviation", deviation}};
+  for (const auto& [name, printed] : roundoff)
+    if (!printed.empty()) out[name + "_range"] = range_of(printed);
+  return out;
 }
 
 }  // namespace geomint

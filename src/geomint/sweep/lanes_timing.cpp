@@ -2,9 +2,29 @@
 
 #include <span>
 
+#include "geomint/runner/timing_report.hpp"
 #include "geomint/sweep/ensemble_kernels.hpp"
 
 namespace geomint {
+
+Value LanesTiming::summary(std::size_t trajectories, std::int64_t n) const {
+  const double steps = static_cast<double>(trajectories) * static_cast<double>(n);
+  const RunTime per_step = scalar.scaled(1e9 / steps);  // ns per trajectory-step
+  Value out = {{"trajectories", trajectories}, {"steps", n}, {"scalar_ns_per_step", per_step.seconds()},
+               {"scalar", to_value(per_step)}, {"scalar_spread", per_step.spread()}};
+  for (const auto& [name, k] : kernels) {
+    const RunTime lanes = k.scaled(1e9 / steps);
+    const TimeRatio speedup = time_ratio(per_step, lanes);
+    out["kernels"][name] = {{"ns_per_step", lanes.seconds()},  {"spread", lanes.spread()}, {"time", to_value(lanes)},
+                            {"speedup_vs_scalar", speedup.median}, {"speedup_interval", {{"min", speedup.lo}, {"max", speedup.hi}}},
+                            {"against_scalar", timing_verdict(time_ratio(lanes, per_step), 1, 1)}};
+    if (!out.contains("isa"))  // the one the ensembles use (the widest lanes)
+      out["isa"] = name, out["ns_per_step"] = lanes.seconds(), out["spread"] = lanes.spread(),
+      out["speedup_vs_scalar"] = speedup.median, out["speedup_interval"] = out.at("kernels").at(name).at("speedup_interval"),
+      out["against_scalar"] = out.at("kernels").at(name).at("against_scalar");
+  }
+  return out;
+}
 
 template <class Sys>
 LanesTiming time_lanes(const Sys& sys, const std::vector<typename Sys::State>& starts, double h, std::int64_t n,

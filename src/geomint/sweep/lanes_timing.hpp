@@ -18,6 +18,11 @@ struct LanesTiming {
     RunTime time;      // all lanes at once
   };
   std::vector<Kernel> kernels;  // each lane kernel this CPU runs, widest lanes first
+  // In ns per trajectory-step of `trajectories` trajectories of n steps: {trajectories, steps, scalar_ns_per_step,
+  // scalar, scalar_spread, kernels: {name: {ns_per_step, spread, time, speedup_vs_scalar, speedup_interval,
+  // against_scalar}}}, and the first kernel's (the widest lanes: the one the ensembles use) at the top level, with
+  // its name as isa. (Scalar and lanes do the same arithmetic per trajectory-step: the same work.)
+  Value summary(std::size_t trajectories, std::int64_t n) const;
 };
 
 // n steps of h from each of `starts` (at most kEnsembleLanes), the scalar method and every kernel timed

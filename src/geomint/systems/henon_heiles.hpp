@@ -6,6 +6,7 @@
 // geomint: MethodsOn<HenonHeilesT<true>>
 // geomint: MethodsOn<HenonHeilesT<false>>
 // geomint: MethodsOn<Counting<HenonHeilesT<true>>>
+#include <algorithm>
 #include <cmath>
 
 #include "geomint/core/state.hpp"
@@ -72,6 +73,22 @@ struct HenonHeilesT : UnitMassSeparable<2> {
   }
   double U5(const Vec<2>& q, const Vec<2>& a) const {
     return k < 5 ? 0.0 : -(k - 1.0) * (k - 2) * (k - 3) * (k - 4) * int_pow(q[1], k - 5) * int_pow(a[1], 5);
+  }
+  // The escape energy: the lowest of U's saddles, on the axis (q1 = 0, |q2| = 1: U = 1/2 - 1/k) and, for c != 0,
+  // at q2 = -1/(2c), q1^2 = (q2^(k-1) - q2)/c where that is positive (1/6 for k = 3, c = 1, the triangle of 004
+  // Fig. 3). Below it the motion from a start inside stays bounded.
+  double escape_energy() const {
+    double e = 0.5 - 1.0 / k;
+    if (Coupling && c != 0.0) {
+      const double q2 = -1 / (2 * c), q1sq = (int_pow(q2, k - 1) - q2) / c;
+      if (q1sq > 0) e = std::min(e, U(Vec<2>(std::sqrt(q1sq), q2)));
+    }
+    return e;
+  }
+  // The start on the energy shell H = H0 with q1 = 0 and p1 > 0 (004 Sect. 5).
+  State start(double q2, double p2, double H0) const {
+    const double p1 = std::sqrt(2 * (H0 - U(Vec<2>(0.0, q2))) - p2 * p2);
+    return make_state<2>(Vec<2>(0.0, q2), Vec<2>(p1, p2));
   }
 };
 
