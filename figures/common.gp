@@ -57,20 +57,22 @@ method_ls(m) = 200 + word_index(METHODS, m)
 LS_OTHER = 29; set style line LS_OTHER lc rgb C_OTHER lw 1.0 pt P_OTHER ps 0.75   # (a curve of no registry method)
 method_fit_ls(m) = 300 + word_index(METHODS, m)
 
-C_EXACT = '#000000'                                  # exact solution
-C_SE    = method_colour('symplectic_euler_pq')       # (symplectic) Euler without compensation
-C_COMP  = method_colour('compensated_symplectic_euler')  # with the compensating transformation
-C_RK4   = method_colour('rk4')                       # classical RK4, reference
+# A method's further curves in one panel (the same method in other coordinates, or another of its quantities): its
+# colour, and further_point(m, k), the k-th of FURTHER_MARKERS that is not its own marker (figures/convergence.gpi
+# takes its further markers from the same list)
+FURTHER_MARKERS = "4 5 8 9 6 7 12 13 10 11 14 15 1 2 3"
+_further(m, k, i) = i > words(FURTHER_MARKERS) ? P_OTHER : int(word(FURTHER_MARKERS, i)) == method_point(m) \
+                  ? _further(m, k, i + 1) : k == 1 ? int(word(FURTHER_MARKERS, i)) : _further(m, k - 1, i + 1)
+further_point(m, k) = _further(m, k, 1)
 
+C_EXACT = '#000000'                                  # exact solution
 LS_EXACT = 1;  set style line LS_EXACT lc rgb C_EXACT lw 1.0 dt 1
-LS_SE    = 2;  set style line LS_SE    lc rgb C_SE    lw 1.0 pt 7 ps 0.55   # filled circles
-LS_COMP  = 3;  set style line LS_COMP  lc rgb C_COMP  lw 1.0 pt 4 ps 0.70   # open squares
-LS_RK4   = 4;  set style line LS_RK4   lc rgb C_RK4   lw 1.0 pt 8 ps 0.70   # open triangles
-LS_SE2   = 5;  set style line LS_SE2   lc rgb C_SE    lw 1.0 pt 9 ps 0.65   # second problem, same method
-# least-squares fits: dashed, in the method's colour
-LS_SE_FIT   = 12; set style line LS_SE_FIT   lc rgb C_SE   lw 0.9 dt (8,4)
-LS_COMP_FIT = 13; set style line LS_COMP_FIT lc rgb C_COMP lw 0.9 dt (8,4)
-LS_RK4_FIT  = 14; set style line LS_RK4_FIT  lc rgb C_RK4  lw 0.9 dt (8,4)
+# Curves that are no method's result, a quantity as computed and the same corrected (plain and compensated (Kahan)
+# summation; H at a method's variables and at the processed ones): role colours, grays, none a method's
+C_UNCORRECTED = '#333333'   # as computed: plain summation, H at the method's own variables
+C_CORRECTED   = '#999999'   # corrected: compensated (Kahan) summation, H at the processed variables
+LS_UNCORRECTED = 2;  set style line LS_UNCORRECTED lc rgb C_UNCORRECTED lw 1.0
+LS_CORRECTED   = 3;  set style line LS_CORRECTED   lc rgb C_CORRECTED   lw 1.0
 
 # ---- look ---------------------------------------------------------------
 set border lw 0.8
@@ -99,10 +101,6 @@ powerlaw(h, c, order) = 10**c * h**order
 # `[t=0:1:1] '+' using (fit_h(n, t)):(fit_err(n, t)) with lines`
 fit_h(n, t)   = value(n.'_hmin') * (value(n.'_hmax') / value(n.'_hmin'))**t
 fit_err(n, t) = powerlaw(fit_h(n, t), value(n.'_c'), value(n.'_order'))
-
-# ---- 000 Sec. 3.3, Rowlands time stepping (figures/rowlands_convergence_*.gp) ----
-# A figure's methods take their colours and markers from the registry (method_styles, above).
-C_SV      = method_colour('stormer_verlet')    # Störmer–Verlet (26)–(28) (004 Fig. 1's closed form too)
 
 # ---- the numbers of the run: DIR/figure_values.gp, written by the experiment (the "scene values"
 # and "summary values" of the scripts' Input lines): no script reads JSON ----
@@ -152,9 +150,8 @@ scene_real(key)   = (_i = _fv('scene.' . key), _i > 0 ? sprintf("%.17e", FV_VAL[
 summary_real(key) = (_i = _fv('summary.' . key), _i > 0 ? sprintf("%.17e", FV_VAL[_i]) : "?")
 # sci(x): x as "−6.52·10^{−6}" (3 significant digits; enhanced text)
 sci(x) = x == 0 ? "0" : gprintf("%.2t·10^{%T}", x)
-# Takahashi–Imada (1.4) in its registry colour; statistics black. A figure of 004 names the method of its
-# trajectories as the run does, summary methods.<study>, and its alpha, TI_ALPHA: "α = 1/12"
-C_TI   = method_colour('takahashi_imada')
+# Statistics black. A figure of 004 names the method of its trajectories as the run does, summary methods.<study>
+# (its colour method_colour), and its alpha, TI_ALPHA: "α = 1/12"
 TI_ALPHA = (_a = summary_num('ti_alpha'), _a eq "?" ? "α = ?" : sprintf("α = 1/%g", 1 / real(_a)))
 C_STAT = '#000000'
 # time as the colour of points (Fig. 5): eval PALETTE_TIME (viridis, cut before its light yellow end)

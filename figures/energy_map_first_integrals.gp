@@ -45,12 +45,13 @@ Z0 = sprintf("(x, y, p_x, p_y)(0) = (%s, %s, %s, %s)", scene_num('first_integral
              scene_num('first_integrals.initial.0.1'), scene_num('first_integrals.initial.0.2'), scene_num('first_integrals.initial.0.3'))
 eval need_num('LMAX_PLAIN', summary_num('reproduced.cartesian_L_max_rel_drift_plain'))
 eval need_num('LMAX_COMP', summary_num('reproduced.cartesian_L_max_rel_drift'))
+# the two summations are no methods: role colours (figures/common.gp LS_UNCORRECTED, LS_CORRECTED)
 # a curve with no positive value at all would make gnuplot warn: say so in the key instead
 curve(col, ls, title) = sprintf("ANG using (column('t') > 0 ? column('t') : NaN):(pos('%s')) with lines ls %d lw 0.8 title '%s'", col, ls, title)
 nocurve(title) = sprintf("keyentry with points ps 0 title '%s: 0 at every sample (not drawn)'", title)
-PLAIN = N_PLAIN_POS > 0 ? curve('L_rel_drift_plain', LS_SE, \
+PLAIN = N_PLAIN_POS > 0 ? curve('L_rel_drift_plain', LS_UNCORRECTED, \
                         sprintf('plain summation%s', N_PLAIN_POS < N_ANG ? sprintf('; gaps: 0 at %d of %d t', N_ANG - N_PLAIN_POS, N_ANG) : '')) : nocurve('plain summation')
-COMP  = N_COMP_POS > 0 ? curve('L_rel_drift_compensated', LS_COMP, \
+COMP  = N_COMP_POS > 0 ? curve('L_rel_drift_compensated', LS_CORRECTED, \
                                 sprintf('compensated (Kahan); gaps: 0 at %d of %d t', N_ANG - N_COMP_POS, N_ANG)) \
                        : nocurve('compensated (Kahan) summation')
 CONV_LAST_PANEL = sprintf("set xlabel 'time t   (h = %g, %d steps, sampled every %d)'; ", H_ANG, JMAX, JMAX / N_ANG) \

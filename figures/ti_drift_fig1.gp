@@ -40,12 +40,30 @@ do for [m in METHODS] { EQUAL_WORK = EQUAL_WORK.(EQUAL_WORK eq "" ? "" : ", ").s
 
 CONV_FIT_LINES = ""   # the left panel's fits, but the simplified TI's (it coincides with TI's on the oscillator)
 do for [m in METHODS] { if (m ne "sti") { CONV_FIT_LINES = CONV_FIT_LINES.m.'_solution ' } }
-CONV_CURVES_CSV = 'oscillator_closed_forms.csv'   # the closed forms of Sect. 1.4, right
+# the closed forms of Sect. 1.4, right: the columns <m>_rel_H of the methods m of summary
+# methods.oscillator_closed_forms, in that order; CF_FORM(k, y) and word(CF_TEXTS, k) the k-th's formula in
+# y = ωh_eff (Störmer–Verlet's, then Takahashi–Imada's), checked against its column below
+CONV_CURVES_CSV = 'oscillator_closed_forms.csv'
 CONV_CURVES_X = "omega_h"
-CONV_CURVES(q) = q eq "energy" ? "sv_rel_H ti_rel_H" : ""
-CONV_CURVE_COLOUR(c) = method_colour(c eq "sv_rel_H" ? "stormer_verlet" : "takahashi_imada")
-CONV_CURVE_TITLE(c) = c eq "sv_rel_H" ? method_title("stormer_verlet") . ", closed form y^2/(16 − y^2),  y = ωh_{eff}" \
-                                      : method_title("takahashi_imada") . ", closed form y^6/(36 (y^4 − 12y^2 + 48))"
+CF_METHODS = summary_words('methods.oscillator_closed_forms')
+if (words(CF_METHODS) != 2) {
+    exit error "methods.oscillator_closed_forms: not two methods in ".results."/figure_values.gp"
+}
+CF_FORM(k, y) = k == 1 ? y**2 / (16 - y**2) : y**6 / (36 * (y**4 - 12 * y**2 + 48))
+CF_TEXTS = "'y^2/(16 − y^2),  y = ωh_{eff}' 'y^6/(36 (y^4 − 12y^2 + 48))'"
+cf_dev(k) = (_c = column(word(CF_METHODS, k).'_rel_H'), _c == _c ? abs(_c / CF_FORM(k, column("omega_h")) - 1) : NaN)
+do for [k = 1:2] {
+    stats csv(CONV_CURVES_CSV) using (cf_dev(k)) nooutput
+    if (STATS_max > 1e-9) {
+        exit error sprintf("oscillator_closed_forms.csv: %s_rel_H is not %s", word(CF_METHODS, k), word(CF_TEXTS, k))
+    }
+}
+CF_CURVES = ""; do for [m in CF_METHODS] { CF_CURVES = CF_CURVES . m . "_rel_H " }
+cf_method(c) = c[1:strlen(c) - strlen("_rel_H")]   # (the method of column c)
+CONV_CURVES(q) = q eq "energy" ? CF_CURVES : ""
+CONV_CURVE_COLOUR(c) = method_colour(cf_method(c))
+CONV_CURVE_TITLE(c) = method_title(cf_method(c)) . ", closed form " \
+                    . word(CF_TEXTS, word_index(CF_METHODS, cf_method(c)))
 CONV_TITLE = "{/:Bold " . made_by('oscillator') . ":} " . sprintf("harmonic oscillator, ω = 1, (q_0, p_0) = (0, 1), maxima over t ≤ %g/ω; TI and the simplified TI processed\n" \
     . "equal work: h = e h_{eff}/2 for e force evaluations per step (%s)\n" \
     . "left, dashed: least-squares fits (ωh_{eff} ≤ %g, above round-off); vertical lines: stability bounds", T_OMEGA, EQUAL_WORK, FIT_MAX)

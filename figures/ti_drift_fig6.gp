@@ -112,8 +112,8 @@ set style line 206 lc rgb C_STAT lw 2.0                       # (b) μ
 set style line 207 lc rgb C_STAT lw 2.0 dt (6,3)              # (b) μ ± σ
 set style line 208 lc rgb C_M  lw 1.4                       # (c) σ
 set style line 209 lc rgb C_STAT lw 1.0 dt (8,4)              # (c) fit
-set style line 210 lc rgb C_SV   lw 1.2                       # (d) H error
-set style line 211 lc rgb C_TI   lw 1.2                       # (d) H at the processed variables
+set style line 210 lc rgb C_UNCORRECTED lw 1.2                # (d) H error (a role, no method: figures/common.gp)
+set style line 211 lc rgb C_CORRECTED   lw 1.2                # (d) H at the processed variables (a role, no method)
 set style line 212 lc rgb C_STAT lw 1.0 dt (3,3)              # (d) sigma of E
 
 do for [fmt in FORMATS] {

@@ -9,6 +9,7 @@
 #include "geomint/core/integrate.hpp"
 #include "geomint/methods/methods.hpp"
 #include "geomint/observables/error_norms.hpp"
+#include "geomint/runner/summary.hpp"
 #include "geomint/transforms/point_transform.hpp"
 
 namespace geomint::euler_compensation {
@@ -49,6 +50,8 @@ void run_oscillator(Context& ctx) {
   reproduced["fig8_max_energy_err_se"] = err_se.max_abs();
   reproduced["fig8_max_energy_err_compensated"] = err_comp.max_abs();
   reproduced["fig8_max_abs_qhat"] = max_qhat;
+  // (Fig 8's curves: the columns *_se, then *_compensated)
+  ctx.summary["methods"]["oscillator"] = labels_of({"symplectic_euler_pq", "compensated_symplectic_euler"});
 }
 
 StudyPlan plan_oscillator(const Scene& s) {

@@ -10,6 +10,7 @@
 #include "geomint/methods/registry.hpp"
 #include "geomint/observables/error_norms.hpp"
 #include "geomint/reference/odeint_reference.hpp"
+#include "geomint/runner/summary.hpp"
 #include "geomint/transforms/variable_transform.hpp"
 
 namespace geomint::euler_compensation {
@@ -70,8 +71,8 @@ ScalarFigure scalar_figure(const Sys& sys, const Psi& psi, const Field& field, d
 }
 
 
-// Writes <figure>.csv and <figure>_exact.csv, and the errors of Euler in y and in ybar under <key>_*
-// (the paper calls the latter an exact solution: published.toml).
+// Writes <figure>.csv and <figure>_exact.csv, the errors of Euler in y and in ybar under <key>_* (the paper
+// calls the latter an exact solution: published.toml), and the method of both runs (summary methods.<key>).
 template <class Sys, class Psi>
 void write_scalar_figure(Context& ctx, const std::string& figure, const std::string& key, const Sys& sys,
                          const Psi& psi, double y0, double h, std::int64_t steps) {
@@ -82,6 +83,7 @@ void write_scalar_figure(Context& ctx, const std::string& figure, const std::str
   ctx.summary["reproduced"][key + "_euler_max_rel_err"] = fig.euler_max_rel_err;
   ctx.summary["reproduced"][key + "_compensated_max_rel_err_odeint"] = fig.compensated_max_rel_err_odeint;
   ctx.summary["reproduced"][key + "_odeint_max_rel_err"] = fig.odeint_max_rel_err;
+  ctx.summary["methods"][key] = labels_of({"explicit_euler"});  // (scalar_figure steps it, in y and in ybar)
 }
 
 // --plan of Figs 2, 3: the steps of Euler in y and in ybar, and the trajectory CSV (8 columns) held in memory.

@@ -126,17 +126,20 @@ std::vector<Method> integrate_methods(const Scene& s, const Z1& z0, double T1) {
 }
 
 // The closed forms of Sect. 1.4 (start q0 = 0), over omega h_eff up to SV's bound (it runs at h = h_eff/2);
-// TI's is nan beyond its own bound 2 sqrt(3), where ti_beyond_bound = 1.
+// TI's is nan beyond its own bound 2 sqrt(3), where ti_beyond_bound = 1. Columns <label>_rel_H, their methods
+// in the same order in summary methods.oscillator_closed_forms.
 void write_closed_forms(Context& ctx) {
   const double sv_eff_bound = 2 * method_info("stormer_verlet").oscillatory_bound;
-  Csv cf({"omega_h", "sv_rel_H", "ti_rel_H", "ti_beyond_bound"});
-  cf.flags({"ti_beyond_bound"});
+  const std::string sv = label_of("stormer_verlet"), ti = label_of("takahashi_imada");
+  Csv cf({"omega_h", sv + "_rel_H", ti + "_rel_H", ti + "_beyond_bound"});
+  cf.flags({ti + "_beyond_bound"});
   for (int i = 1; i <= 400; ++i) {
     const double y = sv_eff_bound * i / 401.0;
     const bool beyond = !(y < method_info("takahashi_imada").oscillatory_bound);
     cf.row(y, closed_form("stormer_verlet", y / 2), closed_form("takahashi_imada", y), static_cast<std::int64_t>(beyond));
   }
   ctx.write("oscillator_closed_forms.csv", cf);
+  ctx.summary["methods"]["oscillator_closed_forms"] = labels_of({"stormer_verlet", "takahashi_imada"});
 }
 
 // The run of a method at omega h_eff = wh, or nullptr where it is beyond its bound (not run).
