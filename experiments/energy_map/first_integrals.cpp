@@ -6,13 +6,13 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <utility>
 #include <vector>
 
 #include "energy_map.hpp"
 #include "geomint/analysis/convergence_study.hpp"
 #include "geomint/core/state.hpp"
 #include "geomint/integrators/symplectic_euler.hpp"
+#include "geomint/observables/order_fit.hpp"
 #include "geomint/runner/summary.hpp"
 #include "geomint/runner/distributed_map.hpp"
 #include "geomint/systems/elastic_pendulum.hpp"
@@ -30,16 +30,6 @@ StudyPlan plan_first_integrals(const Scene& s) {
   const double polar = static_cast<double>(s.reals("first_integrals.h").size() * s.real_rows("first_integrals.initial").size());
   const double steps = polar + 2 * (static_cast<double>(s.integer("first_integrals.steps")) + 1);  // plain and compensated
   return {steps, steps, 1001 * 100.0, scalar_rate().ns_per_step, scalar_rate().note};  // angular_momentum.csv: at most 1001 rows
-}
-
-// The local order between the two smallest step sizes: the slope of log(err) against log(h) there.
-double local_order(const std::vector<double>& h, const std::vector<double>& err) {
-  std::vector<std::pair<double, double>> pts;
-  for (std::size_t i = 0; i < h.size(); ++i)
-    if (h[i] > 0 && err[i] > 0 && std::isfinite(h[i]) && std::isfinite(err[i])) pts.emplace_back(h[i], err[i]);
-  std::sort(pts.begin(), pts.end());
-  if (pts.size() < 2 || pts[0].first == pts[1].first) return std::nan("");
-  return std::log(pts[1].second / pts[0].second) / std::log(pts[1].first / pts[0].first);
 }
 
 // ---- Section 5.2, free particle (m = 1): polar symplectic Euler changes p_x by
@@ -64,8 +54,7 @@ void run_first_integrals(Context& ctx) {
   });
   // first_integrals.csv (one step per h) and the order of the change over the changes above round-off.
   ConvergenceStudy conv({.csv = "first_integrals.csv", .h = hs, .steps = std::vector<double>(hs.size(), 1.0)});
-  conv.column("px_change_per_step", [&](std::size_t, std::size_t k) { return change[k]; })
-      .fit("polar_px_change_per_step", "px_change_per_step", roundoff_floor());
+  conv.column("px_change_per_step", change).fit("polar_px_change_per_step", "px_change_per_step", roundoff_floor());
   conv.write(ctx);
 
   // The angular momentum is a quadratic invariant of symplectic Euler (a P-series
@@ -95,13 +84,12 @@ void run_first_integrals(Context& ctx) {
   // there: eps |q_J| |p| / |L_0| (p is constant for the free particle).
   const double q_end = zc.z.q.norm();
   ctx.summary["first_integrals"] = {
-      {"h", {{"min", hL}, {"max", *std::max_element(hs.begin(), hs.end())}, {"count", hs.size()}}},
+      {"h", h_range(hs)},
       {"initial_conditions", starts.size()},
-      {"px_local_order", local_order(hs, change)},
+      {"px_local_order", local_order(hs, change)},  // (observables/order_fit.hpp)
       {"q_end", q_end},
       {"L_eval_roundoff", std::numeric_limits<double>::epsilon() * q_end * zL.p.norm() / std::abs(L0)}};
 }
-
 
 }  // namespace
 

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <map>
 #include <optional>
@@ -62,6 +63,26 @@ Errors convergence_run(const std::string& method, const Sys& sys, const State& z
   if (obs.energy) e.energy_rms = energy.rms50(), e.energy_max = energy.max_abs();
   if (obs.phase) e.phase = phase_distance(zN, *z_ref);
   return e;
+}
+
+// The system as the study uses it (with or without gravity: with_elastic_pendulum), bound once; the rest of the
+// study is compiled once, not per system.
+struct Pendulum {
+  std::function<Errors(const std::string& method, const State& z0, const State* z_ref, double h, std::int64_t n,
+                       Observables obs)> run;                                        // convergence_run
+  std::function<State(const State& z0, double t_end, double rtol, double atol)> reference;  // reference_solution
+  std::function<double(const State& z)> H;
+};
+
+template <class Sys>
+Pendulum bound(const Sys& sys) {
+  return {[&sys](const std::string& m, const State& z0, const State* z_ref, double h, std::int64_t n, Observables obs) {
+            return convergence_run(m, sys, z0, z_ref, h, n, obs);
+          },
+          [&sys](const State& z0, double t_end, double rtol, double atol) {
+            return reference_solution(sys, z0, t_end, rtol, atol);
+          },
+          [&sys](const State& z) { return sys.H(z); }};
 }
 
 // The ranges of the fitted orders (orders_by_initial) over all initial conditions and norms, of the
@@ -122,14 +143,13 @@ struct Ref {
 
 // References, one per initial condition, and their self-check at 100x tighter tolerances (none
 // unless phase errors are recorded; reference.csv); `self_check` becomes the largest of them.
-template <class Sys>
-std::vector<Ref> references(Context& ctx, const Sys& sys, const std::vector<std::vector<double>>& initial,
+std::vector<Ref> references(Context& ctx, const Pendulum& sys, const std::vector<std::vector<double>>& initial,
                             Observables obs, double t_end, double rtol, double atol, double& self_check) {
   if (obs.phase) ctx.progress("references (odeint Bulirsch-Stoer)");
   const auto refs = distributed_map(obs.phase ? initial.size() : 0, [&](std::size_t i) {
     const State z0 = state_of(initial[i]);
-    const State a = reference_solution(sys, z0, t_end, rtol, atol);
-    const State b = reference_solution(sys, z0, t_end, rtol / 100, atol / 100);
+    const State a = sys.reference(z0, t_end, rtol, atol);
+    const State b = sys.reference(z0, t_end, rtol / 100, atol / 100);
     return Ref{a, phase_distance(a, b)};
   });
   Csv ref_csv({"initial", "x", "y", "px", "py", "self_check"});
@@ -144,8 +164,7 @@ std::vector<Ref> references(Context& ctx, const Sys& sys, const std::vector<std:
 
 // Convergence: one task per (initial condition, h), all methods in it.
 // runs[i * hs.size() + j][k]: initial condition i, step hs[j], method k.
-template <class Sys>
-std::vector<std::vector<Errors>> convergence_runs(Context& ctx, const Sys& sys, const std::vector<double>& hs,
+std::vector<std::vector<Errors>> convergence_runs(Context& ctx, const Pendulum& sys, const std::vector<double>& hs,
                                                   const std::vector<std::vector<double>>& initial,
                                                   const std::vector<std::string>& methods, Observables obs,
                                                   double t_end, const std::vector<Ref>& refs) {
@@ -156,16 +175,14 @@ std::vector<std::vector<Errors>> convergence_runs(Context& ctx, const Sys& sys, 
     const double h = hs[task % nh];
     std::vector<Errors> out;
     for (const auto& m : methods)
-      out.push_back(convergence_run(m, sys, state_of(initial[i]), obs.phase ? &refs[i].z : nullptr, h,
-                                    steps_to(t_end, h), obs));
+      out.push_back(sys.run(m, state_of(initial[i]), obs.phase ? &refs[i].z : nullptr, h, steps_to(t_end, h), obs));
     return out;
   });
 }
 
 // fig4_convergence.csv and the orders fitted per initial condition and norm (orders.csv); the
 // reference's error bounds what can be fitted of the phase error.
-template <class Sys>
-ConvergenceStudy convergence_table(const Sys& sys, const std::vector<double>& hs, double t_end,
+ConvergenceStudy convergence_table(const Pendulum& sys, const std::vector<double>& hs, double t_end,
                                    const std::vector<std::vector<double>>& initial,
                                    const std::vector<std::string>& methods, Observables obs,
                                    const std::vector<std::vector<Errors>>& runs, double self_check) {
@@ -243,8 +260,7 @@ void summarize(Context& ctx, const std::vector<double>& hs, std::size_t n_initia
   if (const auto ratio = printed_over_kernel(methods, runs, hs, n_initial, obs)) ctx.summary["printed_over_kernel"] = *ratio;
 }
 
-template <class Sys>
-void convergence_with(Context& ctx, const Sys& sys) {
+void convergence_with(Context& ctx, const Pendulum& sys) {
   const Scene& s = ctx.scene;
   const auto hs = s.reals("h");
   const auto initial = s.real_rows("initial");
@@ -261,7 +277,7 @@ void convergence_with(Context& ctx, const Sys& sys) {
 }
 
 void run_convergence(Context& ctx) {
-  with_elastic_pendulum(pendulum_of(ctx.scene), [&](const auto& sys) { convergence_with(ctx, sys); });
+  with_elastic_pendulum(pendulum_of(ctx.scene), [&](const auto& sys) { convergence_with(ctx, bound(sys)); });
 }
 
 StudyPlan plan_convergence(const Scene& s) {

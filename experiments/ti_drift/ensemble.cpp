@@ -14,7 +14,7 @@
 
 #include "geomint/core/integrate.hpp"
 #include "geomint/observables/ensemble_statistics.hpp"
-#include "geomint/observables/modified_energy.hpp"
+#include "geomint/integrators/takahashi_imada_systems.hpp"
 #include "geomint/runner/checkpoint.hpp"
 #include "geomint/runner/fits.hpp"
 #include "geomint/sweep/ensemble_kernels.hpp"
@@ -30,38 +30,19 @@ double max_abs(const std::vector<double>& e) {
   return mx;
 }
 
+// The error of E along the trajectories of batch b (sweep/ensemble_kernels.hpp: in lanes, bit for bit the scalar
+// method) at its ns output times, every `every` of the n steps.
 template <class HH>
-Run integrate_with(Context& ctx, const HH& hhk) {
-  const Scene& s = ctx.scene;
-  ctx.progress("Fig. 4: ensemble");
-  const double h = s.real("h"), t_end = s.real("t_end");
-  const std::int64_t samples = s.integer("samples");
-  const auto M = static_cast<std::size_t>(s.integer("ensemble.size"));
-  const std::int64_t n4 = steps_to(t_end, h), every4 = std::max<std::int64_t>(1, n4 / samples);
-  const auto time_of = [&](std::size_t k) { return static_cast<double>(k) * static_cast<double>(every4) * h; };
-  std::vector<Z2> starts(M);
-  for (std::size_t i = 0; i < M; ++i) starts[i] = ensemble_start(s, hhk, i);
-  const auto t0 = std::chrono::steady_clock::now();  // (on --resume: the part run since)
-  const auto lanes = simplified_ti_lanes_kernels<HH>().front().steps;  // (bit for bit the scalar method)
-  auto series = concatenate(checkpointed_map<std::vector<std::vector<double>>>(
-      ctx, {"ensemble", kEnsembleKeys}, lane_batches(M), [&](std::size_t b) {
-        const LaneBatch batch = lane_batch(b, M);
-        std::vector<std::vector<double>> e(batch.count);
-        std::vector<double> E0;
-        for (std::size_t i = 0; i < batch.count; ++i) E0.push_back(simplified_ti_modified_energy(hhk, starts[batch.first + i], h));
-        simplified_ti_lanes(hhk, lanes, std::span<const Z2>(starts).subspan(batch.first, batch.count), h, n4, every4,
-                            [&](int i, std::int64_t, const Z2& z) { e[i].push_back(simplified_ti_modified_energy(hhk, z, h) - E0[i]); });
-        return e;
-      }));
-  const double wall4 = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  for (std::size_t i = 0; i < M; ++i)
-    for (std::size_t k = 0; k < series[i].size(); ++k)
-      if (!std::isfinite(series[i][k]))
-        throw NumericalFailure("simplified_takahashi_imada: E of trajectory " + std::to_string(i) +
-                               " is not finite at step " + std::to_string(static_cast<std::int64_t>(k) * every4) +
-                               ", t = " + format_double(time_of(k)));
-  const std::size_t ns = series[0].size();
-  return {h, t_end, M, n4, every4, std::move(starts), std::move(series), ns, wall4};
+std::vector<std::vector<double>> batch_errors(const HH& hhk, const std::vector<Z2>& starts, std::size_t b, double h,
+                                              std::int64_t n, std::int64_t every) {
+  const LaneBatch batch = lane_batch(b, starts.size());
+  std::vector<std::vector<double>> e(batch.count);
+  std::vector<double> E0;
+  for (std::size_t i = 0; i < batch.count; ++i) E0.push_back(simplified_ti_modified_energy(hhk, starts[batch.first + i], h));
+  simplified_ti_lanes(hhk, simplified_ti_lanes_kernels<HH>().front().steps,
+                      std::span<const Z2>(starts).subspan(batch.first, batch.count), h, n, every,
+                      [&](int i, std::int64_t, const Z2& z) { e[i].push_back(simplified_ti_modified_energy(hhk, z, h) - E0[i]); });
+  return e;
 }
 
 // Fig. 4: the mean and standard deviation over the ensemble at each output time (fig4_stats.csv).
@@ -115,9 +96,8 @@ Outliers write_trajectories(Context& ctx, const Run& run, Value& reproduced) {
   return {outliers, kept, stride};
 }
 
-  // The statistics without the outliers, at the times of fig4_trajectories.csv.
-template <class HH>
-Value ensemble_summary(const Context& ctx, const HH& hhk, const Run& run, const Stats& st, const Outliers& out) {
+// The statistics without the outliers, at the times of fig4_trajectories.csv; p1: of the unperturbed start.
+Value ensemble_summary(const Context& ctx, double p1, const Run& run, const Stats& st, const Outliers& out) {
   const Scene& s = ctx.scene;
   const std::vector<double>& ts = st.ts;
   const std::vector<double>& mus = st.mus;
@@ -131,7 +111,7 @@ Value ensemble_summary(const Context& ctx, const HH& hhk, const Run& run, const 
   const double t_fit = fit_t_min(s, "ensemble", t_end);
   const std::int64_t n4 = run.n4;
   const auto time_of = [&](std::size_t k) { return run.time_of(k); };
-  Value ensemble = {{"p1", hhk.start(s.real("hh3.q2"), s.real("hh3.p2"), s.real("hh.H0")).p[0]},  // unperturbed
+  Value ensemble = {{"p1", p1},
                     {"steps", n4},
                     {"sample_dt", time_of(1)},
                     {"thinned_dt", time_of(stride)},
@@ -177,13 +157,17 @@ Value ensemble_summary(const Context& ctx, const HH& hhk, const Run& run, const 
   return ensemble;
 }
 
-template <class HH>
-void ensemble_with(Context& ctx, const HH& hhk, LargestError& largest) {
-  const Run run = integrate_with(ctx, hhk);
+void run_ensemble(Context& ctx, LargestError& largest) {
+  put_trajectory_method(ctx, "ensemble");
+  const Scene& s = ctx.scene;
+  const Run run = integrate_ensemble(ctx);
   Value reproduced;
   const Stats stats = write_stats(ctx, run, reproduced);
   const Outliers out = write_trajectories(ctx, run, reproduced);
-  const Value ensemble = ensemble_summary(ctx, hhk, run, stats, out);
+  const double p1 = with_ensemble_system(s, [&](const auto& hhk) {  // of the unperturbed start
+    return hhk.start(s.real("hh3.q2"), s.real("hh3.p2"), s.real("hh.H0")).p[0];
+  });
+  const Value ensemble = ensemble_summary(ctx, p1, run, stats, out);
   merge(ctx.summary, "reproduced", reproduced);
   ctx.summary["ensemble"] = ensemble;
   largest = trajectory_of(run, largest_error(run));  // (Fig. 5: the poincare study of this process)
@@ -206,11 +190,6 @@ void ensemble_with(Context& ctx, const HH& hhk, LargestError& largest) {
         1e9 * wall4 * ctx.threads / (static_cast<double>(M) * static_cast<double>(n4))}});
 }
 
-void run_ensemble(Context& ctx, LargestError& largest) {
-  put_trajectory_method(ctx, "ensemble");
-  with_ensemble_system(ctx.scene, [&](const auto& hhk) { ensemble_with(ctx, hhk, largest); });
-}
-
 StudyPlan plan_ensemble(const Scene& s) {
   const double n = s.real("t_end") / s.real("h"), M = static_cast<double>(s.integer("ensemble.size"));
   const double rows = kept_samples(n, static_cast<double>(s.integer("samples")));
@@ -223,7 +202,31 @@ StudyPlan plan_ensemble(const Scene& s) {
 }  // namespace
 
 Run integrate_ensemble(Context& ctx) {
-  return with_ensemble_system(ctx.scene, [&](const auto& hhk) { return integrate_with(ctx, hhk); });
+  const Scene& s = ctx.scene;
+  ctx.progress("Fig. 4: ensemble");
+  const double h = s.real("h"), t_end = s.real("t_end");
+  const std::int64_t samples = s.integer("samples");
+  const auto M = static_cast<std::size_t>(s.integer("ensemble.size"));
+  const std::int64_t n4 = steps_to(t_end, h), every4 = std::max<std::int64_t>(1, n4 / samples);
+  const auto time_of = [&](std::size_t k) { return static_cast<double>(k) * static_cast<double>(every4) * h; };
+  std::vector<Z2> starts(M);
+  with_ensemble_system(s, [&](const auto& hhk) {
+    for (std::size_t i = 0; i < M; ++i) starts[i] = ensemble_start(s, hhk, i);
+  });
+  const auto t0 = std::chrono::steady_clock::now();  // (on --resume: the part run since)
+  auto series = concatenate(checkpointed_map<std::vector<std::vector<double>>>(
+      ctx, {"ensemble", kEnsembleKeys}, lane_batches(M), [&](std::size_t b) {
+        return with_ensemble_system(s, [&](const auto& hhk) { return batch_errors(hhk, starts, b, h, n4, every4); });
+      }));
+  const double wall4 = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  for (std::size_t i = 0; i < M; ++i)
+    for (std::size_t k = 0; k < series[i].size(); ++k)
+      if (!std::isfinite(series[i][k]))
+        throw NumericalFailure("simplified_takahashi_imada: E of trajectory " + std::to_string(i) +
+                               " is not finite at step " + std::to_string(static_cast<std::int64_t>(k) * every4) +
+                               ", t = " + format_double(time_of(k)));
+  const std::size_t ns = series[0].size();
+  return {h, t_end, M, n4, every4, std::move(starts), std::move(series), ns, wall4};
 }
 
 void check_ensemble_run(const Scene& s) {

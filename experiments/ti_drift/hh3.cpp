@@ -7,8 +7,7 @@
 #include <vector>
 
 #include "geomint/core/integrate.hpp"
-#include "geomint/integrators/takahashi_imada.hpp"
-#include "geomint/observables/modified_energy.hpp"
+#include "geomint/integrators/takahashi_imada_systems.hpp"
 #include "geomint/runner/fits.hpp"
 #include "ti_drift.hpp"
 
@@ -28,7 +27,7 @@ void run_hh3(Context& ctx) {
   Csv f3({"t", "E_err", "H_err"});
   std::vector<double> ts, es;
   double worst = 0, worst_H = 0;
-  integrate(simplified_ti_method(hh, false), start, h, n, [&](std::int64_t j, const Z2& z) {
+  simplified_ti_integrate(hh, start, h, n, [&](std::int64_t j, const Z2& z) {
     if (j % every) return;
     const double t = static_cast<double>(j) * h, e = simplified_ti_modified_energy(hh, z, h) - E0;
     if (!std::isfinite(e))

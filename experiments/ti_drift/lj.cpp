@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "geomint/core/integrate.hpp"
-#include "geomint/integrators/takahashi_imada_lj.hpp"
+#include "geomint/integrators/takahashi_imada_systems.hpp"
 #include "geomint/observables/ensemble_statistics.hpp"
 #include "geomint/observables/stiffness.hpp"
 #include "geomint/runner/checkpoint.hpp"
@@ -47,13 +47,12 @@ Scan scan_steps(Context& ctx, const LJ& lj, Value& reproduced) {
     const double Hs = lj.H(start);
     double worst = 0;
     std::int64_t diverged = -1;
-    integrate(simplified_ti_method(lj, false), start, hh, steps_to(s.real("lj.scan_t"), hh),
-                        [&](std::int64_t j, const Z18& z) {
-                          if (diverged >= 0) return;
-                          const double e = std::abs(lj.H(z) - Hs);
-                          if (!(e <= s.real("lj.blowup"))) diverged = j;
-                          else worst = std::max(worst, e);
-                        });
+    simplified_ti_integrate(lj, start, hh, steps_to(s.real("lj.scan_t"), hh), [&](std::int64_t j, const Z18& z) {
+      if (diverged >= 0) return;
+      const double e = std::abs(lj.H(z) - Hs);
+      if (!(e <= s.real("lj.blowup"))) diverged = j;
+      else worst = std::max(worst, e);
+    });
     return std::pair{worst, diverged};
   });
   // The stiffness omega_max^2 (largest eigenvalue of the Hessian): at the grid, at the starts of the
@@ -62,10 +61,9 @@ Scan scan_steps(Context& ctx, const LJ& lj, Value& reproduced) {
   const double grid_stiffness = lj_grid_stiffness();
   const auto along = distributed_map(scan_size, [&](std::size_t i) {
     double largest = 0;
-    integrate(simplified_ti_method(lj, false), lj_start_of(s, i), hl, steps_to(s.real("lj.scan_t"), hl),
-              [&](std::int64_t j, const Z18& z) {
-                if (j % kStiffnessEvery == 0) largest = std::max(largest, max_hessian_eigenvalue(lj, z.q));
-              });
+    simplified_ti_integrate(lj, lj_start_of(s, i), hl, steps_to(s.real("lj.scan_t"), hl), [&](std::int64_t j, const Z18& z) {
+      if (j % kStiffnessEvery == 0) largest = std::max(largest, max_hessian_eigenvalue(lj, z.q));
+    });
     return largest;
   });
   const auto [along_lo, along_hi] = std::minmax_element(along.begin(), along.end());

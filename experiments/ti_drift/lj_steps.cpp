@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "geomint/core/integrate.hpp"
-#include "geomint/integrators/takahashi_imada_lj.hpp"
+#include "geomint/integrators/takahashi_imada_systems.hpp"
 #include "geomint/observables/ensemble_statistics.hpp"
 #include "geomint/observables/linear_fit.hpp"
 #include "geomint/observables/modified_energy.hpp"

@@ -17,8 +17,7 @@
 #include "geomint/analysis/growth_episodes.hpp"
 #include "geomint/analysis/poincare.hpp"
 #include "geomint/core/integrate.hpp"
-#include "geomint/integrators/takahashi_imada.hpp"
-#include "geomint/observables/modified_energy.hpp"
+#include "geomint/integrators/takahashi_imada_systems.hpp"
 #include "geomint/sweep/ensemble_kernels.hpp"
 #include "ti_drift.hpp"
 
@@ -117,7 +116,7 @@ Crossings cut_trajectory(Context& ctx, const HH& hhk, const Trajectory& run, con
   std::vector<std::int64_t> ep_steps(episodes.size() + 1, 0), ep_steps_negative(episodes.size() + 1, 0);
   Csv f5c({"episode", "sign", "t", "q2", "p2"});
   Z2 prev = run.start;
-  integrate(simplified_ti_method(hhk, false), run.start, h, n4, [&](std::int64_t j, const Z2& z) {
+  simplified_ti_integrate(hhk, run.start, h, n4, [&](std::int64_t j, const Z2& z) {
     const double t = static_cast<double>(j) * h;
     const std::size_t k_prev = j > 0 ? static_cast<std::size_t>((j - 1) / every4) : 0;
     const int ep = k_prev < ns ? episode_of[k_prev] : -1;

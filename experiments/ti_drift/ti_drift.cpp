@@ -9,7 +9,7 @@
 
 #include "geomint/methods/by_name.hpp"
 #include "geomint/methods/scene_methods.hpp"
-#include "geomint/integrators/takahashi_imada.hpp"
+#include "geomint/integrators/takahashi_imada_systems.hpp"
 #include "geomint/observables/linear_fit.hpp"
 #include "geomint/observables/stiffness.hpp"
 #include "geomint/runner/summary.hpp"

@@ -7,6 +7,7 @@
 #include <limits>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 namespace geomint {
 
@@ -40,6 +41,15 @@ OrderFit fit_order(std::span<const double> h, std::span<const double> err, doubl
 Value to_value(const OrderFit& f) {
   return {{"order", f.order}, {"log10_c", f.log10_c}, {"r2", f.r2}, {"points", f.points},
           {"h_min", f.h_min}, {"h_max", f.h_max}};
+}
+
+double local_order(std::span<const double> h, std::span<const double> err) {
+  std::vector<std::pair<double, double>> pts;
+  for (std::size_t i = 0; i < h.size(); ++i)
+    if (h[i] > 0 && err[i] > 0 && std::isfinite(h[i]) && std::isfinite(err[i])) pts.emplace_back(h[i], err[i]);
+  std::sort(pts.begin(), pts.end());
+  if (pts.size() < 2 || pts[0].first == pts[1].first) return std::nan("");
+  return std::log(pts[1].second / pts[0].second) / std::log(pts[1].first / pts[0].first);
 }
 
 }  // namespace geomint

@@ -28,6 +28,11 @@ inline double roundoff_floor(double scale = 1.0) { return 1e3 * std::numeric_lim
 OrderFit fit_order(std::span<const double> h, std::span<const double> err, double min_err,
                   const char* what = "fit_order");
 
+// The local order between the two smallest step sizes with a finite positive error: the slope of log(err)
+// against log(h) there (NaN with fewer than two such distinct h). The end of the asymptotic range, where
+// a fit over a window would mix in the larger steps.
+double local_order(std::span<const double> h, std::span<const double> err);
+
 // The fit as summary.json reports it: order, log10_c, r2, points, h_min, h_max.
 Value to_value(const OrderFit& f);
 

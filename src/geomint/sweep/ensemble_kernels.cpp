@@ -22,8 +22,37 @@ std::vector<LanesKernel<Sys>> simplified_ti_lanes_kernels() {
   return k;
 }
 
-template std::vector<LanesKernel<LennardJones<9>>> simplified_ti_lanes_kernels();
-template std::vector<LanesKernel<HenonHeilesT<true>>> simplified_ti_lanes_kernels();
-template std::vector<LanesKernel<HenonHeilesT<false>>> simplified_ti_lanes_kernels();
+template <class Sys>
+std::vector<typename Sys::State> simplified_ti_lanes(const Sys& sys, LanesSteps<Sys> steps,
+                                                    std::span<const typename Sys::State> starts, double h,
+                                                    std::int64_t n, std::int64_t every, const LanesObserver<Sys>& observe) {
+  constexpr int D = Sys::State::dof;
+  const auto method = simplified_ti_method(sys, false);
+  const int used = static_cast<int>(std::min<std::size_t>(starts.size(), kEnsembleLanes));
+  KickLanes<D> lanes;
+  for (int i = 0; i < kEnsembleLanes; ++i) lanes.set(i, method.pre(starts[i < used ? i : 0], h));
+  const auto observe_all = [&](std::int64_t j) {
+    for (int i = 0; i < used; ++i) observe(i, j, lanes.get(i).z);
+  };
+  observe_all(0);
+  for (std::int64_t j = 0; j < n;) {
+    const std::int64_t next = std::min(n, (j / every + 1) * every);
+    steps(sys, h, takahashi_imada_alpha, lanes, next - j);
+    j = next;
+    if (j % every == 0) observe_all(j);
+  }
+  std::vector<typename Sys::State> out;
+  for (int i = 0; i < used; ++i) out.push_back(lanes.get(i).z);
+  return out;
+}
+
+#define GEOMINT_LANES_ON(Sys)                                                                                  \
+  template std::vector<LanesKernel<Sys>> simplified_ti_lanes_kernels();                                       \
+  template std::vector<Sys::State> simplified_ti_lanes(const Sys&, LanesSteps<Sys>, std::span<const Sys::State>, \
+                                                       double, std::int64_t, std::int64_t, const LanesObserver<Sys>&);
+GEOMINT_LANES_ON(LennardJones<9>)
+GEOMINT_LANES_ON(HenonHeilesT<true>)
+GEOMINT_LANES_ON(HenonHeilesT<false>)
+#undef GEOMINT_LANES_ON
 
 }  // namespace geomint

@@ -12,6 +12,7 @@
 // AVX-512), chosen at run time by CPU detection, as for the energy map.
 #include <algorithm>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <string>
 #include <vector>
@@ -57,34 +58,19 @@ struct LanesKernel {
 template <class Sys>
 std::vector<LanesKernel<Sys>> simplified_ti_lanes_kernels();
 
+// observe(i, j, z): trajectory i (of a batch) is z at step j.
+template <class Sys>
+using LanesObserver = std::function<void(int i, std::int64_t j, const typename Sys::State& z)>;
+
 // Integrates the trajectories from `starts` (at most kEnsembleLanes; a shorter batch fills its other
 // lanes with the first start) by (1.6), unprocessed, at step h for n steps with the kernel `steps`,
 // and calls observe(i, j, z) for trajectory i at every step j <= n that is a multiple of `every`
 // (j = 0 included), as integrate(simplified_ti_method(sys, false), ...) would for the same z.
-// Returns the states at step n.
-template <class Sys, class Observe>
+// Returns the states at step n. (Compiled once, ensemble_kernels.cpp, for the systems above.)
+template <class Sys>
 std::vector<typename Sys::State> simplified_ti_lanes(const Sys& sys, LanesSteps<Sys> steps,
                                                     std::span<const typename Sys::State> starts, double h,
-                                                    std::int64_t n, std::int64_t every, Observe&& observe) {
-  constexpr int D = Sys::State::dof;
-  const auto method = simplified_ti_method(sys, false);
-  const int used = static_cast<int>(std::min<std::size_t>(starts.size(), kEnsembleLanes));
-  KickLanes<D> lanes;
-  for (int i = 0; i < kEnsembleLanes; ++i) lanes.set(i, method.pre(starts[i < used ? i : 0], h));
-  const auto observe_all = [&](std::int64_t j) {
-    for (int i = 0; i < used; ++i) observe(i, j, lanes.get(i).z);
-  };
-  observe_all(0);
-  for (std::int64_t j = 0; j < n;) {
-    const std::int64_t next = std::min(n, (j / every + 1) * every);
-    steps(sys, h, takahashi_imada_alpha, lanes, next - j);
-    j = next;
-    if (j % every == 0) observe_all(j);
-  }
-  std::vector<typename Sys::State> out;
-  for (int i = 0; i < used; ++i) out.push_back(lanes.get(i).z);
-  return out;
-}
+                                                    std::int64_t n, std::int64_t every, const LanesObserver<Sys>& observe);
 
 // The trajectories 0..M-1 of an ensemble in batches of kEnsembleLanes (the tasks of its sweep):
 // batch b holds trajectories first..first + count.
