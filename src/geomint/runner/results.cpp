@@ -27,6 +27,10 @@ Value::Value(const std::vector<std::string>& v) : kind_(Kind::list) {
 
 Value::Value(const std::vector<Value>& v) : kind_(Kind::list), items_(v) {}
 
+Value::Value(const char* s) : kind_(Kind::text), s_(s) {}
+Value::Value(std::string s) : kind_(Kind::text), s_(std::move(s)) {}
+Value::Value(std::string_view s) : kind_(Kind::text), s_(s) {}
+
 Value::Value(std::initializer_list<Field> fields) : kind_(Kind::record) {
   for (const Field& f : fields) (*this)[f.key] = f.value;
 }

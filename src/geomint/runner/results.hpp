@@ -37,9 +37,9 @@ class Value {
   Value(unsigned long v) : Value(static_cast<unsigned long long>(v)) {}
   Value(unsigned long long v) : kind_(Kind::unsigned_integer), u_(v) {}
   Value(double v) : kind_(Kind::real), d_(v) {}
-  Value(const char* s) : kind_(Kind::text), s_(s) {}
-  Value(std::string s) : kind_(Kind::text), s_(std::move(s)) {}
-  Value(std::string_view s) : kind_(Kind::text), s_(s) {}
+  Value(const char* s);  // (the texts too in results.cpp)
+  Value(std::string s);
+  Value(std::string_view s);
   Value(const std::optional<double>& v);        // the number, or null where there is none
   Value(const std::vector<double>& v);          // a list of numbers
   Value(const std::vector<std::string>& v);     // a list of texts
@@ -89,7 +89,7 @@ class Value {
 };
 
 struct Value::Field {
-  std::string key;
+  std::string_view key;  // (copied by the record: a temporary key lives as long as the braces)
   Value value;
 };
 
