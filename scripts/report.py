@@ -49,7 +49,7 @@ from xml.etree import ElementTree
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 from paper_runs import why_not_paper_run  # noqa: E402
-from report_tables import comparisons_tex, figure_comparisons_tex, method_names_tex, methods_tex  # noqa: E402
+from report_tables import comparisons_tex, figure_comparisons_tex, method_names_tex, methods_tex, rule_text  # noqa: E402
 from tex_format import FORMATS, code, is_number, key_text, longtable, number, prose, quote_tex, tex_escape, value_text  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
@@ -454,7 +454,7 @@ def quick_tex(tests, quick_root):
         summary = pathlib.Path(quick_root) / run_id / "summary.json"
         comparisons = json.loads(summary.read_text(encoding="utf-8")).get("comparisons", {}) if summary.is_file() else {}
         for key, c in comparisons.items():
-            band = ", ".join(f"{k} {v:g}" for k, v in (c.get("compare") or {}).items()) or "--"
+            band = rule_text(c) or "--"
             out.append(f"{code(key)} & {value_text(c.get('published'))} & "
                        f"{value_text(c.get('reproduced'))} & {tex_escape(band)} & {tex_escape(c['verdict'])}\\\\")
     out += [r"\bottomrule", r"\end{longtable}}"]

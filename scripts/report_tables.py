@@ -14,8 +14,17 @@ COMPARISON_HEAD = [r"\toprule quantity & where published & published & reproduce
 
 
 def rule_text(c):
-    """A comparison's tolerance as published.toml gives it ("rel 0.03", "abs 1e-13")."""
-    return ", ".join(f"{k} {v:g}" for k, v in (c.get("compare") or {}).items())
+    """A comparison's tolerance as published.toml gives it ("rel 0.03", "abs 1e-13", or from the printed digits:
+    "rel: the printed digits", half a unit in the last digit of each printed value)."""
+    return ", ".join(f"{k} {v:g}" if isinstance(v, (int, float)) else f"{k}: the {v} digits"
+                     for k, v in (c.get("compare") or {}).items())
+
+
+def roundoff_text(c):
+    """The entries of a table that measure round-off and are not compared ("not comparable (round-off) at 0.05")."""
+    at = c.get("roundoff") or []
+    return "not comparable (round-off) at " + ", ".join(f"{float(k):g}" if re.fullmatch(r"[-+\d.eE]+", k) else k
+                                                         for k in at) if at else ""
 
 
 def comparison_rows(comparisons):
@@ -25,6 +34,8 @@ def comparison_rows(comparisons):
     for key, c in comparisons.items():
         how = rule_text(c)
         verdict = c["verdict"] + (f" ({tex_escape(how)})" if how else "")
+        if roundoff_text(c) and c["verdict"] != "not comparable":  # (a table judged entry by entry)
+            verdict += "; " + tex_escape(roundoff_text(c))
         if c.get("expect", "reproduced") != "reproduced":
             verdict += r", expected: " + tex_escape(c["expect"])
         out.append(f"{code(key)} & {prose(c['where'])} & {value_text(c.get('published'))} & "
@@ -117,7 +128,8 @@ def comparison_grid(item, comparisons):
             order = orders[quantity][0]
             cells += [grid_cell(order["published"], "porder"), grid_cell(order.get("reproduced"), "order")]
         elif orders:
-            cells.append(rf"\multicolumn{{2}}{{c}}{{{tex_escape(rule_text(c))}}}")
+            at_roundoff = c.get("verdict") == "not comparable" and c.get("roundoff")  # (every entry round-off)
+            cells.append(rf"\multicolumn{{2}}{{c}}{{{tex_escape('round-off' if at_roundoff else rule_text(c))}}}")
         rows.append(" & ".join(cells) + r" \\")
     last = len(heads) - 1
     return "\n".join([f"% {item}: its comparisons as a grid, a row per quantity (scripts/report.py).",

@@ -66,18 +66,15 @@ void run_long_run(Context& ctx) {
   // in published.toml), and of |H_d - H_d(0)| with plain and with compensated summation (the round-off of (15)).
   merge(ctx.summary, "reproduced", {{"energy_growth_rate", growth_H}, {"energy_growth_rate_Hd", growth},
                                     {"energy_growth_rate_Hd_compensated", growth_comp}});
-  // Per step size (by index): the rates again, with the printed one; the largest H_d errors; and the growth rate of
-  // the same window maxima in exact arithmetic (the orbit of (13)-(14)), with what the drift of H_d explains of it.
-  const auto published = ctx.comparison(ctx.summary, "reproduced.energy_growth_rate");  // 001 Fig. 2, per h
-  Value rates = Value::list();
+  // Per step size (by index): the rates again; the largest H_d errors; the growth rate of the same window maxima in
+  // exact arithmetic (the orbit of (13)-(14)), with what the drift of H_d explains of it; and the printed rate.
+  Value rates = Value::list(), exact_by_h, roundoff_by_h;  // (the last two: published.toml's roundoff of Fig. 2)
   for (std::size_t i = 0; i < long_h.size(); ++i) {
     const double h = long_h[i];
     const Long& l = longs[i];
     Value r = {{"h", h}, {"steps_per_period", T / h}, {"H_rate", l.slope_H}, {"Hd_rate", l.slope_plain},
                {"Hd_rate_compensated", l.slope_comp}, {"Hd_err_max", *std::max_element(l.plain.begin(), l.plain.end())},
                {"Hd_err_max_compensated", *std::max_element(l.comp.begin(), l.comp.end())}};
-    if (const Value* rate = published ? published->at("published").find(format_double(h)) : nullptr)
-      r["published_rate"] = *rate;
     const auto exact = lobatto_exact_growth(h, osc.m, osc.w, A, s.real("long_run.periods"), windows);
     if (const auto orbit = lobatto_exact_orbit(h, osc.m, osc.w, A); exact && orbit) {
       r["exact_rate"] = exact->slope_per_period;
@@ -86,9 +83,14 @@ void run_long_run(Context& ctx) {
       r["periods_to_peak"] = Value(exact->periods_to_peak);  // (null: none)
       r["roundoff_in_H"] = orbit->H0 / orbit->Hd0 * std::abs(l.slope_plain);  // a drift of H_d seen in H
       r["Hd_drift_per_step"] = std::abs(l.slope_plain) * h / T / orbit->Hd0;  // relative, per step
+      exact_by_h[format_double(h)] = exact->slope_per_period, roundoff_by_h[format_double(h)] = r.at("roundoff_in_H");
     }
     rates.push_back(r);
   }
+  merge(ctx.summary, "reproduced", {{"energy_growth_rate_exact", exact_by_h}, {"energy_growth_rate_roundoff", roundoff_by_h}});
+  if (const auto published = ctx.comparison(ctx.summary, "reproduced.energy_growth_rate"))  // 001 Fig. 2, per h
+    for (std::size_t i = 0; i < long_h.size(); ++i)
+      if (const Value* rate = published->at("published").find(format_double(long_h[i]))) rates.at(i)["published_rate"] = *rate;
   ctx.summary["long_run"] = {{"window_periods", s.real("long_run.periods") / static_cast<double>(windows)}, {"rates", rates}};
 }
 

@@ -55,7 +55,8 @@ study = "long_run"
 value = { "0.1" = 3.0e-11, "0.05" = 5.0e-14 }
 where = "Fig. 2"
 summary = "reproduced.growth"
-compare = { abs = 1e-12 }
+compare = { abs = "printed" }
+roundoff = { floor = "reproduced.growth_floor", exact = "reproduced.growth_exact" }
 requires = { "long_run.periods" = 100000.0 }
 note = "round-off below h = 0.1"
 
@@ -122,20 +123,82 @@ TEST(Published, VerdictsByTolerance) {
 TEST(Published, ValueTablesMatchTheReproducedKeysByNumberOrName) {
   const auto e = read_published(published_file(kEntries));
   const json scene = {{"long_run", {{"periods", 100000}}}};
-  const json summary = {{"reproduced", {{"growth", {{"0.10000000000000001", 3.01e-11}, {"0.050000000000000003", -3e-13}}}}}};
+  // (its round-off floor and exact value by h, as the run writes them: at h = 0.05 the entry is round-off)
+  const auto with_floor = [](json summary) {
+    summary["reproduced"]["growth_floor"] = {{"0.10000000000000001", 1e-14}, {"0.050000000000000003", 3e-13}};
+    summary["reproduced"]["growth_exact"] = {{"0.10000000000000001", 3e-11}, {"0.050000000000000003", 1e-17}};
+    return summary;
+  };
+  const json summary =
+      with_floor({{"reproduced", {{"growth", {{"0.10000000000000001", 3.01e-11}, {"0.050000000000000003", -3e-13}}}}}});
   const auto c = compare_published(e[2], summary, scene, {"long_run"});
   ASSERT_TRUE(c);
   EXPECT_EQ((*c)["verdict"], "reproduced");
   EXPECT_EQ((*c)["published"]["0.10000000000000001"], 3.0e-11);  // keyed as the reproduced values
   EXPECT_EQ((*c)["note"], "round-off below h = 0.1");
-  const json far = {{"reproduced", {{"growth", {{"0.10000000000000001", 3.0e-11}, {"0.050000000000000003", 2e-12}}}}}};
+  const json far =
+      with_floor({{"reproduced", {{"growth", {{"0.10000000000000001", 3.06e-11}, {"0.050000000000000003", 2e-12}}}}}});
   EXPECT_EQ(verdict(e[2], far, scene), "differs");
   // A parameter the run did not compute is listed and left out; none computed: not computed.
-  const json partial = {{"reproduced", {{"growth", {{"0.10000000000000001", 3.0e-11}}}}}};
+  const json partial = with_floor({{"reproduced", {{"growth", {{"0.10000000000000001", 3.0e-11}}}}}});
   const auto p = compare_published(e[2], partial, scene, {"long_run"});
   EXPECT_EQ((*p)["verdict"], "reproduced");
   EXPECT_EQ((*p)["not_computed"], json::array({"0.05"}));
   EXPECT_EQ(verdict(e[2], {{"reproduced", {{"growth", json::object()}}}}, scene), "not computed");
+}
+
+TEST(Published, PrintedDigitsGiveHalfAUnitInTheLast) {
+  EXPECT_DOUBLE_EQ(half_unit_in_last_digit("2.50e-11"), 5e-14);
+  EXPECT_DOUBLE_EQ(half_unit_in_last_digit("0.603"), 5e-4);
+  EXPECT_DOUBLE_EQ(half_unit_in_last_digit("6"), 0.5);
+  EXPECT_DOUBLE_EQ(half_unit_in_last_digit("-3.0E2"), 5.0);
+  EXPECT_DOUBLE_EQ(half_unit_in_last_digit("1_000.5"), 0.05);
+}
+
+// A tolerance from the printed digits is the rounding of each printed value; an entry whose value in exact
+// arithmetic lies below the run's round-off floor is not comparable, the others are judged (001 Fig. 2).
+TEST(Published, ToleranceFromThePrintedDigitsAndEntriesAtRoundOff) {
+  const auto e = read_published(published_file(R"(
+[growth]
+study = "long_run"
+value = { "0.1" = 2.50e-11, "0.05" = 5.45e-14 }
+where = "Fig. 2"
+summary = "reproduced.growth"
+compare = { abs = "printed" }
+roundoff = { floor = "reproduced.floor", exact = "reproduced.exact" }
+)"));
+  const auto run = [&](double at_01, double exact_005) {
+    const json summary = {{"reproduced", {{"growth", {{"0.1", at_01}, {"0.05", -3.1e-13}}},
+                                          {"floor", {{"0.1", 1.5e-14}, {"0.05", 3.1e-13}}},
+                                          {"exact", {{"0.1", 2.5e-11}, {"0.05", exact_005}}}}}};
+    return *compare_published(e[0], summary, json::object(), {"long_run"});
+  };
+  EXPECT_EQ(run(2.5049e-11, 1e-17)["verdict"], "reproduced");  // within 5e-14 of 2.50e-11
+  EXPECT_EQ(run(2.5049e-11, 1e-17)["roundoff"], json::array({"0.05"}));
+  EXPECT_EQ(run(2.5051e-11, 1e-17)["verdict"], "differs");     // rounds to 2.51e-11
+  EXPECT_EQ(run(2.5049e-11, 1e-12)["verdict"], "differs");     // 0.05 comparable: -3.1e-13 against 5.45e-14
+  const auto all = read_published(published_file(R"(
+[Hd]
+study = "table1"
+value = { "10" = 2.66e-15 }
+where = "Table 1"
+summary = "reproduced.Hd"
+compare = { abs = "printed" }
+roundoff = { floor = "reproduced.floor" }
+)"));
+  const json summary = {{"reproduced", {{"Hd", {{"10", 1.4e-14}}}, {"floor", {{"10", 1e-11}}}}}};
+  EXPECT_EQ((*compare_published(all[0], summary, json::object(), {"table1"}))["verdict"], "not comparable");
+}
+
+TEST(Published, ATypedToleranceNotSmallerThanItsValueIsRefused) {
+  EXPECT_NE(error_of(R"(
+[growth]
+study = "long_run"
+value = { "0.1" = 2.5e-11, "0.05" = 5.45e-14 }
+where = "Fig. 2"
+summary = "reproduced.growth"
+compare = { abs = 1e-12 }
+)").find("is not smaller than the value 5.45e-14"), std::string::npos);
 }
 
 TEST(Published, OtherSceneParametersAreNotComparable) {

@@ -114,7 +114,7 @@ std::optional<Value> Context::comparison(const Value& partial, const std::string
   for (const Published& e : published_entries) {
     if (e.summary != summary_key) continue;
     auto c = compare_published(e, j, scene.to_json(), {e.study});
-    if (c && c->contains("difference")) return value_of(*c);
+    if (c && (c->contains("difference") || c->contains("roundoff"))) return value_of(*c);  // (judged, or round-off)
   }
   return std::nullopt;
 }

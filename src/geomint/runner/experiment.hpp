@@ -64,7 +64,7 @@ class Context {
   double published_requirement(const std::string& key, const std::string& scene_key) const;
   // The comparison the runner will make (runner/published.hpp) of the entry whose reproduced value is
   // at `summary_key` of `partial` (the summary, or a study's part of it), for a study's own text;
-  // nullopt if there is none or if this scene cannot make it (no difference).
+  // nullopt if there is none or if this scene cannot make it (no difference, no entry at round-off).
   std::optional<Value> comparison(const Value& partial, const std::string& summary_key) const;
   // Progress on stderr: on a terminal every call, otherwise at most one line every 10 s.
   void progress(std::string_view what) const;

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
+#include <fstream>
+#include <map>
 #include <string_view>
 
 #include <toml++/toml.h>
@@ -18,7 +20,7 @@ namespace {
 using json = nlohmann::ordered_json;
 
 const std::vector<std::string> kFields = {"study", "figure", "value", "where", "summary", "compare", "requires", "expect",
-                                          "note", "test", "kind", "chosen", "quotes"};
+                                          "note", "test", "kind", "chosen", "quotes", "roundoff"};
 const std::vector<std::string> kKinds = {"printed", "scanning", "authors_code", "convention", "sample"};
 
 bool is_claim(const std::string& compare) { return compare == "above" || compare == "below"; }
@@ -74,6 +76,16 @@ double difference(const std::string& compare, double published, double reproduce
 
 }  // namespace
 
+double half_unit_in_last_digit(std::string literal) {
+  literal.erase(std::remove(literal.begin(), literal.end(), '_'), literal.end());
+  const std::size_t e = literal.find_first_of("eE");
+  const std::string mantissa = literal.substr(0, e);
+  const int exponent = e == std::string::npos ? 0 : std::stoi(literal.substr(e + 1));
+  const std::size_t dot = mantissa.find('.');
+  const int decimals = dot == std::string::npos ? 0 : static_cast<int>(mantissa.size() - dot - 1);
+  return 0.5 * std::pow(10.0, exponent - decimals);
+}
+
 const json* json_at(const json& j, const std::string& dotted) {
   const json* node = &j;
   std::string_view rest = dotted;
@@ -104,6 +116,18 @@ std::vector<Published> read_published(const std::filesystem::path& file) {
     throw PublishedError(file.string() + ":" + std::to_string(err.source().begin.line) + ": not valid TOML: " +
                          std::string(err.description()));
   }
+  std::vector<std::string> lines;  // (the values' literals, for a tolerance from the printed digits)
+  {
+    std::ifstream in(file);
+    for (std::string l; std::getline(in, l);) lines.push_back(l);
+  }
+  // The literal of a number as written in the file (toml++'s source region of its node).
+  const auto literal_of = [&](const toml::node& n, const std::string& key) {
+    const auto& r = n.source();
+    if (r.begin.line == 0 || r.begin.line != r.end.line || r.begin.line > lines.size() || r.end.column <= r.begin.column)
+      fail(file, key, "the printed digits of a value could not be read from the file");
+    return lines[r.begin.line - 1].substr(r.begin.column - 1, r.end.column - r.begin.column);
+  };
   std::vector<std::pair<std::uint32_t, Published>> by_line;  // (toml++ iterates a table by key)
   for (const auto& [k, node] : doc) {
     const std::string key(k.str());
@@ -172,11 +196,25 @@ std::vector<Published> read_published(const std::filesystem::path& file) {
       if (!ct || ct->size() != 1) fail(file, key, forms);
       const auto first = ct->cbegin();
       p.compare = std::string(first->first.str());
-      const auto tv = first->second.value<double>();
+      const bool printed = (p.compare == "rel" || p.compare == "abs") && first->second.value<std::string>() == "printed";
+      const auto tv = printed ? std::optional<double>(0.0) : first->second.value<double>();
       if ((p.compare != "rel" && p.compare != "abs" && p.compare != "order" && !claim) || !tv || !std::isfinite(*tv) ||
           (!claim && !(*tv >= 0)))
         fail(file, key, forms);
       p.tolerance = *tv;
+      if (printed) {  // half a unit in the last printed digit of each value (relative: of that value)
+        p.tolerance_origin = "printed";
+        const auto of = [&](const toml::node& n, double v) {
+          const double half = half_unit_in_last_digit(literal_of(n, key));
+          return p.compare == "rel" ? half / std::abs(v) : half;
+        };
+        if (const auto* vt = value.as_table()) {
+          p.tolerances = json::object();
+          for (const auto& [param, v] : *vt) p.tolerances[std::string(param.str())] = of(v, *v.value<double>());
+        } else {
+          p.tolerances = of(*value.node(), *value.value<double>());
+        }
+      }
       if (claim) p.value = std::string(p.compare == "above" ? "> " : "< ") + json(*tv).dump();
       const auto numeric = [](const json& v) { return v.is_number(); };
       if (!claim && !(p.value.is_number() ||
@@ -185,6 +223,20 @@ std::vector<Published> read_published(const std::filesystem::path& file) {
       if (p.compare == "rel" && p.value.is_number() && p.value.get<double>() == 0.0)
         fail(file, key, "a relative comparison needs a published value != 0 (use abs)");
     }
+    if (const auto r = (*t)["roundoff"]) {
+      const auto* rt = r.as_table();
+      if (!rt || !(*rt)["floor"].is_string() || rt->size() > 2 || (rt->size() == 2 && !(*rt)["exact"].is_string()))
+        fail(file, key, "roundoff is { floor = \"summary path\" } or { floor = \"...\", exact = \"...\" }");
+      p.roundoff_floor = *(*rt)["floor"].value<std::string>();
+      if (rt->size() == 2) p.roundoff_exact = *(*rt)["exact"].value<std::string>();
+    }
+    // A typed absolute tolerance judges a printed value only if it is smaller than it (else the value is
+    // round-off for this comparison: declare roundoff, or derive the tolerance from the printed digits).
+    if (p.compare == "abs" && p.tolerance_origin == "typed" && p.roundoff_floor.empty())
+      for (const json& v : p.value.is_object() ? std::vector<json>(p.value.begin(), p.value.end()) : std::vector<json>{p.value})
+        if (v.is_number() && v.get<double>() != 0.0 && !(p.tolerance < std::abs(v.get<double>())))
+          fail(file, key, "the absolute tolerance " + json(p.tolerance).dump() + " is not smaller than the value " +
+                              v.dump() + " it judges: derive it ({ abs = \"printed\" }) or declare the round-off floor");
     if (const auto r = (*t)["requires"]) {
       const auto* rt = r.as_table();
       if (!rt) fail(file, key, "requires is a table of scene keys and values");
@@ -205,7 +257,8 @@ std::optional<json> compare_published(const Published& e, const json& summary, c
   json c = {{"study", e.study}};
   if (!e.figure.empty()) c["figure"] = e.figure;
   c["where"] = e.where, c["published"] = e.value, c["reproduced"] = reproduced ? *reproduced : json(nullptr);
-  if (!e.compare.empty()) c["compare"] = {{e.compare, e.tolerance}};
+  if (!e.compare.empty()) c["compare"] = {{e.compare, e.tolerance_origin == "typed" ? json(e.tolerance) : json(e.tolerance_origin)}};
+  if (e.tolerance_origin != "typed") c["tolerances"] = e.tolerances;  // per value: half a unit in its last printed digit
   if (e.kind != "printed") c["kind"] = e.kind;
   if (!e.quotes.empty()) c["quotes"] = e.quotes;
   for (const auto& [key, printed] : e.chosen.items()) {
@@ -224,6 +277,7 @@ std::optional<json> compare_published(const Published& e, const json& summary, c
   // the reproduced values are: a name (a method's label) exactly, a number (e.g. h, written as %.17g)
   // by its value. A parameter the run did not compute (a method the scene does not name) is listed.
   std::vector<std::pair<std::string, std::pair<double, const json*>>> pairs;
+  std::map<std::string, std::string> printed_param;  // a value table's reproduced key -> its key in published.toml
   json missing = json::array();
   if (is_claim(e.compare) && reproduced) {  // the bound against the value, or every value of a table
     if (reproduced->is_object()) {
@@ -245,7 +299,7 @@ std::optional<json> compare_published(const Published& e, const json& summary, c
         }
       published[at] = v;
       if (!r) missing.push_back(param);
-      else if (v.is_number()) pairs.push_back({at, {v.get<double>(), r}});
+      else if (v.is_number()) pairs.push_back({at, {v.get<double>(), r}}), printed_param[at] = param;
     }
     c["published"] = published;
     if (!missing.empty() && reproduced) c["not_computed"] = missing;
@@ -262,6 +316,38 @@ std::optional<json> compare_published(const Published& e, const json& summary, c
   if (e.value.is_object() && missing.size() == e.value.size())
     return done("not computed", "this scene computes " + e.summary + " for none of the published parameters");
   if (e.compare.empty()) return done("reported", "");
+  // Entries that measure round-off (the run's floor of the quantity above its exact value, or above both
+  // values): not comparable, each; the others are compared.
+  json roundoff = json::array();
+  if (!e.roundoff_floor.empty()) {
+    const json* floor = json_at(summary, e.roundoff_floor);
+    const json* exact = e.roundoff_exact.empty() ? nullptr : json_at(summary, e.roundoff_exact);
+    if (!floor || (!e.roundoff_exact.empty() && !exact))
+      throw PublishedError("[" + e.key + "]: the run wrote no " + (floor ? e.roundoff_exact : e.roundoff_floor));
+    const auto at = [](const json* j, const std::string& param) {  // (keyed as the reproduced values)
+      const json* v = param.empty() ? j : j->is_object() && j->contains(param) ? &(*j)[param] : nullptr;
+      return v && v->is_number() ? v->get<double>() : std::nan("");
+    };
+    std::erase_if(pairs, [&](const std::pair<std::string, std::pair<double, const json*>>& pr) {
+      const auto& [param, values] = pr;
+      const double f = at(floor, param);
+      const bool is_roundoff = exact ? std::abs(at(exact, param)) <= f
+                                     : std::abs(values.first) <= f && values.second->is_number() &&
+                                           std::abs(values.second->get<double>()) <= f;
+      if (is_roundoff) roundoff.push_back(param);
+      return is_roundoff;
+    });
+    if (!roundoff.empty()) c["roundoff"] = roundoff;
+    if (pairs.empty())
+      return done("not comparable", "round-off: " + std::string(exact ? "the value in exact arithmetic lies"
+                                                                       : "the printed and the reproduced values lie") +
+                                        " at or below the run's round-off floor (" + e.roundoff_floor + ")");
+  }
+  const auto tolerance_at = [&](const std::string& param) {
+    if (e.tolerance_origin == "typed") return e.tolerance;
+    const json& t = param.empty() ? e.tolerances : e.tolerances.at(printed_param.at(param));
+    return t.get<double>();
+  };
   bool within = !pairs.empty();
   json diff = pairs.size() == 1 && pairs[0].first.empty() ? json() : json::object();
   for (const auto& [param, pr] : pairs) {
@@ -270,7 +356,7 @@ std::optional<json> compare_published(const Published& e, const json& summary, c
     const double r = rep->is_number() ? rep->get<double>() : std::nan("");
     const double d = is_claim(e.compare) ? r - pub : difference(e.compare, pub, r);  // (a claim: from its bound)
     within = within && std::isfinite(d) &&
-             (e.compare == "above" ? d > 0 : e.compare == "below" ? d < 0 : std::abs(d) <= e.tolerance);
+             (e.compare == "above" ? d > 0 : e.compare == "below" ? d < 0 : std::abs(d) <= tolerance_at(param));
     const json dj = std::isfinite(d) ? json(d) : json(nullptr);
     if (param.empty()) diff = dj;
     else diff[param] = dj;

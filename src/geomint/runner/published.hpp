@@ -13,6 +13,9 @@
 //   summary = "reproduced.p_err"          # the reproduced value in summary.json (dotted path; for a
 //                                         # table, an object with the parameters as keys)
 //   compare = { rel = 0.03 }              # or { abs = 1e-13 }, { order = 0.1 } (|difference| <= 0.1);
+//                                         # { rel = "printed" } or { abs = "printed" }: half a unit in the
+//                                         # last digit of each value as printed (its TOML literal: 2.50e-11
+//                                         # gives 5e-14, 0.603 gives 5e-4), the rounding of the print;
 //                                         # without compare the value is reported, not compared;
 //                                         # a printed qualitative claim ("the cuts lie in p2 < 0") is
 //                                         # { above = x } or { below = x }: the measured quantity
@@ -27,6 +30,12 @@
 //                                         # sample may differ without contradicting the paper)
 //   chosen = { "lj.h" = 0.2 }             # a parameter the reproduction sets otherwise than printed
 //                                         # (scene key = the printed value; the note says why)
+//   roundoff = { floor = "reproduced.x_roundoff", exact = "reproduced.x_exact" }
+//                                         # the run's round-off floor of the quantity and its value in exact
+//                                         # arithmetic (summary paths, keyed as the value table): an entry
+//                                         # whose exact value lies at or below the floor measures round-off,
+//                                         # printed and reproduced alike, and is "not comparable (round-off)"
+//                                         # (without exact: where printed and reproduced both lie at or below)
 //   requires = { "long_run.periods" = 100000.0 }   # scene values under which it is comparable
 //   expect = "differs"                    # a known discrepancy (default: "reproduced")
 //   note = "..."                          # why the reproduction differs, if it does
@@ -66,11 +75,17 @@ struct Published {
   nlohmann::ordered_json value;     // a number, or an object of numbers keyed by a parameter
   std::string compare;              // "rel", "abs", "order", "above", "below" (a claim) or "" (reported only)
   double tolerance = 0;             // (the bound of a claim)
+  std::string tolerance_origin = "typed";  // "typed" (the number in compare) or "printed" (the print's rounding)
+  nlohmann::ordered_json tolerances;       // "printed": per value (a number, or an object keyed as the value)
+  std::string roundoff_floor, roundoff_exact;  // summary paths of the round-off floor and the exact value
   std::string kind = "printed";     // "printed", "scanning", "authors_code", "convention" or "sample"
   nlohmann::ordered_json chosen = nlohmann::ordered_json::object();  // scene key -> the printed value
   nlohmann::ordered_json requires_ = nlohmann::ordered_json::object();  // dotted scene key -> value
   nlohmann::ordered_json quotes = nlohmann::ordered_json::array();  // [{"at", "text"}]: the paper's words, verbatim
 };
+
+// Half a unit in the last digit of a number as printed: "2.50e-11" -> 5e-14, "0.603" -> 5e-4, "6" -> 0.5.
+double half_unit_in_last_digit(std::string literal);
 
 // The entries of a published.toml, in file order; throws PublishedError naming the file and the entry.
 std::vector<Published> read_published(const std::filesystem::path& file);

@@ -55,13 +55,18 @@ Value printed_digits_agreement(const Context& ctx, const std::vector<std::string
     const auto c = ctx.comparison(ctx.summary, key);
     if (!c) continue;
     const Value &published = c->at("published"), &reproduced = c->at("reproduced");
-    const bool relative = c->at("compare").contains("rel");
-    if (!relative) roundoff.push_back({key.substr(key.rfind('.') + 1), {}});
+    const auto at_roundoff = [&](const std::string& at) {  // (an entry the comparison found at round-off)
+      const Value* r = c->find("roundoff");
+      for (std::size_t i = 0; r && i < r->size(); ++i)
+        if (r->at(i).text() == at) return true;
+      return false;
+    };
+    roundoff.push_back({key.substr(key.rfind('.') + 1), {}});
     for (std::size_t i = 0; i < published.size(); ++i) {
       const std::string& at = published.keys()[i];
       const double printed = published.at(i).number();
       if (!reproduced.contains(at)) continue;
-      if (!relative) {
+      if (at_roundoff(at)) {
         roundoff.back().second.push_back(printed);
       } else {
         ++compared, rounding += rounds_to_printed(printed, reproduced.at(at).number(), digits);

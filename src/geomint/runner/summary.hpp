@@ -26,9 +26,9 @@ Value h_range(const std::vector<double>& hs);
 class Context;
 // How the values at `keys` of the summary (each a record by a parameter, e.g. a mesh) meet the paper's values
 // printed with `digits` significant digits, through the comparisons the runner will make (Context::comparison).
-// Those compared relatively: "compared", how many "round_to_printed_digits", and the largest relative difference,
-// "max_relative_deviation". Those compared absolutely (round-off): the range of the printed values,
-// "<name>_range" (name: the key's last part). Keys without a comparison in this scene are left out.
+// Those compared (relatively): "compared", how many "round_to_printed_digits", and the largest relative difference,
+// "max_relative_deviation". Those at round-off (not comparable): the range of the printed values, "<name>_range"
+// (name: the key's last part). Keys without a comparison in this scene are left out.
 Value printed_digits_agreement(const Context& ctx, const std::vector<std::string>& keys, int digits);
 
 }  // namespace geomint
