@@ -286,6 +286,11 @@ def ledger_tex(runs, papers, tests):
                 comparisons = summary.get("comparisons") or {}
                 for key, ch in (f.get("chosen") or {}).items():
                     verdict += f" ({code(key)} = {value_text(ch.get('used'))}, printed {value_text(ch.get('printed'))})"
+                for what, co in (f.get("corrected") or {}).items():  # (what the printed one gives: its comparison)
+                    gives = comparisons.get(co["printed_gives"], {})
+                    verdict += (f" ({prose(what)} {prose(co['used'])}, printed {prose(co['printed'])}, "
+                                f"which gives {tex_escape(gives.get('verdict', '?'))}: "
+                                f"{value_text(gives.get('reproduced'))} against {value_text(gives.get('published'))})")
                 if f.get("unexpected"):
                     verdict += ": " + ", ".join(code(k) for k in f["unexpected"]) + " differ unexpectedly"
                 elif f.get("differs"):

@@ -333,12 +333,16 @@ TEST(Published, EachFigureHasOneVerdictFromItsOwnComparisons) {
       {"max_norm", comparison("000 Fig. 9", "reproduced")},
       {"eq12", comparison("001 Table 1", "differs")},
       {"other_scene", comparison("003 Fig. 5.3", "not comparable")},
+      {"rowlands", comparison("000 Fig. 4", "reproduced",
+                              {{"corrected", {{"what", "the coefficient of (32)-(33)"}, {"printed", "h^2/24"},
+                                              {"used", "h^2/12"}, {"printed_gives", "printed"}}}})},
   };
   const auto verdict_of = [&](const char* figure) { return figure_verdict(comparisons, figure)["verdict"]; };
   EXPECT_EQ(verdict_of("004 Fig. 4"), "reproduced");
   EXPECT_EQ(verdict_of("004 Fig. 5"), "partly reproduced");  // never Fig. 4's values
-  EXPECT_EQ(verdict_of("004 Fig. 6"), "reproduced with a chosen parameter");  // the text's erratum is not Fig. 6's
+  EXPECT_EQ(verdict_of("004 Fig. 6"), "reproduced with a corrected parameter");  // the text's erratum is not Fig. 6's
   EXPECT_EQ(verdict_of("000 Fig. 9"), "reproduced");          // a convention is listed, not judged
+  EXPECT_EQ(verdict_of("000 Fig. 4"), "reproduced with a corrected coefficient");  // one policy with Fig. 6's
   EXPECT_EQ(verdict_of("001 Table 1"), "differs");
   EXPECT_EQ(verdict_of("003 Fig. 5.3"), "not comparable");
   EXPECT_EQ(verdict_of("003 Fig. 5.1"), "no printed value");

@@ -20,7 +20,8 @@ namespace {
 using json = nlohmann::ordered_json;
 
 const std::vector<std::string> kFields = {"study", "figure", "value", "where", "summary", "compare", "requires", "expect",
-                                          "note", "test", "kind", "chosen", "quotes", "roundoff"};
+                                          "note", "test", "kind", "chosen", "quotes", "roundoff",
+                                          "corrected"};
 const std::vector<std::string> kKinds = {"printed", "scanning", "authors_code", "convention", "sample"};
 
 bool is_claim(const std::string& compare) { return compare == "above" || compare == "below"; }
@@ -175,6 +176,16 @@ std::vector<Published> read_published(const std::filesystem::path& file) {
       for (const auto& [sk, sv] : *ct) p.chosen[std::string(sk.str())] = scalar(sv, file, key);
       if (p.note.empty()) fail(file, key, "a chosen parameter needs its note (why not the printed value)");
     }
+    if (const auto c = (*t)["corrected"]) {
+      const char* form = "corrected is { what = \"...\", printed = \"...\", used = \"...\", printed_gives = \"<key>\" }";
+      const auto* ct = c.as_table();
+      if (!ct || ct->size() != 4) fail(file, key, form);
+      for (const char* f : {"what", "printed", "used", "printed_gives"}) {
+        if (!(*ct)[f].is_string()) fail(file, key, form);
+        p.corrected[f] = *(*ct)[f].value<std::string>();
+      }
+      if (p.note.empty()) fail(file, key, "a corrected coefficient needs its note (why not the printed one)");
+    }
     const auto value = (*t)["value"];
     const auto compare_node = (*t)["compare"];
     const bool claim = compare_node && compare_node.as_table() && compare_node.as_table()->size() == 1 &&
@@ -247,6 +258,11 @@ std::vector<Published> read_published(const std::filesystem::path& file) {
   std::stable_sort(by_line.begin(), by_line.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
   std::vector<Published> out;
   for (auto& [line, p] : by_line) out.push_back(std::move(p));
+  for (const Published& p : out)  // (what the printed coefficient gives is an entry of the same file)
+    if (!p.corrected.is_null() && std::none_of(out.begin(), out.end(), [&](const Published& q) {
+          return q.key == p.corrected["printed_gives"].get<std::string>();
+        }))
+      fail(file, p.key, "corrected.printed_gives names no entry of this file");
   return out;
 }
 
@@ -261,6 +277,7 @@ std::optional<json> compare_published(const Published& e, const json& summary, c
   if (e.tolerance_origin != "typed") c["tolerances"] = e.tolerances;  // per value: half a unit in its last printed digit
   if (e.kind != "printed") c["kind"] = e.kind;
   if (!e.quotes.empty()) c["quotes"] = e.quotes;
+  if (!e.corrected.is_null()) c["corrected"] = e.corrected;
   for (const auto& [key, printed] : e.chosen.items()) {
     const json* used = json_at(scene, key);
     c["chosen"][key] = {{"printed", printed}, {"used", used ? *used : json(nullptr)}};
@@ -380,7 +397,7 @@ void apply_published(const std::vector<Published>& entries, json& summary, const
 json figure_verdict(const json& comparisons, const std::string& figure) {
   json f = json::object();
   std::vector<std::string> reproduced, differs, unexpected, reported, not_comparable, conventions;
-  json chosen = json::object();
+  json chosen = json::object(), corrected = json::object();
   for (const auto& [key, c] : comparisons.items()) {
     if (c.value("figure", "") != figure) continue;
     const std::string v = c.value("verdict", "");
@@ -391,6 +408,7 @@ json figure_verdict(const json& comparisons, const std::string& figure) {
       if (v == "differs" && c.value("expect", "reproduced") != "differs") unexpected.push_back(key);
       if (c.contains("chosen"))
         for (const auto& [sk, ch] : c["chosen"].items()) chosen[sk] = ch;
+      if (c.contains("corrected")) corrected[c["corrected"]["what"].get<std::string>()] = c["corrected"];
     } else if (v == "reported") {
       reported.push_back(key);
     } else if (v == "not comparable") {
@@ -399,7 +417,9 @@ json figure_verdict(const json& comparisons, const std::string& figure) {
   }
   std::string verdict;
   if (!reproduced.empty() && differs.empty())
-    verdict = chosen.empty() ? "reproduced" : "reproduced with a chosen parameter";
+    verdict = chosen.empty() && corrected.empty() ? "reproduced"
+              : std::string("reproduced with a corrected ") +
+                    (corrected.empty() ? "parameter" : chosen.empty() ? "coefficient" : "parameter and coefficient");
   else if (!reproduced.empty())
     verdict = "partly reproduced";
   else if (!differs.empty())
@@ -413,6 +433,7 @@ json figure_verdict(const json& comparisons, const std::string& figure) {
   list("reproduced", reproduced), list("differs", differs), list("unexpected", unexpected);
   list("reported", reported), list("not_comparable", not_comparable), list("conventions", conventions);
   if (!chosen.empty()) f["chosen"] = chosen;
+  if (!corrected.empty()) f["corrected"] = corrected;
   return f;
 }
 

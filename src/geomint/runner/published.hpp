@@ -30,6 +30,11 @@
 //                                         # sample may differ without contradicting the paper)
 //   chosen = { "lj.h" = 0.2 }             # a parameter the reproduction sets otherwise than printed
 //                                         # (scene key = the printed value; the note says why)
+//   corrected = { what = "the coefficient of (32)-(33)", printed = "h^2/24", used = "h^2/12",
+//                 printed_gives = "rowlands_printed_phase" }
+//                                         # a printed coefficient or formula the reproduction replaces by a
+//                                         # derived one; printed_gives: the entry that shows what the printed
+//                                         # one gives (the note says why)
 //   roundoff = { floor = "reproduced.x_roundoff", exact = "reproduced.x_exact" }
 //                                         # the run's round-off floor of the quantity and its value in exact
 //                                         # arithmetic (summary paths, keyed as the value table): an entry
@@ -80,6 +85,7 @@ struct Published {
   std::string roundoff_floor, roundoff_exact;  // summary paths of the round-off floor and the exact value
   std::string kind = "printed";     // "printed", "scanning", "authors_code", "convention" or "sample"
   nlohmann::ordered_json chosen = nlohmann::ordered_json::object();  // scene key -> the printed value
+  nlohmann::ordered_json corrected;  // {what, printed, used, printed_gives}, or null
   nlohmann::ordered_json requires_ = nlohmann::ordered_json::object();  // dotted scene key -> value
   nlohmann::ordered_json quotes = nlohmann::ordered_json::array();  // [{"at", "text"}]: the paper's words, verbatim
 };
@@ -103,8 +109,9 @@ void apply_published(const std::vector<Published>& entries, nlohmann::ordered_js
 // The verdict of one figure or table from its comparisons (summary.comparisons entries whose figure
 // it is), in the report's vocabulary:
 //   "reproduced"                 every compared value (a number, an order or a claim) within tolerance;
-//   "reproduced with a chosen parameter"   so, but at least one with a parameter set otherwise than
-//                                printed (`chosen`);
+//   "reproduced with a corrected parameter", "... coefficient", "... parameter and coefficient"
+//                                so, but at least one with a printed parameter (`chosen`) or coefficient
+//                                (`corrected`) replaced: one policy wherever the paper's input is corrected;
 //   "partly reproduced"          some within tolerance, some not;
 //   "differs"                    none within tolerance (each explained in the errata, or a regression);
 //   "not comparable"             nothing compared, something not comparable under this scene;
@@ -112,7 +119,8 @@ void apply_published(const std::vector<Published>& entries, nlohmann::ordered_js
 //                                shape is compared by eye), only reported values if any.
 // Conventions (kind = "convention") are listed, never judged. The object holds the verdict and the
 // keys by outcome: reproduced, differs (unexpected: those expected to reproduce), reported,
-// not_comparable, conventions, chosen (scene key -> {printed, used}).
+// not_comparable, conventions, chosen (scene key -> {printed, used}), corrected (what -> {printed, used,
+// printed_gives}).
 nlohmann::ordered_json figure_verdict(const nlohmann::ordered_json& comparisons, const std::string& figure);
 
 // summary.figures: figure_verdict of every item in `made` (the items the studies that ran made under
