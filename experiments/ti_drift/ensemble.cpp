@@ -64,7 +64,11 @@ Stats write_stats(Context& ctx, const Run& run, Value& reproduced) {
   }
   ctx.write("fig4_stats.csv", f4s);
   reproduced["hh5_mu_final"] = m.mean.back(), reproduced["hh5_sigma_final"] = m.sd.back();
-  reproduced["hh5_sigma_exponent"] = power_law_exponent(ts, m.sd, fit_t_min(ctx.scene, "ensemble", t_end));  // past the bounded part
+  const double t_fit = fit_t_min(ctx.scene, "ensemble", t_end);  // past the bounded part
+  reproduced["hh5_sigma_exponent"] = power_law_exponent(ts, m.sd, t_fit);
+  // its standard error over the ensemble (bootstrap over the trajectories: published.toml's tolerance)
+  reproduced["hh5_sigma_exponent_stderr"] = bootstrap_exponent_stderr(
+      series, ts, t_fit, kBootstrapResamples, static_cast<std::uint64_t>(ctx.scene.integer("ensemble.seed")));
   return {ts, m.mean, m.sd};
 }
 

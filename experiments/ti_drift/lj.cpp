@@ -191,6 +191,10 @@ Stats write_stats(Context& ctx, const Ensemble& en, Value& reproduced) {
   reproduced["lj_mu_final_stderr"] = mu_se;
   reproduced["lj_sigma_final_stderr"] = sigma_se;
   reproduced["lj_sigma_exponent"] = power_law_exponent(ts, sigmas, fit_t_min(s, "lj", s.real("lj.t_end")));
+  std::vector<std::vector<double>> E_series;  // its standard error over the ensemble (bootstrap: published.toml)
+  for (const auto& r : lj_series) E_series.push_back(r.E);
+  reproduced["lj_sigma_exponent_stderr"] = bootstrap_exponent_stderr(
+      E_series, ts, fit_t_min(s, "lj", s.real("lj.t_end")), kBootstrapResamples, static_cast<std::uint64_t>(s.integer("lj.seed")));
   reproduced["lj_H_err_max"] = H_max;
   return {ts, H_rms, Hhat_rms, Hhat_change, mu_f, sigma_f, mu_se, sigma_se};
 }

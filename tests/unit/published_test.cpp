@@ -190,6 +190,27 @@ roundoff = { floor = "reproduced.floor" }
   EXPECT_EQ((*compare_published(all[0], summary, json::object(), {"table1"}))["verdict"], "not comparable");
 }
 
+// A tolerance from the run's statistics: kStandardErrors of the standard error the run wrote.
+TEST(Published, ToleranceFromTheRunsStandardError) {
+  const auto e = read_published(published_file(R"(
+[gamma]
+study = "ensemble"
+value = 0.5
+where = "Fig. 4"
+summary = "reproduced.gamma"
+compare = { abs = "stderr" }
+stderr = "reproduced.gamma_stderr"
+)"));
+  const auto verdict_at = [&](double gamma, double se) {
+    const json summary = {{"reproduced", {{"gamma", gamma}, {"gamma_stderr", se}}}};
+    return (*compare_published(e[0], summary, json::object(), {"ensemble"}))["verdict"];
+  };
+  EXPECT_EQ(verdict_at(0.6, 0.06), "reproduced");  // 0.1 <= 2 x 0.06
+  EXPECT_EQ(verdict_at(0.6, 0.04), "differs");     // 0.1 > 2 x 0.04
+  EXPECT_NE(error_of("[g]\nstudy = \"e\"\nvalue = 0.5\nwhere = \"F\"\nsummary = \"r.g\"\ncompare = { abs = \"stderr\" }\n")
+                .find("needs stderr"), std::string::npos);
+}
+
 TEST(Published, ATypedToleranceNotSmallerThanItsValueIsRefused) {
   EXPECT_NE(error_of(R"(
 [growth]

@@ -380,6 +380,33 @@ TEST(EnsembleStatistics, PowerLawExponentSlopeAndOscillationAboutALine) {
   EXPECT_NEAR(peak_to_peak_about_line(t, y), 0.5, 1e-12);
 }
 
+TEST(EnsembleStatistics, BootstrapStandardErrorOfTheRandomWalkExponent) {
+  // 200 random walks of unit Gaussian steps, sampled at t = 1..400: sigma ~ t^(1/2). The fitted exponent over
+  // t >= 40 lies within a few of its bootstrap standard errors of 1/2; that standard error is of the size the
+  // ensemble's finite sample leaves (neither 0 nor of order 1), and the same seed gives the same bits.
+  std::mt19937_64 rng(7);
+  std::normal_distribution<double> step(0.0, 1.0);
+  std::vector<std::vector<double>> walks(200);
+  std::vector<double> t;
+  for (int k = 1; k <= 400; ++k) t.push_back(k);
+  for (auto& w : walks) {
+    double x = 0;
+    for (int k = 1; k <= 400; ++k) w.push_back(x += step(rng));
+  }
+  std::vector<double> sd;
+  for (std::size_t k = 0; k < t.size(); ++k) {
+    std::vector<double> column;
+    for (const auto& w : walks) column.push_back(w[k]);
+    sd.push_back(mean_and_deviation(column).sd);
+  }
+  const double gamma = power_law_exponent(t, sd, 40);
+  const double se = bootstrap_exponent_stderr(walks, t, 40, kBootstrapResamples, 11);
+  EXPECT_GT(se, 0.005);
+  EXPECT_LT(se, 0.1);
+  EXPECT_LT(std::abs(gamma - 0.5), 3 * se);
+  EXPECT_EQ(se, bootstrap_exponent_stderr(walks, t, 40, kBootstrapResamples, 11));
+}
+
 TEST(EnsembleStatistics, OscillationAboutAQuadratic) {
   // A drift with curvature, 7 - 0.3 t + 2e-3 t^2 over t in [1e5, 2e5]: the least-squares quadratic recovers
   // it (no oscillation left), while about a line the curvature alone reads as 2e-3 (5e4)^2 = 5e6.

@@ -1,13 +1,15 @@
 #pragma once
 // Statistics of an ensemble of trajectories and of a recorded time series (004 Figs 2-6): the mean
 // and sample standard deviation across the trajectories, their standard errors, the exponent of a
-// power law fitted in log-log coordinates, the peak-to-peak amplitude about a least-squares line or
+// power law fitted in log-log coordinates and its bootstrap standard error, the peak-to-peak amplitude about a least-squares line or
 // quadratic,
 // and the median.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <limits>
+#include <random>
 #include <span>
 #include <vector>
 
@@ -66,6 +68,32 @@ inline double power_law_exponent(std::span<const double> t, std::span<const doub
   for (std::size_t i = 0; i < t.size(); ++i)
     if (t[i] >= t0 && s[i] > 0) lt.push_back(std::log(t[i])), ls.push_back(std::log(s[i]));
   return lt.size() >= 2 ? linear_fit(lt, ls).slope : std::numeric_limits<double>::quiet_NaN();
+}
+
+// Bootstrap resamples of an ensemble: enough for a standard error to about 5 % (1/sqrt(2 (200 - 1))).
+inline constexpr int kBootstrapResamples = 200;
+
+// The bootstrap standard error of gamma in sd ~ t^gamma (power_law_exponent over t >= t0 of the sample standard
+// deviation across the trajectories at the times t[k]; series[i][k]: trajectory i at t[k]): the sample standard
+// deviation of gamma over `resamples` ensembles of the same size drawn from the trajectories with replacement, from
+// the stream seeded by `seed` (the same bits at any thread count). It carries the sampling error of the finite
+// ensemble, each trajectory's correlation over time included, which a formula for independent points would miss.
+inline double bootstrap_exponent_stderr(const std::vector<std::vector<double>>& series, std::span<const double> t,
+                                        double t0, int resamples, std::uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::uniform_int_distribution<std::size_t> pick(0, series.size() - 1);
+  std::vector<double> gammas, column(series.size()), sd(t.size(), 0.0);
+  std::vector<std::size_t> which(series.size());
+  for (int r = 0; r < resamples; ++r) {
+    for (auto& w : which) w = pick(rng);
+    for (std::size_t k = 0; k < t.size(); ++k) {
+      if (t[k] < t0) continue;  // (outside the fit)
+      for (std::size_t j = 0; j < which.size(); ++j) column[j] = series[which[j]][k];
+      sd[k] = mean_and_deviation(column).sd;
+    }
+    gammas.push_back(power_law_exponent(t, sd, t0));
+  }
+  return mean_and_deviation(gammas).sd;
 }
 
 // The least-squares slope of y against x over the points with x >= x0.

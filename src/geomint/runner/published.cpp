@@ -21,7 +21,7 @@ using json = nlohmann::ordered_json;
 
 const std::vector<std::string> kFields = {"study", "figure", "value", "where", "summary", "compare", "requires", "expect",
                                           "note", "test", "kind", "chosen", "quotes", "roundoff",
-                                          "corrected"};
+                                          "corrected", "stderr"};
 const std::vector<std::string> kKinds = {"printed", "scanning", "authors_code", "convention", "sample"};
 
 bool is_claim(const std::string& compare) { return compare == "above" || compare == "below"; }
@@ -208,7 +208,12 @@ std::vector<Published> read_published(const std::filesystem::path& file) {
       const auto first = ct->cbegin();
       p.compare = std::string(first->first.str());
       const bool printed = (p.compare == "rel" || p.compare == "abs") && first->second.value<std::string>() == "printed";
-      const auto tv = printed ? std::optional<double>(0.0) : first->second.value<double>();
+      const bool from_stderr = p.compare == "abs" && first->second.value<std::string>() == "stderr";
+      if (from_stderr) {
+        if (!(*t)["stderr"].is_string()) fail(file, key, "{ abs = \"stderr\" } needs stderr = \"<summary path>\"");
+        p.tolerance_origin = "stderr", p.stderr_path = *(*t)["stderr"].value<std::string>();
+      }
+      const auto tv = printed || from_stderr ? std::optional<double>(0.0) : first->second.value<double>();
       if ((p.compare != "rel" && p.compare != "abs" && p.compare != "order" && !claim) || !tv || !std::isfinite(*tv) ||
           (!claim && !(*tv >= 0)))
         fail(file, key, forms);
@@ -274,7 +279,16 @@ std::optional<json> compare_published(const Published& e, const json& summary, c
   if (!e.figure.empty()) c["figure"] = e.figure;
   c["where"] = e.where, c["published"] = e.value, c["reproduced"] = reproduced ? *reproduced : json(nullptr);
   if (!e.compare.empty()) c["compare"] = {{e.compare, e.tolerance_origin == "typed" ? json(e.tolerance) : json(e.tolerance_origin)}};
-  if (e.tolerance_origin != "typed") c["tolerances"] = e.tolerances;  // per value: half a unit in its last printed digit
+  if (e.tolerance_origin == "printed") c["tolerances"] = e.tolerances;  // per value: half a unit in its last printed digit
+  double stderr_tolerance = 0;  // "stderr": kStandardErrors of the run's standard error
+  if (e.tolerance_origin == "stderr") {
+    const json* se = json_at(summary, e.stderr_path);
+    if (se && se->is_number()) {
+      stderr_tolerance = kStandardErrors * se->get<double>();
+      c["tolerances"] = {{"standard_error", *se}, {"standard_errors", kStandardErrors}, {"of", stderr_tolerance},
+                         {"from", e.stderr_path}};
+    }
+  }
   if (e.kind != "printed") c["kind"] = e.kind;
   if (!e.quotes.empty()) c["quotes"] = e.quotes;
   if (!e.corrected.is_null()) c["corrected"] = e.corrected;
@@ -362,6 +376,7 @@ std::optional<json> compare_published(const Published& e, const json& summary, c
   }
   const auto tolerance_at = [&](const std::string& param) {
     if (e.tolerance_origin == "typed") return e.tolerance;
+    if (e.tolerance_origin == "stderr") return stderr_tolerance > 0 ? stderr_tolerance : std::nan("");
     const json& t = param.empty() ? e.tolerances : e.tolerances.at(printed_param.at(param));
     return t.get<double>();
   };

@@ -16,6 +16,8 @@
 //                                         # { rel = "printed" } or { abs = "printed" }: half a unit in the
 //                                         # last digit of each value as printed (its TOML literal: 2.50e-11
 //                                         # gives 5e-14, 0.603 gives 5e-4), the rounding of the print;
+//                                         # { abs = "stderr" } with stderr = "summary path": kStandardErrors
+//                                         # standard errors of the reproduced value, from the run's own data;
 //                                         # without compare the value is reported, not compared;
 //                                         # a printed qualitative claim ("the cuts lie in p2 < 0") is
 //                                         # { above = x } or { below = x }: the measured quantity
@@ -80,15 +82,20 @@ struct Published {
   nlohmann::ordered_json value;     // a number, or an object of numbers keyed by a parameter
   std::string compare;              // "rel", "abs", "order", "above", "below" (a claim) or "" (reported only)
   double tolerance = 0;             // (the bound of a claim)
-  std::string tolerance_origin = "typed";  // "typed" (the number in compare) or "printed" (the print's rounding)
+  std::string tolerance_origin = "typed";  // "typed" (the number in compare), "printed" (the print's rounding) or
+                                           // "stderr" (kStandardErrors standard errors, from the run)
   nlohmann::ordered_json tolerances;       // "printed": per value (a number, or an object keyed as the value)
   std::string roundoff_floor, roundoff_exact;  // summary paths of the round-off floor and the exact value
+  std::string stderr_path;                     // "stderr": the summary path of the reproduced value's standard error
   std::string kind = "printed";     // "printed", "scanning", "authors_code", "convention" or "sample"
   nlohmann::ordered_json chosen = nlohmann::ordered_json::object();  // scene key -> the printed value
   nlohmann::ordered_json corrected;  // {what, printed, used, printed_gives}, or null
   nlohmann::ordered_json requires_ = nlohmann::ordered_json::object();  // dotted scene key -> value
   nlohmann::ordered_json quotes = nlohmann::ordered_json::array();  // [{"at", "text"}]: the paper's words, verbatim
 };
+
+// A tolerance from the run's statistics is this many standard errors of what it judges.
+inline constexpr double kStandardErrors = 2;
 
 // Half a unit in the last digit of a number as printed: "2.50e-11" -> 5e-14, "0.603" -> 5e-4, "6" -> 0.5.
 double half_unit_in_last_digit(std::string literal);
