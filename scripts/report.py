@@ -21,7 +21,8 @@ into OUT_DIR:
                       \\ifresult{run}{key}{A}{B}   A if the run has the value (not null), else B
                       \\verdict{run}{004 Fig. 5}   the verdict of a figure or table (summary.json "figures")
   comparisons.tex   per run, its published quantities (summary.json "comparisons", made by the
-                    executable from experiments/<name>/published.toml) against the reproduction.
+                    executable from experiments/<name>/published.toml) against the reproduction, each by
+                    its number (#1, #2, ...: \\cmpref{run}{key}) and description, never by its key.
   errata.tex        every comparison published.toml expects to differ: what was published, what
                     the project uses instead and why, and the ctest test that shows it.
   methods.tex       the method registry (`geomint-methods --json`).
@@ -31,7 +32,8 @@ into OUT_DIR:
   bibliography.tex  with --papers: the papers and their code.
   machine.tex       the CPU, compiler, flags and commit of the runs (run.json).
   hardcases.tex     with --junit: every hard case (ctest label hardcase) of the last ctest run, by
-                    kind: what its name says it asserts, its result and time.
+                    kind: what its name says it asserts, its result and time; a test of the check itself
+                    apart, with the faults it plants marked; no path of the machine that ran it.
   quick.tex         with --tests and --quick: each quick scene the tests run, how many tests wait
                     on it, and each published comparison applied to it with its tolerance band.
 
@@ -49,8 +51,10 @@ from xml.etree import ElementTree
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 from paper_runs import why_not_paper_run  # noqa: E402
-from report_tables import comparisons_tex, figure_comparisons_tex, method_names_tex, methods_tex, rule_text  # noqa: E402
-from tex_format import FORMATS, code, is_number, key_text, longtable, number, prose, quote_tex, tex_escape, value_text  # noqa: E402
+from report_tables import comparison_numbers, comparison_ref, comparisons_tex, figure_comparisons_tex, key_refs, \
+    method_names_tex, methods_tex, rule_text  # noqa: E402
+from tex_format import FORMATS, GREEK as GREEK_NAMES, ascii_math, code, is_number, longtable, number, prose, \
+    quote_tex, repo_paths, tex_escape, value_text  # noqa: E402
 
 ROOT = pathlib.Path(__file__).resolve().parent.parent
 
@@ -84,8 +88,8 @@ def lookup_text(run, key, fmt, ranged):
         a, b = number(v.get("min"), fmt), number(v.get("max"), fmt)
         return None if a is None or b is None else f"\\ensuremath{{{a}}}" if a == b else \
             f"\\ensuremath{{{a}}}--\\ensuremath{{{b}}}"
-    if fmt == "text":
-        return tex_escape(v) if isinstance(v, str) else None
+    if fmt == "text":  # (a string of the run: its ASCII math, "< 0.00063", h^2/24, as math)
+        return ascii_math(v) if isinstance(v, str) else None
     if fmt == "tverdict":  # a timing's verdict against its reference (runner/timing.hpp), short
         return f"({TIMING_VERDICTS[v]})" if v in TIMING_VERDICTS else None
     if fmt == "vec":
@@ -169,9 +173,11 @@ def errata_tex(runs, tests):
     """The published statements the reproduction differs from, the possible scanning errors, the open
     conventions and the authors' code values (published.toml: expect, kind), one subsection each."""
     out = ["% Errata, scanning errors, open conventions, authors' code values (published.toml: expect, kind)."]
+    numbers = comparison_numbers(runs)
     for title, selects in ERRATA_SECTIONS:
         items = []
         for name, run in runs.items():
+            refs = key_refs(numbers, name)
             for key, c in (run["summary"].get("comparisons") or {}).items():
                 if not selects(c):
                     continue
@@ -182,9 +188,9 @@ def errata_tex(runs, tests):
                     c.get("kind"), "Printed")
                 verdict = "" if c.get("kind") == "convention" else f", verdict: {c['verdict']}"
                 quotes = "".join(f" {prose(q['at'])}: ``{quote_tex(q['text'])}''" for q in c.get("quotes", []))
-                items.append(f"\\item \\textbf{{{prose(c['where'])}.}}{quotes} {source}: "
+                items.append(f"\\item \\textbf{{{prose(c['where'], refs)}.}}{quotes} {source}: "
                              f"{value_text(c.get('published'))}; reproduced: {value_text(c.get('reproduced'))} "
-                             f"({code(name)}, {code(key)}{verdict}). {prose(c.get('note', ''))}" +
+                             f"({comparison_ref(numbers, name, key)}{verdict}). {prose(c.get('note', ''), refs)}" +
                              (f" Shown by {code('ctest -R ' + test)}." if test else ""))
         out += [f"\\subsection*{{{title}}}", ERRATA_INTRO[title]]
         out += [r"\begin{enumerate}"] + items + [r"\end{enumerate}"] if items else ["None."]
@@ -228,7 +234,7 @@ LEDGER_CHARS = {"verdict": 17 * 5 // 6, "values": 27 * 5 // 6, "rerun": 35 * 5 /
 
 def visible(tex):
     """The characters a LaTeX fragment prints (roughly: commands and braces dropped, a reference as 'R12')."""
-    tex = re.sub(r"\\(?:page)?ref\{[^}]*\}", "R12", tex)
+    tex = re.sub(r"\\(?:page)?ref\{[^}]*\}", "R12", re.sub(r"\\hyperref\[[^]]*\]", "", tex))
     return re.sub(r"\\[a-zA-Z@]+\*?|[{}$]", "", re.sub(r"\\([^a-zA-Z@])", r"\1", tex))
 
 
@@ -250,6 +256,7 @@ def item_slug(name):
 def ledger_tex(runs, papers, tests):
     """One row per item of the papers, with the verdict its own run computed (summary.json "figures")
     from that item's own comparisons."""
+    numbers = comparison_numbers(runs)
     makers = {}  # (paper, item) -> [(run name, study)]
     for name, run in runs.items():
         for st in run["run"].get("study_list", []):
@@ -277,22 +284,25 @@ def ledger_tex(runs, papers, tests):
                 experiment = summary.get("experiment", name)
                 scene = runs[name]["run"].get("scene_file", "")
                 commands.append(code(f"build/bin/{experiment} " + " ".join(f"--study {st['name']}" for st in studies) +
-                                     ("" if name == experiment else f" --scene {scene}")))
+                                     ("" if name == experiment else f" --scene {repo_paths(scene, [ROOT])}")))
                 scripts += [s for st in studies for s in figure_scripts(name, st["files"]) if s not in scripts]
                 f = (summary.get("figures") or {}).get(figure)
                 if f is None:
                     raise SystemExit(f"report.py: {name}: summary.json has no verdict for {figure}")
                 verdict = tex_escape(f["verdict"])
                 comparisons = summary.get("comparisons") or {}
+                refs = key_refs(numbers, name)
                 for key, ch in (f.get("chosen") or {}).items():
-                    verdict += f" ({code(key)} = {value_text(ch.get('used'))}, printed {value_text(ch.get('printed'))})"
+                    verdict += f" ({refs.get(key) or prose(key)} = {value_text(ch.get('used'))}, " \
+                               f"printed {value_text(ch.get('printed'))})"
                 for what, co in (f.get("corrected") or {}).items():  # (what the printed one gives: its comparison)
                     gives = comparisons.get(co["printed_gives"], {})
-                    verdict += (f" ({prose(what)} {prose(co['used'])}, printed {prose(co['printed'])}, "
+                    verdict += (f" ({prose(what)} {ascii_math(co['used'])}, printed {ascii_math(co['printed'])}, "
                                 f"which gives {tex_escape(gives.get('verdict', '?'))}: "
                                 f"{value_text(gives.get('reproduced'))} against {value_text(gives.get('published'))})")
                 if f.get("unexpected"):
-                    verdict += ": " + ", ".join(code(k) for k in f["unexpected"]) + " differ unexpectedly"
+                    verdict += ": " + ", ".join(refs.get(k) or prose(k) for k in f["unexpected"]) + \
+                        " differ unexpectedly"
                 elif f.get("differs"):
                     verdict += r" (Section~\ref{sec:errata})"
                 verdicts.append(verdict)
@@ -359,11 +369,16 @@ def machine_tex(runs):
 
 
 def sentence(test_name):
-    """A gtest name as words: Suite.ExplicitEulerAtItsBound -> 'explicit Euler at its bound'."""
+    """A gtest name as words (LaTeX): Suite.ExplicitEulerAtItsBound -> 'explicit Euler at its bound'; a Greek
+    letter with a number is the method of that index, as the registry writes it (phi4, Phi4: $\\Phi^{(4)}$)."""
     words = re.findall(r"[A-Z][a-z]+|[A-Z]+(?![a-z])|\d+(?:e\d+)?|[a-z]+", test_name.split(".")[-1])
     small = {"a", "an", "and", "are", "as", "at", "by", "for", "from", "in", "is", "its", "near", "not", "of", "on",
              "or", "than", "the", "to", "with", "without", "beyond", "below", "above", "stays", "stay", "gives"}
-    return " ".join(w.lower() if i and w.lower() in small else w for i, w in enumerate(words))
+    out = [tex_escape(w.lower() if i and w.lower() in small else w) for i, w in enumerate(words)]
+    for i in range(len(words) - 1):
+        if words[i] in GREEK_NAMES and words[i + 1].isdigit():
+            out[i], out[i + 1] = f"$\\{words[i].capitalize()}^{{({words[i + 1]})}}$", ""
+    return " ".join(filter(None, out))
 
 
 # The hard cases by kind, from the words of a test's name (the first kind that matches).
@@ -375,6 +390,11 @@ HARD_KINDS = [(r"^regression\.Cli\.", "Refusals by the command line (exit 2 befo
 
 
 RELATIONS = {"<": "$<$", "<=": r"$\le$", ">": "$>$", ">=": r"$\ge$", "==": "$=$"}
+HOLDS = {"<": lambda x, b: x < b, "<=": lambda x, b: x <= b, ">": lambda x, b: x > b, ">=": lambda x, b: x >= b,
+         "==": lambda x, b: x == b}
+# A test of the check itself (tests/unit/hard_case_test.cpp): it passes only if the check rejects the faults it
+# plants, so a row of it that breaks its bound is the point of the test, and is shown as such.
+META_KIND = "The check itself, on planted faults"
 
 
 def shorten(text, n):
@@ -383,69 +403,93 @@ def shorten(text, n):
     return line if len(line) <= n else line[: n - 1].rstrip() + "\u2026"
 
 
-def case_rows(output):
-    """The measured values and bounds a test recorded (tests/hard_case.hpp: lines HARDCASE {json}), as rows."""
+def case_holds(c):
+    """Whether a HARDCASE line holds: the measured value within its bound, or the refusal naming every needle."""
+    x, bound = c["measured"], c["bound"]
+    if c["relation"] == "names":
+        return x is not None and all(n in x for n in bound)
+    if x is None:
+        return False
+    if c["relation"] == "near":
+        return abs(x - bound) <= c["tolerance"]
+    return c["relation"] in HOLDS and HOLDS[c["relation"]](x, bound)
+
+
+def case_rows(output, passed=True, roots=()):
+    """The measured values and bounds a test recorded (tests/hard_case.hpp: lines HARDCASE {json}), as rows, each
+    with whether it holds; a row that does not hold in a test that passed is a fault the test planted."""
     def num(x):  # (an exit code or an iteration count as an integer)
         return str(int(x)) if float(x).is_integer() and abs(x) < 1e6 else number(x, "general")
     rows = []
     for line in re.findall(r"^HARDCASE (\{.*\})$", output or "", re.M):
         c = json.loads(line)
-        if c["relation"] == "names":  # a refusal: its message, and what it must name
-            said = ("accepted" if c["measured"] is None else  # (the message, its paths relative to the source)
-                    "refused: ``" + code(shorten(c["measured"].replace(str(ROOT) + os.sep, ""), 160)) + "''")
-            needles = ", ".join("``" + code(n) + "''" for n in c["bound"])
-            rows.append(f"\\multicolumn{{3}}{{@{{}}p{{0.84\\linewidth}}}}{{\\quad {prose(c['what'])}: {said} "
-                        f"(must name {needles})}} & \\\\")
+        holds = case_holds(c)
+        result = "" if holds else "planted fault: rejected" if passed else "does not hold"
+        what = prose(repo_paths(c["what"], roots))
+        if c["relation"] == "names":  # a refusal: its message (no path of the machine), and what it must name
+            said = ("accepted" if c["measured"] is None else
+                    "refused: ``" + code(shorten(repo_paths(c["measured"], roots), 160)) + "''")
+            needles = ", ".join("``" + code(repo_paths(n, roots)) + "''" for n in c["bound"])
+            rows.append((f"\\multicolumn{{3}}{{@{{}}p{{0.84\\linewidth}}}}{{\\quad {what}: {said} "
+                         f"(must name {needles})}} & {result}\\\\", holds))
             continue
         measured = "---" if c["measured"] is None else f"${num(c['measured'])}$"
         bound = (f"${num(c['bound'])} \\pm {num(c['tolerance'])}$" if c["relation"] == "near"
-                 else f"{RELATIONS[c['relation']]} ${num(c['bound'])}$")
-        rows.append(f"\\quad {prose(c['what'])} & {measured} & {bound} & \\\\")
+                 else f"{RELATIONS.get(c['relation'], tex_escape(c['relation']))} ${num(c['bound'])}$")
+        rows.append((f"\\quad {what} & {measured} & {bound} & {result}\\\\", holds))
     return rows
 
 
-def hard_cases_tex(junit, hard=None):
+def hard_cases_tex(junit, hard=None, roots=(ROOT,)):
     """The hard cases of the last ctest run (ctest -L hardcase --output-junit FILE), by kind, each with the
     measured values and bounds it recorded; with `hard` (the names of the tests labelled hardcase), not the
-    fixtures the run needed (the quick runs)."""
+    fixtures the run needed (the quick runs). Paths in what the tests recorded are shown relative to `roots`
+    (the source trees)."""
     cases = [(c.get("name"), c.get("time"), c.get("status"), c.findtext("system-out"))
              for c in ElementTree.fromstring(junit).iter("testcase") if hard is None or c.get("name") in hard]
     if not cases:
         raise SystemExit("report.py: the JUnit file lists no test")
-    kinds = {}
+    kinds, rows = {}, {}
     for case in cases:
-        kind = next(k for pattern, k in HARD_KINDS if re.search(pattern, case[0]))
+        rows[case[0]] = case_rows(case[3], case[2] == "run", roots)
+        planted = case[2] == "run" and not all(holds for _, holds in rows[case[0]])
+        kind = META_KIND if planted else next(k for pattern, k in HARD_KINDS if re.search(pattern, case[0]))
         kinds.setdefault(kind, []).append(case)
     passed = sum(status == "run" for _, _, status, _ in cases)
-    silent = [name for name, _, status, output in cases if status == "run" and not case_rows(output)]
+    silent = [name for name, _, status, _ in cases if status == "run" and not rows[name]]
     if silent:  # (every hard case that passed shows what it measured: tests/hard_case.hpp)
         raise SystemExit("report.py: hard cases that passed recording no measured value and bound: " + ", ".join(silent))
     out = ["% The hard cases and their results (ctest -L hardcase --output-junit; scripts/report.py).",
            f"In this run {passed} of {len(cases)} hard cases passed. Each that passed records what it measured "
            "and the bound it is held to (the rows below its test): a value and a relation, or, for a refusal, "
-           "the message and what it must name.",
+           "the message and what it must name. The tests of the check itself come last: each plants faults, "
+           "values beyond their bound and refusals that do not name what they must, and passes only if the check "
+           "rejects every one; those rows are marked \\emph{planted fault: rejected}. In the messages, a path in "
+           "the source tree is relative to it and DIR is a temporary directory of the test.",
            longtable("footnotesize", 0.52, 0.14, 0.2, 0.14),
            r"\toprule test, and what it measured & measured & bound & result, time (s)\\ \midrule", r"\endhead"]
-    for _, kind in HARD_KINDS:
+    for kind in [k for _, k in HARD_KINDS] + [META_KIND]:
         if kind not in kinds:
             continue
         out.append(rf"\multicolumn{{4}}{{@{{}}l}}{{\emph{{{tex_escape(kind)} ({len(kinds[kind])})}}}}\\")
         for name, time, status, output in kinds[kind]:
             result = {"run": "passed", "fail": "FAILED"}.get(status, tex_escape(status))
-            out.append(f"\\multicolumn{{3}}{{@{{}}p{{0.84\\linewidth}}}}{{{code(name)}: {tex_escape(sentence(name))}}} & "
+            out.append(f"\\multicolumn{{3}}{{@{{}}p{{0.84\\linewidth}}}}{{{code(name)}: {sentence(name)}}} & "
                        f"{result}, {float(time):.2f}\\\\")
-            out += case_rows(output)
+            out += [row for row, _ in rows[name]]
     out += [r"\bottomrule", r"\end{longtable}}"]
     return "\n".join(out) + "\n"
 
 
-def quick_tex(tests, quick_root):
+def quick_tex(tests, quick_root, numbers=None, roots=(ROOT,)):
     """The quick scenes the tests run (ctest --show-only=json-v1), the tests that wait on each, and the
-    tolerance bands with which each published comparison is applied to its run (QUICK/<id>/summary.json)."""
+    tolerance bands with which each published comparison is applied to its run (QUICK/<id>/summary.json), each
+    named by its number in Appendix A (`numbers`: comparison_numbers of the paper runs)."""
     props = {t["name"]: {p["name"]: p["value"] for p in t.get("properties", [])} for t in tests}
     out = ["% The quick scenes of the tests and their tolerance bands (scripts/report.py).",
            longtable("footnotesize", 0.3, 0.18, 0.18, 0.17, 0.17),
-           r"\toprule quantity & published & quick run & band & verdict\\ \midrule", r"\endhead"]
+           r"\toprule quantity (Appendix~\ref{sec:comparisons}) & published & quick run & band & verdict\\ \midrule",
+           r"\endhead"]
     for t in tests:
         if not t["name"].endswith(".quick_run"):
             continue
@@ -453,15 +497,17 @@ def quick_tex(tests, quick_root):
         fixtures = props[t["name"]].get("FIXTURES_SETUP", [])
         waiting = sorted(n for n, p in props.items() if set(p.get("FIXTURES_REQUIRED", [])) & set(fixtures))
         scene = next((a for a in t.get("command", []) if a.endswith(".toml")), "?")
-        scene = os.path.relpath(scene, ROOT) if os.path.isabs(scene) else scene
+        scene = repo_paths(scene, roots)
         out.append(rf"\multicolumn{{5}}{{@{{}}p{{0.95\linewidth}}@{{}}}}{{\textbf{{{code(run_id)}}}: "
                    rf"{code(scene)}, waited on by {len(waiting)} tests}}\\")
         summary = pathlib.Path(quick_root) / run_id / "summary.json"
         comparisons = json.loads(summary.read_text(encoding="utf-8")).get("comparisons", {}) if summary.is_file() else {}
         for key, c in comparisons.items():
-            band = rule_text(c) or "--"
-            out.append(f"{code(key)} & {value_text(c.get('published'))} & "
-                       f"{value_text(c.get('reproduced'))} & {tex_escape(band)} & {tex_escape(c['verdict'])}\\\\")
+            band = rule_text(c)
+            ref = comparison_ref(numbers or {}, run_id, key)
+            what = (f"{ref} ({tex_escape(c['figure'])})" if c.get("figure") else ref) if ref else prose(c["where"])
+            out.append(f"{what} & {value_text(c.get('published'))} & {value_text(c.get('reproduced'))} & "
+                       f"{tex_escape(band or '--')} & {tex_escape(c['verdict'])}\\")
     out += [r"\bottomrule", r"\end{longtable}}"]
     return "\n".join(out) + "\n"
 
@@ -507,10 +553,12 @@ def main():
             return 1
     tex = [pathlib.Path(t) for t in args.tex] if args.tex is not None else \
         [ROOT / "paper" / "main.tex"] + sorted((ROOT / "paper" / "sections").rglob("*.tex"))
-    tests, ctest = None, []
+    tests, ctest, roots = None, [], [ROOT]
     if args.tests:
-        ctest = json.loads(pathlib.Path(args.tests).read_text(encoding="utf-8"))["tests"]
-        tests = {t["name"] for t in ctest}
+        listing = json.loads(pathlib.Path(args.tests).read_text(encoding="utf-8"))
+        ctest, tests = listing["tests"], {t["name"] for t in listing["tests"]}
+        roots += [pathlib.Path(f).parent.parent for f in listing.get("backtraceGraph", {}).get("files", [])
+                  if pathlib.Path(f).parts[-2:] == ("tests", "CMakeLists.txt")]  # (the tree the tests ran from)
     results, missing = results_tex(runs, tex, args.draft)
     figure_index, figure_tables = figure_comparisons_tex(runs)
     files = {"results.tex": results, "comparisons.tex": comparisons_tex(runs), "figure_comparisons.tex": figure_index,
@@ -522,11 +570,11 @@ def main():
         files["methods.tex"] = methods_tex(methods, method_citations(papers))
         files["method_names.tex"] = method_names_tex(methods)
     if args.quick:
-        files["quick.tex"] = quick_tex(ctest, args.quick)
+        files["quick.tex"] = quick_tex(ctest, args.quick, comparison_numbers(runs), roots)
     if args.junit:
         hard = {t["name"] for t in ctest for p in t.get("properties", []) if p["name"] == "LABELS"
                 and "hardcase" in p["value"]} if ctest else None
-        files["hardcases.tex"] = hard_cases_tex(pathlib.Path(args.junit).read_text(encoding="utf-8"), hard)
+        files["hardcases.tex"] = hard_cases_tex(pathlib.Path(args.junit).read_text(encoding="utf-8"), hard, roots)
     if papers:
         files["ledger.tex"] = ledger_tex(runs, papers, tests)
         files["bibliography.tex"] = bibliography_tex(papers)

@@ -9,14 +9,41 @@ from tex_format import FORMATS, code, gnuplot_tex, is_number, key_text, longtabl
     value_text
 
 
-COMPARISON_HEAD = [r"\toprule quantity & where published & published & reproduced & difference & verdict\\ \midrule",
-                   r"\endhead"]
+COMPARISON_HEAD = [r"\toprule no. & quantity, where published & published & reproduced & difference & verdict\\ "
+                   r"\midrule", r"\endhead"]
+COMPARISON_COLUMNS = (0.06, 0.4, 0.13, 0.13, 0.12, 0.16)
+
+
+def comparison_numbers(runs):
+    """Each comparison's number, #1, #2, ... in the order of Appendix A (comparisons.tex), by (run, key): the
+    report refers to a published quantity by it, never by its key in summary.json."""
+    pairs = [(name, key) for name, run in runs.items() for key in run["summary"].get("comparisons") or {}]
+    return {pair: i + 1 for i, pair in enumerate(pairs)}
+
+
+def comparison_ref(numbers, run, key):
+    """A reference to a comparison's row in Appendix A (its number, linked), or None if it has none."""
+    n = numbers.get((run, key))
+    return None if n is None else f"\\hyperref[cmp:{run}:{key}]{{\\#{n}}}"
+
+
+def key_refs(numbers, run):
+    """For a run's free text: each comparison key it may name, as its reference (a key of another run where
+    only one run has it)."""
+    owners = {}
+    for r, key in numbers:
+        owners.setdefault(key, []).append(r)
+    refs = {key: comparison_ref(numbers, rs[0], key) for key, rs in owners.items() if len(rs) == 1}
+    return refs | {key: comparison_ref(numbers, run, key) for r, key in numbers if r == run}
 
 
 def rule_text(c):
-    """A comparison's tolerance as published.toml gives it ("rel 0.03", "abs 1e-13", or from the printed digits:
-    "rel: the printed digits", half a unit in the last digit of each printed value)."""
-    return ", ".join(f"{k} {v:g}" if isinstance(v, (int, float)) else f"{k}: the {v} digits"
+    """A comparison's tolerance as published.toml gives it: typed ("rel 0.03", "abs 1e-13"), or derived, from the
+    printed digits ("rel: half a unit in the last printed digit") or the run's standard error ("abs: 2 standard
+    errors of the run")."""
+    origins = {"printed": "half a unit in the last printed digit",  # (runner/published.hpp)
+               "stderr": f"{(c.get('tolerances') or {}).get('standard_errors', 2):g} standard errors of the run"}
+    return ", ".join(f"{k} {v:g}" if isinstance(v, (int, float)) else f"{k}: {origins.get(v, v)}"
                      for k, v in (c.get("compare") or {}).items())
 
 
@@ -27,10 +54,11 @@ def roundoff_text(c):
                                                          for k in at) if at else ""
 
 
-def comparison_rows(comparisons):
-    """One row per comparison (summary.json "comparisons"): key, where printed, the two values, their
-    difference and the verdict with its rule, and its reason or note below it."""
-    out = []
+def comparison_rows(run, comparisons, numbers, anchor=False):
+    """One row per comparison (summary.json "comparisons"): its number (with `anchor`, the row that references
+    link to), what it is and where printed, the two values, their difference and the verdict with its rule,
+    and its reason or note below it."""
+    out, refs = [], key_refs(numbers, run)
     for key, c in comparisons.items():
         how = rule_text(c)
         verdict = c["verdict"] + (f" ({tex_escape(how)})" if how else "")
@@ -38,23 +66,26 @@ def comparison_rows(comparisons):
             verdict += "; " + tex_escape(roundoff_text(c))
         if c.get("expect", "reproduced") != "reproduced":
             verdict += r", expected: " + tex_escape(c["expect"])
-        out.append(f"{code(key)} & {prose(c['where'])} & {value_text(c.get('published'))} & "
+        number = (f"\\phantomsection\\label{{cmp:{run}:{key}}}\\#{numbers[(run, key)]}" if anchor
+                  else comparison_ref(numbers, run, key))
+        out.append(f"{number} & {prose(c['where'], refs)} & {value_text(c.get('published'))} & "
                    f"{value_text(c.get('reproduced'))} & {value_text(c.get('difference'))} & {verdict}\\\\")
         remarks = [c[k] for k in ("reason", "note") if c.get(k)]
         if remarks:
-            out.append(r"\multicolumn{6}{@{}p{0.95\linewidth}@{}}{\emph{" + prose(" ".join(remarks)) + r"}}\\")
+            out.append(r"\multicolumn{6}{@{}p{0.95\linewidth}@{}}{\emph{" + prose(" ".join(remarks), refs) + r"}}\\")
     return out
 
 
 def comparisons_tex(runs):
     out = ["% Published against reproduced, per run (scripts/report.py from summary.json \"comparisons\")."]
+    numbers = comparison_numbers(runs)
     for name, run in runs.items():
         comparisons = run["summary"].get("comparisons") or {}
         if not comparisons:
             continue
-        out += [f"\\subsection*{{\\texttt{{{tex_escape(name)}}}}}",
-                longtable("footnotesize", 0.2, 0.26, 0.13, 0.13, 0.12, 0.16), *COMPARISON_HEAD,
-                *comparison_rows(comparisons), r"\bottomrule", r"\end{longtable}}"]
+        out += [f"\\subsection*{{\\texttt{{{tex_escape(name)}}}}}", longtable("footnotesize", *COMPARISON_COLUMNS),
+                *COMPARISON_HEAD, *comparison_rows(name, comparisons, numbers, anchor=True), r"\bottomrule",
+                r"\end{longtable}}"]
     return "\n".join(out) + "\n"
 
 
@@ -145,29 +176,31 @@ def figure_comparisons_tex(runs):
     """\\comparisons{000 Fig. 9} (paper/main.tex): the table of one figure's comparisons, those of the run
     that makes it whose published.toml entries belong to it (summary.json "comparisons", field figure), and
     \\comparisongrid{001 Table 1}: the same in the paper's shape, for a figure whose comparisons form a grid.
-    Returns the index (the file of each figure's tables) and the tables, by file name under generated/."""
+    Returns the index (the file of each figure's tables, each comparison's number for \\cmpref{run}{key}) and
+    the tables, by file name under generated/."""
     index = ["% The tables of each figure's comparisons, for \\comparisons{<paper> <item>} and "
              "\\comparisongrid{<paper> <item>} (scripts/report.py).", r"\makeatletter"]
-    tables = {}
-    for run in runs.values():
+    tables, numbers = {}, comparison_numbers(runs)
+    for name, run in runs.items():
         by_figure = {}
         for key, c in (run["summary"].get("comparisons") or {}).items():
             by_figure.setdefault(c.get("figure", ""), {})[key] = c
         for figure, comparisons in by_figure.items():
             if figure:
                 slug = re.sub(r"[^a-z0-9]+", "-", figure.lower()).strip("-") + ".tex"
-                name = "comparisons-" + slug
-                index.append(f"\\@namedef{{geomint@comparisons@{figure}}}{{generated/{name}}}")
+                file = "comparisons-" + slug
+                index.append(f"\\@namedef{{geomint@comparisons@{figure}}}{{generated/{file}}}")
                 paper, _, item = figure.partition(" ")
-                tables[name] = "\n".join([f"% {figure}: its comparisons (scripts/report.py).",
+                tables[file] = "\n".join([f"% {figure}: its comparisons (scripts/report.py).",
                                           f"\\noindent {{[{paper}]}} {tex_escape(item)}:",
-                                          longtable("footnotesize", 0.2, 0.26, 0.13, 0.13, 0.12, 0.16),
-                                          *COMPARISON_HEAD, *comparison_rows(comparisons), r"\bottomrule",
-                                          r"\end{longtable}}"]) + "\n"
+                                          longtable("footnotesize", *COMPARISON_COLUMNS),
+                                          *COMPARISON_HEAD, *comparison_rows(name, comparisons, numbers),
+                                          r"\bottomrule", r"\end{longtable}}"]) + "\n"
                 grid = comparison_grid(figure, comparisons)
                 if grid:
                     index.append(f"\\@namedef{{geomint@comparisongrid@{figure}}}{{generated/comparisongrid-{slug}}}")
                     tables["comparisongrid-" + slug] = grid
+    index += [f"\\@namedef{{geomint@cmp@{run}@{key}}}{{\\#{n}}}" for (run, key), n in numbers.items()]  # (\\cmpref)
     index.append(r"\makeatother")
     return "\n".join(index) + "\n", tables
 

@@ -2,8 +2,8 @@
 """check_report.py SOURCE_DIR RESULTS_ROOT WORK_DIR METHODS_BIN
 
 The generic report script (scripts/report.py) on the quick runs: it writes its files, every
-comparison of every summary.json appears in comparisons.tex, the ledger names every figure and
-table of paper/papers.toml, quick.tex lists a quick run's comparisons and the tests that wait on it,
+comparison of every summary.json has its row in comparisons.tex, the ledger names every figure and
+table of paper/papers.toml, quick.tex lists a quick run's comparisons (by number) and the tests that wait on it,
 a \\result lookup of an existing key is defined and one of a missing
 key stops the script naming the key, and the script stays generic (no experiment name in it, at
 most 600 lines).
@@ -78,12 +78,12 @@ def main() -> int:
     if "waited on by 1 tests" not in quick:
         problems.append("quick.tex does not count the tests that wait on a quick run")
     for key, c in json.loads((results / run0 / "summary.json").read_text(encoding="utf-8")).get("comparisons", {}).items():
-        if key.replace("_", "\\_") not in quick.replace("\\allowbreak{}", "") or c["verdict"] not in quick:
-            problems.append(f"quick.tex: no row for {run0}'s comparison {key} with its verdict")
+        if f"\\hyperref[cmp:{run0}:{key}]" not in quick or c["verdict"] not in quick:
+            problems.append(f"quick.tex: no row for {run0}'s comparison {key} (its number) with its verdict")
     hard = (work / "hardcases.tex").read_text(encoding="utf-8") if (work / "hardcases.tex").is_file() else ""
     if "Stays Bounded} & passed" not in hard or "Diverges beyond the Bound} & FAILED" not in hard:
         problems.append("hardcases.tex does not list the JUnit report's tests with their results")
-    if r"max \textbar{}z\textbar{} & $0.5000$ & $\le$ $1$" not in hard:
+    if r"max $|z|$ & $0.5000$ & $\le$ $1$" not in hard:
         problems.append("hardcases.tex does not show a case's measured value and bound (HARDCASE line)")
     if "quick" in hard:
         problems.append("hardcases.tex lists a fixture that is not labelled hardcase")
@@ -102,8 +102,8 @@ def main() -> int:
     for run in runs:
         summary = json.loads((results / run / "summary.json").read_text(encoding="utf-8"))
         for key in summary.get("comparisons", {}):
-            if key.replace("_", "\\_") not in comparisons:
-                problems.append(f"{run}: comparison {key} not in comparisons.tex")
+            if f"\\label{{cmp:{run}:{key}}}" not in comparisons:
+                problems.append(f"{run}: comparison {key} has no row (\\label{{cmp:{run}:{key}}}) in comparisons.tex")
         for fmt in ("general", "sci"):
             if f"geomint@{run}@{fmt}@timing.wall_s@v" not in lookups:
                 problems.append(f"{run}: no \\result[{fmt}] for timing.wall_s")
