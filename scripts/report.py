@@ -296,10 +296,8 @@ def ledger_tex(runs, papers, tests):
                     verdict += f" ({refs.get(key) or prose(key)} = {value_text(ch.get('used'))}, " \
                                f"printed {value_text(ch.get('printed'))})"
                 for what, co in (f.get("corrected") or {}).items():  # (what the printed one gives: its comparison)
-                    gives = comparisons.get(co["printed_gives"], {})
-                    verdict += (f" ({prose(what)} {ascii_math(co['used'])}, printed {ascii_math(co['printed'])}, "
-                                f"which gives {tex_escape(gives.get('verdict', '?'))}: "
-                                f"{value_text(gives.get('reproduced'))} against {value_text(gives.get('published'))})")
+                    verdict += (f" ({ascii_math(co['used'])} in {prose(what)}, printed {ascii_math(co['printed'])}: "
+                                f"{refs.get(co['printed_gives']) or prose(co['printed_gives'])})")
                 if f.get("unexpected"):
                     verdict += ": " + ", ".join(refs.get(k) or prose(k) for k in f["unexpected"]) + \
                         " differ unexpectedly"
