@@ -505,7 +505,7 @@ def quick_tex(tests, quick_root, numbers=None, roots=(ROOT,)):
             ref = comparison_ref(numbers or {}, run_id, key)
             what = (f"{ref} ({tex_escape(c['figure'])})" if c.get("figure") else ref) if ref else prose(c["where"])
             out.append(f"{what} & {value_text(c.get('published'))} & {value_text(c.get('reproduced'))} & "
-                       f"{tex_escape(band or '--')} & {tex_escape(c['verdict'])}\\")
+                       f"{tex_escape(band or '--')} & {tex_escape(c['verdict'])}\\\\")
     out += [r"\bottomrule", r"\end{longtable}}"]
     return "\n".join(out) + "\n"
 

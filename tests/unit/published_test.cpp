@@ -211,7 +211,7 @@ stderr = "reproduced.gamma_stderr"
                 .find("needs stderr"), std::string::npos);
 }
 
-TEST(Published, ATypedToleranceNotSmallerThanItsValueIsRefused) {
+TEST(Published, ATypedToleranceNotSmallerThanItsValueIsALoadError) {
   EXPECT_NE(error_of(R"(
 [growth]
 study = "long_run"
