@@ -148,10 +148,11 @@ def results_tex(runs, tex_files, draft):
 
 
 ERRATA_SECTIONS = [  # (title, the comparisons it lists)
-    ("Errata", lambda c: c.get("expect") == "differs" and c.get("kind", "printed") in ("printed", "authors_code")),
+    # (an erratum quotes what the paper prints: the authors' code is not the paper, and its values never are errata)
+    ("Errata", lambda c: c.get("expect") == "differs" and c.get("kind", "printed") == "printed"),
     ("Possible scanning errors", lambda c: c.get("expect") == "differs" and c.get("kind") == "scanning"),
     ("Conventions the papers leave open", lambda c: c.get("kind") == "convention"),
-    ("Values from the authors' code", lambda c: c.get("kind") == "authors_code" and c.get("expect") != "differs"),
+    ("Values from the authors' code", lambda c: c.get("kind") == "authors_code"),
     ("Observations of a sample the papers do not give", lambda c: c.get("kind") == "sample"),
 ]
 ERRATA_INTRO = {
