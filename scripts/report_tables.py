@@ -41,8 +41,9 @@ def rule_text(c):
     """A comparison's tolerance as published.toml gives it: typed ("rel 0.03", "abs 1e-13"), or derived, from the
     printed digits ("rel: half a unit in the last printed digit") or the run's standard error ("abs: 2 standard
     errors of the run")."""
+    k = (c.get("tolerances") or {}).get("standard_errors", float("nan"))  # (kStandardErrors, as the run wrote it)
     origins = {"printed": "half a unit in the last printed digit",  # (runner/published.hpp)
-               "stderr": f"{(c.get('tolerances') or {}).get('standard_errors', 2):g} standard errors of the run"}
+               "stderr": f"{k:g} standard errors of the run"}
     return ", ".join(f"{k} {v:g}" if isinstance(v, (int, float)) else f"{k}: {origins.get(v, v)}"
                      for k, v in (c.get("compare") or {}).items())
 

@@ -211,6 +211,11 @@ stderr = "reproduced.gamma_stderr"
                 .find("needs stderr"), std::string::npos);
 }
 
+TEST(Published, PrintedDigitsNeedADecimalLiteral) {
+  EXPECT_NE(error_of("[n]\nstudy = \"s\"\nvalue = 0x1F\nwhere = \"F\"\nsummary = \"r.n\"\ncompare = { abs = \"printed\" }\n")
+                .find("written in decimal"), std::string::npos);
+}
+
 TEST(Published, ATypedToleranceNotSmallerThanItsValueIsALoadError) {
   EXPECT_NE(error_of(R"(
 [growth]

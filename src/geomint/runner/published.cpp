@@ -221,7 +221,10 @@ std::vector<Published> read_published(const std::filesystem::path& file) {
       if (printed) {  // half a unit in the last printed digit of each value (relative: of that value)
         p.tolerance_origin = "printed";
         const auto of = [&](const toml::node& n, double v) {
-          const double half = half_unit_in_last_digit(literal_of(n, key));
+          const std::string literal = literal_of(n, key);
+          if (literal.find_first_not_of("+-0123456789._eE") != std::string::npos)
+            fail(file, key, "\"printed\" needs each value written in decimal, not " + literal);
+          const double half = half_unit_in_last_digit(literal);
           return p.compare == "rel" ? half / std::abs(v) : half;
         };
         if (const auto* vt = value.as_table()) {
