@@ -50,7 +50,7 @@ bool rounds_to_printed(double printed, double reproduced, int digits) {
 Value printed_digits_agreement(const Context& ctx, const std::vector<std::string>& keys, int digits) {
   int compared = 0, rounding = 0;
   double deviation = 0;
-  std::vector<std::pair<std::string, std::vector<double>>> roundoff;  // the printed values compared absolutely
+  std::vector<std::pair<std::string, std::vector<double>>> roundoff;  // per key: the printed values at round-off
   for (const std::string& key : keys) {
     const auto c = ctx.comparison(ctx.summary, key);
     if (!c) continue;
