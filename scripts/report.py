@@ -52,7 +52,7 @@ from xml.etree import ElementTree
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 from paper_runs import why_not_paper_run  # noqa: E402
 from report_tables import comparison_numbers, comparison_ref, comparisons_tex, figure_comparisons_tex, key_refs, \
-    method_names_tex, methods_tex, rule_text  # noqa: E402
+    method_names_tex, methods_tex, rule_text, tolerances_tex  # noqa: E402
 from tex_format import FORMATS, GREEK as GREEK_NAMES, ascii_math, code, is_number, longtable, number, prose, \
     quote_tex, repo_paths, tex_escape, value_text  # noqa: E402
 
@@ -560,7 +560,8 @@ def main():
                   if pathlib.Path(f).parts[-2:] == ("tests", "CMakeLists.txt")]  # (the tree the tests ran from)
     results, missing = results_tex(runs, tex, args.draft)
     figure_index, figure_tables = figure_comparisons_tex(runs)
-    files = {"results.tex": results, "comparisons.tex": comparisons_tex(runs), "figure_comparisons.tex": figure_index,
+    files = {"results.tex": results, "comparisons.tex": comparisons_tex(runs),
+             "tolerances.tex": tolerances_tex(runs), "figure_comparisons.tex": figure_index,
              **figure_tables, "errata.tex": errata_tex(runs, tests),
              "machine.tex": machine_tex(runs)}
     papers = tomllib.loads(pathlib.Path(args.papers).read_text(encoding="utf-8")) if args.papers else None

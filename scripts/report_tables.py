@@ -90,6 +90,25 @@ def comparisons_tex(runs):
     return "\n".join(out) + "\n"
 
 
+def tolerances_tex(runs):
+    """Every tolerance typed as a number in a published.toml (not derived from the printed digits, the run's
+    standard errors or the round-off floor), with the origin its `why` states and what it judged: one row per
+    comparison, in the order of Appendix A."""
+    numbers = comparison_numbers(runs)
+    rows = []
+    for name, run in runs.items():
+        for key, c in (run["summary"].get("comparisons") or {}).items():
+            if c.get("why") and c["verdict"] != "not computed":  # (another run of the study computes it)
+                judged = value_text(c.get("reproduced") if next(iter(c["compare"])) in ("above", "below")
+                                    else c.get("difference"))
+                rows.append(f"{comparison_ref(numbers, name, key)} & {tex_escape(c.get('figure', ''))} & "
+                            f"{tex_escape(rule_text(c))} & {judged} & {prose(c['why'], key_refs(numbers, name))}\\\\")
+    return "\n".join(["% The typed tolerances and their origin (scripts/report.py from summary.json \"comparisons\": why).",
+                      longtable("footnotesize", 0.06, 0.12, 0.12, 0.13, 0.5),
+                      r"\toprule no. & item & tolerance & judged (difference, or value of a claim) & its origin\\ "
+                      r"\midrule", r"\endhead", *rows, r"\bottomrule", r"\end{longtable}}"]) + "\n"
+
+
 # In a grid, a comparison's `where` reads "<item>, <quantity>, <columns>: <definition>" (published.toml), e.g.
 # "001 Table 1, Energy H(p, q), N = 10, 20, 40 meshes per period: max |H(p_j, q_j) - H_0|, j = 1..N".
 SYMBOL = r"[A-Za-z](?:_\{?\w+\}?)?(?:\([^()]*\))?"  # a quantity's symbol: p, N, H_d, H(p, q)

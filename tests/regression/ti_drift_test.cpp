@@ -146,8 +146,8 @@ TEST(TiDrift, StormerVerletGrowsLinearlyOnItsBound) {
 }
 
 TEST(TiDrift, TiEnergyErrorFromRestIsUnbounded) {
-  // 004 Sect. 1.4: the error "converges to one" as omega h -> 2 sqrt(3) only from q0 = 0 (erratum
-  // ti_energy_error_bounded); from p0 = 0 the sampled maximum (over the span of Fig. 1) is far above one and
+  // 004 Sect. 1.4: the error "converges to one" as omega h -> 2 sqrt(3) only from q0 = 0, the start the
+  // passage assumes (convention ti_energy_error_bounded); from p0 = 0 the sampled maximum (over the span of Fig. 1) is far above one and
   // below its closed form x^3 / (12 - x)^3 (the unit test TakahashiImada.FromRestTheEnergyErrorIsUnbounded
   // follows it to the closed form over a longer run).
   const auto& f = summary()["oscillator"]["from_rest"];

@@ -3,7 +3,8 @@
 run needed. An item whose value comparisons share one key set gets a grid: a row per quantity named by its
 `where`, a column pair per key (in numeric order, headed by the parameter `where` names), the order column
 filled from the order comparison of the same quantity and, for a quantity without one, its tolerance. An item
-whose keys differ, or whose order names a quantity no value comparison has, gets none."""
+whose keys differ, or whose order names a quantity no value comparison has, gets none. The table of typed
+tolerances lists each comparison with a `why`, and no other."""
 import pathlib
 import sys
 
@@ -53,6 +54,16 @@ for item in (UNEQUAL, UNPAIRED):
         problems.append(f"{item} gets a grid")
     if f"comparisons-{slug}.tex" not in tables:
         problems.append(f"{item} lost its list of comparisons")
+# The typed tolerances: a row for each comparison that states the origin of its typed number (`why`), none for
+# a derived one, none for one this run did not compute.
+typed = {"t_err": {**value(GRID, "State t", 1.0, 1.02, {"rel": 0.1}), "difference": 0.02, "why": "two standard errors of 100 samples"},
+         "p_err": value(GRID, "State p", 1.0, 1.0, {"rel": "printed"}),
+         "n_err": {**value(GRID, "State n", 1.0, None, {"rel": 0.1}), "why": "w", "verdict": "not computed"}}
+listed = report_tables.tolerances_tex({"run": {"summary": {"comparisons": typed}}})
+if "rel 0.1 & $0.0200$ & two standard errors of 100 samples\\\\" not in listed:
+    problems.append("the table of typed tolerances has no row for t_err with its origin")
+if "cmp:run:p_err" in listed or "cmp:run:n_err" in listed:
+    problems.append("the table of typed tolerances lists a derived or an uncomputed one")
 for p in problems:
     print("check_report_tables:", p)
 if problems:

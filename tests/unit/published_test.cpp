@@ -42,6 +42,7 @@ value = 1.0e-6
 where = "Table 1"
 summary = "reproduced.p_err"
 compare = { rel = 0.03 }
+why = "the spread of the fixture"
 
 [order]
 study = "convergence"
@@ -49,6 +50,7 @@ value = 4
 where = "Fig. 4"
 summary = "orders.sv"
 compare = { order = 0.1 }
+why = "the curvature of the fixture's local slopes"
 
 [growth]
 study = "long_run"
@@ -106,8 +108,18 @@ TEST(Published, RejectsMalformedEntries) {
   refused("a quotation without its place", differs + "quotes = [{ text = \"words\" }]\n", "quotes is a list");
   refused("quotes that are not a list", differs + "quotes = \"words\"\n", "quotes is a list");
   EXPECT_EQ(error_of(differs + "quotes = [{ at = \"004 Sect. 1.4\", text = \"words\" }]\n"), "");
-  EXPECT_EQ(error_of(entry + "summary = \"x\"\nkind = \"convention\"\nexpect = \"differs\"\nnote = \"n\"\ntest = \"t\"\n"),
-            "");  // (a convention quotes what it likes)
+  // a convention quotes the passage whose assumption it holds under
+  const std::string convention = entry + "summary = \"x\"\nkind = \"convention\"\nexpect = \"differs\"\nnote = \"n\"\ntest = \"t\"\n";
+  refused("a convention without the passage it holds under", convention, "a convention needs quotes");
+  EXPECT_EQ(error_of(convention + "quotes = [{ at = \"004 Sect. 1.4\", text = \"attained when p_n = 0\" }]\n"), "");
+  // a typed tolerance states its origin; a derived or an exact one has none to state
+  refused("a typed tolerance without its origin", entry + "summary = \"x\"\ncompare = { rel = 0.1 }\n", "needs why");
+  refused("a claim's bound without its origin", "[a]\nstudy = \"s\"\nwhere = \"w\"\nsummary = \"x\"\ncompare = { above = 0.8 }\n",
+          "needs why");
+  refused("an origin for a derived tolerance", entry + "summary = \"x\"\ncompare = { abs = \"printed\" }\nwhy = \"w\"\n",
+          "has none");
+  EXPECT_EQ(error_of(entry + "summary = \"x\"\ncompare = { abs = 0 }\n"), "");  // (exact: 0 has no origin to state)
+  EXPECT_EQ(error_of(entry + "summary = \"x\"\ncompare = { rel = 0.1 }\nwhy = \"the spread of 100 samples\"\n"), "");
 }
 
 TEST(Published, VerdictsByTolerance) {
@@ -224,6 +236,7 @@ value = { "0.1" = 2.5e-11, "0.05" = 5.45e-14 }
 where = "Fig. 2"
 summary = "reproduced.growth"
 compare = { abs = 1e-12 }
+why = "w"
 )").find("is not smaller than the value 5.45e-14"), std::string::npos);
 }
 
@@ -258,6 +271,7 @@ value = { M = 2, T = 2 }
 where = "w"
 summary = "orders.o"
 compare = { order = 0.3 }
+why = "w"
 )"));
   EXPECT_EQ(verdict(e[0], {{"orders", {{"o", {{"M", 2.05}, {"T", 1.9}}}}}}), nullptr);  // study s did not run
   const auto c = compare_published(e[0], {{"orders", {{"o", {{"M", 2.05}, {"T", 1.6}}}}}}, json::object(), {"s"});
@@ -303,12 +317,14 @@ study = "table1"
 where = "the cuts lie in p2 < 0"
 summary = "share"
 compare = { above = 0.5 }
+why = "a majority"
 
 [each]
 study = "table1"
 where = "less drift than the other, for every method"
 summary = "ratio"
 compare = { below = 1 }
+why = "less than the other"
 )"));
   EXPECT_EQ(e[0].value, "> 0.5");
   EXPECT_EQ(verdict(e[0], {{"share", 0.93}}), "reproduced");
@@ -332,7 +348,7 @@ TEST(Published, KindsAndChosenParameters) {
                 .find("needs its note"),
             std::string::npos);
   const auto e = read_published(published_file(
-      "[a]\nstudy = \"table1\"\nvalue = 3.0\nwhere = \"w\"\nsummary = \"x\"\ncompare = { rel = 0.1 }\n"
+      "[a]\nstudy = \"table1\"\nvalue = 3.0\nwhere = \"w\"\nsummary = \"x\"\ncompare = { rel = 0.1 }\nwhy = \"w\"\n"
       "kind = \"authors_code\"\nchosen = { \"lj.h\" = 0.2 }\nnote = \"the printed step diverges\"\n"));
   const auto c = compare_published(e[0], {{"x", 3.1}}, {{"lj", {{"h", 0.01}}}}, {"table1"});
   ASSERT_TRUE(c.has_value());

@@ -21,7 +21,7 @@ using json = nlohmann::ordered_json;
 
 const std::vector<std::string> kFields = {"study", "figure", "value", "where", "summary", "compare", "requires", "expect",
                                           "note", "test", "kind", "chosen", "quotes", "roundoff",
-                                          "corrected", "stderr"};
+                                          "corrected", "stderr", "why"};
 const std::vector<std::string> kKinds = {"printed", "scanning", "authors_code", "convention", "sample"};
 
 bool is_claim(const std::string& compare) { return compare == "above" || compare == "below"; }
@@ -145,6 +145,7 @@ std::vector<Published> read_published(const std::filesystem::path& file) {
     p.summary = text(*t, "summary", file, key, true);
     p.note = text(*t, "note", file, key, false);
     p.test = text(*t, "test", file, key, false);
+    p.why = text(*t, "why", file, key, false);
     if (const std::string e = text(*t, "expect", file, key, false); !e.empty()) {
       if (e != "reproduced" && e != "differs") fail(file, key, "expect must be \"reproduced\" or \"differs\"");
       p.expect = e;
@@ -168,6 +169,10 @@ std::vector<Published> read_published(const std::filesystem::path& file) {
         p.quotes.push_back({{"at", *(*qt)["at"].value<std::string>()}, {"text", *(*qt)["text"].value<std::string>()}});
       }
     }
+    // A convention is a statement that holds under an assumption the paper makes in the same passage:
+    // that passage is quoted.
+    if (p.kind == "convention" && p.quotes.empty())
+      fail(file, key, "a convention needs quotes: the passage that makes the assumption under which it holds");
     if (p.expect == "differs" && (p.kind == "printed" || p.kind == "scanning") && p.quotes.empty())
       fail(file, key, "a printed statement that differs needs quotes: the paper's words it contradicts");
     if (const auto c = (*t)["chosen"]) {
@@ -242,6 +247,13 @@ std::vector<Published> read_published(const std::filesystem::path& file) {
       if (p.compare == "rel" && p.value.is_number() && p.value.get<double>() == 0.0)
         fail(file, key, "a relative comparison needs a published value != 0 (use abs)");
     }
+    // A typed number is a tolerance nobody derived unless its origin is stated (an exact comparison,
+    // tolerance 0, needs none); a derived one ("printed", "stderr") states its own.
+    const bool typed = !p.compare.empty() && p.tolerance_origin == "typed" && (claim || p.tolerance != 0);
+    if (typed && p.why.empty())
+      fail(file, key, "a typed tolerance needs why = \"...\": where the number " + json(p.tolerance).dump() +
+                          " comes from (or derive it: \"printed\", \"stderr\")");
+    if (!typed && !p.why.empty()) fail(file, key, "why states the origin of a typed tolerance; this entry has none");
     if (const auto r = (*t)["roundoff"]) {
       const auto* rt = r.as_table();
       if (!rt || !(*rt)["floor"].is_string() || rt->size() > 2 || (rt->size() == 2 && !(*rt)["exact"].is_string()))
@@ -304,6 +316,7 @@ std::optional<json> compare_published(const Published& e, const json& summary, c
     if (!reason.empty()) c["reason"] = reason;
     if (e.expect != "reproduced") c["expect"] = e.expect;
     if (!e.note.empty()) c["note"] = e.note;
+    if (!e.why.empty()) c["why"] = e.why;
     if (!e.test.empty()) c["test"] = e.test;
     return c;
   };

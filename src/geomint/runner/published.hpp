@@ -22,6 +22,8 @@
 //                                         # a printed qualitative claim ("the cuts lie in p2 < 0") is
 //                                         # { above = x } or { below = x }: the measured quantity
 //                                         # (every value of a table) lies above or below x; no `value`
+//   why = "..."                           # where a typed tolerance comes from (required with one, unless
+//                                         # it is 0: an exact comparison); the report lists them in one table
 //   kind = "printed"                      # where the value comes from: "printed" (default), "scanning"
 //                                         # (printed, but the scanned text may have garbled it),
 //                                         # "authors_code" (not printed: the code published with the
@@ -77,6 +79,7 @@ struct PublishedError : std::runtime_error {
 
 struct Published {
   std::string key, study, where, summary, note, test;
+  std::string why;                  // a typed tolerance's origin (required with one)
   std::string figure;                // "004 Fig. 5": the item of the paper (paper/papers.toml) it belongs to
   std::string expect = "reproduced";
   nlohmann::ordered_json value;     // a number, or an object of numbers keyed by a parameter
