@@ -51,9 +51,9 @@ from xml.etree import ElementTree
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 from paper_runs import why_not_paper_run  # noqa: E402
-from report_tables import SAYS_END, SAYS_MAX, TEXT_END, TEXT_MAX, at, comparison_numbers, comparison_ref, \
-    comparisons_tex, expand_record, figure_comparisons_tex, key_refs, method_names_tex, methods_tex, record_problems, \
-    rule_text  # noqa: E402
+from report_records import LOOKUP, at, expand_record, label_problems, read_records, record_problems  # noqa: E402
+from report_tables import comparison_numbers, comparison_ref, comparisons_tex, figure_comparisons_tex, key_refs, \
+    method_names_tex, methods_tex, rule_text  # noqa: E402
 from tex_format import FORMATS, GREEK as GREEK_NAMES, ascii_math, code, is_number, longtable, number, prose, \
     quote_tex, repo_paths, tex_escape, value_text  # noqa: E402
 
@@ -61,7 +61,6 @@ ROOT = pathlib.Path(__file__).resolve().parent.parent
 
 
 TEXT_FORMATS = ("text", "vec", "tverdict")
-LOOKUP = re.compile(r"\\result(range)?(?:\[([^\]]*)\])?\{([^}]*)\}\{([^}]*)\}")
 HAS = re.compile(r"\\ifresult\{([^}]*)\}\{([^}]*)\}")  # \ifresult{run}{key}{if it has a value}{if not}
 VERDICT = re.compile(r"\\verdict\{([^}]*)\}\{([^}]*)\}")  # \verdict{run}{004 Fig. 5}: summary.json figures
 
@@ -85,61 +84,6 @@ def lookup_text(run, key, fmt, ranged):
         return f"\\ensuremath{{({', '.join(f'{x:g}' for x in v)})}}" if ok else None
     content = number(v, fmt)
     return None if content is None else f"\\ensuremath{{{content}}}"
-
-
-def read_records(runs, root=ROOT):
-    """Each comparison with the summary key it compares (experiments/<experiment>/published.toml) and its `where`
-    and `note` with the run's values in place of their placeholders (report_tables.expand_record)."""
-    for name, run in runs.items():
-        path = root / "experiments" / run["summary"].get("experiment", name) / "published.toml"
-        published = tomllib.loads(path.read_text(encoding="utf-8")) if path.is_file() else {}
-        for key, c in (run["summary"].get("comparisons") or {}).items():
-            c.setdefault("summary", (published.get(key) or {}).get("summary"))
-            for field in ("where", "note"):
-                if field in c:
-                    c[field] = expand_record(c[field], run["summary"], run["run"].get("scene", {}), f"{name}: {key}")
-
-
-# The description of a lookup in the report's text: the words of its sentence before it (a table cell, an item,
-# a caption and a paragraph start one), the lookups among them by their keys, math by its lookups alone.
-SENTENCE = re.compile(r"(?<!\\)[.;:]\s+(?=[A-Z\\$])|&|\\item(?:\[[^]]*\])?|\\\\|\n\s*\n|"
-                      r"\\(?:caption|paragraph|section|subsection)\*?\{")
-DESCRIPTION_WORDS = (3, 7)  # a description: at least 3 words beside math and lookups; the last 7 words, lookups
-# and math included, of its sentence before the lookup
-
-
-def lookup_labels(text):
-    """(description, run, key, line) of each \\result lookup of a LaTeX text (LOOKUP), its description as above."""
-    text, out = re.sub(r"(?<!\\)%.*", "", text), []
-    for m in LOOKUP.finditer(text):
-        before = text[max(0, m.start() - 600):m.start()]
-        starts = [b.end() for b in SENTENCE.finditer(before)]
-        before = LOOKUP.sub(lambda k: f" #{k.group(3)}@{k.group(4)} ", before[starts[-1] if starts else 0:])
-        before = re.sub(r"\$([^$]*)\$", lambda k: " $ " + " ".join(re.findall(r"#\S+", k.group(1))) + " ", before)
-        words = re.findall(r"[\w#@.$'-]+", re.sub(r"\\[a-zA-Z]+\*?(?:\[[^]]*\])?|[{}~]", " ", before))
-        out.append((" ".join(w.lower().strip(".") for w in words), m.group(3), m.group(4),
-                    text.count("\n", 0, m.start()) + 1))
-    return out
-
-
-def label_problems(tex_texts):
-    """Two lookups of different keys of one run under the same description (lookup_labels), and a description that
-    says the largest value of a key that is the value at the end, or the reverse (report_tables: SAYS_END ...)."""
-    by_label, problems = {}, []
-    for name, text in tex_texts.items():
-        for label, run, key, line in lookup_labels(text):
-            words = [w for w in label.split() if w != "$" and not w.startswith("#")]
-            tail = " ".join(words[-6:])
-            if SAYS_END.search(key) and TEXT_MAX.search(tail) or SAYS_MAX.search(key) and TEXT_END.search(tail):
-                problems.append(f"{name}:{line}: '{tail}' does not describe {run} {key}")
-            if len(words) >= DESCRIPTION_WORDS[0] and not key.startswith("scene."):  # (a scene's setting, not a result)
-                by_label.setdefault((run, " ".join(label.split()[-DESCRIPTION_WORDS[1]:])), {}) \
-                    .setdefault(key, f"{name}:{line}")
-    for (run, label), keys in by_label.items():
-        if len(keys) > 1:
-            problems.append(f"{', '.join(keys.values())}: the keys {', '.join(keys)} of {run} under one description: "
-                            f"'{label}'")
-    return problems
 
 
 def results_tex(runs, tex_files, draft):
@@ -600,7 +544,7 @@ def main():
             return 1
     tex = [pathlib.Path(t) for t in args.tex] if args.tex is not None else \
         [ROOT / "paper" / "main.tex"] + sorted((ROOT / "paper" / "sections").rglob("*.tex"))
-    read_records(runs)
+    read_records(runs, ROOT)
     wrong = record_problems(runs) + label_problems({str(t): t.read_text(encoding="utf-8") for t in tex})
     for w in wrong:  # (a description is the quantity's name: one per key, and what its record says)
         print(f"report.py: {w}", file=sys.stderr)

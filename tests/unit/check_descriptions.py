@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """check_descriptions.py SOURCE_DIR: what the report says a comparison or a lookup compares agrees with the record
-(scripts/report_tables.py, scripts/report.py), from synthetic summaries and LaTeX, no run needed. A comparison's
+(scripts/report_records.py), from synthetic summaries and LaTeX, no run needed. A comparison's
 {scene.KEY} and {summary.KEY|fmt} become the run's values and a key the run lacks stops the report; its fits (fit
 sources of its key, of its entries, or of the windows of the CSV column it summarizes) are printed from the record.
 Each planted fault fails: "largest" of a value at the end time, "at the end" of a largest value, "whole run" of a key
@@ -10,8 +10,7 @@ import pathlib
 import sys
 
 sys.path.insert(0, str(pathlib.Path(sys.argv[1]) / "scripts"))
-import report  # noqa: E402
-import report_tables as rt  # noqa: E402
+import report_records as rt  # noqa: E402
 
 
 def fit(quantity, y, a, b, kind="slope"):
@@ -76,12 +75,12 @@ TEXT = r"""The fitted rate is \result[sci3]{r}{reproduced.rate}. The largest err
 and the error at the end of the run is \result[err]{r}{reproduced.H_err_at_t_end}.
 \paragraph{Fig.~2.} The run goes to $t=\result[int]{r}{scene.t_end}$ (\result[int]{r}{reproduced.steps} steps).
 """
-if report.label_problems({"good.tex": TEXT}):
-    problems.append(f"clean text fails: {report.label_problems({'good.tex': TEXT})}")
+if rt.label_problems({"good.tex": TEXT}):
+    problems.append(f"clean text fails: {rt.label_problems({'good.tex': TEXT})}")
 for bad, what in ((r"The fitted rate is \result[percent]{r}{reproduced.rate_whole}.", "under one description"),
                   (r"Here the largest error is \result[err]{r}{reproduced.H_err_at_t_end}.", "does not describe"),
                   (r"So the error at the end is \result[err]{r}{reproduced.max_err}.", "does not describe")):
-    found = report.label_problems({"bad.tex": TEXT + bad + "\n"})
+    found = rt.label_problems({"bad.tex": TEXT + bad + "\n"})
     if len(found) != 1 or what not in found[0] or "bad.tex:4" not in found[0]:
         problems.append(f"'{bad}' gives {found}")
 for p in problems:
