@@ -22,7 +22,9 @@ with the rounds of checkpointed_map (runner/checkpoint.hpp: default_round, repea
 = 64 trajectories x J steps x c, c the measured time per trajectory-step and core (1 rank x 1
 thread), e the efficiency of 2 ranks x 1 thread (busy time only: what the split itself costs), X
 and W the exchange (the rank that waited least) and checkpoint writes measured at the fine map's
-size. The exchange went through shared memory here; on a cluster network it is slower, roughly
+size. busy_fraction is (steps x c / cores) / (rounds' depth x t_batch) = (steps x c / cores) / (compute x e): the
+share of the workers' batch slots that hold a batch, what the rounds lose to whole batches per thread (not the
+split, the exchange or the checkpoints). The exchange went through shared memory here; on a cluster network it is slower, roughly
 in proportion to the bytes each rank receives, which the summary gives. OUT/run.json records the
 machine and the commands. Timings are measurements of this machine, never asserted.
 """

@@ -51,6 +51,7 @@ from xml.etree import ElementTree
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 from paper_runs import why_not_paper_run  # noqa: E402
+from report_records import LOOKUP, at, expand_record, label_problems, read_records, record_problems  # noqa: E402
 from report_tables import comparison_numbers, comparison_ref, comparisons_tex, figure_comparisons_tex, key_refs, \
     method_names_tex, methods_tex, rule_text, tolerances_tex  # noqa: E402
 from tex_format import FORMATS, GREEK as GREEK_NAMES, ascii_math, code, is_number, longtable, number, prose, \
@@ -60,22 +61,8 @@ ROOT = pathlib.Path(__file__).resolve().parent.parent
 
 
 TEXT_FORMATS = ("text", "vec", "tverdict")
-LOOKUP = re.compile(r"\\result(range)?(?:\[([^\]]*)\])?\{([^}]*)\}\{([^}]*)\}")
 HAS = re.compile(r"\\ifresult\{([^}]*)\}\{([^}]*)\}")  # \ifresult{run}{key}{if it has a value}{if not}
 VERDICT = re.compile(r"\\verdict\{([^}]*)\}\{([^}]*)\}")  # \verdict{run}{004 Fig. 5}: summary.json figures
-
-
-def at(tree, key):
-    """The value at a dotted key (array elements by index), or None."""
-    node = tree
-    for part in key.split("."):
-        if isinstance(node, dict) and part in node:
-            node = node[part]
-        elif isinstance(node, list) and part.isdigit() and int(part) < len(node):
-            node = node[int(part)]
-        else:
-            return None
-    return node
 
 
 def lookup_text(run, key, fmt, ranged):
@@ -499,12 +486,17 @@ def quick_tex(tests, quick_root, numbers=None, roots=(ROOT,)):
         scene = repo_paths(scene, roots)
         out.append(rf"\multicolumn{{5}}{{@{{}}p{{0.95\linewidth}}@{{}}}}{{\textbf{{{code(run_id)}}}: "
                    rf"{code(scene)}, waited on by {len(waiting)} tests}}\\")
-        summary = pathlib.Path(quick_root) / run_id / "summary.json"
-        comparisons = json.loads(summary.read_text(encoding="utf-8")).get("comparisons", {}) if summary.is_file() else {}
+        quick = pathlib.Path(quick_root) / run_id
+        summary = json.loads((quick / "summary.json").read_text(encoding="utf-8")) \
+            if (quick / "summary.json").is_file() else {}
+        scene = json.loads((quick / "run.json").read_text(encoding="utf-8")).get("scene", {}) \
+            if (quick / "run.json").is_file() else {}
+        comparisons = summary.get("comparisons", {})
         for key, c in comparisons.items():
             band = rule_text(c)
             ref = comparison_ref(numbers or {}, run_id, key)
-            what = (f"{ref} ({tex_escape(c['figure'])})" if c.get("figure") else ref) if ref else prose(c["where"])
+            what = (f"{ref} ({tex_escape(c['figure'])})" if c.get("figure") else ref) if ref else \
+                prose(expand_record(c["where"], summary, scene, run_id))
             out.append(f"{what} & {value_text(c.get('published'))} & {value_text(c.get('reproduced'))} & "
                        f"{tex_escape(band or '--')} & {tex_escape(c['verdict'])}\\\\")
     out += [r"\bottomrule", r"\end{longtable}}"]
@@ -552,6 +544,12 @@ def main():
             return 1
     tex = [pathlib.Path(t) for t in args.tex] if args.tex is not None else \
         [ROOT / "paper" / "main.tex"] + sorted((ROOT / "paper" / "sections").rglob("*.tex"))
+    read_records(runs, ROOT)
+    wrong = record_problems(runs) + label_problems({str(t): t.read_text(encoding="utf-8") for t in tex})
+    for w in wrong:  # (a description is the quantity's name: one per key, and what its record says)
+        print(f"report.py: {w}", file=sys.stderr)
+    if wrong:
+        return 1
     tests, ctest, roots = None, [], [ROOT]
     if args.tests:
         listing = json.loads(pathlib.Path(args.tests).read_text(encoding="utf-8"))

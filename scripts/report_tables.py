@@ -5,6 +5,7 @@ and the methods' names for \\method (method_names.tex)."""
 import math
 import re
 
+from report_records import key_fits, record_phrase
 from tex_format import FORMATS, code, gnuplot_tex, is_number, key_text, longtable, number, prose, tex_escape, \
     value_text
 
@@ -55,10 +56,10 @@ def roundoff_text(c):
                                                          for k in at) if at else ""
 
 
-def comparison_rows(run, comparisons, numbers, anchor=False):
+def comparison_rows(run, comparisons, numbers, anchor=False, fits=()):
     """One row per comparison (summary.json "comparisons"): its number (with `anchor`, the row that references
     link to), what it is and where printed, the two values, their difference and the verdict with its rule,
-    and its reason or note below it."""
+    and below it its reason or note and, from `fits` (summary.json fit_sources), how its key was fitted."""
     out, refs = [], key_refs(numbers, run)
     for key, c in comparisons.items():
         how = rule_text(c)
@@ -71,9 +72,11 @@ def comparison_rows(run, comparisons, numbers, anchor=False):
                   else comparison_ref(numbers, run, key))
         out.append(f"{number} & {prose(c['where'], refs)} & {value_text(c.get('published'))} & "
                    f"{value_text(c.get('reproduced'))} & {value_text(c.get('difference'))} & {verdict}\\\\")
-        remarks = [c[k] for k in ("reason", "note") if c.get(k)]
+        remarks = prose(" ".join(c[k] for k in ("reason", "note") if c.get(k)), refs)
+        fitted = record_phrase(key_fits(fits, c.get("summary") or ""))
+        remarks += (" " if remarks else "") + (f"From its fits: {fitted}." if fitted else "")
         if remarks:
-            out.append(r"\multicolumn{6}{@{}p{0.95\linewidth}@{}}{\emph{" + prose(" ".join(remarks), refs) + r"}}\\")
+            out.append(r"\multicolumn{6}{@{}p{0.95\linewidth}@{}}{\emph{" + remarks + r"}}\\")
     return out
 
 
@@ -85,7 +88,8 @@ def comparisons_tex(runs):
         if not comparisons:
             continue
         out += [f"\\subsection*{{\\texttt{{{tex_escape(name)}}}}}", longtable("footnotesize", *COMPARISON_COLUMNS),
-                *COMPARISON_HEAD, *comparison_rows(name, comparisons, numbers, anchor=True), r"\bottomrule",
+                *COMPARISON_HEAD, *comparison_rows(name, comparisons, numbers, True, run["summary"].get("fit_sources")),
+                r"\bottomrule",
                 r"\end{longtable}}"]
     return "\n".join(out) + "\n"
 
@@ -214,7 +218,9 @@ def figure_comparisons_tex(runs):
                 tables[file] = "\n".join([f"% {figure}: its comparisons (scripts/report.py).",
                                           f"\\noindent {{[{paper}]}} {tex_escape(item)}:",
                                           longtable("footnotesize", *COMPARISON_COLUMNS),
-                                          *COMPARISON_HEAD, *comparison_rows(name, comparisons, numbers),
+                                          *COMPARISON_HEAD,
+                                          *comparison_rows(name, comparisons, numbers,
+                                                           fits=run["summary"].get("fit_sources")),
                                           r"\bottomrule", r"\end{longtable}}"]) + "\n"
                 grid = comparison_grid(figure, comparisons)
                 if grid:
