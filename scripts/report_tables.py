@@ -48,6 +48,34 @@ def rule_text(c):
                      for k, v in (c.get("compare") or {}).items())
 
 
+def tolerance_at(c, key=None):
+    """The tolerance a comparison applies to its entry `key` (None: its one value), as the run resolved it
+    (runner/published.cpp, tolerance_at): typed, the number in compare; "printed", half a unit in the last
+    printed digit of that value (summary "tolerances", keyed as published.toml prints the parameter: matched by
+    value); "stderr", that many standard errors of the run (tolerances.of). None for a claim or a value only
+    reported, and where the run wrote no number."""
+    (rule, tol), = (c.get("compare") or {"": None}).items()
+    if rule not in ("rel", "abs", "order"):
+        return None
+    resolved = c.get("tolerances")
+    if tol == "stderr":
+        tol = (resolved or {}).get("of")
+    elif tol == "printed":
+        tol = resolved
+        if isinstance(resolved, dict):
+            tol = next((v for k, v in resolved.items() if same_parameter(k, key)), None)
+    return tol if is_number(tol) else None
+
+
+def same_parameter(a, b):
+    """Whether two keys of a value table name the same parameter: equal, or numbers within 1e-12 relative (a step
+    printed "0.1" and written "0.10000000000000001"; runner/published.cpp matches them so)."""
+    try:
+        return a == b or abs(float(a) - float(b)) <= 1e-12 * abs(float(b))
+    except (TypeError, ValueError):
+        return False
+
+
 def roundoff_text(c):
     """The entries of a table that measure round-off and are not compared ("not comparable (round-off) at 0.05")."""
     at = c.get("roundoff") or []
