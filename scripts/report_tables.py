@@ -41,7 +41,8 @@ def rule_text(c):
     """A comparison's tolerance as published.toml gives it: typed ("rel 0.03", "abs 1e-13"), or derived, from the
     printed digits ("rel: half a unit in the last printed digit") or the run's standard error ("abs: 2 standard
     errors of the run")."""
-    k = (c.get("tolerances") or {}).get("standard_errors", float("nan"))  # (kStandardErrors, as the run wrote it)
+    resolved = c.get("tolerances")  # (kStandardErrors as the run wrote it; "printed" of one value: a number)
+    k = resolved.get("standard_errors", float("nan")) if isinstance(resolved, dict) else float("nan")
     origins = {"printed": "half a unit in the last printed digit",  # (runner/published.hpp)
                "stderr": f"{k:g} standard errors of the run"}
     return ", ".join(f"{k} {v:g}" if isinstance(v, (int, float)) else f"{k}: {origins.get(v, v)}"
