@@ -60,7 +60,7 @@ STYLE = {"font.family": "DejaVu Sans", "mathtext.fontset": "dejavusans", "font.s
          "path.simplify": False}
 METADATA = {"CreationDate": None, "Creator": None}
 WIDTH_IN = 6.3  # the report's text width (160 mm)
-ROW_IN, COST_ROW_IN = 0.098, 0.11  # the height of a row of each figure
+ROW_IN, COST_ROW_IN = 0.092, 0.11  # the height of a row of each figure
 # The verdicts (summary.json "comparisons", runner/published.hpp) as drawn: (legend text, marker, colour, filled).
 VERDICT_STYLES = {
     "reproduced": ("reproduced", "o", "#0072B2", True),
@@ -101,13 +101,13 @@ def math_number(x, fmt=None):
 
 
 def paper_of(c, summary):
-    """The paper a comparison belongs to: its item's id ("004 Fig. 5"), else its `where` ("001 eq. (10): ..."), else
-    the run's first item."""
+    """The paper a comparison belongs to, as "[004] ": its item's id ("004 Fig. 5"), else its `where` ("001 eq. (10):
+    ..."), else the run's first item; "" if none names one."""
     for text in (c.get("figure"), c.get("where"), *(summary.get("figures") or {})):
         m = re.match(r"(\d{3})\b", text or "")
         if m:
-            return m.group(1)
-    return "---"
+            return f"[{m.group(1)}] "
+    return ""
 
 
 def item_order(group):
@@ -222,7 +222,7 @@ def comparisons_figure(runs, path):
     for (paper, item), rows in groups.items():
         if y > 0:
             ax.axhline(y - 0.7, color="#bbbbbb", lw=0.4)
-        ax.text(0, y, f"[{paper}] {mathtext(item)}", ha="left", **at)
+        ax.text(0, y, f"{paper}{mathtext(item)}", ha="left", **at)
         for n, style, entries, note in rows:
             if n is None:  # not drawn: why, and which
                 ax.text(left + 0.005, y, f"{style}: " + ", ".join(f"#{k}" for k in entries), ha="left",
@@ -295,7 +295,7 @@ def cost_groups(runs, methods):
             for t, target in enumerate(s["targets"]):
                 reach = [m for m in s["methods"] if is_number((by[m].get("wall_s_to") or [None] * (t + 1))[t])]
                 missing = [method_title(m, methods, summary, name) for m in s["methods"] if m not in reach]
-                header = f"[{paper}] {code(name)}, set {code(set_name)}: error {math_number(target, 'tol')}"
+                header = f"{paper}{code(name)}, set {code(set_name)}: error {math_number(target, 'tol')}"
                 rows = []
                 if reach:
                     ref = reach[0]
@@ -316,8 +316,8 @@ def cost_groups(runs, methods):
 def cost_figure(runs, methods, path):
     """Figure (b): every cost comparison at equal accuracy, its ratio with its interval (module docstring)."""
     groups = cost_groups(runs, methods)
-    values = [v for _, _, rows in groups for r in rows if r[0] is not None
-              for v in (r[1], *(r[2] or ()))] + [1 + s for _, s, _ in groups if s] + [1 / (1 + s) for _, s, _ in groups if s]
+    values = [v for _, _, rows in groups for r in rows if r[0] is not None for v in (r[1], *(r[2] or ()))]
+    values += [v for _, s, _ in groups if s for v in (1 / (1 + s), 1 + s)]
     lo, hi = log_limits(values, (0.5, 2.0))
     n_rows = sum(len(rows) + 1 for _, _, rows in groups) + 0.3 * (len(groups) - 1)
     left, right = 0.36, 0.8
