@@ -7,7 +7,7 @@
 #   make test                     build, then ctest (unit, regression, stability, figures)
 #   make figures                  run every experiment's paper scene, render figures/out/* (only what changed)
 #   make scaling                  strong scaling under MPI and the cluster projection (bench/mpi_scaling.py)
-#   make paper                    figures + scaling + tables from summary.json + paper/main.pdf
+#   make paper                    figures + scaling + tables and overview figures from summary.json + paper/main.pdf
 #   make experiment NAME=x [SCENE=v] ARGS='--study S --set key=value'   one experiment (+ the figures of what ran)
 #   make bench                    throughput benchmarks (Google Benchmark)
 #   make plan-rates               measure --plan's rates on the paper scenes' runs, rewrite experiments/plan_rates.toml
@@ -20,11 +20,13 @@ BUILD     ?= build
 RESULTS   ?= results
 JOBS      ?= $(shell nproc 2>/dev/null || echo 2)
 CMAKE_ARGS ?=
+# The interpreter of scripts/overview_figures.py: Debian's, with python3-matplotlib (the PATH python3 may lack it).
+MPL_PYTHON ?= /usr/bin/python3
 EXPERIMENTS := $(sort $(notdir $(patsubst %/,%,$(dir $(wildcard experiments/*/*.cpp)))))
 DEPS_STAMP := .deps
 UNCHECKED := figures/out/.unchecked   # figures rendered by make figures whose text is not yet checked
 
-.PHONY: all deps build test figures figure-runs figure-files scaling paper experiment bench plan-rates methods-gpi new-study clean FORCE
+.PHONY: all deps build test figures figure-runs figure-files scaling paper overview-figures experiment bench plan-rates methods-gpi new-study clean FORCE
 all: build
 
 $(DEPS_STAMP)/%.stamp: scripts/install-deps.sh
@@ -128,8 +130,19 @@ paper: figures scaling $(DEPS_STAMP)/paper.stamp paper/generated/hardcases.xml
 	python3 scripts/report.py $(RESULTS) paper/generated --methods paper/generated/methods.json \
 	  --papers paper/papers.toml --tests paper/generated/tests.json --quick $(BUILD)/test-results \
 	  --junit paper/generated/hardcases.xml --paper-scenes $(foreach sc,$(PAPER_SCENES),$(call id_of,$(sc))=$(sc))
+	@$(MAKE) --no-print-directory overview-figures
 	cd paper && latexmk -pdf -interaction=nonstopmode -halt-on-error main.tex
 	python3 scripts/check_pdf.py paper/main.pdf --log paper/main.log --tex paper/sections/*.tex paper/sections/cost/*.tex paper/generated/*.tex
+
+# The report's two overview figures (scripts/overview_figures.py, matplotlib: about 3 s, so not part of make
+# figures), from the paper runs and the method registry. A make of its own, called by make paper after the runs, so
+# that their new times are seen; remade when a run, the registry or the scripts changed.
+OVERVIEW := paper/generated/overview-comparisons.pdf paper/generated/overview-cost.pdf
+overview-figures: $(OVERVIEW)
+$(OVERVIEW) &: $(wildcard $(RESULTS)/*/summary.json) $(BUILD)/bin/geomint-methods scripts/overview_figures.py \
+               scripts/report.py scripts/report_tables.py scripts/tex_format.py scripts/paper_runs.py
+	$(MPL_PYTHON) scripts/overview_figures.py $(RESULTS) paper/generated --methods paper/generated/methods.json \
+	  --paper-scenes $(foreach sc,$(PAPER_SCENES),$(call id_of,$(sc))=$(sc))
 
 bench: $(DEPS_STAMP)/build.stamp $(DEPS_STAMP)/figures.stamp $(BUILD)/CMakeCache.txt
 	cmake --build $(BUILD) -j $(JOBS) --target geomint_bench geomint_energy_map_bench

@@ -3,16 +3,17 @@
 #   scripts/install-deps.sh [build|figures|paper]...   (default: build)
 # build   : compiler, CMake, the header libraries, GoogleTest, Open MPI (the ctest label mpi), gnuplot
 #           and pdftotext (the figure test renders every script and checks its text, so `make test`
-#           needs them)
-# figures : build + matplotlib (only where gnuplot is weak)
+#           needs them), and matplotlib, for the report's two overview figures alone
+#           (scripts/overview_figures.py; ctest report.overview_figures draws them on a fixture)
+# figures : build + numpy (the numpy peer of make bench)
 # paper   : figures + TeX Live and latexmk
 set -euo pipefail
 
 build=(g++ cmake make pkg-config git libeigen3-dev libboost-dev libtomlplusplus-dev
        libcli11-dev nlohmann-json3-dev libgtest-dev libbenchmark-dev libsleef-dev libqhull-dev
        libopenmpi-dev openmpi-bin gnuplot-nox fonts-dejavu-core poppler-utils python3 python3-sympy
-       python3-gmpy2)
-figures=("${build[@]}" python3-numpy python3-matplotlib)
+       python3-gmpy2 python3-matplotlib)
+figures=("${build[@]}" python3-numpy)
 paper=("${figures[@]}" latexmk texlive-latex-base texlive-latex-recommended
        texlive-latex-extra texlive-fonts-recommended)
 

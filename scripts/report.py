@@ -503,6 +503,29 @@ def quick_tex(tests, quick_root, numbers=None, roots=(ROOT,)):
     return "\n".join(out) + "\n"
 
 
+def load_runs(root, paper_scenes=None, program="report.py"):
+    """The runs the report shows, by directory name in sorted order (the order of Appendix A's numbers): each
+    root/<run>/summary.json with its run.json. With `paper_scenes` (ID=SCENE, as make passes them) a reviewer's
+    rerun (<id>+<hash>) is left out, and a paper scene's run that is missing or not that scene's run stops
+    the program (SystemExit naming why)."""
+    runs = {}
+    scenes = dict(pair.partition("=")[::2] for pair in paper_scenes or [])
+    for path in sorted(root.glob("*/summary.json")):
+        if scenes and path.parent.name not in scenes and "+" in path.parent.name:
+            continue  # (a reviewer's rerun, results/<id>+<hash>: not the report's)
+        run_json = path.parent / "run.json"
+        runs[path.parent.name] = {"summary": json.loads(path.read_text(encoding="utf-8")),
+                                  "run": json.loads(run_json.read_text(encoding="utf-8")) if run_json.is_file() else {}}
+    if not runs:
+        raise SystemExit(f"{program}: no */summary.json in {root}")
+    for run_id, scene in scenes.items():
+        why = why_not_paper_run(runs[run_id]["run"], scene) if run_id in runs else "it has no summary.json"
+        if why:
+            raise SystemExit(f"{program}: {root / run_id} is not the run of the paper scene {scene}: {why} "
+                             "(make figures reruns it)")
+    return runs
+
+
 def write(path, text):
     tmp = path.with_name(f".{path.name}.tmp-{os.getpid()}")
     tmp.write_text(text, encoding="utf-8")
@@ -524,24 +547,8 @@ def main():
                         help="report only these runs, each the run of its paper scene (scripts/paper_runs.py): a "
                              "run with --set overrides or without every study of its scene is refused")
     args = parser.parse_args()
-    root, out = pathlib.Path(args.results), pathlib.Path(args.out)
-    runs = {}
-    paper_scenes = dict(pair.partition("=")[::2] for pair in args.paper_scenes or [])
-    for path in sorted(root.glob("*/summary.json")):
-        if paper_scenes and path.parent.name not in paper_scenes and "+" in path.parent.name:
-            continue  # (a reviewer's rerun, results/<id>+<hash>: not the report's)
-        run_json = path.parent / "run.json"
-        runs[path.parent.name] = {"summary": json.loads(path.read_text(encoding="utf-8")),
-                                  "run": json.loads(run_json.read_text(encoding="utf-8")) if run_json.is_file() else {}}
-    if not runs:
-        print(f"report.py: no */summary.json in {root}", file=sys.stderr)
-        return 1
-    for run_id, scene in paper_scenes.items():
-        why = why_not_paper_run(runs[run_id]["run"], scene) if run_id in runs else "it has no summary.json"
-        if why:
-            print(f"report.py: {root / run_id} is not the run of the paper scene {scene}: {why} (make figures reruns it)",
-                  file=sys.stderr)
-            return 1
+    out = pathlib.Path(args.out)
+    runs = load_runs(pathlib.Path(args.results), args.paper_scenes, "report.py")
     tex = [pathlib.Path(t) for t in args.tex] if args.tex is not None else \
         [ROOT / "paper" / "main.tex"] + sorted((ROOT / "paper" / "sections").rglob("*.tex"))
     read_records(runs, ROOT)

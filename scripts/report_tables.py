@@ -42,11 +42,40 @@ def rule_text(c):
     """A comparison's tolerance as published.toml gives it: typed ("rel 0.03", "abs 1e-13"), or derived, from the
     printed digits ("rel: half a unit in the last printed digit") or the run's standard error ("abs: 2 standard
     errors of the run")."""
-    k = (c.get("tolerances") or {}).get("standard_errors", float("nan"))  # (kStandardErrors, as the run wrote it)
+    resolved = c.get("tolerances")  # (kStandardErrors as the run wrote it; "printed" of one value: a number)
+    k = resolved.get("standard_errors", float("nan")) if isinstance(resolved, dict) else float("nan")
     origins = {"printed": "half a unit in the last printed digit",  # (runner/published.hpp)
                "stderr": f"{k:g} standard errors of the run"}
     return ", ".join(f"{k} {v:g}" if isinstance(v, (int, float)) else f"{k}: {origins.get(v, v)}"
                      for k, v in (c.get("compare") or {}).items())
+
+
+def tolerance_at(c, key=None):
+    """The tolerance a comparison applies to its entry `key` (None: its one value), as the run resolved it
+    (runner/published.cpp, tolerance_at): typed, the number in compare; "printed", half a unit in the last
+    printed digit of that value (summary "tolerances", keyed as published.toml prints the parameter: matched by
+    value); "stderr", that many standard errors of the run (tolerances.of). None for a claim or a value only
+    reported, and where the run wrote no number."""
+    (rule, tol), = (c.get("compare") or {"": None}).items()
+    if rule not in ("rel", "abs", "order"):
+        return None
+    resolved = c.get("tolerances")
+    if tol == "stderr":
+        tol = (resolved or {}).get("of")
+    elif tol == "printed":
+        tol = resolved
+        if isinstance(resolved, dict):
+            tol = next((v for k, v in resolved.items() if same_parameter(k, key)), None)
+    return tol if is_number(tol) else None
+
+
+def same_parameter(a, b):
+    """Whether two keys of a value table name the same parameter: equal, or numbers within 1e-12 relative (a step
+    printed "0.1" and written "0.10000000000000001"; runner/published.cpp matches them so)."""
+    try:
+        return a == b or abs(float(a) - float(b)) <= 1e-12 * abs(float(b))
+    except (TypeError, ValueError):
+        return False
 
 
 def roundoff_text(c):

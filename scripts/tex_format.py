@@ -107,15 +107,15 @@ def quote_tex(text):
 GNUPLOT_MATH = {"Φ": r"\Phi", "Ψ": r"\Psi", "²": "^2", "³": "^3"}
 
 
-def gnuplot_tex(text):
+def gnuplot_tex(text, escape=tex_escape):
     """A gnuplot enhanced text (the registry's titles: "Φ^{(4)}_h", "h²/24") as LaTeX: its sub- and
-    superscripts and Greek letters as math, the rest escaped."""
+    superscripts and Greek letters as math, the rest escaped by `escape` (matplotlib's mathtext: only "$")."""
     text = "".join(GNUPLOT_MATH.get(c, c) for c in text)
     out, at = [], 0
     for m in re.finditer(r"(?:\\[A-Za-z]+|[A-Za-z])?(?:[\^_](?:\{[^{}]*\}|\w))+|\\[A-Za-z]+", text):
-        out += [tex_escape(text[at:m.start()]), "$" + m.group(0) + "$"]
+        out += [escape(text[at:m.start()]), "$" + m.group(0) + "$"]
         at = m.end()
-    return "".join(out + [tex_escape(text[at:])])
+    return "".join(out + [escape(text[at:])])
 
 
 # In free text (published.toml's notes, the registry's citations): a file (a/b.hpp, fig9.csv), a name
