@@ -138,6 +138,7 @@ Value WorkPrecisionSet::summary(const std::vector<double>& targets) const {
       const RunTime per_step = finest_run(labels[k]).wall.scaled(1e9 / finest.steps);
       m["ns_per_step_q1"] = per_step.q1_s, m["ns_per_step_q3"] = per_step.q3_s;
       m["ns_per_step_spread"] = per_step.spread();
+      m["ns_per_step_drift"] = per_step.drift;  // (the measurement's drift, runner/timing.hpp)
       m["evals_per_step"] = finest.evals / finest.steps;
     }
     m["err_at_equal_wall"] = wall ? Value(error_at_cost(c, *wall, &CostRun::wall_s)) : Value();
@@ -154,7 +155,36 @@ Value WorkPrecisionSet::summary(const std::vector<double>& targets) const {
     if (r.wall_timed) spreads.add(r.wall);
   return {{"error", error_},         {"methods", labels},      {"targets", targets},
           {"equal_wall_s", wall}, {"equal_evals", evals}, {"by_method", by_method},
-          {"spread", spreads.to_value()}};
+          {"spread", spreads.to_value()}, {"ratios_to", ratios_to(by_method, targets)}};
+}
+
+Value WorkPrecisionSet::ratios_to(const Value& by_method, const std::vector<double>& targets) const {
+  const auto labels = methods();
+  const auto per_step = [&](const std::string& m) {
+    const WorkPrecisionRecord& r = finest_run(m);
+    return r.wall.scaled(1 / r.steps);
+  };
+  Value out = Value::list();
+  for (std::size_t t = 0; t < targets.size(); ++t) {
+    const auto reaches = [&](const std::string& m) {
+      return by_method.contains(m) && by_method.at(m).at("wall_s_to").at(t).is_number();
+    };
+    const auto ref = std::find_if(labels.begin(), labels.end(), reaches);
+    Value at{{"target", targets[t]}, {"reference", ref == labels.end() ? Value() : Value(*ref)}};
+    at["by_method"] = Value::record();
+    for (auto m = ref == labels.end() ? ref : std::next(ref); m != labels.end(); ++m) {
+      if (!reaches(*m)) continue;
+      const auto to = [&](const std::string& label, const char* what) {
+        const Value& v = by_method.at(label).at(what).at(t);
+        return v.is_number() ? v.number() : std::nan("");
+      };
+      const TimeRatio w = carried_over(time_ratio(per_step(*m), per_step(*ref)), to(*m, "wall_s_to") / to(*ref, "wall_s_to"));
+      at["by_method"][*m] = {{"wall_ratio", w.median}, {"min", w.lo}, {"max", w.hi}, {"drift", w.drift},
+                             {"verdict", timing_verdict(w, to(*m, "evals_to"), to(*ref, "evals_to"))}};
+    }
+    out.push_back(at);
+  }
+  return out;
 }
 
 const WorkPrecisionRecord& WorkPrecisionSet::finest_run(const std::string& method) const {

@@ -59,8 +59,14 @@ class WorkPrecisionSet {
   // ns_per_step, ns_per_step_q1, ns_per_step_q3, ns_per_step_spread, evals_per_step (of its run at the
   // smallest h), err_at_equal_wall,
   // err_at_equal_evals, wall_s_to, evals_to (per target; null where the measured steps do not reach it)}},
-  // timed_runs (of its runs, those timed)}}, spread (of every timed run: runner/timing_report.hpp)}.
+  // timed_runs (of its runs, those timed)}}, spread (of every timed run: runner/timing_report.hpp),
+  // ratios_to (ratios_to)}.
   Value summary(const std::vector<double>& targets) const;
+  // Per target: each method's wall time to reach it over that of the first method that reaches it (the
+  // reference), with the interval and drift of the ratio of their times per step at the smallest h
+  // (time_ratio) carried over, and its verdict (timing_verdict, the force evaluations to the target as the
+  // work): [{target, reference, by_method: {label: {wall_ratio, min, max, drift, verdict}}}].
+  Value ratios_to(const Value& by_method, const std::vector<double>& targets) const;
   // Each method's time per step at its smallest h against the first method's (relative_timings,
   // runner/timing_report.hpp), the force evaluations per step as the work.
   Value relative_ns_per_step() const;

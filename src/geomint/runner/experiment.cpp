@@ -893,6 +893,7 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
     run["checkpoint_write_s"] = checkpoint_write_seconds();
     run["load_average"] = {{"before", load_before}, {"after", load_average()}};  // 1, 5, 15 minutes
     run["timing_concurrency"] = to_json(timing_concurrency_record());  // (runner/timing.hpp; null: no cost study timed)
+    run["timing_control"] = to_json(timing_control_record());  // (runner/timing.hpp: each measurement's drift)
     run["start_utc"] = utc_iso8601(start);
     run["end_utc"] = utc_iso8601(std::chrono::system_clock::now());
     run["wall_s"] = wall;

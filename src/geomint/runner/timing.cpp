@@ -58,7 +58,7 @@ RunTime RunTime::scaled(double factor) const {
 
 Value to_value(const RunTime& t) {
   return {{"median_s", t.median_s}, {"q1_s", t.q1_s}, {"q3_s", t.q3_s}, {"min_s", t.min_s}, {"max_s", t.max_s},
-          {"spread", t.spread()}, {"repeats", t.repeats}, {"inner", t.inner}};
+          {"spread", t.spread()}, {"repeats", t.repeats}, {"inner", t.inner}, {"drift", t.drift}};
 }
 
 double sorted_quantile(const std::vector<double>& v, double q) {
@@ -169,6 +169,14 @@ void fp_throughput_loop() {
 std::mutex concurrency_mutex;
 std::map<int, TimingConcurrency> concurrency_measured;  // by requested workers
 
+std::mutex control_mutex;
+Value control_measured = Value::list();  // timing_control_record
+
+// The control's time per call, alone under the protocol (kControlRepeats runs).
+double control_seconds(double floor_s) {
+  return run_rounds({fp_throughput_loop}, kControlRepeats, floor_s, 1).front().seconds();
+}
+
 }  // namespace
 
 TimingConcurrency timing_concurrency(int workers, int repeats) {
@@ -205,9 +213,24 @@ Value timing_concurrency_record() {
   return out;
 }
 
+Value timing_control_record() {
+  const std::lock_guard<std::mutex> lock(control_mutex);
+  if (control_measured.size() == 0) return nullptr;
+  return control_measured;
+}
+
 std::vector<RunTime> InterleavedTiming::run() const {
   const int workers = workers_ > 1 && configs_.size() > 1 ? timing_concurrency(workers_, repeats_).workers : 1;
-  return run_rounds(configs_, std::max(repeats_, 1), floor_s_, workers);
+  if (configs_.size() < 2) return run_rounds(configs_, std::max(repeats_, 1), floor_s_, workers);
+  const double before = control_seconds(floor_s_);  // (the drift of a measurement whose ratios are compared)
+  std::vector<RunTime> out = run_rounds(configs_, std::max(repeats_, 1), floor_s_, workers);
+  const double after = control_seconds(floor_s_);
+  const double drift = std::abs(after / before - 1);
+  for (RunTime& t : out) t.drift = drift;
+  const std::lock_guard<std::mutex> lock(control_mutex);
+  control_measured.push_back({{"configurations", static_cast<double>(configs_.size())}, {"before_s", before},
+                              {"after_s", after}, {"drift", drift}});
+  return out;
 }
 
 RunTime time_runs(int repeats, const std::function<void()>& f, double floor_s) {
@@ -241,21 +264,34 @@ double ns_per_cycle(int repeats) {
 #endif
 }
 
+namespace {
+// The interval [lo, hi], widened by the drift, holds 1.
+bool holds_one(double lo, double hi, double drift) { return !(hi * (1 + drift) < 1 || lo / (1 + drift) > 1); }
+}  // namespace
+
 TimeRatio time_ratio(const RunTime& a, const RunTime& b) {
   TimeRatio r;
   r.median = a.median_s / b.median_s;
   r.lo = a.q1_s / b.q3_s, r.hi = a.q3_s / b.q1_s;
-  r.indistinguishable = !(r.hi < 1 || r.lo > 1);
+  r.drift = std::max(a.drift, b.drift);
+  r.indistinguishable = holds_one(r.lo, r.hi, r.drift);
+  return r;
+}
+
+TimeRatio carried_over(const TimeRatio& timed, double ratio) {
+  TimeRatio r = timed;
+  r.median = ratio, r.lo = ratio * timed.lo / timed.median, r.hi = ratio * timed.hi / timed.median;
+  r.indistinguishable = holds_one(r.lo, r.hi, r.drift);
   return r;
 }
 
 Value to_value(const TimeRatio& r) {
-  return {{"median", r.median}, {"lo", r.lo}, {"hi", r.hi}, {"indistinguishable", r.indistinguishable}};
+  return {{"median", r.median}, {"lo", r.lo}, {"hi", r.hi}, {"drift", r.drift}, {"indistinguishable", r.indistinguishable}};
 }
 
 std::string timing_verdict(const TimeRatio& a_over_b, double work_a, double work_b) {
   if (a_over_b.indistinguishable) return "indistinguishable";
-  const bool faster = a_over_b.hi < 1;
+  const bool faster = a_over_b.hi * (1 + a_over_b.drift) < 1;
   if ((faster && work_a > work_b) || (!faster && work_a < work_b)) return "contradicts the work";
   return faster ? "faster" : "slower";
 }

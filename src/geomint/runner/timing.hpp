@@ -12,6 +12,11 @@
 // median of its runs (the estimate), their quartiles and minimum. Two configurations compare as a
 // ratio with an interval from the quartiles (time_ratio); where the interval holds 1 they are
 // indistinguishable.
+// The machine's speed may drift during a measurement (another process, the clock frequency): every
+// measurement of several configurations times a control, a loop bound by the throughput of the
+// floating-point units, before and after its rounds (kControlRepeats runs each); the relative change of
+// the control's median is the measurement's drift, and a ratio of two of its configurations tells one
+// from the other only where its interval excludes 1 by more than that drift.
 // With workers > 1 (the cost studies, whose runs are independent single-thread calls) up to that
 // many configurations of a round run at a time, each on its own core, if the cores time alike
 // (timing_concurrency: a throughput-bound loop runs as fast beside the others as alone, within
@@ -33,6 +38,7 @@ namespace geomint {
 inline constexpr double kTimingFloorS = 0.02;  // the shortest timed run
 inline constexpr double kTimingMargin = 1.1;   // a run is calibrated to this times the floor
 inline constexpr int kTimingRepeats = 7;       // the fewest rounds of the protocol (paper scenes)
+inline constexpr int kControlRepeats = 3;      // runs of the control before and after a measurement
 inline constexpr const char* kTimingRepeatsHelp =
     "rounds of the timing protocol (runner/timing.hpp): each configuration timed once per round in runs of >= 20 ms, "
     "interleaved; the median is the estimate, the interquartile range the spread (paper scenes: >= 7)";
@@ -48,6 +54,7 @@ struct RunTime {
   double min_s = 0, q1_s = 0, median_s = 0, q3_s = 0, max_s = 0;  // seconds per call
   int repeats = 0;
   std::int64_t inner = 0;  // calls per timed run
+  double drift = 0;        // |control after / control before - 1| of the measurement (0: not measured)
   double seconds() const { return median_s; }  // the estimate
   // the interquartile range relative to the median
   double spread() const { return median_s > 0 ? (q3_s - q1_s) / median_s : 0; }
@@ -76,6 +83,9 @@ TimingConcurrency timing_concurrency(int workers, int repeats);
 Value to_value(const TimingConcurrency& c);
 // The measurements timing_concurrency made in this process (run.json timing_concurrency; null if none).
 Value timing_concurrency_record();
+// The control of every measurement of several configurations in this process, in order: {configurations,
+// before_s, after_s, drift} (run.json timing_control; null if none).
+Value timing_control_record();
 
 // Times configurations under the protocol of the header comment.
 class InterleavedTiming {
@@ -119,17 +129,21 @@ inline TimedPlan timing_plan(const std::vector<TimedCall>& calls, double repeats
 RunTime time_runs(int repeats, const std::function<void()>& f, double floor_s = kTimingFloorS);
 
 // The ratio a / b of two timings: the ratio of the medians, and an interval [q1_a / q3_b, q3_a / q1_b]
-// from the quartiles. `indistinguishable` when the interval holds 1.
+// from the quartiles. `indistinguishable` when the interval, widened by the drift of the measurements
+// (the larger of the two) to [lo / (1 + drift), hi (1 + drift)], holds 1.
 struct TimeRatio {
-  double median = 0, lo = 0, hi = 0;
+  double median = 0, lo = 0, hi = 0, drift = 0;
   bool indistinguishable = true;
 };
 TimeRatio time_ratio(const RunTime& a, const RunTime& b);
+// A ratio of two costs made of the timed calls (e.g. the wall times to an error target, from the times per
+// step): `ratio`, with the relative interval and the drift of `timed` carried over.
+TimeRatio carried_over(const TimeRatio& timed, double ratio);
 Value to_value(const TimeRatio& r);
 
 // What a timing says of a configuration a against b, given the work per step of each (force evaluations,
-// or operations): "faster" or "slower" where the interval excludes 1, "indistinguishable" where it holds
-// it, and "contradicts the work" where a does strictly more work than b and yet times faster (or less and
+// or operations): "faster" or "slower" where the interval excludes 1 by more than the drift,
+// "indistinguishable" where it does not, and "contradicts the work" where a does strictly more work than b and yet times faster (or less and
 // slower): a measurement error until shown otherwise, never a finding.
 std::string timing_verdict(const TimeRatio& a_over_b, double work_a, double work_b);
 
