@@ -21,7 +21,7 @@ using json = nlohmann::ordered_json;
 
 const std::vector<std::string> kFields = {"study", "figure", "value", "where", "summary", "compare", "requires", "expect",
                                           "note", "test", "kind", "chosen", "quotes", "roundoff",
-                                          "corrected", "stderr"};
+                                          "corrected", "stderr", "why"};
 const std::vector<std::string> kKinds = {"printed", "scanning", "authors_code", "convention", "sample"};
 
 bool is_claim(const std::string& compare) { return compare == "above" || compare == "below"; }
@@ -145,6 +145,7 @@ std::vector<Published> read_published(const std::filesystem::path& file) {
     p.summary = text(*t, "summary", file, key, true);
     p.note = text(*t, "note", file, key, false);
     p.test = text(*t, "test", file, key, false);
+    p.why = text(*t, "why", file, key, false);
     if (const std::string e = text(*t, "expect", file, key, false); !e.empty()) {
       if (e != "reproduced" && e != "differs") fail(file, key, "expect must be \"reproduced\" or \"differs\"");
       p.expect = e;
@@ -282,6 +283,7 @@ std::optional<json> compare_published(const Published& e, const json& summary, c
   if (!e.figure.empty()) c["figure"] = e.figure;
   c["where"] = e.where, c["published"] = e.value, c["reproduced"] = reproduced ? *reproduced : json(nullptr);
   if (!e.compare.empty()) c["compare"] = {{e.compare, e.tolerance_origin == "typed" ? json(e.tolerance) : json(e.tolerance_origin)}};
+  if (!e.why.empty()) c["why"] = e.why;  // where a typed tolerance or bound comes from
   if (e.tolerance_origin == "printed") c["tolerances"] = e.tolerances;  // per value: half a unit in its last printed digit
   double stderr_tolerance = 0;  // "stderr": kStandardErrors of the run's standard error
   if (e.tolerance_origin == "stderr") {

@@ -47,6 +47,7 @@
 //   expect = "differs"                    # a known discrepancy (default: "reproduced")
 //   note = "..."                          # why the reproduction differs, if it does
 //   test = "regression.X.Y"               # the ctest test that demonstrates it (required with expect)
+//   why = "..."                           # where a typed tolerance or a claim's bound comes from
 //
 // After the studies ran, every entry of a study that ran is set against the
 // summary: summary.comparisons.<key> holds figure, where, published, reproduced, difference,
@@ -76,7 +77,7 @@ struct PublishedError : std::runtime_error {
 };
 
 struct Published {
-  std::string key, study, where, summary, note, test;
+  std::string key, study, where, summary, note, test, why;
   std::string figure;                // "004 Fig. 5": the item of the paper (paper/papers.toml) it belongs to
   std::string expect = "reproduced";
   nlohmann::ordered_json value;     // a number, or an object of numbers keyed by a parameter
