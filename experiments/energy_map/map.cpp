@@ -197,7 +197,9 @@ void write_map(Context& ctx, const MapSetup& g, const std::vector<Point>& points
   ctx.summary["pendulum"] = {{"dt_omega", dt * spring_frequency(pendulum)},
                              {"dt_omega_bound", method_info("symplectic_euler_pq").oscillatory_bound},  // the registry's
                              {"pivot_energy", pivot_energy(pendulum)}};
-  ctx.summary["map_statistics"] = to_value(energy_map_statistics(rows, pendulum, dt, steps, s.real("map_statistics.ring_half_width")));
+  const EnergyMapStatistics statistics = energy_map_statistics(rows, pendulum, dt, steps, s.real("map_statistics.ring_half_width"));
+  ctx.summary["map_statistics"] = to_value(statistics);
+  ctx.summary["map_statistics"]["same_energy"] = to_value(same_energy_wins(rows, g.xs.size(), statistics.roundoff_tie_tolerance));
   ctx.summary["map_statistics"]["upright_column"] = upright_column(g, points);
 }
 

@@ -29,12 +29,15 @@ void run_oscillator(Context& ctx) {
   std::vector<State> zs;
   integrate(se, z0, h, n, [&](std::int64_t, const State& z) { zs.push_back(z); });
   ErrorSeries err_se, err_comp;
-  double max_qhat = 0;
+  double max_qhat = 0, dist_se = 0, dist_comp = 0;  // largest distance from the exact orbit, the circle through z0
+  const double radius = std::hypot(z0.q[0], z0.p[0]);
   integrate(compensated, z0, h, n, [&](std::int64_t j, const State& zc) {
     check_finite(zc, "compensated_symplectic_euler", j, h);
     const State& z = zs[static_cast<std::size_t>(j)];
     const double e_se = osc.H(z) - H0, e_comp = osc.H(zc) - H0;
     err_se.add(e_se), err_comp.add(e_comp);
+    dist_se = std::max(dist_se, std::abs(std::hypot(z.q[0], z.p[0]) - radius));
+    dist_comp = std::max(dist_comp, std::abs(std::hypot(zc.q[0], zc.p[0]) - radius));
     max_qhat = std::max(max_qhat, std::abs(OscillatorCompensation{k, h}.qhat(zc.q[0])));
     phase.row(j, static_cast<double>(j) * h, z.q[0], z.p[0], zc.q[0], zc.p[0], e_se, e_comp);
   });
@@ -50,6 +53,10 @@ void run_oscillator(Context& ctx) {
   reproduced["fig8_max_energy_err_se"] = err_se.max_abs();
   reproduced["fig8_max_energy_err_compensated"] = err_comp.max_abs();
   reproduced["fig8_max_abs_qhat"] = max_qhat;
+  // the phase portrait's distance from the exact solution's orbit: without (82) over with it
+  reproduced["fig8_max_orbit_distance_se"] = dist_se;
+  reproduced["fig8_max_orbit_distance_compensated"] = dist_comp;
+  reproduced["fig8_orbit_distance_ratio"] = dist_comp > 0 ? Value(dist_se / dist_comp) : Value();  // (null: on the orbit)
   // (Fig 8's curves: the columns *_se, then *_compensated)
   ctx.summary["methods"]["oscillator"] = labels_of({"symplectic_euler_pq", "compensated_symplectic_euler"});
 }

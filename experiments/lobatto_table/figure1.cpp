@@ -20,6 +20,25 @@ void check_figure1(const Scene& s) {
   check_meshes(s, "figure1.meshes", "figure1.methods", false);
 }
 
+// How close Lobatto's curves are at the smallest mesh of the figure: its largest errors in q and p relative to
+// their amplitudes, and, for each other drawn method, the smaller of its two errors' ratios to Lobatto's (above 1:
+// Lobatto is the closer in q and in p). Null where the figure does not draw Lobatto.
+Value closeness(const Scene& s, const Value& max_error, double q_amplitude, double p_amplitude) {
+  const auto methods = s.texts("figure1.methods");
+  const auto meshes = s.reals("figure1.meshes");
+  const std::size_t smallest = static_cast<std::size_t>(std::min_element(meshes.begin(), meshes.end()) - meshes.begin());
+  const Value& errors = max_error.at(smallest);
+  const std::string lobatto = label_of("lobatto");
+  if (!errors.contains(lobatto)) return {};
+  const double q = errors.at(lobatto).at("q").number(), p = errors.at(lobatto).at("p").number();
+  Value ratio = Value::record();
+  for (const auto& m : methods)
+    if (label_of(m) != lobatto && q > 0 && p > 0)
+      ratio[label_of(m)] = std::min(errors.at(label_of(m)).at("q").number() / q, errors.at(label_of(m)).at("p").number() / p);
+  return {{"mesh", meshes[smallest]}, {"lobatto_rel_error_q", q / q_amplitude}, {"lobatto_rel_error_p", p / p_amplitude},
+          {"error_ratio_to_lobatto", ratio}};
+}
+
 void run_figure1(Context& ctx) {
   const Scene& s = ctx.scene;
   ctx.progress("Fig. 1");
@@ -61,6 +80,7 @@ void run_figure1(Context& ctx) {
   ctx.summary["methods"]["figure1"] = labels_of(methods);
   // the amplitude of the exact p = -m w A sin(w t), and the largest errors of the drawn methods
   ctx.summary["figure1"] = {{"p_amplitude", osc.m * osc.w * A}, {"max_error", max_error}};
+  ctx.summary["figure1"]["closeness"] = closeness(s, max_error, A, osc.m * osc.w * A);
 }
 
 StudyPlan plan_figure1(const Scene& s) {

@@ -161,6 +161,8 @@ void cloud_volumes(Context& ctx, const PhiStudy& p, const std::vector<Point4>& c
   const Value& r = nest.empty() ? ctx.summary["reproduced"] : ctx.summary["reproduced"][nest];
   if (r.contains("ptp_phi0_mu4") && r.contains("ptp_phi4_mu4"))  // Fig. 5.4 against Fig. 5.2 in mu^(4)_mod
     put_methods(ctx, "ptp_mu4_phi0_over_phi4", ratio_per_method(r.at("ptp_phi0_mu4"), r.at("ptp_phi4_mu4")), nest);
+  if (r.contains("ptp_phi0_mu4") && r.contains("ptp_phi0_mu"))  // Fig. 5.4: mu^(4)_mod against mu under Phi^(0)
+    put_methods(ctx, "ptp_phi0_mu4_over_mu", ratio_per_method(r.at("ptp_phi0_mu4"), r.at("ptp_phi0_mu")), nest);
 }
 
 // The reference flow is run once more on the full cloud of this fraction of cloud.radius: the ratio

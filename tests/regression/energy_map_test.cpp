@@ -50,6 +50,54 @@ std::string read(const fs::path& p) {
 TEST(EnergyMap, PolarDivergenceFollowsTheAnalyticBoundary) {
   EXPECT_CASE("share of the polar runs whose divergence agrees with the boundary of Sec. 4.1",
               summary()["reproduced"]["boundary_agreement"].get<double>(), ">=", 0.95);
+  // 000 Sec. 4.1 (published.toml fig6_polar_divergence_boundary): every polar run from on or beyond the
+  // boundary diverges, counted again from map.csv
+  const CsvFile map = read_csv(dir / "map.csv");
+  const ElasticPendulumParams p{scene_of("energy_map")["pendulum"]["l"], scene_of("energy_map")["pendulum"]["m"],
+                                scene_of("energy_map")["pendulum"]["k"], scene_of("energy_map")["pendulum"]["g"]};
+  std::int64_t beyond = 0, alive_beyond = 0;
+  for (const auto& row : map.rows) {
+    const double x = std::stod(row[map.column("x0")]), y = std::stod(row[map.column("y0")]), r = std::hypot(x, y);
+    if (r == 0 || r < polar_boundary_radius(p, y / r)) continue;
+    ++beyond, alive_beyond += row[map.column("diverged_polar")] == "0";
+  }
+  EXPECT_GT(beyond, 0);
+  EXPECT_EQ(alive_beyond, summary()["map_statistics"]["alive_outside"].get<std::int64_t>());
+  const auto& c = summary()["comparisons"]["fig6_polar_divergence_boundary"];
+  EXPECT_EQ(c["verdict"], "reproduced") << c.dump(2);
+}
+
+// 000 Sec. 4.1 on Fig. 6, "no clear winner" (published.toml fig6_no_clear_winner, ..._same_energy): each
+// coordinate system has the smaller energy error (50) beyond the round-off tie tolerance at some starts of
+// the map, and in some band of H_0 one grid cell wide both do. Counted again from map.csv.
+TEST(EnergyMap, NoClearWinnerEvenAtTheSameEnergy) {
+  const json& stats = summary()["map_statistics"];
+  const CsvFile map = read_csv(dir / "map.csv");
+  const double tie = stats["ties"]["roundoff_tolerance"], band = stats["same_energy"]["band_width"];
+  double H_min = std::numeric_limits<double>::infinity();
+  for (const auto& row : map.rows) H_min = std::min(H_min, std::stod(row[map.column("H0")]));
+  std::int64_t finite = 0, wins[2] = {0, 0};
+  std::map<std::int64_t, std::pair<bool, bool>> bands;  // band -> (a Cartesian win, a polar win)
+  for (const auto& row : map.rows) {
+    if (row[map.column("diverged_cartesian")] != "0" || row[map.column("diverged_polar")] != "0") continue;
+    const double ec = std::stod(row[map.column("eps_cartesian")]), ep = std::stod(row[map.column("eps_polar")]);
+    ++finite;
+    if (std::abs(ec - ep) <= tie * std::max(ec, ep)) continue;
+    ++wins[ec < ep ? 0 : 1];
+    auto& b = bands[static_cast<std::int64_t>(std::floor((std::stod(row[map.column("H0")]) - H_min) / band))];
+    (ec < ep ? b.first : b.second) = true;
+  }
+  ASSERT_GT(finite, 0);
+  EXPECT_DOUBLE_EQ(stats["smaller_share_better_beyond_roundoff"].get<double>(),
+                   static_cast<double>(std::min(wins[0], wins[1])) / static_cast<double>(finite));
+  const auto mixed = std::count_if(bands.begin(), bands.end(), [](const auto& b) { return b.second.first && b.second.second; });
+  EXPECT_GT(band, 0.0);
+  EXPECT_EQ(stats["same_energy"]["mixed_bands"].get<std::int64_t>(), mixed);
+  EXPECT_EQ(stats["same_energy"]["bands_with_wins"].get<std::int64_t>(), static_cast<std::int64_t>(bands.size()));
+  for (const char* key : {"fig6_no_clear_winner", "fig6_no_clear_winner_same_energy"}) {
+    const auto& c = summary()["comparisons"][key];
+    EXPECT_EQ(c["verdict"], "reproduced") << c.dump(2);
+  }
 }
 
 // The polar runs that diverge, against the boundary r(0) >= 2l + (2mg/k) cos(theta(0)) of Sec. 4.1, at

@@ -39,6 +39,33 @@ std::string label(const char* method) { return std::string(method_info(method).l
 // Table 1 and the growth rates of Fig. 2 against the published values: Published.LobattoTable
 // (published_test.cpp), with the tolerances of experiments/lobatto_table/published.toml.
 
+// 001 Fig. 1 (published.toml fig1_close_at_three_meshes): at N = 3 Lobatto's q and p are closer to the
+// exact q = A cos(w t), p = -A m w sin(w t) than those of the schemes drawn beside it; the errors
+// again from fig1_N3.csv.
+TEST(LobattoTable, LobattoIsTheClosestCurveOfFigureOneAtThreeMeshes) {
+  const CsvFile f = read_csv(results_dir("lobatto_table") / "fig1_N3.csv");
+  const auto& osc = scene_of("lobatto_table")["oscillator"];
+  const double m = osc["m"], w = osc["omega"], A = osc["amplitude"];
+  const auto errors = [&](const std::string& l) {
+    double q = 0, p = 0;
+    for (const auto& row : f.rows) {
+      const double t = std::stod(row[f.column("t")]);
+      q = std::max(q, std::abs(std::stod(row[f.column("q_" + l)]) - A * std::cos(w * t)));
+      p = std::max(p, std::abs(std::stod(row[f.column("p_" + l)]) + A * m * w * std::sin(w * t)));
+    }
+    return std::pair{q, p};
+  };
+  const auto [q, p] = errors(label("lobatto"));
+  const auto& ratios = summary()["figure1"]["closeness"]["error_ratio_to_lobatto"];
+  ASSERT_EQ(ratios.size(), 2u);
+  for (const char* other : {"simpson", "implicit_midpoint"}) {
+    const auto [qo, po] = errors(label(other));
+    EXPECT_NEAR(ratios[label(other)].get<double>(), std::min(qo / q, po / p), 1e-9 * std::min(qo / q, po / p)) << other;
+  }
+  const auto& c = summary()["comparisons"]["fig1_close_at_three_meshes"];
+  EXPECT_EQ(c["verdict"], "reproduced") << c.dump(2);
+}
+
 TEST(LobattoTable, DeclaredOrdersOnTheOscillatorAndNonlinearSystems) {
   const auto& o = summary()["orders"];
   const double lobatto = method_info("lobatto").order;  // 6

@@ -294,6 +294,7 @@ std::optional<json> compare_published(const Published& e, const json& summary, c
   if (!e.figure.empty()) c["figure"] = e.figure;
   c["where"] = e.where, c["published"] = e.value, c["reproduced"] = reproduced ? *reproduced : json(nullptr);
   if (!e.compare.empty()) c["compare"] = {{e.compare, e.tolerance_origin == "typed" ? json(e.tolerance) : json(e.tolerance_origin)}};
+  if (!e.why.empty()) c["why"] = e.why;  // where a typed tolerance or bound comes from
   if (e.tolerance_origin == "printed") c["tolerances"] = e.tolerances;  // per value: half a unit in its last printed digit
   double stderr_tolerance = 0;  // "stderr": kStandardErrors of the run's standard error
   if (e.tolerance_origin == "stderr") {
@@ -316,7 +317,6 @@ std::optional<json> compare_published(const Published& e, const json& summary, c
     if (!reason.empty()) c["reason"] = reason;
     if (e.expect != "reproduced") c["expect"] = e.expect;
     if (!e.note.empty()) c["note"] = e.note;
-    if (!e.why.empty()) c["why"] = e.why;
     if (!e.test.empty()) c["test"] = e.test;
     return c;
   };

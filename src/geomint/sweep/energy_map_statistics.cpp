@@ -1,5 +1,8 @@
 #include "geomint/sweep/energy_map_statistics.hpp"
 
+#include <array>
+#include <map>
+
 namespace geomint {
 
 EnergyMapStatistics energy_map_statistics(const std::vector<EnergyMapRow>& rows, const ElasticPendulumParams& p,
@@ -111,6 +114,9 @@ Value to_value(const EnergyMapStatistics& s) {
           {"polar_better", s.polar_better},
           {"equal", s.both_finite - s.cartesian_better - s.polar_better},
           {"fraction_cartesian_better", frac(s.cartesian_better, s.both_finite)},
+          // the share of the starts at which the less often better system wins beyond round-off
+          {"smaller_share_better_beyond_roundoff",
+           frac(std::min(s.cartesian_better_beyond_roundoff, s.polar_better_beyond_roundoff), s.both_finite)},
           {"ties",
            {{"roundoff_tolerance", s.roundoff_tie_tolerance},
             {"roundoff", s.tied_roundoff},
@@ -127,6 +133,44 @@ Value to_value(const EnergyMapStatistics& s) {
           {"off_ring_polar_better", opt(s.off_ring_polar_better)},
           {"ratio_polar_over_cartesian",
            s.ratio_median ? Value{{"p05", *s.ratio_p05}, {"median", *s.ratio_median}, {"p95", *s.ratio_p95}} : Value()}};
+}
+
+SameEnergyWins same_energy_wins(const std::vector<EnergyMapRow>& rows, std::size_t nx, double roundoff_tie_tolerance) {
+  SameEnergyWins s;
+  std::vector<double> steps;  // |H_0 difference| of grid neighbours, along x and along y
+  for (std::size_t i = 0; i < rows.size(); ++i) {
+    if ((i + 1) % nx != 0 && i + 1 < rows.size()) steps.push_back(std::abs(rows[i + 1].H0 - rows[i].H0));
+    if (i + nx < rows.size()) steps.push_back(std::abs(rows[i + nx].H0 - rows[i].H0));
+  }
+  if (steps.empty()) return s;
+  std::sort(steps.begin(), steps.end());
+  s.band_width = nearest_rank_quantile(steps, 0.5);
+  if (!(s.band_width > 0)) return s;
+  double H_min = std::numeric_limits<double>::infinity();
+  for (const EnergyMapRow& row : rows) H_min = std::min(H_min, row.H0);
+  std::map<std::int64_t, std::array<std::int64_t, 2>> bands;  // band -> (Cartesian wins, polar wins)
+  for (const EnergyMapRow& row : rows) {
+    if (row.diverged_cartesian || row.diverged_polar || !std::isfinite(row.eps_cartesian) || !std::isfinite(row.eps_polar))
+      continue;
+    const double d = row.eps_cartesian - row.eps_polar;
+    if (std::abs(d) <= roundoff_tie_tolerance * std::max(row.eps_cartesian, row.eps_polar)) continue;  // a tie
+    ++s.wins, ++bands[static_cast<std::int64_t>(std::floor((row.H0 - H_min) / s.band_width))][d < 0 ? 0 : 1];
+  }
+  for (const auto& [band, w] : bands) {
+    ++s.bands_with_wins;
+    if (w[0] > 0 && w[1] > 0) ++s.mixed_bands, s.wins_in_mixed_bands += w[0] + w[1];
+  }
+  return s;
+}
+
+Value to_value(const SameEnergyWins& s) {
+  const auto frac = [](std::int64_t a, std::int64_t b) { return b ? Value(static_cast<double>(a) / static_cast<double>(b)) : Value(); };
+  return {{"band_width", s.band_width},
+          {"bands_with_wins", s.bands_with_wins},
+          {"mixed_bands", s.mixed_bands},
+          {"share_mixed_bands", frac(s.mixed_bands, s.bands_with_wins)},
+          {"wins", s.wins},
+          {"share_wins_in_mixed_bands", frac(s.wins_in_mixed_bands, s.wins)}};
 }
 
 }  // namespace geomint

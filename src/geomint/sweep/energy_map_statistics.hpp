@@ -95,4 +95,17 @@ EnergyMapStatistics energy_map_statistics(const std::vector<EnergyMapRow>& rows,
 // polar run diverged inside the boundary).
 Value to_value(const EnergyMapStatistics& s);
 
+// Which coordinate system wins at the same total energy (000 Sec. 4.1: "even if we only consider initial
+// conditions corresponding the same total energy"): the starts finite in both systems whose energy errors
+// differ beyond the round-off tie tolerance (a win), grouped in bands of H_0 as wide as the map's energy
+// resolution, the median |H_0 difference| of two neighbouring grid points (rows: the grid, x fastest, nx per
+// row). A band is mixed if both systems win in it.
+struct SameEnergyWins {
+  double band_width = 0;
+  std::int64_t bands_with_wins = 0, mixed_bands = 0;  // bands holding a win; those holding wins of both
+  std::int64_t wins = 0, wins_in_mixed_bands = 0;
+};
+SameEnergyWins same_energy_wins(const std::vector<EnergyMapRow>& rows, std::size_t nx, double roundoff_tie_tolerance);
+Value to_value(const SameEnergyWins& s);
+
 }  // namespace geomint
