@@ -18,13 +18,11 @@ the same order, so that a comparison has the number of its row in Appendix A). W
                             comparable or not computed are listed in their figure's group, not drawn.
   overview-cost.pdf         every comparison at equal accuracy of the cost studies (summary.json cost.<set>: the
                             work-precision sets of analysis/work_precision_set.hpp with error targets): for each
-                            target, each method's wall time to reach it (wall_s_to) over that of the set's first
-                            method that reaches it, with the interval of the cost chapter: the quartiles of the two
-                            methods' time per step at their smallest step (ns_per_step_q1, ns_per_step_q3; the
-                            interval [q1_a / q3_b, q3_a / q1_b] of runner/timing.hpp, time_ratio, carried over to
-                            the ratio at equal error as experiments/energy_map/cost.cpp does); a ratio without those
-                            quartiles is drawn as a point marked "no interval". The line at 1, and the band
-                            [1/(1+s), 1+s] of the set's largest timing spread s (interquartile range over median).
+                            target, each method's wall time to reach it over that of the set's first method that
+                            reaches it, with its interval and verdict as the run judged them (ratios_to: the
+                            quartiles of the times per step carried over, runner/timing.hpp), a claim (faster,
+                            slower) filled. The line at 1, and the band [1/(1+d), 1+d] of the measurement's drift d
+                            (the control loop timed before and after it), which a claim's interval must clear.
 
 A number that is not finite (NaN, inf) in what is drawn is refused, naming the run and the key. Run it with an
 interpreter that has matplotlib (Debian's /usr/bin/python3, python3-matplotlib; make's MPL_PYTHON). The output is
@@ -270,46 +268,34 @@ def cost_sets(summary):
                 yield name, s
 
 
-def time_interval(a, b):
-    """The interval of a ratio of two timings a / b from their quartiles, relative to the ratio of their medians
-    (runner/timing.hpp, time_ratio): of the methods' time per step at their smallest step; None where either has
-    no quartiles."""
-    q = [m.get(k) for m in (a, b) for k in ("ns_per_step_q1", "ns_per_step", "ns_per_step_q3")]
-    if not all(is_number(x) and x > 0 for x in q):
-        return None
-    (a1, am, a3), (b1, bm, b3) = q[:3], q[3:]
-    return a1 / b3 / (am / bm), a3 / b1 / (am / bm)
+VERDICT_WORDS = {"indistinguishable": "≈", "faster": "faster", "slower": "slower",
+                 "contradicts the work": "flagged"}  # (runner/timing.hpp, timing_verdict; as the cost chapter's tables)
 
 
 def cost_groups(runs, methods):
-    """[(header, spread, rows)]: per run, set and error target, each method's wall time to the target over the
-    reference's (the set's first method that reaches it), with its interval or None; rows (title, ratio, interval),
-    and a row (None, text) for the methods that do not reach the target."""
+    """[(header, drift, rows)]: per run, set and error target, each method's wall time to the target over the
+    reference's (the set's first method that reaches it), as the run judged it (ratios_to of
+    analysis/work_precision_set.hpp: the interval of the times per step carried over, the measurement's drift);
+    rows (title, ratio, interval, verdict), and a row (None, text) for the methods that do not reach the target."""
     groups = []
     for name, run in runs.items():
         summary = run["summary"]
         paper = paper_of({}, summary)
         for set_name, s in cost_sets(summary):
-            by = s["by_method"]
-            spread = (s.get("spread") or {}).get("max")
-            for t, target in enumerate(s["targets"]):
-                reach = [m for m in s["methods"] if is_number((by[m].get("wall_s_to") or [None] * (t + 1))[t])]
-                missing = [method_title(m, methods, summary, name) for m in s["methods"] if m not in reach]
-                header = f"{paper}{code(name)}, set {code(set_name)}: error {math_number(target, 'tol')}"
-                rows = []
-                if reach:
-                    ref = reach[0]
+            for at in s.get("ratios_to") or []:
+                ref, by = at.get("reference"), at.get("by_method") or {}
+                header = f"{paper}{code(name)}, set {code(set_name)}: error {math_number(at['target'], 'tol')}"
+                missing = [method_title(m, methods, summary, name) for m in s["methods"] if m != ref and m not in by]
+                rows = [(method_title(m, methods, summary, name), r["wall_ratio"], (r["min"], r["max"]), r["verdict"])
+                        for m, r in by.items()]
+                if ref is not None:
                     header += f", over {method_title(ref, methods, summary, name)}"
-                    for m in reach[1:]:
-                        r = by[m]["wall_s_to"][t] / by[ref]["wall_s_to"][t]
-                        rel = time_interval(by[m], by[ref])
-                        rows.append((method_title(m, methods, summary, name), r, rel and (r * rel[0], r * rel[1])))
-                if len(reach) < 2:
-                    rows.append((None, "no ratio: " + ("only " + method_title(reach[0], methods, summary, name) +
-                                                      " reaches it" if reach else "no method reaches it")))
-                if missing and len(reach) >= 2:
+                if not rows:
+                    rows.append((None, "no ratio: " + ("only " + method_title(ref, methods, summary, name) +
+                                                      " reaches it" if ref else "no method reaches it")))
+                elif missing:
                     rows.append((None, "not reaching it: " + ", ".join(missing)))
-                groups.append((header, spread, rows))
+                groups.append((header, max((r["drift"] for r in by.values()), default=0), rows))
     return groups
 
 
@@ -317,39 +303,36 @@ def cost_figure(runs, methods, path):
     """Figure (b): every cost comparison at equal accuracy, its ratio with its interval (module docstring)."""
     groups = cost_groups(runs, methods)
     values = [v for _, _, rows in groups for r in rows if r[0] is not None for v in (r[1], *(r[2] or ()))]
-    values += [v for _, s, _ in groups if s for v in (1 / (1 + s), 1 + s)]
+    values += [v for _, d, _ in groups if d for v in (1 / (1 + d), 1 + d)]
     lo, hi = log_limits(values, (0.5, 2.0))
     n_rows = sum(len(rows) + 1 for _, _, rows in groups) + 0.3 * (len(groups) - 1)
-    left, right = 0.36, 0.8
+    left, right = 0.36, 0.74
     fig, ax, at = row_axes(n_rows, COST_ROW_IN, 0.25, left, right)
     ax.set_xlim(lo, hi)
     ax.axvline(1, color="black", lw=0.7, zorder=1)
     y = 0.0
-    for header, spread, rows in groups:
+    for header, drift, rows in groups:
         if y > 0:
             ax.axhline(y - 0.65, color="#bbbbbb", lw=0.4)
         ax.text(0, y, header, ha="left", fontweight="bold", **at)
-        if spread:
-            ax.fill_betweenx([y + 0.5, y + len(rows) + 0.5], 1 / (1 + spread), 1 + spread, color="#dddddd", lw=0,
+        if drift:
+            ax.fill_betweenx([y + 0.5, y + len(rows) + 0.5], 1 / (1 + drift), 1 + drift, color="#dddddd", lw=0,
                              zorder=0)
         for title, *value in rows:
             y += 1
             if title is None:
                 ax.text(0.012, y, value[0], ha="left", style="italic", color="#555555", **at)
                 continue
-            ratio, interval = value
+            ratio, interval, verdict = value
             ax.text(0.012, y, title, ha="left", **at)
-            if interval:
-                ax.errorbar([ratio], [y], xerr=[[ratio - interval[0]], [interval[1] - ratio]], fmt="o", ms=2.6,
-                            color="#0072B2", elinewidth=0.8, capsize=1.5, zorder=3)
-                ax.text(right + 0.008, y, f"{math_number(ratio, 'sig3')} ({math_number(interval[0], 'sig3')}–"
-                        f"{math_number(interval[1], 'sig3')})", ha="left", **at)
-            else:
-                ax.plot([ratio], [y], "o", ms=2.6, mfc="none", color="#0072B2", zorder=3)
-                ax.text(right + 0.008, y, f"{math_number(ratio, 'sig3')}, no interval", ha="left", style="italic", **at)
+            claim = verdict in ("faster", "slower")
+            ax.errorbar([ratio], [y], xerr=[[ratio - interval[0]], [interval[1] - ratio]], fmt="o", ms=2.6,
+                        mfc="#0072B2" if claim else "none", color="#0072B2", elinewidth=0.8, capsize=1.5, zorder=3)
+            ax.text(right + 0.008, y, f"{math_number(ratio, 'sig3')} ({math_number(interval[0], 'sig3')}–"
+                    f"{math_number(interval[1], 'sig3')}): {VERDICT_WORDS.get(verdict, verdict)}", ha="left", **at)
         y += 1.3
-    ax.set_xlabel("wall time to reach the error target, over the reference's (below 1: faster); bar: the interval\n"
-                  "from the quartiles of the times per step; shaded: within the set's largest timing spread of 1",
+    ax.set_xlabel("wall time to the error target over the reference's (below 1: faster); bar: the quartile interval;\n"
+                  "shaded: the drift around 1; filled: faster or slower, hollow: \u2248 (indistinguishable within the drift)",
                   fontsize=6)
     fig.savefig(path, metadata=METADATA)
     plt.close(fig)

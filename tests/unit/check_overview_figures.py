@@ -4,8 +4,8 @@
 The report's overview figures (scripts/overview_figures.py) drawn from a fixture of two runs written here, no run
 needed: every kind of comparison (a relative tolerance from the printed digits, an absolute one on a table with
 entries at round-off, an order, standard errors, a claim, a tolerance of 0, a convention, an expected difference,
-values only reported, not comparable) and work-precision sets (a ratio with its interval, one without quartiles, a
-target only one method reaches). Checks where entries and ratios are drawn, the text of both PDFs (pdftotext:
+values only reported, not comparable) and work-precision sets (a ratio with its interval and verdict, one
+indistinguishable within the drift, a target only one method reaches). Checks where entries and ratios are drawn, the text of both PDFs (pdftotext:
 groups, numbers, rules, verdicts, method titles as the registry gives them; no nan or inf, no ASCII math or
 other fault scripts/check_pdf.py refuses), the same bytes on a second run, and that a NaN or an infinity in a
 summary is refused with a message naming it.
@@ -58,23 +58,28 @@ BETA = {  # (#10, #11)
 }
 
 
-def method(q1, median, q3, *reach):
-    """One method of a work-precision set (analysis/work_precision_set.hpp summary()): its time per step and the
-    wall time to reach each target (None: it does not)."""
-    return {"ns_per_step_q1": q1, "ns_per_step": median, "ns_per_step_q3": q3, "wall_s_to": list(reach)}
+def method(*reach):
+    """One method of a work-precision set (analysis/work_precision_set.hpp summary()): the wall time to reach each
+    target (None: it does not)."""
+    return {"wall_s_to": list(reach)}
+
+
+def ratios(target, reference, **by):
+    """ratios_to at one target: each method's ratio, interval, drift and verdict, as the run writes them."""
+    return {"target": target, "reference": reference,
+            "by_method": {m: dict(zip(("wall_ratio", "min", "max", "drift", "verdict"), r)) for m, r in by.items()}}
 
 
 COST_ALPHA = {"method": "median over rounds",  # (not a set)
               "pair": {"methods": ["sv", "ti", "phi4_M"], "targets": [1e-4], "spread": {"max": 0.25, "median": 0.1},
-                       "by_method": {"sv": method(9.0, 10.0, 11.0, 2e-5),
-                                     "ti": method(19.0, 20.0, 22.0, 1e-6),
-                                     "phi4_M": method(30.0, 31.0, 32.0, None)}},
+                       "by_method": {"sv": method(2e-5), "ti": method(1e-6), "phi4_M": method(None)},
+                       "ratios_to": [ratios(1e-4, "sv", ti=(0.05, 0.0432, 0.0611, 0.02, "faster"))]},
               "lone": {"methods": ["lobatto", "midpoint"], "targets": [0.1], "spread": None,
-                       "by_method": {"lobatto": method(1.0, 1.0, 1.0, 0.3),
-                                     "midpoint": method(1.0, 1.0, 1.0, None)}}}
+                       "by_method": {"lobatto": method(0.3), "midpoint": method(None)},
+                       "ratios_to": [ratios(0.1, "lobatto")]}}
 COST_BETA = {"start_0": {"methods": ["cartesian", "polar"], "targets": [4e-5], "spread": {"max": 0.01},
-                         "by_method": {"cartesian": method(20.0, 21.0, 22.0, 4e-4),
-                                       "polar": {"wall_s_to": [6e-4]}}}}  # (no quartiles: no interval)
+                         "by_method": {"cartesian": method(4e-4), "polar": method(6e-4)},
+                         "ratios_to": [ratios(4e-5, "cartesian", polar=(1.5, 1.45, 1.55, 0.1, "indistinguishable"))]}}
 METHODS = [{"name": n, "label": l, "title": t} for n, l, t in (
     ("stormer_verlet", "sv", "Störmer–Verlet"), ("takahashi_imada", "ti", "Takahashi–Imada"),
     ("phi4", "phi4", "Φ^{(4)}_h"), ("conformal_M", "M", "Ψ_{h,E}, M"), ("lobatto", "lobatto", "Lobatto"),
@@ -118,15 +123,14 @@ expect("a claim below a bound: value over bound", math.isclose(ov.entry_position
 expect("standard errors: the run's tolerance", math.isclose(ov.entry_positions(ALPHA["se"])[None], 0.5))
 expect("a tolerance of 0 met: 0", ov.entry_positions(ALPHA["exact"])[None] == 0.0)
 expect("a tolerance of 0 missed: beyond the axis", ov.entry_positions(BETA["step"])[None] == math.inf)
-# A ratio at equal error, its interval from the quartiles of the times per step (runner/timing.hpp, time_ratio).
+# A ratio at equal error with its interval, drift and verdict as the run judged them (ratios_to).
 groups = ov.cost_groups({"alpha": {"summary": {"cost": COST_ALPHA}}, "beta": {"summary": {
     "cost": COST_BETA, "work_precision": {"labels": {"cartesian": "Cartesian (73)", "polar": "polar (72)"}}}}}, METHODS)
 ti = groups[0][2][0]
-expect(f"the ratio of ti to sv and its interval: {ti}", ti[0] == "Takahashi–Imada" and math.isclose(ti[1], 0.05) and
-       math.isclose(ti[2][0], 0.05 * (19 / 11) / 2) and math.isclose(ti[2][1], 0.05 * (22 / 9) / 2))
-polar = groups[2][2]
-expect(f"a method without quartiles: no interval: {polar}",
-       len(polar) == 1 and polar[0][0] == "polar (72)" and math.isclose(polar[0][1], 1.5) and polar[0][2] is None)
+expect(f"the ratio of ti to sv, its interval and verdict: {ti}", ti == ("Takahashi–Imada", 0.05, (0.0432, 0.0611), "faster"))
+expect(f"a method that does not reach the target is listed: {groups[0][2][1:]}",
+       groups[0][2][1:] == [(None, "not reaching it: Φ^{(4)}_h, M")] or "not reaching it" in str(groups[0][2][1:]))
+expect(f"the band of a set is its measurement's drift: {groups[2][1]}", groups[2][1] == 0.1)
 expect(f"a target only one method reaches: no ratio: {groups[1][2]}",
        groups[1][2] == [(None, "no ratio: only Lobatto reaches it")])
 
@@ -155,7 +159,8 @@ for label in ("[900] Fig. 1", "[900] Table 2", "[900] eq. (3)", "[901] Fig. 5.3"
               "below 0.1", "order 0.3", "reproduced", "differs, as the errata explain", "a convention, not judged"):
     expect(f"overview-comparisons.pdf lacks '{label}'", label in texts.get("overview-comparisons", ""))
 for label in ("alpha", "pair", "over Störmer–Verlet", "Takahashi–Imada", "polar (72)", "over Cartesian (73)",
-              "no interval", "no ratio: only Lobatto reaches it", "not reaching it", ", M", "0.0500 (0.0432–0.0611)"):
+              "1.50 (1.45–1.55): ≈", "indistinguishable within the drift", "no ratio: only Lobatto reaches it", "not reaching it", ", M",
+              "0.0500 (0.0432–0.0611): faster"):
     expect(f"overview-cost.pdf lacks '{label}'", label in texts.get("overview-cost", ""))
 
 # The same bytes from the same data (no date in the PDFs).
@@ -168,11 +173,11 @@ for name in ("overview-comparisons.pdf", "overview-cost.pdf"):
 nan_alpha = copy.deepcopy(ALPHA)
 nan_alpha["val"]["difference"] = float("nan")
 inf_cost = copy.deepcopy(COST_ALPHA)
-inf_cost["pair"]["by_method"]["ti"]["wall_s_to"] = [float("inf")]
+inf_cost["pair"]["ratios_to"][0]["by_method"]["ti"]["wall_ratio"] = float("inf")
 for what, runs, where in (("a NaN", write_runs(WORK / "nan", alpha=nan_alpha),
                            "alpha/summary.json comparisons.val.difference"),
                           ("an infinity", write_runs(WORK / "inf", cost_alpha=inf_cost),
-                           "alpha/summary.json cost.pair.by_method.ti.wall_s_to.0")):
+                           "alpha/summary.json cost.pair.ratios_to.0.by_method.ti.wall_ratio")):
     refused = draw(runs, WORK / "refused")
     message = refused.stderr.strip()
     expect(f"{what} is not refused with a message naming {where}: exit {refused.returncode}, '{message}'",
