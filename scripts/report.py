@@ -567,8 +567,7 @@ def main():
     figure_index, figure_tables = figure_comparisons_tex(runs)
     files = {"results.tex": results, "comparisons.tex": comparisons_tex(runs),
              "tolerances.tex": tolerances_tex(runs), "figure_comparisons.tex": figure_index,
-             **figure_tables, "errata.tex": errata_tex(runs, tests),
-             "machine.tex": machine_tex(runs)}
+             **figure_tables, "errata.tex": errata_tex(runs, tests), "machine.tex": machine_tex(runs)}
     papers = tomllib.loads(pathlib.Path(args.papers).read_text(encoding="utf-8")) if args.papers else None
     if args.methods:
         methods = json.loads(pathlib.Path(args.methods).read_text(encoding="utf-8"))

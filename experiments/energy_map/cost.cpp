@@ -146,6 +146,25 @@ void cost_ratios(Value& cost, std::size_t ns) {
   cost["evals_ratio_range"] = evals_hi > 0 ? Value{{"min", evals_lo}, {"max", evals_hi}} : Value();
 }
 
+// The kernel_timing study of the same run times the same loop, energy_map_scalar, on other starts, another
+// step and one configuration at a time: per system the ratio of its ns per step to this study's (at the
+// smallest step), and whether the two agree, within the larger of the two measurements' drifts plus the
+// larger of their spreads (interquartile range over median).
+Value same_loop(const Value& cost, const Value& timing) {
+  Value out;
+  std::string verdict = "agree";
+  for (const char* c : {"cartesian", "polar"}) {
+    const Value& here = cost.at("start_0").at("by_method").at(c);
+    const double ratio = timing.at("scalar_ns_per_step").at(c).number() / here.at("ns_per_step").number();
+    const double allowance = std::max(here.at("ns_per_step_drift").number(), timing.at("scalar_drift").number()) +
+                             std::max(here.at("ns_per_step_spread").number(), timing.at("scalar_ns_per_step_spread").at(c).number());
+    out[c] = {{"ratio", ratio}, {"allowance", allowance}};
+    if (std::abs(std::log(ratio)) > std::log1p(allowance)) verdict = "differ beyond the drift and spread";
+  }
+  out["verdict"] = verdict;
+  return out;
+}
+
 // The energy errors (50): one untimed run per system, step and start (split across threads and ranks);
 // the wall time: per system and step one timed function integrates every start in turn (one thread; all
 // of them timed together under the timing protocol, up to `workers` at a time), a start's share its time
@@ -212,6 +231,7 @@ void run_cost(Context& ctx) {
                    timing_method_text(static_cast<int>(s.integer("timing.repeats")), ctx.threads) +
                    "; force evaluations: one gradient of U per step; ns_per_step at the smallest h";
   cost_ratios(cost, starts.size());
+  if (ctx.summary.contains("timing")) cost["scalar_loop_against_kernel_timing"] = same_loop(cost, ctx.summary.at("timing"));
   ctx.summary["cost"] = cost;
 }
 

@@ -116,6 +116,25 @@ TEST(TimingProtocol, ARatioIsIndistinguishableWhereTheQuartilesOverlap) {
   EXPECT_EQ(timing_verdict(time_ratio(timing(44, 45.5, 47), timing(58, 60, 62)), 1, 2), "faster");
 }
 
+// A speed claim clears the measurement's drift: quartiles apart by 1.23 (58/47) are a claim under a drift of
+// 10 %, not under one of 30 %; a ratio carried over to another cost keeps the interval's width and the drift.
+TEST(TimingProtocol, ASpeedClaimInsideTheDriftIsIndistinguishable) {
+  const auto drifting = [](RunTime t, double d) { return t.drift = d, t; };
+  const TimeRatio steady = time_ratio(drifting(timing(58, 60, 62), 0.1), timing(44, 45.5, 47));
+  EXPECT_DOUBLE_EQ(steady.drift, 0.1);
+  EXPECT_EQ(timing_verdict(steady, 1, 1), "slower");
+  const TimeRatio drifted = time_ratio(timing(58, 60, 62), drifting(timing(44, 45.5, 47), 0.3));
+  EXPECT_DOUBLE_EQ(drifted.drift, 0.3);  // (the larger of the two measurements')
+  EXPECT_TRUE(drifted.indistinguishable);
+  EXPECT_EQ(timing_verdict(drifted, 1, 1), "indistinguishable");
+  EXPECT_TRUE(time_ratio(drifting(timing(44, 45.5, 47), 0.3), timing(58, 60, 62)).indistinguishable);  // (faster side)
+  const TimeRatio to_target = carried_over(steady, 2.0);  // e.g. twice the steps to an error target
+  EXPECT_DOUBLE_EQ(to_target.median, 2.0);
+  EXPECT_NEAR(to_target.lo / to_target.hi, steady.lo / steady.hi, 1e-15);
+  EXPECT_EQ(timing_verdict(to_target, 1, 1), "slower");
+  EXPECT_EQ(timing_verdict(carried_over(steady, 0.9), 1, 1), "indistinguishable");  // [0.84, 0.96] widened by 10 % holds 1
+}
+
 TEST(TimingProtocol, AMethodDoingMoreWorkTimedFasterIsFlagged) {
   const TimeRatio faster = time_ratio(timing(44, 45.5, 47), timing(58, 60, 62));
   EXPECT_EQ(timing_verdict(faster, 2, 1), "contradicts the work");  // twice the force evaluations, yet faster
@@ -137,11 +156,13 @@ TEST(TimingProtocol, RelativeTimingsAgainstTheFirst) {
 
 TEST(TimingProtocol, PlansItsOwnTime) {
   // 3 configurations, 7 rounds, each after its warm-up call: calls shorter than the floor (1 ms: 1000 steps of
-  // 1 us; 1 us) a probe of floor / 8 and 7 runs of 1.1 x the floor; a longer call (50 ms) 7 runs of one call
+  // 1 us; 1 us) a probe of floor / 8 and 7 runs of 1.1 x the floor; a longer call (50 ms) 7 runs of one call; and
+  // the control loop before and after, a probe and 3 runs each
   const TimedPlan p = timing_plan({{1000, 1000}, {1, 1000}, {50000, 1000}}, 7);
-  const double f = kTimingFloorS, short_runs = f / 8 + 7 * 1.1 * f;
-  EXPECT_NEAR(p.seconds, (1e-3 + short_runs) + (1e-6 + short_runs) + 8 * 0.05, 1e-15);
+  const double f = kTimingFloorS, short_runs = f / 8 + 7 * 1.1 * f, control = 2 * (f / 8 + 3 * 1.1 * f);
+  EXPECT_NEAR(p.seconds, (1e-3 + short_runs) + (1e-6 + short_runs) + 8 * 0.05 + control, 1e-15);
   EXPECT_NEAR(p.steps, (1000 + short_runs / 1e-6) + (1 + short_runs / 1e-6) + 8 * 50000, 1e-6);
+  EXPECT_NEAR(timing_plan({{1000, 1000}}, 7).seconds, 1e-3 + short_runs, 1e-15);  // (one alone: no ratio, no control)
 }
 
 // --plan's rates come from experiments/plan_rates.toml, compiled in: a rate names what it is and the CPU it was

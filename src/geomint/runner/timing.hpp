@@ -110,7 +110,7 @@ struct TimedCall {
 };
 // What timing configurations under the protocol with `repeats` rounds takes: each a warm-up call, then
 // (a call shorter than the floor) a probe of an eighth of the floor and its rounds of kTimingMargin
-// times the floor, or (a longer call) its rounds of one call.
+// times the floor, or (a longer call) its rounds of one call; several of them, the control before and after.
 struct TimedPlan {
   double seconds = 0, steps = 0;
 };
@@ -122,6 +122,8 @@ inline TimedPlan timing_plan(const std::vector<TimedCall>& calls, double repeats
     p.seconds += call_s + rest_s;
     p.steps += c.steps + (call_s > 0 ? rest_s / call_s * c.steps : 0);
   }
+  if (calls.size() > 1)  // the control before and after (InterleavedTiming::run)
+    p.seconds += 2 * (kTimingFloorS / 8 + kControlRepeats * kTimingMargin * kTimingFloorS);
   return p;
 }
 
