@@ -21,7 +21,7 @@ using json = nlohmann::ordered_json;
 
 const std::vector<std::string> kFields = {"study", "figure", "value", "where", "summary", "compare", "requires", "expect",
                                           "note", "test", "kind", "chosen", "quotes", "roundoff",
-                                          "corrected", "stderr"};
+                                          "corrected", "stderr", "why"};
 const std::vector<std::string> kKinds = {"printed", "scanning", "authors_code", "convention", "sample"};
 
 bool is_claim(const std::string& compare) { return compare == "above" || compare == "below"; }
@@ -235,6 +235,10 @@ std::vector<Published> read_published(const std::filesystem::path& file) {
         }
       }
       if (claim) p.value = std::string(p.compare == "above" ? "> " : "< ") + json(*tv).dump();
+      if (claim && (*t)["stderr"]) {  // the measured quantity beyond the bound by kStandardErrors standard errors
+        if (!(*t)["stderr"].is_string()) fail(file, key, "stderr is a summary path (\"<summary path>\")");
+        p.tolerance_origin = "stderr", p.stderr_path = *(*t)["stderr"].value<std::string>();
+      }
       const auto numeric = [](const json& v) { return v.is_number(); };
       if (!claim && !(p.value.is_number() ||
             (p.value.is_object() && std::all_of(p.value.begin(), p.value.end(), numeric))))
@@ -281,7 +285,9 @@ std::optional<json> compare_published(const Published& e, const json& summary, c
   json c = {{"study", e.study}};
   if (!e.figure.empty()) c["figure"] = e.figure;
   c["where"] = e.where, c["published"] = e.value, c["reproduced"] = reproduced ? *reproduced : json(nullptr);
-  if (!e.compare.empty()) c["compare"] = {{e.compare, e.tolerance_origin == "typed" ? json(e.tolerance) : json(e.tolerance_origin)}};
+  if (!e.compare.empty())
+    c["compare"] = {{e.compare, e.tolerance_origin == "typed" || is_claim(e.compare) ? json(e.tolerance)
+                                                                                      : json(e.tolerance_origin)}};
   if (e.tolerance_origin == "printed") c["tolerances"] = e.tolerances;  // per value: half a unit in its last printed digit
   double stderr_tolerance = 0;  // "stderr": kStandardErrors of the run's standard error
   if (e.tolerance_origin == "stderr") {
@@ -383,6 +389,8 @@ std::optional<json> compare_published(const Published& e, const json& summary, c
     const json& t = param.empty() ? e.tolerances : e.tolerances.at(printed_param.at(param));
     return t.get<double>();
   };
+  // A claim with stderr: beyond its bound by kStandardErrors standard errors of the run (NaN without them: not held).
+  const double claim_margin = e.tolerance_origin != "stderr" ? 0.0 : stderr_tolerance > 0 ? stderr_tolerance : std::nan("");
   bool within = !pairs.empty();
   json diff = pairs.size() == 1 && pairs[0].first.empty() ? json() : json::object();
   for (const auto& [param, pr] : pairs) {
@@ -391,7 +399,8 @@ std::optional<json> compare_published(const Published& e, const json& summary, c
     const double r = rep->is_number() ? rep->get<double>() : std::nan("");
     const double d = is_claim(e.compare) ? r - pub : difference(e.compare, pub, r);  // (a claim: from its bound)
     within = within && std::isfinite(d) &&
-             (e.compare == "above" ? d > 0 : e.compare == "below" ? d < 0 : std::abs(d) <= tolerance_at(param));
+             (e.compare == "above" ? d > claim_margin : e.compare == "below" ? d < -claim_margin
+                                                                              : std::abs(d) <= tolerance_at(param));
     const json dj = std::isfinite(d) ? json(d) : json(nullptr);
     if (param.empty()) diff = dj;
     else diff[param] = dj;

@@ -21,7 +21,11 @@
 //                                         # without compare the value is reported, not compared;
 //                                         # a printed qualitative claim ("the cuts lie in p2 < 0") is
 //                                         # { above = x } or { below = x }: the measured quantity
-//                                         # (every value of a table) lies above or below x; no `value`
+//                                         # (every value of a table) lies above or below x; no `value`;
+//                                         # with stderr = "summary path": beyond x by kStandardErrors
+//                                         # standard errors of the measured quantity, from the run's data
+//                                         # (a claim about a share of random samples)
+//   why = "..."                           # where a typed number in compare comes from
 //   kind = "printed"                      # where the value comes from: "printed" (default), "scanning"
 //                                         # (printed, but the scanned text may have garbled it),
 //                                         # "authors_code" (not printed: the code published with the
