@@ -2,7 +2,8 @@
 """run_mutants.split_phases on made-up ctest test lists: a test never runs in a phase before the setup
 of a fixture it requires, so it cannot read outputs that an earlier run left; and library_stages
 gives each library test executable exactly the tests that run it; BaselineOutputs puts back the
-baseline's outputs that a mutant changed or removed, with their mtimes, and leaves the others alone."""
+baseline's outputs that a mutant changed or removed, with their mtimes, and leaves the others alone; a test that
+did not run (skipped, disabled, not run; ctest's own output included) neither kills a mutant nor lets it survive."""
 import os
 import shutil
 import subprocess
