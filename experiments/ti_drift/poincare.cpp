@@ -15,7 +15,6 @@
 #include <utility>
 #include <vector>
 
-#include "geomint/analysis/claim_share.hpp"
 #include "geomint/analysis/episode_cuts.hpp"
 #include "geomint/analysis/growth_episodes.hpp"
 #include "geomint/analysis/poincare.hpp"
@@ -291,11 +290,10 @@ Value write_fig5(Context& ctx, const HH& hhk, const Trajectory& run) {
   return poincare;
 }
 
-// The printed claim over many starts: the first growth episode of each of the starts 0 .. poincare.starts - 1 of the
-// Fig. 4 ensemble's streams (the ensemble's own trajectories first, integrated again; analysis/episode_cuts.hpp), each
-// start one independent sample; per sample the share of its cuts with p2 < 0. The claim holds for a sample where most
-// of its cuts lie in p2 < 0 (share > 1/2); its share over the samples, with the binomial standard error, against a
-// coin flip (fig5_starts.csv, summary poincare.starts).
+// The printed claim over many starts: the first growth episode of each start 0 .. poincare.starts - 1 of the Fig. 4
+// ensemble's streams (its own first, integrated again; analysis/episode_cuts.hpp), one independent sample each. The
+// claim holds for a sample where most of its cuts lie in p2 < 0; its share over the samples (from kMinClaimSamples on)
+// with the binomial standard error, against a coin flip (fig5_starts.csv, poincare.starts: runner/summary.hpp).
 template <class HH>
 Value write_starts(Context& ctx, const HH& hhk) {
   const Scene& s = ctx.scene;
@@ -303,15 +301,11 @@ Value write_starts(Context& ctx, const HH& hhk) {
   ctx.progress("Fig. 5: growth episodes of " + std::to_string(N) + " starts");
   const double h = s.real("h");
   const std::int64_t n = steps_to(s.real("t_end"), h), every = std::max<std::int64_t>(1, n / s.integer("samples"));
-  const double sample_dt = static_cast<double>(every) * h;
-  const EpisodeRule rule = episode_rule(s, sample_dt);
+  const EpisodeRule rule = episode_rule(s, static_cast<double>(every) * h);
   std::vector<Z2> starts(N);
   for (std::size_t i = 0; i < N; ++i) starts[i] = ensemble_start(s, hhk, i);
-  std::vector<std::string> keys = kEnsembleKeys;
-  keys.insert(keys.end(), {"ensemble.episode_half_width", "ensemble.episode_threshold", "ensemble.episode_min_length",
-                           "poincare.starts"});
   const std::vector<EpisodeSample> found = concatenate(checkpointed_map<std::vector<EpisodeSample>>(
-      ctx, {"poincare.starts", keys}, lane_batches(N), [&](std::size_t b) {
+      ctx, {"poincare.starts"}, lane_batches(N), [&](std::size_t b) {  // (the keys: all the study reads)
         const LaneBatch batch = lane_batch(b, N);
         return first_growth_episode_cuts(hhk, std::span<const Z2>(starts).subspan(batch.first, batch.count), h, n, every, rule);
       }));
@@ -327,18 +321,8 @@ Value write_starts(Context& ctx, const HH& hhk) {
             e.p2_sum / c);
   }
   ctx.write("fig5_starts.csv", f5s);
-  const ClaimShare negative = claim_share(share, 0.5);
-  Value out = {{"starts", N},
-               {"samples", negative.samples},     // starts whose record shows a growth episode (with cuts)
-               {"claim_holds", negative.holds}};  // samples with most of their cuts at p2 < 0
-  if (share.empty()) return out;
-  const Quartiles q = quartiles_of(share), q1 = quartiles_of(one_side);
-  out["coin_flip_stderr"] = negative.coin_flip_standard_error;
-  out["share_p2_negative"] = {{"min", q.min}, {"q1", q.q1}, {"median", q.median}, {"q3", q.q3}, {"max", q.max}};
-  out["share_one_side"] = {{"min", q1.min}, {"q1", q1.q1}, {"median", q1.median}, {"q3", q1.q3}, {"max", q1.max}};
-  if (negative.samples < kMinClaimSamples) return out;  // (too few for a share: published.toml's comparison not computed)
-  out["share_claim_holds"] = negative.share, out["share_claim_holds_stderr"] = negative.standard_error;
-  out["share_claim_holds_in_coin_flip_stderr"] = (negative.share - 0.5) / negative.coin_flip_standard_error;
+  Value out = {{"starts", N}, {"p2_negative", claim_share_summary(share, 0.5, kMinClaimSamples)}};
+  if (!one_side.empty()) out["one_side"] = quartiles(one_side);  // the share of the cuts on the side holding most
   return out;
 }
 
@@ -365,22 +349,18 @@ void check_poincare(const Scene& s) {
     if (s.real(key) > t_end) s.reject(key, "must not exceed t_end = " + format_double(t_end));
 }
 
-// With the ensemble study in the same process: the rerun of one trajectory (the scalar method, with (4.3) and the
-// test for a cut at every step), its series and the CSVs, and the poincare.starts starts in lanes (their episodes'
-// steps, a small part, left out). Alone: the ensemble too, as the ensemble study plans it (its M trajectories in
-// lanes, the rerun counted as one more). One rate: the time of the parts over their steps.
+// With the ensemble study in the same process: the rerun of one trajectory (scalar, (4.3) and a cut test every step),
+// its series and CSVs, and the poincare.starts starts in lanes (their episodes' few steps left out). Alone: the
+// ensemble too, as the ensemble study plans it. One rate: the time of the parts over their steps.
 StudyPlan plan_poincare(const Scene& s) {
   const double n = s.real("t_end") / s.real("h"), M = static_cast<double>(s.integer("ensemble.size"));
   const double N = static_cast<double>(s.integer("poincare.starts"));
-  const double rows = kept_samples(n, static_cast<double>(s.integer("samples")));
   const double evals = static_cast<double>(evals_per_step("simplified_takahashi_imada"));
-  const double lanes = hh_lanes_rate().ns_per_step, scalar = hh_rate().ns_per_step;
-  const double tasks = static_cast<double>(lane_batches(static_cast<std::size_t>(N)));
-  const StudyPlan taken{(N + 1) * n, (N + 1) * n * evals, rows * 8 + rows * 200 + kEnsembleLanes * rows * 40,
-                        (scalar + N * lanes) / (N + 1),
-                        "the trajectory of the ensemble study of this run, and the starts in lanes; " + hh_rate().note +
-                            "; " + hh_lanes_rate().note,
-                        tasks};
+  const double rows = kept_samples(n, static_cast<double>(s.integer("samples")));
+  const double lanes = hh_lanes_rate().ns_per_step, scalar = hh_rate().ns_per_step,
+               tasks = static_cast<double>(lane_batches(static_cast<std::size_t>(N)));
+  const StudyPlan taken{(N + 1) * n, (N + 1) * n * evals, rows * 208 + kEnsembleLanes * rows * 40, (scalar + N * lanes) / (N + 1),
+                        "the trajectory of the ensemble study of this run, and the starts; " + hh_lanes_rate().note, tasks};
   StudyPlan alone{(M + N + 1) * n, (M + N + 1) * n * evals, M * rows * 8 + rows * 200, (scalar + (M + N) * lanes) / (M + N + 1),
                   "the ensemble integrated again (without the ensemble study), and the starts; " + hh_lanes_rate().note,
                   static_cast<double>(lane_batches(static_cast<std::size_t>(M))) + tasks};  // (tasks: batches of lanes)
