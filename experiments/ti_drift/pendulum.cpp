@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "geomint/analysis/orbit_average.hpp"
+#include "geomint/analysis/sample_windows.hpp"
 #include "geomint/core/integrate.hpp"
 #include "geomint/integrators/takahashi_imada.hpp"
 #include "geomint/integrators/runge_kutta4.hpp"
@@ -42,7 +43,7 @@ void write_local_slopes(Context& ctx, const UnsymmetricPendulum& up, const Z1& p
   double worst = 0, worst_t = 0;
   const std::size_t per = ts_all.size() / windows;
   for (std::size_t w = 0; w < windows; ++w) {
-    const std::size_t a = w * per, b = w + 1 == windows ? ts_all.size() : (w + 1) * per;
+    const auto [a, b] = consecutive_window(ts_all.size(), windows, w);
     const std::span<const double> tw(ts_all.data() + a, b - a), ew(es_all.data() + a, b - a);
     double H_mean = 0;
     for (std::size_t k = a; k < b; ++k) H_mean += up.H(p0) + Hs_all[k];

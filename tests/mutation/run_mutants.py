@@ -67,6 +67,11 @@ def load_mutants(path, will_mutate):
             sys.exit(f"mutant {m['id']}: `old` occurs {text.count(m['old'])} times in {m['file']} (must be once)")
         if m["old"] == m["new"]:
             sys.exit(f"mutant {m['id']}: `new` equals `old`")
+        if "tests" in m:
+            try:
+                re.compile(m["tests"])
+            except (re.error, TypeError) as e:
+                sys.exit(f"mutant {m['id']}: `tests` is not a regex: {e}")
     return mutants
 
 
@@ -101,24 +106,50 @@ def build(args, log, targets=None):
                (["--target"] + targets if targets else []), log) == 0
 
 
+# ctest's closing lists name each test that did not pass with its status: "  12 - regression.X.y (Failed)". A test
+# that did not run -- skipped (GTEST_SKIP, SKIP_RETURN_CODE, SKIP_REGULAR_EXPRESSION), disabled, or not run (its
+# executable or a required file missing) -- saw nothing of a mutant: it neither kills nor lets one survive.
+NOT_RUN = ("Skipped", "Disabled", "Not Run")
+
+
+def ctest_outcome(text):
+    """The names of the failing tests and of the tests that did not run, from ctest's output `text`."""
+    failed, skipped = [], []
+    for line in text.splitlines():
+        s = line.strip()
+        if " - " in s and s.endswith(")") and s.split(" - ", 1)[0].strip().isdigit():
+            name, status = s.split(" - ", 1)[1].rsplit(" (", 1)
+            (skipped if status[:-1] in NOT_RUN else failed).append(name)
+    return failed, skipped
+
+
 def failed_tests(args, log, stop_on_failure=True, select=None):
     """Runs ctest on the tests matching `select` (-R; every test if None), less --exclude's; returns the
-    names of the failing tests ([] if all pass). A mutant is killed by its first failing test: with
-    `stop_on_failure` ctest stops there (the names are those that failed by then)."""
+    names of the failing tests ([] if all pass) and of those that did not run (ctest_outcome). A mutant is
+    killed by its first failing test: with `stop_on_failure` ctest stops there (the names are those that
+    failed by then)."""
     cmd = ["ctest", "--test-dir", str(args.build), "-j", str(args.jobs), "--timeout", str(args.timeout),
            "-E", args.exclude] + (["--stop-on-failure"] if stop_on_failure else [])
     if select:
         cmd += ["-R", select]
     code = run(cmd, log)
-    failed = []
-    for line in Path(log).read_text().splitlines():
-        s = line.strip()
-        # "  12 - regression.X.y (Failed)" in ctest's closing list
-        if " - " in s and s.endswith(")") and s.split(" - ", 1)[0].strip().isdigit():
-            failed.append(s.split(" - ", 1)[1].rsplit(" (", 1)[0])
-    if code != 0 and not failed:
+    failed, skipped = ctest_outcome(Path(log).read_text())
+    if code != 0 and not failed and not skipped:
         failed = ["(ctest failed)"]
-    return failed
+    return failed, skipped
+
+
+def verdict(compiled, failed, skipped, guard=None):
+    """A mutant's result: "does not compile"; "killed" by a failing test; "skipped" when no test failed and a test
+    that guards it did not run (those matching the mutant's `tests` regex, or without one any test: then the run
+    did not see the whole suite); else "survived". A skipped test is never counted as a kill or a survival."""
+    if not compiled:
+        return "does not compile"
+    if failed:
+        return "killed"
+    if any(guard is None or re.search(guard, name) for name in skipped):
+        return "skipped"
+    return "survived"
 
 
 def split_phases(tests, durations, slow):
@@ -271,10 +302,13 @@ def commit_of_tree():
 
 
 def summarize(results, commit):
+    """The counts; the kill rate over the mutants whose tests ran (killed or survived: a skipped one is neither)."""
     valid = [r for r in results if r["result"] != "does not compile"]
     killed = [r for r in valid if r["result"] == "killed"]
+    judged = [r for r in valid if r["result"] in ("killed", "survived")]
     return {"commit": commit, "mutants": len(results), "compiled": len(valid), "killed": len(killed),
-            "kill_rate": len(killed) / len(valid) if valid else None,
+            "skipped": [r["id"] for r in valid if r["result"] == "skipped"],
+            "kill_rate": len(killed) / len(judged) if judged else None,
             "published_survivors": [r["id"] for r in valid if r["result"] == "survived" and r["affects"]],
             "results": results}
 
@@ -343,9 +377,12 @@ def main():
     if not build(args, logs / "baseline-build.log"):
         sys.exit(f"the unmodified tree does not build: {logs / 'baseline-build.log'}")
     remove_fixture_outputs(args)
-    base_failed = failed_tests(args, logs / "baseline-ctest.log", stop_on_failure=False)
+    base_failed, base_skipped = failed_tests(args, logs / "baseline-ctest.log", stop_on_failure=False)
     if base_failed:
         sys.exit(f"the unmodified tree fails tests ({', '.join(base_failed)}): nothing can be measured")
+    if base_skipped:
+        print(f"baseline: {len(base_skipped)} tests did not run ({', '.join(base_skipped[:3])}); a mutant they guard "
+              "is reported skipped", flush=True)
     phases = test_phases(args)
     baseline = BaselineOutputs(args.build) if (args.build / "build.ninja").exists() else None
     if baseline:
@@ -366,21 +403,23 @@ def main():
         try:
             remove_fixture_outputs(args)
             path.write_text(original.decode().replace(m["old"], m["new"], 1))
-            failed, compiled = [], True
+            failed, skipped, compiled = [], [], True
             for target, select in [] if args.tests else stages:
                 compiled = build(args, logs / f"{m['id']}-build-{target}.log", [target])
                 if not compiled:
                     break
-                failed = failed_tests(args, logs / f"{m['id']}-ctest-{target}.log", select=select)
+                failed, not_run = failed_tests(args, logs / f"{m['id']}-ctest-{target}.log", select=select)
+                skipped += not_run
                 if failed:
                     break
             if compiled and not failed:
                 compiled = build(args, logs / f"{m['id']}-build.log")
             for k, select in enumerate(phases if compiled and not failed else []):
-                failed = failed_tests(args, logs / f"{m['id']}-ctest{k}.log", select=select)
+                failed, not_run = failed_tests(args, logs / f"{m['id']}-ctest{k}.log", select=select)
+                skipped += not_run
                 if failed:
                     break
-            result = "does not compile" if not compiled else "killed" if failed else "survived"
+            result = verdict(compiled, failed, skipped, m.get("tests"))
         except KeyboardInterrupt:
             interrupted = True
         finally:
@@ -394,7 +433,7 @@ def main():
             print("interrupted; the mutated file is restored", file=sys.stderr)
             return 130
         results.append({"id": m["id"], "file": m["file"], "affects": m["affects"], "result": result,
-                        "failed_tests": failed, "seconds": round(time.monotonic() - start, 1)})
+                        "failed_tests": failed, "skipped_tests": skipped, "seconds": round(time.monotonic() - start, 1)})
         shown = ", ".join(failed[:3]) + (f" (+{len(failed) - 3})" if len(failed) > 3 else "")
         print(f"[{i}/{len(mutants)}] {m['id']:32} {result:16} {shown}", flush=True)
         if args.report:
@@ -406,12 +445,14 @@ def main():
     summary = summarize(results, commit)
     valid = [r for r in results if r["result"] != "does not compile"]
     killed = [r for r in valid if r["result"] == "killed"]
-    rate = f"{summary['kill_rate']:.0%}" if valid else "n/a"
-    print(f"\nkilled {len(killed)} of {len(valid)} mutants that compile ({rate}); "
+    judged = len(valid) - len(summary["skipped"])
+    rate = f"{summary['kill_rate']:.0%}" if judged else "n/a"
+    print(f"\nkilled {len(killed)} of {judged} mutants that compile and whose tests ran ({rate}); "
+          f"{len(summary['skipped'])} skipped (a test that guards them did not run); "
           f"{len(results) - len(valid)} do not compile")
     for r in valid:
-        if r["result"] == "survived":
-            print(f"  survived: {r['id']} ({r['affects'] or 'changes no published value'})")
+        if r["result"] in ("survived", "skipped"):
+            print(f"  {r['result']}: {r['id']} ({r['affects'] or 'changes no published value'})")
     if args.report:
         args.report.write_text(json.dumps(summary, indent=2) + "\n")
     return 1 if summary["published_survivors"] else 0

@@ -2,15 +2,19 @@
 """run_mutants.split_phases on made-up ctest test lists: a test never runs in a phase before the setup
 of a fixture it requires, so it cannot read outputs that an earlier run left; and library_stages
 gives each library test executable exactly the tests that run it; BaselineOutputs puts back the
-baseline's outputs that a mutant changed or removed, with their mtimes, and leaves the others alone."""
+baseline's outputs that a mutant changed or removed, with their mtimes, and leaves the others alone; a test that
+did not run (skipped, disabled, not run; ctest's own output included) neither kills a mutant nor lets it survive."""
 import os
+import shutil
+import subprocess
 import sys
 import tempfile
 import unittest
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
-from run_mutants import LIBRARY_TESTS, BaselineOutputs, library_stages, split_phases  # noqa: E402
+from run_mutants import (LIBRARY_TESTS, BaselineOutputs, ctest_outcome, library_stages, split_phases,  # noqa: E402
+                         verdict)
 
 
 def entry(name, setup=(), requires=(), cleanup=(), command="/build/bin/geomint_regression_tests"):
@@ -84,6 +88,56 @@ class LibraryStages(unittest.TestCase):
         with self.assertRaises(ValueError):
             library_stages([entry("U.a", command="/b/bin/geomint_unit_tests")], exclude="^$")
 
+
+
+class SkippedTests(unittest.TestCase):
+    """A test that did not run (GTEST_SKIP, ctest "Skipped" or "Not Run") neither kills a mutant nor lets it survive."""
+
+    CTEST_OUTPUT = """
+90% tests passed, 1 tests failed out of 10
+
+The following tests did not run:
+\t  4 - regression.TiDrift.Skipped (Skipped)
+\t  5 - unit.Disabled (Disabled)
+
+The following tests FAILED:
+\t  7 - regression.Published.TiDrift (Failed)
+\t  8 - unit.MissingExecutable (Not Run)
+\t  9 - stability.Long (Timeout)
+Errors while running CTest
+"""
+
+    def test_the_closing_lists_are_read_by_status(self):
+        failed, skipped = ctest_outcome(self.CTEST_OUTPUT)
+        self.assertEqual(failed, ["regression.Published.TiDrift", "stability.Long"])
+        self.assertEqual(skipped, ["regression.TiDrift.Skipped", "unit.Disabled", "unit.MissingExecutable"])
+
+    def test_a_mutant_whose_guarding_test_is_skipped_is_skipped(self):
+        skipped = ["regression.TiDrift.Skipped"]
+        self.assertEqual(verdict(True, [], skipped, guard=r"^regression\.TiDrift\."), "skipped")
+        self.assertEqual(verdict(True, [], skipped, guard=None), "skipped")  # no guard named: any test that did not run
+        self.assertEqual(verdict(True, [], skipped, guard=r"^unit\."), "survived")  # its own tests ran
+        self.assertEqual(verdict(True, [], [], guard=None), "survived")
+        self.assertEqual(verdict(True, ["unit.X"], skipped), "killed")  # a failure kills, a skip never does
+        self.assertEqual(verdict(False, [], skipped), "does not compile")
+
+    @unittest.skipUnless(shutil.which("cmake") and shutil.which("ctest"), "needs cmake and ctest")
+    def test_real_ctest_output_of_a_skipped_and_a_failing_test(self):
+        with tempfile.TemporaryDirectory() as d:
+            src, build = Path(d) / "src", Path(d) / "build"
+            src.mkdir()
+            (src / "CMakeLists.txt").write_text(
+                "cmake_minimum_required(VERSION 3.16)\nproject(p NONE)\nenable_testing()\n"
+                "add_test(NAME skips COMMAND ${CMAKE_COMMAND} -E echo \"[  SKIPPED ] 1 test\")\n"
+                "set_tests_properties(skips PROPERTIES SKIP_REGULAR_EXPRESSION \"\\\\[  SKIPPED \\\\]\")\n"
+                "add_test(NAME fails COMMAND ${CMAKE_COMMAND} -E false)\n"
+                "add_test(NAME passes COMMAND ${CMAKE_COMMAND} -E true)\n"
+                "add_test(NAME missing COMMAND /nonexistent/test-binary)\n")
+            subprocess.run(["cmake", "-S", str(src), "-B", str(build)], check=True, capture_output=True)
+            out = subprocess.run(["ctest", "--test-dir", str(build)], capture_output=True, text=True).stdout
+            failed, skipped = ctest_outcome(out)
+            self.assertEqual(failed, ["fails"], out)
+            self.assertEqual(sorted(skipped), ["missing", "skips"], out)
 
 
 class KeptOutputs(unittest.TestCase):

@@ -338,6 +338,27 @@ why = "less than the other"
             std::string::npos);
 }
 
+TEST(Published, AClaimWithAStandardErrorHoldsOnlyBeyondItsBoundByThatMany) {
+  // a share of random samples above one half (a coin flip) by kStandardErrors of its binomial standard error
+  const auto e = read_published(published_file(R"(
+[typical]
+study = "table1"
+where = "the claim holds for most starts"
+summary = "share"
+compare = { above = 0.5 }
+stderr = "share_stderr"
+why = "one half: a coin flip"
+)"));
+  ASSERT_EQ(e[0].tolerance_origin, "stderr");
+  EXPECT_EQ(verdict(e[0], {{"share", 0.8}, {"share_stderr", 0.1}}), "reproduced");  // 0.3 above, 2 x 0.1 needed
+  EXPECT_EQ(verdict(e[0], {{"share", 0.65}, {"share_stderr", 0.1}}), "differs");   // above, but within 2 x 0.1
+  EXPECT_EQ(verdict(e[0], {{"share", 0.65}}), "differs");                          // no standard error: not held
+  const auto c = compare_published(e[0], {{"share", 0.8}, {"share_stderr", 0.1}}, json::object(), {"table1"});
+  ASSERT_TRUE(c);
+  EXPECT_EQ((*c)["compare"], json({{"above", 0.5}}));  // the bound as typed, the margin in tolerances
+  EXPECT_DOUBLE_EQ((*c)["tolerances"]["of"].get<double>(), kStandardErrors * 0.1);
+}
+
 TEST(Published, KindsAndChosenParameters) {
   EXPECT_NE(error_of("[a]\nstudy = \"s\"\nvalue = 1\nwhere = \"w\"\nsummary = \"x\"\nkind = \"rumour\"\n").find("kind is"),
             std::string::npos);

@@ -240,6 +240,10 @@ std::vector<Published> read_published(const std::filesystem::path& file) {
         }
       }
       if (claim) p.value = std::string(p.compare == "above" ? "> " : "< ") + json(*tv).dump();
+      if (claim && (*t)["stderr"]) {  // the measured quantity beyond the bound by kStandardErrors standard errors
+        if (!(*t)["stderr"].is_string()) fail(file, key, "stderr is a summary path (\"<summary path>\")");
+        p.tolerance_origin = "stderr", p.stderr_path = *(*t)["stderr"].value<std::string>();
+      }
       const auto numeric = [](const json& v) { return v.is_number(); };
       if (!claim && !(p.value.is_number() ||
             (p.value.is_object() && std::all_of(p.value.begin(), p.value.end(), numeric))))
@@ -248,12 +252,13 @@ std::vector<Published> read_published(const std::filesystem::path& file) {
         fail(file, key, "a relative comparison needs a published value != 0 (use abs)");
     }
     // A typed number is a tolerance nobody derived unless its origin is stated (an exact comparison,
-    // tolerance 0, needs none); a derived one ("printed", "stderr") states its own.
-    const bool typed = !p.compare.empty() && p.tolerance_origin == "typed" && (claim || p.tolerance != 0);
+    // tolerance 0, needs none); a derived one ("printed", "stderr") states its own. A claim's bound is
+    // always typed (its margin may be derived: stderr).
+    const bool typed = claim || (!p.compare.empty() && p.tolerance_origin == "typed" && p.tolerance != 0);
     if (typed && p.why.empty())
       fail(file, key, "a typed tolerance needs why = \"...\": where the number " + json(p.tolerance).dump() +
                           " comes from (or derive it: \"printed\", \"stderr\")");
-    if (!typed && !p.why.empty()) fail(file, key, "why states the origin of a typed tolerance; this entry has none");
+    if (!typed && !p.why.empty()) fail(file, key, "why states the origin of a typed tolerance or bound; this entry has none");
     if (const auto r = (*t)["roundoff"]) {
       const auto* rt = r.as_table();
       if (!rt || !(*rt)["floor"].is_string() || rt->size() > 2 || (rt->size() == 2 && !(*rt)["exact"].is_string()))
@@ -293,7 +298,9 @@ std::optional<json> compare_published(const Published& e, const json& summary, c
   json c = {{"study", e.study}};
   if (!e.figure.empty()) c["figure"] = e.figure;
   c["where"] = e.where, c["published"] = e.value, c["reproduced"] = reproduced ? *reproduced : json(nullptr);
-  if (!e.compare.empty()) c["compare"] = {{e.compare, e.tolerance_origin == "typed" ? json(e.tolerance) : json(e.tolerance_origin)}};
+  if (!e.compare.empty())
+    c["compare"] = {{e.compare, e.tolerance_origin == "typed" || is_claim(e.compare) ? json(e.tolerance)
+                                                                                      : json(e.tolerance_origin)}};
   if (!e.why.empty()) c["why"] = e.why;  // where a typed tolerance or bound comes from
   if (e.tolerance_origin == "printed") c["tolerances"] = e.tolerances;  // per value: half a unit in its last printed digit
   double stderr_tolerance = 0;  // "stderr": kStandardErrors of the run's standard error
@@ -396,6 +403,8 @@ std::optional<json> compare_published(const Published& e, const json& summary, c
     const json& t = param.empty() ? e.tolerances : e.tolerances.at(printed_param.at(param));
     return t.get<double>();
   };
+  // A claim with stderr: beyond its bound by kStandardErrors standard errors of the run (NaN without them: not held).
+  const double claim_margin = e.tolerance_origin != "stderr" ? 0.0 : stderr_tolerance > 0 ? stderr_tolerance : std::nan("");
   bool within = !pairs.empty();
   json diff = pairs.size() == 1 && pairs[0].first.empty() ? json() : json::object();
   for (const auto& [param, pr] : pairs) {
@@ -404,7 +413,8 @@ std::optional<json> compare_published(const Published& e, const json& summary, c
     const double r = rep->is_number() ? rep->get<double>() : std::nan("");
     const double d = is_claim(e.compare) ? r - pub : difference(e.compare, pub, r);  // (a claim: from its bound)
     within = within && std::isfinite(d) &&
-             (e.compare == "above" ? d > 0 : e.compare == "below" ? d < 0 : std::abs(d) <= tolerance_at(param));
+             (e.compare == "above" ? d > claim_margin : e.compare == "below" ? d < -claim_margin
+                                                                              : std::abs(d) <= tolerance_at(param));
     const json dj = std::isfinite(d) ? json(d) : json(nullptr);
     if (param.empty()) diff = dj;
     else diff[param] = dj;

@@ -21,7 +21,10 @@
 //                                         # without compare the value is reported, not compared;
 //                                         # a printed qualitative claim ("the cuts lie in p2 < 0") is
 //                                         # { above = x } or { below = x }: the measured quantity
-//                                         # (every value of a table) lies above or below x; no `value`
+//                                         # (every value of a table) lies above or below x; no `value`;
+//                                         # with stderr = "summary path": beyond x by kStandardErrors
+//                                         # standard errors of the measured quantity, from the run's data
+//                                         # (a claim about a share of random samples)
 //   why = "..."                           # where a typed tolerance comes from (required with one, unless
 //                                         # it is 0: an exact comparison); the report lists them in one table
 //   kind = "printed"                      # where the value comes from: "printed" (default), "scanning"

@@ -6,6 +6,7 @@
 #include <string>
 #include <utility>
 
+#include "geomint/analysis/claim_share.hpp"
 #include "geomint/runner/experiment.hpp"
 
 namespace geomint {
@@ -27,6 +28,22 @@ Value spread_of(const std::vector<double>& v) {
   for (double x : v) sum += x;
   r["mean"] = sum / static_cast<double>(v.size());
   return r;
+}
+
+Value quartiles(const std::vector<double>& v) {
+  const Quartiles q = quartiles_of(v);
+  return {{"min", q.min}, {"q1", q.q1}, {"median", q.median}, {"q3", q.q3}, {"max", q.max}};
+}
+
+Value claim_share_summary(const std::vector<double>& values, double bound, std::size_t min_samples) {
+  const ClaimShare c = claim_share(values, bound);
+  Value out = {{"samples", c.samples}, {"holds", c.holds}};
+  if (values.empty()) return out;
+  out["quartiles"] = quartiles(values), out["coin_flip_stderr"] = c.coin_flip_standard_error;
+  if (c.samples < min_samples) return out;
+  out["share"] = c.share, out["share_stderr"] = c.standard_error;
+  out["share_in_coin_flip_stderr"] = (c.share - 0.5) / c.coin_flip_standard_error;
+  return out;
 }
 
 Value h_range(const std::vector<double>& hs) {

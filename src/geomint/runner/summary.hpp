@@ -23,6 +23,15 @@ Value spread_of(const std::vector<double>& v);
 // {min, max, count} of a scene's non-empty list of steps.
 Value h_range(const std::vector<double>& hs);
 
+// {min, q1, median, q3, max} of a non-empty list (analysis/claim_share.hpp).
+Value quartiles(const std::vector<double>& v);
+
+// A yes/no claim "value > bound" over independent samples, one value each (analysis/claim_share.hpp): "samples",
+// "holds"; with a sample, the "quartiles" of the values and the standard error of the share if the claim held by a
+// coin flip, "coin_flip_stderr"; with at least min_samples, the "share" where it holds, its binomial standard error
+// "share_stderr", and "share_in_coin_flip_stderr", (share - 1/2) / coin_flip_stderr.
+Value claim_share_summary(const std::vector<double>& values, double bound, std::size_t min_samples);
+
 class Context;
 // How the values at `keys` of the summary (each a record by a parameter, e.g. a mesh) meet the paper's values
 // printed with `digits` significant digits, through the comparisons the runner will make (Context::comparison).
