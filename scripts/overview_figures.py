@@ -125,20 +125,26 @@ def verdict_style(c):
 
 def entry_positions(c):
     """Each compared entry of a comparison as its deviation over its tolerance (a claim: value over bound, or bound
-    over value), by entry key (None for a single value); inf where the run wrote no finite difference or the
+    over value, the bound moved by the run's standard errors where the claim has them; a bound of 0, a sign: 0 where
+    it holds), by entry key (None for a single value); inf where the run wrote no finite difference or the
     tolerance is 0."""
     (rule, bound), = c["compare"].items()
     diffs = c.get("difference")
     diffs = diffs if isinstance(diffs, dict) else {None: diffs}
     out = {}
     for key, d in diffs.items():
-        if rule in ("above", "below"):
-            if not bound > 0:
-                raise SystemExit(f"{PROGRAM}: a claim with the bound {bound} cannot be drawn against it on a log axis")
+        if rule in ("above", "below"):  # (beyond the bound by the run's standard errors where it says so)
+            margin = (c.get("tolerances") or {}).get("of", 0) if isinstance(c.get("tolerances"), dict) else 0
+            limit = bound + margin if rule == "above" else bound - margin
             v = c["reproduced"][key] if key is not None else c["reproduced"]
-            out[key] = math.inf if d is None else (v / bound if rule == "below" else
-                                                     bound / v if v > 0 else math.inf)
-            out[key] = max(out[key], 0.0)
+            if d is None:
+                out[key] = math.inf
+            elif limit == 0:  # (a sign: the claim holds, at the left edge, or not, beyond the axis)
+                out[key] = 0.0 if (v > 0 if rule == "above" else v < 0) else math.inf
+            elif not limit > 0:
+                raise SystemExit(f"{PROGRAM}: a claim with the bound {limit} cannot be drawn against it on a log axis")
+            else:
+                out[key] = max(v / limit if rule == "below" else limit / v if v > 0 else math.inf, 0.0)
         else:
             tol = tolerance_at(c, key)
             if tol is None:

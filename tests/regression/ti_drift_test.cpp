@@ -283,7 +283,7 @@ TEST(TiDrift, PoincareCutsTheEnsembleTrajectoryWithTheLargestError) {
   EXPECT_GT(matched, 100u);
 }
 
-TEST(TiDrift, PoincareStartsCutTheFirstGrowthEpisodeOfEachStart) {
+TEST(TiDrift, SidesOfEpisodes) {
   // Fig. 5 over many starts (summary poincare.starts, fig5_starts.csv): the first growth episode of each start of the
   // ensemble's streams, found by the rule of Fig. 5 on its record, and its cuts. The run of the starts (in lanes, each
   // episode cut from its first output time) gives the trajectory of Fig. 5 the same episode and the same cuts, bit

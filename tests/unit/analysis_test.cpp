@@ -191,6 +191,23 @@ TEST(WorkPrecisionSet, RelativeTimePerStepKnowsTheNoise) {
   EXPECT_EQ(r["by_method"]["b"]["verdict"], "indistinguishable");
 }
 
+// Each method's wall time to a target against the first method that reaches it, with the interval of the times
+// per step carried over (b: half a's time per step, spreads of 100 %, indistinguishable per step, but of order 2:
+// to 1e-3 in a sixth of a's time, faster beyond that interval), and nothing for a target no method reaches.
+TEST(WorkPrecisionSet, TimeToATargetCarriesTheIntervalOfTheTimesPerStep) {
+  const auto r = to_json(two_methods().summary({1e-3, 1e-9}))["ratios_to"];
+  ASSERT_EQ(r.size(), 2u);
+  EXPECT_EQ(r[0]["reference"], "a");
+  const auto& b = r[0]["by_method"]["b"];
+  const double ratio = (std::sqrt(1e-3) / 2) / 0.1;  // (b's and a's wall times to 1e-3, SummaryInTheOneShape)
+  EXPECT_NEAR(b["wall_ratio"].get<double>() / ratio, 1, 1e-13);
+  EXPECT_NEAR(b["min"].get<double>() / (ratio * (0.75 / 1.75)), 1, 1e-13);  // q1_b / q3_a over median_b / median_a
+  EXPECT_NEAR(b["max"].get<double>() / (ratio * (1.75 / 0.75)), 1, 1e-13);
+  EXPECT_EQ(b["verdict"], "faster");
+  EXPECT_TRUE(r[1]["reference"].is_null());
+  EXPECT_TRUE(r[1]["by_method"].empty());
+}
+
 // A method of fixed work per step (force evaluations 2 n + 1 at every h) is timed at its fewest and most
 // steps, its other runs interpolated affinely in the steps; one whose evaluations are not affine in the steps
 // (a Newton iteration count that changes with h) and one of two runs are timed at every run.

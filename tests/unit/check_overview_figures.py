@@ -120,6 +120,12 @@ expect("a table: only the entries compared, each over its own printed tolerance"
        ov.entry_positions(ALPHA["tab"]) == {"0.10000000000000001": 2.5e-14 / 5e-14})
 expect("a claim above a bound: bound over value", ov.entry_positions(ALPHA["claim"]) == {"M": 0.5, "T": 0.8 / 0.9})
 expect("a claim below a bound: value over bound", math.isclose(ov.entry_positions(BETA["below"])[None], 0.1))
+sign = comparison("900 Fig. 1", "reproduced", {"above": 0}, published="> 0", reproduced={"M": 0.13, "T": 0.0},
+                  difference={"M": 0.13, "T": 0.0})
+expect("a sign (a bound of 0): held at 0, missed beyond the axis", ov.entry_positions(sign) == {"M": 0.0, "T": math.inf})
+margin = comparison("900 Fig. 1", "differs", {"above": 0.5}, published="> 0.5", reproduced=0.55, difference=0.05,
+                    tolerances={"standard_error": 0.1, "standard_errors": 2, "of": 0.2})
+expect("a claim with standard errors: the bound moved by them", math.isclose(ov.entry_positions(margin)[None], 0.7 / 0.55))
 expect("standard errors: the run's tolerance", math.isclose(ov.entry_positions(ALPHA["se"])[None], 0.5))
 expect("a tolerance of 0 met: 0", ov.entry_positions(ALPHA["exact"])[None] == 0.0)
 expect("a tolerance of 0 missed: beyond the axis", ov.entry_positions(BETA["step"])[None] == math.inf)

@@ -338,7 +338,7 @@ why = "less than the other"
             std::string::npos);
 }
 
-TEST(Published, AClaimWithAStandardErrorHoldsOnlyBeyondItsBoundByThatMany) {
+TEST(Published, AClaimWithAStandardErrorHoldsOnlyThatManyStandardErrorsPastItsLimit) {
   // a share of random samples above one half (a coin flip) by kStandardErrors of its binomial standard error
   const auto e = read_published(published_file(R"(
 [typical]

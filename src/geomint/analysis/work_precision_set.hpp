@@ -64,8 +64,9 @@ class WorkPrecisionSet {
   Value summary(const std::vector<double>& targets) const;
   // Per target: each method's wall time to reach it over that of the first method that reaches it (the
   // reference), with the interval and drift of the ratio of their times per step at the smallest h
-  // (time_ratio) carried over, and its verdict (timing_verdict, the force evaluations to the target as the
-  // work): [{target, reference, by_method: {label: {wall_ratio, min, max, drift, verdict}}}].
+  // (time_ratio) carried over, and its verdict (timing_verdict: faster, slower or indistinguishable; the force
+  // evaluations to a target are no measure of work across systems or methods whose evaluations cost unlike):
+  // [{target, reference, by_method: {label: {wall_ratio, min, max, drift, verdict}}}].
   Value ratios_to(const Value& by_method, const std::vector<double>& targets) const;
   // Each method's time per step at its smallest h against the first method's (relative_timings,
   // runner/timing_report.hpp), the force evaluations per step as the work.
