@@ -135,14 +135,14 @@ def record_problems(runs):
 
 
 def read_records(runs, root):
-    """Each comparison with the summary key it compares (experiments/<experiment>/published.toml) and its `where`
-    and `note` with the run's values in place of their placeholders (expand_record)."""
+    """Each comparison with the summary key it compares (experiments/<experiment>/published.toml) and its `where`,
+    `note` and `why` with the run's values in place of their placeholders (expand_record)."""
     for name, run in runs.items():
         path = root / "experiments" / run["summary"].get("experiment", name) / "published.toml"
         published = tomllib.loads(path.read_text(encoding="utf-8")) if path.is_file() else {}
         for key, c in (run["summary"].get("comparisons") or {}).items():
             c.setdefault("summary", (published.get(key) or {}).get("summary"))
-            for field in ("where", "note"):
+            for field in ("where", "note", "why"):
                 if field in c:
                     c[field] = expand_record(c[field], run["summary"], run["run"].get("scene", {}), f"{name}: {key}")
 
