@@ -33,12 +33,15 @@ PLAIN = {"plain": lambda x: f"{x:g}", "percent": lambda x: f"{100 * x:.3g} %",
          "err": lambda x: re.sub(r"e([-+])0*(?=\d)", lambda m: "e" + m.group(1).strip("+"), f"{x:.2g}")}
 
 
-def expand_record(text, summary, scene, where=""):
+def expand_record(text, summary, scene, where="", compared=True):
     """A `where` or `note` with its {scene.KEY} and {summary.KEY} replaced by the run's values; a key the run
-    does not have stops the report, naming it."""
+    does not have stops the report, naming it, unless the comparison was not made under this scene (not
+    `compared`: not comparable, not computed), where it reads "(not in this run)"."""
     def value(m):
         v = at(scene if m.group(2) == "scene" else summary, m.group(1).split(".", 1)[1])
         if not isinstance(v, (int, float)) or isinstance(v, bool) or not math.isfinite(v):
+            if not compared:
+                return "(not in this run)"
             raise SystemExit(f"report.py: {where}: {m.group(0)} is not a number of the run")
         return PLAIN[m.group(3) or "plain"](v)
     return PLACEHOLDER.sub(value, text or "")
@@ -144,7 +147,8 @@ def read_records(runs, root):
             c.setdefault("summary", (published.get(key) or {}).get("summary"))
             for field in ("where", "note", "why"):
                 if field in c:
-                    c[field] = expand_record(c[field], run["summary"], run["run"].get("scene", {}), f"{name}: {key}")
+                    c[field] = expand_record(c[field], run["summary"], run["run"].get("scene", {}), f"{name}: {key}",
+                                             c.get("verdict") not in ("not comparable", "not computed"))
 
 
 # The description of a lookup in the report's text: the words of its sentence before it (a table cell, an item,

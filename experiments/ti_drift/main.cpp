@@ -8,6 +8,7 @@
 //   Fig 5      Poincare cuts and growth episodes of the ensemble's trajectory with
 //              the largest error (from the ensemble study of the same run, or the
 //              ensemble integrated again: ti_drift.hpp)                               poincare.cpp
+//   Fig 5      the printed side of the cuts over the growth episodes of many starts   episode_sides.cpp
 //   Fig 6      the Lennard-Jones cluster: a step-size scan and the ensemble statistics lj.cpp
 //   Fig 6      sigma against h (the printed step)                                     lj_steps.cpp
 //   Sect. 1.3  symplecticity against volume preservation                              symplecticity.cpp
@@ -54,6 +55,6 @@ int main(int argc, char** argv) {
   ExperimentSpec spec{"ti_drift", "004 Figs 1-6: energy behaviour of the (simplified) Takahashi-Imada method",
                       shared_keys(),
                       {oscillator_study(), pendulum_study(), hh3_study(), ensemble_study(largest), poincare_study(largest),
-                       lj_study(), lj_steps_study(), cost_study(), symplecticity_study(), kernel_timing_study()}};
+                       episode_sides_study(), lj_study(), lj_steps_study(), cost_study(), symplecticity_study(), kernel_timing_study()}};
   return run_experiment(argc, argv, std::move(spec), GEOMINT_EXPERIMENT_DIR);
 }

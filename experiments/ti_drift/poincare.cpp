@@ -2,8 +2,8 @@
 // error, in the window where its error grows fastest and in the flattest, and the growth episodes of its error
 // against (4.3). The trajectory: the ensemble study's, when it ran in the same process (LargestError, main.cpp);
 // else this study integrates the ensemble itself (integrate_ensemble, ensemble.cpp: the same starts, checkpoint
-// and numbers) and takes its trajectory with the largest error. And the printed side of the cuts (p2 < 0) over many
-// starts: the first growth episode of each of poincare.starts starts (write_starts; analysis/episode_cuts.hpp).
+// and numbers) and takes its trajectory with the largest error. The printed side of the cuts over many starts is the
+// study episode_sides (episode_sides.cpp).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -28,7 +28,6 @@ namespace geomint::ti_drift {
 namespace {
 
 constexpr std::size_t kPoincareWindows = 20;  // Fig. 5: the run of the trajectory is cut into this many windows
-constexpr std::size_t kMinClaimSamples = 20;  // Fig. 5 over many starts: the share of a claim from at least this many
 
 // The windows of the trajectory's run: the one where its error grows fastest and the flattest.
 struct Windows {
@@ -69,14 +68,6 @@ struct Episodes {
   std::vector<Episode> episodes;
   std::vector<int> episode_of;  // the episode of the interval [t_k, t_{k+1}), or -1 (the complement)
 };
-
-// The scene's episode rule (ensemble.episode_*) in samples of sample_dt.
-EpisodeRule episode_rule(const Scene& s, double sample_dt) {
-  const auto samples = [&](const char* key) {
-    return static_cast<std::size_t>(std::max(1.0, std::round(s.real(key) / sample_dt)));
-  };
-  return {samples("ensemble.episode_half_width"), s.real("ensemble.episode_threshold"), samples("ensemble.episode_min_length")};
-}
 
 // The growth episodes of its recorded error (analysis/growth_episodes.hpp; the scene's ensemble.episode_*).
 // fig5_episodes.csv: at each output time the error, its running slope and its episode.
@@ -290,42 +281,6 @@ Value write_fig5(Context& ctx, const HH& hhk, const Trajectory& run) {
   return poincare;
 }
 
-// The printed claim over many starts: the first growth episode of each start 0 .. poincare.starts - 1 of the Fig. 4
-// ensemble's streams (its own first, integrated again; analysis/episode_cuts.hpp), one independent sample each. The
-// claim holds for a sample where most of its cuts lie in p2 < 0; its share over the samples (from kMinClaimSamples on)
-// with the binomial standard error, against a coin flip (fig5_starts.csv, poincare.starts: runner/summary.hpp).
-template <class HH>
-Value write_starts(Context& ctx, const HH& hhk) {
-  const Scene& s = ctx.scene;
-  const auto N = static_cast<std::size_t>(s.integer("poincare.starts"));
-  ctx.progress("Fig. 5: growth episodes of " + std::to_string(N) + " starts");
-  const double h = s.real("h");
-  const std::int64_t n = steps_to(s.real("t_end"), h), every = std::max<std::int64_t>(1, n / s.integer("samples"));
-  const EpisodeRule rule = episode_rule(s, static_cast<double>(every) * h);
-  std::vector<Z2> starts(N);
-  for (std::size_t i = 0; i < N; ++i) starts[i] = ensemble_start(s, hhk, i);
-  const std::vector<EpisodeSample> found = concatenate(checkpointed_map<std::vector<EpisodeSample>>(
-      ctx, {"poincare.starts"}, lane_batches(N), [&](std::size_t b) {  // (the keys: all the study reads)
-        const LaneBatch batch = lane_batch(b, N);
-        return first_growth_episode_cuts(hhk, std::span<const Z2>(starts).subspan(batch.first, batch.count), h, n, every, rule);
-      }));
-  Csv f5s({"start", "t_start", "t_end", "cuts", "share_p2_negative", "mean_p2"});
-  std::vector<double> share, one_side;
-  for (std::size_t i = 0; i < N; ++i) {
-    const EpisodeSample& e = found[i];
-    if (!e.found || e.count == 0) continue;
-    const double c = static_cast<double>(e.count), sh = static_cast<double>(e.negative) / c;
-    share.push_back(sh), one_side.push_back(std::max(sh, 1 - sh));
-    const auto time_of = [&](std::int64_t k) { return static_cast<double>(k) * static_cast<double>(every) * h; };
-    f5s.row(static_cast<std::int64_t>(i), time_of(e.begin), time_of(std::min<std::int64_t>(e.end, n / every)), e.count, sh,
-            e.p2_sum / c);
-  }
-  ctx.write("fig5_starts.csv", f5s);
-  Value out = {{"starts", N}, {"p2_negative", claim_share_summary(share, 0.5, kMinClaimSamples)}};
-  if (!one_side.empty()) out["one_side"] = quartiles(one_side);  // the share of the cuts on the side holding most
-  return out;
-}
-
 // The trajectory with the largest error: the ensemble study's of this process, or that of the ensemble integrated
 // here when that study did not run (the same function, starts and checkpoint: the same trajectory).
 void run_poincare(Context& ctx, const LargestError& largest) {
@@ -338,32 +293,27 @@ void run_poincare(Context& ctx, const LargestError& largest) {
   const Trajectory& worst = largest ? *largest : *own;
   with_ensemble_system(ctx.scene, [&](const auto& hhk) {
     ctx.summary["poincare"] = write_fig5(ctx, hhk, worst);
-    ctx.summary["poincare"]["starts"] = write_starts(ctx, hhk);
   });
 }
 
 void check_poincare(const Scene& s) {
   check_ensemble_run(s);
-  const double t_end = s.real("t_end");
-  for (const char* key : {"ensemble.episode_half_width", "ensemble.episode_min_length"})
-    if (s.real(key) > t_end) s.reject(key, "must not exceed t_end = " + format_double(t_end));
+  check_episode_rule(s);
 }
 
 // With the ensemble study in the same process: the rerun of one trajectory (scalar, (4.3) and a cut test every step),
-// its series and CSVs, and the poincare.starts starts in lanes (their episodes' few steps left out). Alone: the
-// ensemble too, as the ensemble study plans it. One rate: the time of the parts over their steps.
+// its series and CSVs. Alone: the ensemble too, in lanes, as the ensemble study plans it. One rate: the time of the
+// parts over their steps.
 StudyPlan plan_poincare(const Scene& s) {
   const double n = s.real("t_end") / s.real("h"), M = static_cast<double>(s.integer("ensemble.size"));
-  const double N = static_cast<double>(s.integer("poincare.starts"));
   const double evals = static_cast<double>(evals_per_step("simplified_takahashi_imada"));
   const double rows = kept_samples(n, static_cast<double>(s.integer("samples")));
-  const double lanes = hh_lanes_rate().ns_per_step, scalar = hh_rate().ns_per_step,
-               tasks = static_cast<double>(lane_batches(static_cast<std::size_t>(N)));
-  const StudyPlan taken{(N + 1) * n, (N + 1) * n * evals, rows * 208 + kEnsembleLanes * rows * 40, (scalar + N * lanes) / (N + 1),
-                        "the trajectory of the ensemble study of this run, and the starts; " + hh_lanes_rate().note, tasks};
-  StudyPlan alone{(M + N + 1) * n, (M + N + 1) * n * evals, M * rows * 8 + rows * 200, (scalar + (M + N) * lanes) / (M + N + 1),
-                  "the ensemble integrated again (without the ensemble study), and the starts; " + hh_lanes_rate().note,
-                  static_cast<double>(lane_batches(static_cast<std::size_t>(M))) + tasks};  // (tasks: batches of lanes)
+  const double lanes = hh_lanes_rate().ns_per_step, scalar = hh_rate().ns_per_step;
+  const StudyPlan taken{n, n * evals, rows * 208 + kEnsembleLanes * rows * 40, scalar,
+                        "the trajectory of the ensemble study of this run; " + hh_rate().note, 1};
+  StudyPlan alone{(M + 1) * n, (M + 1) * n * evals, M * rows * 8 + rows * 200, (scalar + M * lanes) / (M + 1),
+                  "the ensemble integrated again (without the ensemble study); " + hh_lanes_rate().note,
+                  static_cast<double>(lane_batches(static_cast<std::size_t>(M)))};  // (tasks: batches of lanes)
   alone.reuses = "ensemble", alone.when_reusing = std::make_shared<const StudyPlan>(taken);
   return alone;
 }
@@ -377,7 +327,7 @@ Study poincare_study(const LargestError& largest) {
           .makes = {{"004", "Fig. 5"}},
           .about = "Poincare cuts of the Fig 4 ensemble's trajectory with the largest error (from the ensemble study "
                    "of the same run; without it, the ensemble integrated again, the same numbers)",
-          .files = {"fig5_poincare.csv", "fig5_episodes.csv", "fig5_episode_cuts.csv", "fig5_starts.csv"},
+          .files = {"fig5_poincare.csv", "fig5_episodes.csv", "fig5_episode_cuts.csv"},
           .keys = Schema()
                       .real("ensemble.episode_half_width", positive(),
                             "Fig. 5 episodes: the running slope of the error of E of the trajectory is fitted over +- "
@@ -387,10 +337,7 @@ Study poincare_study(const LargestError& largest) {
                             "their median by more than this many robust standard deviations (1.4826 MAD) of the "
                             "running slopes")
                       .real("ensemble.episode_min_length", positive(),
-                            "Fig. 5 episodes: the shortest episode (time units)")
-                      .integer("poincare.starts", at_least(1),
-                               "Fig. 5 over many starts: the first growth episode of each of this many starts of the "
-                               "Fig. 4 ensemble's streams (its own first), the side of p2 = 0 its cuts lie on"),
+                            "Fig. 5 episodes: the shortest episode (time units)"),
           .reads = reads,
           .run = [&largest](Context& ctx) { run_poincare(ctx, largest); },
           .validate = check_poincare,

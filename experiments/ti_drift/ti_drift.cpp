@@ -7,6 +7,7 @@
 #include <random>
 #include <stdexcept>
 
+#include "geomint/analysis/episode_cuts.hpp"
 #include "geomint/methods/by_name.hpp"
 #include "geomint/methods/scene_methods.hpp"
 #include "geomint/integrators/takahashi_imada_systems.hpp"
@@ -57,6 +58,19 @@ Z18 lj_start_of(const Scene& s, std::size_t i) {
 
 void check_step_bound(const Scene& s, const char* step_key, double h, double omega, const std::string& where) {
   check_oscillatory_bound(s, step_key, step_key, "simplified_takahashi_imada", h * omega, where, "2 sqrt(3)");
+}
+
+void check_episode_rule(const Scene& s) {
+  const double t_end = s.real("t_end");
+  for (const char* key : {"ensemble.episode_half_width", "ensemble.episode_min_length"})
+    if (s.real(key) > t_end) s.reject(key, "must not exceed t_end = " + format_double(t_end));
+}
+
+EpisodeRule episode_rule(const Scene& s, double sample_dt) {
+  const auto samples = [&](const char* key) {
+    return static_cast<std::size_t>(std::max(1.0, std::round(s.real(key) / sample_dt)));
+  };
+  return {samples("ensemble.episode_half_width"), s.real("ensemble.episode_threshold"), samples("ensemble.episode_min_length")};
 }
 
 double kept_samples(double n, double samples) { return std::floor(n / std::max(1.0, std::floor(n / samples))) + 1; }

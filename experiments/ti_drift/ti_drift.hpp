@@ -19,6 +19,10 @@
 #include "geomint/systems/henon_heiles.hpp"
 #include "geomint/systems/lennard_jones.hpp"
 
+namespace geomint {
+struct EpisodeRule;  // (analysis/episode_cuts.hpp)
+}  // namespace geomint
+
 namespace geomint::ti_drift {
 
 using Z1 = PhaseState<1>;
@@ -35,6 +39,7 @@ Study pendulum_study();        // 004 Fig 2                                     
 Study hh3_study();             // 004 Fig 3                                            hh3.cpp
 Study ensemble_study(LargestError& largest);         // 004 Fig 4                      ensemble.cpp
 Study poincare_study(const LargestError& largest);   // 004 Fig 5                      poincare.cpp
+Study episode_sides_study();                         // 004 Fig 5 over many starts     episode_sides.cpp
 Study lj_study();              // 004 Fig 6                                            lj.cpp
 Study lj_steps_study();        // 004 Fig 6: sigma against h (the printed step)        lj_steps.cpp
 Study cost_study();            // cost: error against wall time and force evaluations  cost.cpp
@@ -104,6 +109,11 @@ Z2 ensemble_start(const Scene& s, const HH& hhk, std::size_t i) {
   const double dq = u(rng), dp = u(rng);
   return hhk.start(s.real("hh3.q2") + dq, s.real("hh3.p2") + dp, s.real("hh.H0"));
 }
+
+// The scene's rule for the growth episodes of Fig. 5 (ensemble.episode_*) in samples of sample_dt
+// (analysis/episode_cuts.hpp).
+EpisodeRule episode_rule(const Scene& s, double sample_dt);
+void check_episode_rule(const Scene& s);  // its widths do not exceed t_end
 
 // The Henon-Heiles starts q1 = 0, q2 in [q2 - d, q2 + d], p2 in [p2 - d, p2 + d] (d: the ensemble's
 // perturbation, 0 for one start) lie in the bounded well below the escape energy (the lowest saddle of

@@ -227,7 +227,9 @@ TEST(TiDrift, ListStudiesNamesFig4ForTheEnsembleAndFig5ForPoincare) {
   EXPECT_TRUE(listed["ensemble"].first.starts_with("004 Fig. 4:")) << listed["ensemble"].first;
   EXPECT_EQ(listed["ensemble"].second, "fig4_stats.csv fig4_trajectories.csv");
   EXPECT_TRUE(listed["poincare"].first.starts_with("004 Fig. 5:")) << listed["poincare"].first;
-  EXPECT_EQ(listed["poincare"].second, "fig5_poincare.csv fig5_episodes.csv fig5_episode_cuts.csv fig5_starts.csv");
+  EXPECT_EQ(listed["poincare"].second, "fig5_poincare.csv fig5_episodes.csv fig5_episode_cuts.csv");
+  EXPECT_TRUE(listed["episode_sides"].first.starts_with("004 Fig. 5:")) << listed["episode_sides"].first;
+  EXPECT_EQ(listed["episode_sides"].second, "fig5_starts.csv");
   // it says where its trajectory comes from
   EXPECT_NE(listed["poincare"].first.find("from the ensemble study of the same run"), std::string::npos);
   EXPECT_NE(listed["poincare"].first.find("the ensemble integrated again"), std::string::npos);
@@ -237,8 +239,8 @@ TEST(TiDrift, ListStudiesNamesFig4ForTheEnsembleAndFig5ForPoincare) {
       EXPECT_TRUE(st["ran"].get<bool>()) << st["name"];
       EXPECT_EQ(st["made"], json::array({st["name"] == "ensemble" ? "004 Fig. 4" : "004 Fig. 5"})) << st["name"];
     }
-  for (const auto& [key, c] : summary()["comparisons"].items())
-    if (c["figure"] == "004 Fig. 5") EXPECT_EQ(c["study"], "poincare") << key;
+  for (const auto& [key, c] : summary()["comparisons"].items())  // (and its printed side over many starts)
+    if (c["figure"] == "004 Fig. 5") EXPECT_EQ(c["study"], key.ends_with("_starts") ? "episode_sides" : "poincare") << key;
 }
 
 TEST(TiDrift, PoincareAloneCutsTheTrajectoryTheEnsembleStudyHandsOver) {
@@ -249,7 +251,7 @@ TEST(TiDrift, PoincareAloneCutsTheTrajectoryTheEnsembleStudyHandsOver) {
   fs::remove_all(alone);
   const BinaryOutcome r = run_binary("ti_drift", "--quick --study poincare --threads 2 --out " + alone.string());
   ASSERT_EQ(r.code, 0) << r.err;
-  for (const char* f : {"fig5_poincare.csv", "fig5_episodes.csv", "fig5_episode_cuts.csv", "fig5_starts.csv"})
+  for (const char* f : {"fig5_poincare.csv", "fig5_episodes.csv", "fig5_episode_cuts.csv"})
     EXPECT_TRUE(file_text(alone / f) == file_text(results_dir("ti_drift") / f)) << f << " differs from the quick run's";
   EXPECT_FALSE(fs::exists(alone / "fig4_stats.csv"));
   const json s = json::parse(file_text(alone / "summary.json"));
@@ -284,16 +286,16 @@ TEST(TiDrift, PoincareCutsTheEnsembleTrajectoryWithTheLargestError) {
 }
 
 TEST(TiDrift, SidesOfEpisodes) {
-  // Fig. 5 over many starts (summary poincare.starts, fig5_starts.csv): the first growth episode of each start of the
+  // Fig. 5 over many starts (study episode_sides: summary episode_sides, fig5_starts.csv): the first growth episode of each start of the
   // ensemble's streams, found by the rule of Fig. 5 on its record, and its cuts. The run of the starts (in lanes, each
   // episode cut from its first output time) gives the trajectory of Fig. 5 the same episode and the same cuts, bit
   // for bit, as the scalar run from its start; the summary counts the rows of the CSV; below 20 samples the share
   // of the claim is not given (published.toml's fig5_growth_cuts_p2_negative_starts, on the paper scene: 20 of 2400).
-  const auto& st = summary()["poincare"]["starts"];
+  const auto& st = summary()["episode_sides"];
   const auto& p2 = st["p2_negative"];
   const CsvFile f = read_csv(results_dir("ti_drift") / "fig5_starts.csv");
   ASSERT_EQ(f.names, (std::vector<std::string>{"start", "t_start", "t_end", "cuts", "share_p2_negative", "mean_p2"}));
-  EXPECT_EQ(st["starts"].get<double>(), scene()["poincare"]["starts"].get<double>());
+  EXPECT_EQ(st["starts"].get<double>(), scene()["episode_sides"]["starts"].get<double>());
   ASSERT_EQ(p2["samples"].get<std::size_t>(), f.rows.size());
   std::size_t holds = 0;
   double lo = 1, hi = 0;
@@ -338,11 +340,12 @@ TEST(TiDrift, PoincarePlanCountsTheEnsembleOnlyWhenItIntegratesIt) {
     return steps;
   };
   const double n = scene()["t_end"].get<double>() / scene()["h"].get<double>();
-  const double M = scene()["ensemble"]["size"].get<double>(), N = scene()["poincare"]["starts"].get<double>();
+  const double M = scene()["ensemble"]["size"].get<double>(), N = scene()["episode_sides"]["starts"].get<double>();
   const auto both = planned("--study ensemble --study poincare"), alone = planned("--study poincare");
   EXPECT_DOUBLE_EQ(both.at("ensemble"), M * n);
-  EXPECT_DOUBLE_EQ(both.at("poincare"), (N + 1) * n);        // the rerun of the trajectory it takes, and the starts
-  EXPECT_DOUBLE_EQ(alone.at("poincare"), (M + N + 1) * n);   // the ensemble, the rerun and the starts
+  EXPECT_DOUBLE_EQ(both.at("poincare"), n);            // the rerun of the trajectory it takes
+  EXPECT_DOUBLE_EQ(alone.at("poincare"), (M + 1) * n);  // the ensemble and the rerun
+  EXPECT_DOUBLE_EQ(planned("--study episode_sides").at("episode_sides"), N * n);  // its starts, in lanes
 }
 
 TEST(TiDrift, LocalDriftFollowsTheRateOf43AtTheCurrentEnergy) {

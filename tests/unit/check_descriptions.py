@@ -59,6 +59,8 @@ try:
 except SystemExit as e:
     if "scene.t_max" not in str(e):
         problems.append(f"the refusal of a missing key does not name it: {e}")
+if rt.expand_record("at t = {scene.t_max}", SUMMARY, {"t_end": 10}, "r: end", compared=False) != "at t = (not in this run)":
+    problems.append("a comparison this scene does not make stops the report on a value it lacks")
 phrase = rt.record_phrase(rt.key_fits(FITS, "local.max_diff"))
 if "each of 2 windows" not in phrase or r"\texttt{run.csv:e}" not in phrase.replace(r"\allowbreak{}", ""):
     problems.append(f"the fits of a summarized column read: {phrase}")
