@@ -472,3 +472,19 @@ TEST(Cli, TwoConcurrentRunsOnOneOutput) {
 }
 
 }  // namespace cli_test
+
+// Under a file size limit (ulimit -f) a write past it fails and the run says so (exit 1, DIR untouched), where
+// SIGXFSZ used to kill it with no message.
+TEST(Cli, AFileSizeLimitIsAnErrorWithAMessage) {
+  namespace fs = std::filesystem;
+  const fs::path out = fs::path(GEOMINT_TEST_RESULTS) / ("euler_compensation-ulimit-" + std::to_string(::getpid()));
+  fs::remove_all(out), fs::remove_all(out.string() + ".partial");
+  const fs::path err = out.string() + ".stderr";
+  const int status = std::system(("ulimit -f 8; exec " + std::string(GEOMINT_BIN_DIR) + "/euler_compensation --quick --out " +
+                                  out.string() + " >/dev/null 2>" + err.string()).c_str());
+  ASSERT_TRUE(WIFEXITED(status)) << "killed by a signal";
+  EXPECT_EQ(WEXITSTATUS(status), 1);
+  EXPECT_NE(file_text(err).find("File too large"), std::string::npos) << file_text(err);
+  EXPECT_FALSE(fs::exists(out));
+  fs::remove_all(out.string() + ".partial"), fs::remove(err);
+}

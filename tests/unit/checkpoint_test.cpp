@@ -240,11 +240,11 @@ TEST(Checkpoint, ResumeRefusesTamperedHeaders) {
   tampered("tasks_done", 3, "log_bytes");  // fewer records than the bytes counted
   tampered("study", "other", "study");
   tampered("run_id", "not-hex", "run_id");
-  tampered("log_crc32c", -1, "log_crc32c");
-  // a header that counts another run or other bytes: the log does not match it (the log named)
+  tampered("chain_crc32c", -1, "chain_crc32c");
+  // a header that counts another run or other records: the log does not match it (the log named)
   for (const auto& [field, value, needle] : {std::tuple<const char*, nlohmann::ordered_json, const char*>{
                                                  "run_id", "0123456789abcdef", "another run"},
-                                             {"log_crc32c", 12345, "do not match log_crc32c"}}) {
+                                             {"chain_crc32c", 12345, "do not end with chain_crc32c"}}) {
     stop_after_one_round();
     const Fixture f(0, 1.0, false);
     auto h = header_json(f.header());
@@ -264,8 +264,27 @@ TEST(Checkpoint, ResumeRefusesACheckpointBeyondTheTasks) {
 }
 
 // The log: a preamble of 16 bytes; record 0 (task 0: one value) its count, value and checksum (24 bytes);
-// record 1 from byte 40, its first value at byte 48.
-constexpr std::size_t kRecord1 = 16 + 24, kRecord1Value = kRecord1 + 8;
+// record 1 (two values, 32 bytes) from byte 40, its first value at byte 48.
+constexpr std::size_t kRecord1 = 16 + 24, kRecord1Value = kRecord1 + 8, kRecord2 = kRecord1 + 32;
+
+// The checks of the records of a log from record `from` on made again as the writer makes them (the CRC-32C
+// of the task index, the count and the values, seeded by the check before): a forger's log; the last check.
+std::uint32_t rechain(std::string& bytes, std::size_t from) {
+  std::size_t at = 16;
+  std::uint32_t chain = 0;
+  for (std::uint64_t k = 0; at < bytes.size(); ++k) {
+    std::uint64_t length = 0, check = 0;
+    std::memcpy(&length, bytes.data() + at, 8);
+    const std::size_t end = at + 8 + 8 * length;
+    if (k >= from) {
+      check = crc32c(bytes.data() + at, end - at, crc32c(&k, 8, chain));
+      std::memcpy(bytes.data() + end, &check, 8);
+    }
+    std::memcpy(&check, bytes.data() + end, 8);
+    chain = static_cast<std::uint32_t>(check), at = end + 8;
+  }
+  return chain;
+}
 
 void rewrite(const fs::path& p, const std::string& bytes) { std::ofstream(p, std::ios::binary | std::ios::trunc) << bytes; }
 
@@ -303,16 +322,65 @@ TEST(Checkpoint, ResumeRefusesAValueThatIsNotFinite) {
   const Fixture f(0, 1.0, false);
   std::string bytes = read(f.log());
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  std::memcpy(bytes.data() + kRecord1Value, &nan, 8);  // task 1's first value, its checksum and the header's made again
-  std::uint64_t length = 0;
-  std::memcpy(&length, bytes.data() + kRecord1, 8);
-  const std::uint64_t crc = crc32c(bytes.data() + kRecord1, 8 + 8 * length);
-  std::memcpy(bytes.data() + kRecord1 + 8 + 8 * length, &crc, 8);
+  std::memcpy(bytes.data() + kRecord1Value, &nan, 8);  // task 1's first value, the checks and the header's made again
+  const std::uint32_t chain = rechain(bytes, 1);
   rewrite(f.log(), bytes);
   auto h = header_json(f.header());
-  h["log_crc32c"] = crc32c(bytes.data(), h["log_bytes"].get<std::size_t>());
+  h["chain_crc32c"] = chain;
   write_header(f.header(), h);
   expect_refused(f.log(), "task 1 is not finite");
+}
+
+// A record is checked in its place of its own run's log: two records swapped, one dropped (the header counting
+// one fewer), one repeated in another's place, or a record of the same task from a run of other scene values is
+// refused, naming the record; with each record's own CRC alone (format 2) these passed.
+TEST(Checkpoint, ResumeRefusesRecordsOutOfTheirPlace) {
+  const auto moved = [](const std::function<void(std::string&, nlohmann::ordered_json&)>& move, const std::string& needle) {
+    stop_after_one_round();
+    const Fixture f(0, 1.0, false);
+    std::string bytes = read(f.log());
+    auto h = header_json(f.header());
+    move(bytes, h);
+    rewrite(f.log(), bytes);
+    write_header(f.header(), h);
+    expect_refused(f.log(), needle);
+  };
+  moved([](std::string& b, auto&) {  // records 0 and 1 swapped
+    b = b.substr(0, 16) + b.substr(kRecord1, 32) + b.substr(16, 24) + b.substr(kRecord2);
+  }, "record 0 (task 0) does not match its checksum");
+  moved([](std::string& b, auto& h) {  // record 1 dropped, the header counting what is left
+    b = b.substr(0, kRecord1) + b.substr(kRecord2);
+    h["tasks_done"] = h["tasks_done"].template get<int>() - 1, h["log_bytes"] = b.size();
+  }, "record 1 (task 1) does not match");
+  moved([](std::string& b, auto&) { b.replace(kRecord1, 24, b.substr(16, 24)); },  // record 0 repeated as record 1
+        "record 1 (task 1) does not match its checksum");
+  // the same task's record from a run of other scene values (a = 2: its values are the same, its place is not)
+  stop_after_one_round();
+  const std::string other_record = [] {
+    Fixture g(1, 2.0);
+    EXPECT_THROW(g.run(), Interrupted);
+    return read(g.log()).substr(16, 24);
+  }();
+  stop_after_one_round();
+  const Fixture f(0, 1.0, false);
+  std::string bytes = read(f.log());
+  ASSERT_EQ(bytes.substr(16, 16), other_record.substr(0, 16));  // (the same count and value)
+  bytes.replace(16, 24, other_record);
+  rewrite(f.log(), bytes);
+  expect_refused(f.log(), "record 0 (task 0) does not match its checksum");
+}
+
+// A header or a log that is not a regular file (a directory, a symbolic link that loops) is refused, exit 2.
+TEST(Checkpoint, ResumeRefusesAHeaderThatIsNotAFile) {
+  stop_after_one_round();
+  const Fixture f(0, 1.0, false);
+  fs::remove(f.header());
+  fs::create_directory(f.header());
+  expect_refused(f.header(), "is a directory");
+  fs::remove(f.header());
+  fs::create_symlink(f.header().filename(), f.header());  // (a link to itself)
+  expect_refused(f.header(), "cannot be examined");
+  fs::remove(f.header());
 }
 
 // A task whose record is not finite is not saved (nor any after it): resumed, it is computed again.

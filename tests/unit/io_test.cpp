@@ -229,6 +229,45 @@ TEST(ResultsDir, ResumeKeepsTheInterruptedRunAndDropsItsTemporaries) {
   EXPECT_FALSE(ResultsDir(t.root / "new", "exp", true).resumed());  // nothing to resume
 }
 
+// A run killed before its staging directory got its marker leaves only a temporary there: the next run, with
+// --resume or without, empties it and runs (it was refused, and every later run with it, until a person
+// deleted it); a staging directory with a user's file beside the temporary is still refused.
+TEST(ResultsDir, AStagingDirectoryOfATemporaryAloneIsNoObstacle) {
+  Scratch t;
+  for (const bool resume : {false, true}) {
+    const fs::path dir = t.root / (resume ? "resumed" : "fresh");
+    fs::create_directories(t.root / (dir.filename().string() + ".partial"));
+    std::ofstream(t.root / (dir.filename().string() + ".partial") / "..geomint-staging.tmp-4242") << "exp";
+    ResultsDir run(dir, "exp", resume);
+    EXPECT_FALSE(run.resumed());
+    run.discard();
+  }
+  fs::create_directories(t.root / "y.partial");
+  std::ofstream(t.root / "y.partial" / "..geomint-staging.tmp-4242") << "exp";
+  std::ofstream(t.root / "y.partial" / "notes.txt") << "x";
+  EXPECT_REFUSAL_OF(OutputError, "a staging directory holding a user's file beside a temporary",
+                    ResultsDir(t.root / "y", "exp", false), {"y.partial"});
+}
+
+// A results directory is never nested in another: --out inside one is refused (a run of its experiment would
+// replace it, and the nested one with it), and so is --out on one that holds another.
+TEST(ResultsDir, ResultsDirectoriesAreNeverNested) {
+  Scratch t;
+  finished_run(t.root / "outer", "ti_drift", {"a.csv"});
+  EXPECT_REFUSAL_OF(OutputError, "--out inside a complete result", ResultsDir(t.root / "outer" / "inner", "energy_map", false),
+                    {"inside the results directory", "outer"});
+  EXPECT_REFUSAL_OF(OutputError, "--out two levels inside", ResultsDir(t.root / "outer" / "a" / "b", "energy_map", false),
+                    {"inside the results directory"});
+  finished_run(t.root / "other", "energy_map", {"b.csv"});
+  fs::rename(t.root / "other", t.root / "outer" / "moved");  // (one moved in by hand)
+  EXPECT_REFUSAL_OF(OutputError, "--out on a result that holds another", ResultsDir(t.root / "outer", "ti_drift", false),
+                    {"holds the results directory", "moved"});
+  EXPECT_TRUE(fs::exists(t.root / "outer" / "moved" / "b.csv"));
+  finished_run(t.root / "plain2", "exp", {"c.csv"});
+  fs::create_directories(t.root / "plain2" / "figures");
+  EXPECT_NO_THROW(finished_run(t.root / "plain2", "exp", {"c.csv"}));
+}
+
 // A resumed run reruns its studies: what the interrupted run wrote and this one did not (a study it
 // does not run, perhaps of other scene values) must not reach DIR beside this run's run.json.
 TEST(ResultsDir, CommitKeepsExactlyTheFilesOfThisRun) {

@@ -130,6 +130,17 @@ TEST(Scene, RejectsUnknownKeys) {
   expect_refused("an unknown key in --set", valid, {"nosuch.key=1"},
                  {"--set nosuch.key=1: unknown key 'nosuch.key' (see --help for the keys)"});
   expect_refused("an unknown table in the scene", valid + "\n[extra]\nthing = 2\n", {}, {"unknown key 'extra.thing'"});
+  // a key with a control character is named escaped, on one line
+  const std::string nl = error_of(valid + "\n\"a\\nb\" = 1\n");
+  EXPECT_NE(nl.find("unknown key 'flags.a\\nb'"), std::string::npos) << nl;
+  EXPECT_EQ(nl.find('\n'), std::string::npos) << nl;
+}
+
+// A file the system says is regular but that cannot be read (/proc/self/mem: 0 bytes, an I/O error on reading)
+// is a refusal naming it, not an abort.
+TEST(Scene, AFileThatCannotBeReadIsRefused) {
+  EXPECT_REFUSAL_OF(SceneError, "--scene /proc/self/mem", Scene::load("/proc/self/mem", {}, schema()),
+                    {"/proc/self/mem", "cannot be read"});
 }
 
 TEST(Scene, RejectsTypeErrors) {

@@ -99,12 +99,46 @@ void check_replaceable(const fs::path& dir, const std::string& experiment, const
                       "; it is never replaced: give a new or empty directory, or remove it");
 }
 
-// Removes the temporaries (".<name>.tmp-<pid>") a killed writer left in `dir`.
+bool is_temporary(const fs::path& p) {  // ".<name>.tmp-<pid>": write_file_atomic's
+  const std::string f = p.filename().string();
+  return f.size() > 1 && f[0] == '.' && f.find(".tmp-") != std::string::npos;
+}
+
+// Removes the temporaries a killed writer left in `dir`.
 void remove_temporaries(const fs::path& dir) {
-  for (const auto& e : fs::directory_iterator(dir)) {
-    const std::string f = e.path().filename().string();
-    if (f.size() > 1 && f[0] == '.' && f.find(".tmp-") != std::string::npos) fs::remove(e.path());
-  }
+  for (const auto& e : fs::directory_iterator(dir))
+    if (is_temporary(e.path())) fs::remove(e.path());
+}
+
+// A staging directory that holds nothing but a killed writer's temporaries (a run killed before it wrote its
+// marker) is emptied: under the lock no other run writes there, and nothing else would tell whose it is.
+void clear_if_only_temporaries(const fs::path& dir) {
+  std::error_code ec;
+  if (!fs::is_directory(dir, ec) || fs::is_empty(dir, ec)) return;
+  for (const auto& e : fs::directory_iterator(dir))
+    if (!is_temporary(e.path())) return;
+  remove_temporaries(dir);
+}
+
+// A results directory (run.json, or a staging marker) at `dir`.
+bool is_results_dir(const fs::path& dir) {
+  std::error_code ec;
+  return fs::is_regular_file(dir / "run.json", ec) || fs::is_regular_file(dir / kStagingMarker, ec);
+}
+
+// Refuses a --out inside another results directory (replacing that one would delete it), and a --out whose
+// results directory holds another one (replacing it would delete the other).
+void check_not_nested(const fs::path& d) {
+  for (fs::path p = d.parent_path(); p != p.root_path() && !p.empty(); p = p.parent_path())
+    if (is_results_dir(p))
+      throw OutputError("--out " + printable(d.string()) + " lies inside the results directory " + printable(p.string()) +
+                        ", which a run of its experiment replaces as a whole; give a directory outside it");
+  std::error_code ec;
+  if (!fs::is_directory(d, ec)) return;
+  for (const auto& e : fs::directory_iterator(d, ec))
+    if (e.is_directory(ec) && is_results_dir(e.path()))
+      throw OutputError("--out " + printable(d.string()) + " holds the results directory " + printable(e.path().string()) +
+                        ", which replacing it would delete; move that one out first");
 }
 
 // Refuses a --out path that cannot become a results directory, before any work: a symbolic link (the
@@ -198,6 +232,8 @@ ResultsDir::ResultsDir(const fs::path& dir, const std::string& experiment, bool 
   staging_ = d.parent_path() / (d.filename().string() + ".partial");
   check_out_path(final_, dir.string());
   lock_ = DirLock(d.parent_path() / (d.filename().string() + ".lock"));
+  check_not_nested(final_);
+  clear_if_only_temporaries(staging_);
   check_replaceable(final_, experiment, "the directory");
   check_replaceable(staging_, experiment, "the staging directory");
   std::error_code ec;

@@ -22,7 +22,7 @@ using json = nlohmann::ordered_json;
 
 namespace {
 
-constexpr int kFormat = 2;  // of the header and the log (checkpoint.hpp)
+constexpr int kFormat = 3;  // of the header and the log (checkpoint.hpp)
 constexpr char kMagic[8] = {'g', 'e', 'o', 'm', 'i', 'n', 't', 'L'};  // the log's first 8 bytes
 constexpr std::size_t kPreamble = 16;                                // the magic and the run id
 const char* const kHeaderSuffix = ".checkpoint.json";
@@ -102,6 +102,20 @@ CheckpointLog::CheckpointLog(const Context& ctx, const CheckpointSpec& spec, std
                {"study", ctx.study},      {"name", name_},
                {"scene", scene_slice(ctx.scene, spec.keys.empty() ? task_keys(ctx.reads) : spec.keys)}, {"build", build_info()},
                {"n", n}});
+  chain_ = seed();
+}
+
+namespace {
+// The check of record k: the CRC-32C of its task index, count and values, seeded by the check of record k - 1
+// (for record 0, by the run's seed): a record checks only in its own place of its own run's log.
+std::uint32_t record_check(std::uint64_t k, const char* count_and_values, std::size_t size, std::uint32_t previous) {
+  return crc32c(count_and_values, size, crc32c(&k, sizeof k, previous));
+}
+}  // namespace
+
+std::uint32_t CheckpointLog::seed() const {
+  const std::string id = identity_->dump();
+  return crc32c(&run_id_, sizeof run_id_, crc32c(id.data(), id.size()));
 }
 
 void CheckpointLog::refuse(const fs::path& file, const std::string& why) const {
@@ -112,7 +126,7 @@ void CheckpointLog::refuse(const fs::path& file, const std::string& why) const {
 
 void CheckpointLog::reset() {
   fs::remove(header_), fs::remove(log_);
-  tasks_done_ = 0, log_bytes_ = 0, log_crc_ = 0, run_id_ = new_run_id();
+  tasks_done_ = 0, log_bytes_ = 0, run_id_ = new_run_id(), chain_ = seed();
 }
 
 CheckpointLog::Records CheckpointLog::load(bool resume) {
@@ -132,8 +146,20 @@ CheckpointLog::Records CheckpointLog::load(bool resume) {
   return records;
 }
 
+namespace {
+// A path that must be a regular file (following symbolic links), or nothing there: "" if so, else what it is.
+std::string not_a_file(const fs::path& p) {
+  std::error_code ec;
+  const fs::file_status st = fs::status(p, ec);
+  if (ec && ec != std::errc::no_such_file_or_directory) return "cannot be examined (" + ec.message() + ")";
+  if (!fs::exists(st) || fs::is_regular_file(st)) return "";
+  return fs::is_directory(st) ? "is a directory, not a file" : "is not a regular file";
+}
+}  // namespace
+
 CheckpointLog::Records CheckpointLog::load_here(bool resume) {
   Records records;
+  if (const std::string what = not_a_file(header_); !what.empty()) refuse(header_, what);
   if (!resume || !fs::exists(header_)) {
     reset();
     return records;
@@ -146,11 +172,12 @@ CheckpointLog::Records CheckpointLog::load_here(bool resume) {
     refuse(header_, std::string("not JSON (") + e.what() + ")");
   }
   if (!h.is_object()) refuse(header_, "not a checkpoint header (not a JSON object)");
-  for (const char* field : {"format", "experiment", "study", "name", "scene", "build", "n", "run_id", "tasks_done",
-                            "log_bytes", "log_crc32c"})
-    if (!h.contains(field)) refuse(header_, std::string("no field ") + field);
+  if (!h.contains("format")) refuse(header_, "no field format");
   if (h["format"] != (*identity_)["format"])
     refuse(header_, "format is " + shown(h["format"]) + ", this binary reads format " + std::to_string(kFormat));
+  for (const char* field : {"experiment", "study", "name", "scene", "build", "n", "run_id", "tasks_done", "log_bytes",
+                            "chain_crc32c"})
+    if (!h.contains(field)) refuse(header_, std::string("no field ") + field);
   for (const char* field : {"experiment", "study", "name"})
     if (h[field] != (*identity_)[field])
       refuse(header_, std::string(field) + " is " + shown(h[field]) + ", not " + shown((*identity_)[field]));
@@ -171,62 +198,55 @@ CheckpointLog::Records CheckpointLog::load_here(bool resume) {
     refuse(header_, "log_bytes is " + shown(h["log_bytes"]) + ": it must be a byte count");
   const auto run_id = parse_hex16(h["run_id"]);
   if (!run_id) refuse(header_, "run_id is " + shown(h["run_id"]) + ": it must be 16 hexadecimal digits");
-  if (!h["log_crc32c"].is_number_unsigned() || h["log_crc32c"].get<std::uint64_t>() > 0xFFFFFFFFu)
-    refuse(header_, "log_crc32c is " + shown(h["log_crc32c"]) + ": it must be a CRC-32C (an integer below 2^32)");
+  if (!h["chain_crc32c"].is_number_unsigned() || h["chain_crc32c"].get<std::uint64_t>() > 0xFFFFFFFFu)
+    refuse(header_, "chain_crc32c is " + shown(h["chain_crc32c"]) + ": it must be a CRC-32C (an integer below 2^32)");
   const auto done = static_cast<std::size_t>(h["tasks_done"].get<std::uint64_t>());
   const auto bytes = h["log_bytes"].get<std::uint64_t>();
   if (bytes < kPreamble)
     refuse(header_, "log_bytes is " + std::to_string(bytes) + ": fewer than the log's preamble of " +
                         std::to_string(kPreamble) + " bytes");
+  if (const std::string what = not_a_file(log_); !what.empty()) refuse(log_, what);
   std::error_code ec;
   const auto size = fs::exists(log_) ? fs::file_size(log_, ec) : 0;
-  if (ec || size < bytes)
+  if (ec || size < bytes)  // (checked before anything is read: no size field is trusted beyond the file)
     refuse(log_, "holds " + std::to_string(ec ? 0 : size) + " bytes, fewer than the " + std::to_string(bytes) +
                      " (log_bytes) of the " + std::to_string(done) + " tasks " + header_.filename().string() + " counts");
-  std::vector<char> raw(bytes);
   std::ifstream in(log_, std::ios::binary);
-  if (!in.read(raw.data(), static_cast<std::streamsize>(bytes))) refuse(log_, "cannot be read");
-  if (std::memcmp(raw.data(), kMagic, sizeof kMagic) != 0)
+  char preamble[kPreamble];
+  if (!in.read(preamble, kPreamble)) refuse(log_, "cannot be read");
+  if (std::memcmp(preamble, kMagic, sizeof kMagic) != 0)
     refuse(log_, "does not begin as a checkpoint log of format " + std::to_string(kFormat) + " does");
   std::uint64_t log_run = 0;
-  std::memcpy(&log_run, raw.data() + sizeof kMagic, 8);
+  std::memcpy(&log_run, preamble + sizeof kMagic, 8);
   if (log_run != *run_id)
     refuse(log_, "is the log of another run (run id " + hex16(log_run) + "), not of the run " +
                      header_.filename().string() + " counts (run_id " + hex16(*run_id) + ")");
-  // A record at `at`: its count, values and checksum, if they lie within the first `bytes` bytes.
-  const auto record_end = [&](std::size_t at) -> std::optional<std::size_t> {
-    if (bytes - at < 16) return std::nullopt;
-    std::uint64_t length = 0;
-    std::memcpy(&length, raw.data() + at, 8);
-    if (length > (bytes - at - 16) / 8) return std::nullopt;
-    return at + 16 + length * 8;
-  };
-  if (crc32c(raw.data(), bytes) != h["log_crc32c"].get<std::uint64_t>()) {
-    // the bytes changed since the header counted them: the first record that fails its own checksum
-    std::size_t at = kPreamble;
-    for (std::size_t k = 0; k < done; ++k) {
-      const auto end = record_end(at);
-      if (!end) break;
-      std::uint64_t stored = 0;
-      std::memcpy(&stored, raw.data() + *end - 8, 8);
-      if (crc32c(raw.data() + at, *end - 8 - at) != stored)
-        refuse(log_, "record " + std::to_string(k) + " (task " + std::to_string(k) +
-                         ") does not match its checksum: the log is damaged");
-      at = *end;
-    }
-    refuse(log_, "its first " + std::to_string(bytes) + " bytes (log_bytes) do not match log_crc32c of " +
-                     header_.filename().string() + ": the log is damaged or not the one the header counts");
-  }
-  std::size_t at = kPreamble;
+  run_id_ = *run_id;
+  // The records, read one at a time: each count checked against the bytes left before its values are read,
+  // each check against the chain (record_check): a record changed, swapped, dropped, duplicated or taken from
+  // another run fails in its place.
+  std::uint32_t chain = seed();
+  std::uint64_t at = kPreamble;
+  std::vector<char> record;
   for (std::size_t k = 0; k < done; ++k) {
-    const auto end = record_end(at);
-    if (!end)
+    std::uint64_t length = 0;
+    if (bytes - at < 16 || !in.read(reinterpret_cast<char*>(&length), 8) || length > (bytes - at - 16) / 8)
       refuse(header_, "log_bytes is " + std::to_string(bytes) + ": the log's first " + std::to_string(bytes) +
                           " bytes end within record " + std::to_string(k) + " of the " + std::to_string(done) +
                           " records (tasks_done)");
-    const std::size_t length = (*end - at - 16) / 8, first = records.values.size();
+    record.resize(8 + length * 8);
+    std::memcpy(record.data(), &length, 8);
+    std::uint64_t stored = 0;
+    if (!in.read(record.data() + 8, static_cast<std::streamsize>(length * 8)) || !in.read(reinterpret_cast<char*>(&stored), 8))
+      refuse(log_, "cannot be read");
+    chain = record_check(k, record.data(), record.size(), chain);
+    if (stored != chain)
+      refuse(log_, "record " + std::to_string(k) + " (task " + std::to_string(k) + ") does not match its checksum: the log "
+                   "is damaged, or the record is not task " + std::to_string(k) + " of this run (moved, dropped, "
+                   "repeated or taken from another log)");
+    const std::size_t first = records.values.size();
     records.values.resize(first + length);
-    std::memcpy(records.values.data() + first, raw.data() + at + 8, length * 8), at = *end;
+    std::memcpy(records.values.data() + first, record.data() + 8, length * 8), at += 16 + length * 8;
     for (std::size_t i = first; i < records.values.size(); ++i)
       if (!std::isfinite(records.values[i]))
         refuse(log_, "value " + std::to_string(i - first) + " of task " + std::to_string(k) + " is not finite");
@@ -235,9 +255,11 @@ CheckpointLog::Records CheckpointLog::load_here(bool resume) {
   if (at != bytes)
     refuse(header_, "log_bytes is " + std::to_string(bytes) + ", but its " + std::to_string(done) +
                         " records (tasks_done) take " + std::to_string(at));
+  if (chain != h["chain_crc32c"].get<std::uint64_t>())
+    refuse(log_, "its " + std::to_string(done) + " records do not end with chain_crc32c of " + header_.filename().string() +
+                     ": the log is not the one the header counts");
   if (size > bytes) fs::resize_file(log_, bytes);  // a round appended but not counted
-  tasks_done_ = done, log_bytes_ = bytes, log_crc_ = static_cast<std::uint32_t>(h["log_crc32c"].get<std::uint64_t>());
-  run_id_ = *run_id;
+  tasks_done_ = done, log_bytes_ = bytes, chain_ = chain;
   return records;
 }
 
@@ -257,21 +279,24 @@ void CheckpointLog::append(std::span<const double> values, std::span<const std::
   std::vector<char> raw((begins ? kPreamble : 0) + lengths.size() * 16 + values.size() * 8);
   std::size_t at = 0, v = 0;
   if (begins) std::memcpy(raw.data(), kMagic, sizeof kMagic), std::memcpy(raw.data() + 8, &run_id_, 8), at = kPreamble;
+  std::uint32_t chain = chain_;
+  std::uint64_t k = tasks_done_;
   for (const std::size_t length : lengths) {
     const auto l = static_cast<std::uint64_t>(length);
     const std::size_t record = at;
     std::memcpy(raw.data() + at, &l, 8), at += 8;
     std::memcpy(raw.data() + at, values.data() + v, length * 8), at += length * 8, v += length;
-    const std::uint64_t crc = crc32c(raw.data() + record, at - record);
-    std::memcpy(raw.data() + at, &crc, 8), at += 8;
+    chain = record_check(k++, raw.data() + record, at - record, chain);
+    const std::uint64_t check = chain;
+    std::memcpy(raw.data() + at, &check, 8), at += 8;
   }
   const int fd = ::open(log_.c_str(), O_WRONLY | O_CREAT | O_APPEND | O_CLOEXEC | (begins ? O_TRUNC : 0), 0644);
   if (fd < 0) throw OutputError("cannot write " + log_.string() + ": " + std::strerror(errno));
   write_all(fd, raw.data(), raw.size(), log_);
   if (::fsync(fd) != 0 || ::close(fd) != 0) throw OutputError("cannot write " + log_.string() + ": " + std::strerror(errno));
-  tasks_done_ += lengths.size(), log_bytes_ += raw.size(), log_crc_ = crc32c(raw.data(), raw.size(), log_crc_);
+  tasks_done_ += lengths.size(), log_bytes_ += raw.size(), chain_ = chain;
   json h = *identity_;
-  h["run_id"] = hex16(run_id_), h["tasks_done"] = tasks_done_, h["log_bytes"] = log_bytes_, h["log_crc32c"] = log_crc_;
+  h["run_id"] = hex16(run_id_), h["tasks_done"] = tasks_done_, h["log_bytes"] = log_bytes_, h["chain_crc32c"] = chain_;
   write_file_atomic(header_, h.dump(1) + "\n");
   g_write_seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }

@@ -7,17 +7,23 @@
 // Files (in ctx.out.path(), the staging directory DIR.partial; removed when the run commits):
 //   <name>.checkpoint.log   a preamble of 16 bytes (the magic "geomintL" and the run's id, a random
 //                           uint64), then the finished tasks' records in task order, appended round by
-//                           round: per record a uint64 count L, L doubles and a uint64 holding the
-//                           CRC-32C (io/crc32c.hpp) of the count and the values (the machine's byte order);
+//                           round: per record a uint64 count L, L doubles and a uint64 holding its check,
+//                           the CRC-32C (io/crc32c.hpp) of its task index, L and the values, seeded by the
+//                           check of the record before (the machine's byte order). Record 0 is seeded by
+//                           the run's seed, the CRC-32C of the header's identity (format, experiment, study,
+//                           name, scene keys, binary, n) and the run id: a record checks only in its own
+//                           place of its own run's log;
 //   <name>.checkpoint.json  the header, written atomically after each append: format, experiment,
 //                           study, name, the scene keys the tasks depend on, the binary (build_info),
 //                           n, run_id, tasks_done, log_bytes (the part of the log that holds them in
-//                           full) and log_crc32c (the CRC-32C of those bytes).
+//                           full) and chain_crc32c (the check of the last of them; the seed if none).
 // On --resume a header that is missing means nothing to resume, one of other scene values is
 // discarded (start over); one that cannot be used (not JSON, another format, another binary,
-// tasks_done beyond n, a log shorter than log_bytes, the log of another run, a log whose bytes do
-// not match log_crc32c, naming the first record that fails its own checksum, a value that is not
-// finite) is refused with a SceneError naming the file and the field or record (exit 2). A log
+// tasks_done beyond n, a log shorter than log_bytes, the log of another run, a record that fails its
+// check (damaged, moved, dropped, repeated, or from another run's log), records that do not end with
+// chain_crc32c, a value that is not finite, a header or log that is not a regular file) is refused with
+// a SceneError naming the file and the field or record (exit 2). No size field is trusted beyond the
+// file: the log is read record by record, each count checked against the bytes left. A log
 // longer than log_bytes (a run stopped in the middle of an append) is cut back. Every write costs
 // what is new: O(work) in all.
 #include <algorithm>
@@ -85,7 +91,8 @@ class CheckpointLog {
   std::size_t n_, tasks_done_ = 0;
   std::uint64_t log_bytes_ = 0;
   std::uint64_t run_id_ = 0;   // of the run that began the log (a resumed run continues it)
-  std::uint32_t log_crc_ = 0;  // CRC-32C of the log's log_bytes_ bytes
+  std::uint32_t chain_ = 0;    // the check of the last record (the seed if none)
+  std::uint32_t seed() const;  // the CRC-32C of the identity and the run id: record 0's seed
 };
 
 // The tasks of a round of checkpointed_map for n tasks on `workers` threads (all ranks together):

@@ -188,6 +188,9 @@ void install_signal_handlers(const std::string& name, const ResultsDir& results)
   sigaction(SIGINT, &sa, nullptr);
   sigaction(SIGTERM, &sa, nullptr);
   sigaction(SIGUSR1, &sa, nullptr);
+  // A file over the size limit (ulimit -f) fails its write with EFBIG, which the writer reports (OutputError),
+  // instead of SIGXFSZ killing the run with no message.
+  std::signal(SIGXFSZ, SIG_IGN);
 }
 
 }  // namespace

@@ -326,9 +326,22 @@ std::string read_scene_text(const std::filesystem::path& file, const std::string
   if (size > kMaxSceneBytes)
     throw SceneError(who + ": is " + std::to_string(size) + " bytes, over the " + std::to_string(kMaxSceneBytes) +
                      " bytes (1 MiB) a scene file may have");
-  std::ifstream in(file, std::ios::binary);
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (!in && !in.eof()) throw SceneError(who + ": cannot be read");
+  // Read in pieces, at most one byte past the limit (a file of the proc file system says 0 bytes and may
+  // hold more, or fail to be read: its read error is a refusal, not an abort).
+  std::string text;
+  try {
+    std::ifstream in(file, std::ios::binary);
+    char buf[65536];
+    while (in && text.size() <= kMaxSceneBytes) {
+      in.read(buf, sizeof buf);
+      text.append(buf, static_cast<std::size_t>(in.gcount()));
+    }
+    if (!in && !in.eof()) throw SceneError(who + ": cannot be read");
+  } catch (const std::ios_base::failure& e) {
+    throw SceneError(who + ": cannot be read (" + printable(e.what()) + ")");
+  }
+  if (text.size() > kMaxSceneBytes)
+    throw SceneError(who + ": holds more than the " + std::to_string(kMaxSceneBytes) + " bytes (1 MiB) a scene file may have");
   check_scene_shape(text, printable(file.string()));
   return text;
 }
@@ -445,7 +458,8 @@ Scene Scene::load(const std::filesystem::path& file, const std::vector<std::stri
   std::vector<std::string> keys;
   leaf_keys(scene.table_->t, "", keys);
   for (const auto& key : keys) {
-    if (!schema.find(key)) throw SceneError(scene.origin_[key].substr(3) + ": unknown key '" + key + "' (see --help for the keys)");
+    if (!schema.find(key))
+      throw SceneError(scene.origin_[key].substr(3) + ": unknown key '" + printable(key) + "' (see --help for the keys)");
   }
 
   for (const auto& assignment : overrides) {
@@ -458,7 +472,8 @@ Scene Scene::load(const std::filesystem::path& file, const std::vector<std::stri
     for (const auto& [from, to] : schema.aliases())
       if (key == from) key = to;
     const auto* entry = schema.find(key);
-    if (!entry) throw SceneError("--set " + key + "=" + value + ": unknown key '" + key + "' (see --help for the keys)");
+    if (!entry)
+      throw SceneError("--set " + printable(key + "=" + value) + ": unknown key '" + printable(key) + "' (see --help for the keys)");
     toml::table parsed;
     try {
       parsed = toml::parse("v = " + value);
