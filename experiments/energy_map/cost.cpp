@@ -228,7 +228,7 @@ void run_cost(Context& ctx) {
                                    {"error", "eq. (50) over [0, cost.t_end] against H_0 = H(z_0), per start"}};
   cost["method"] = "the scalar loop energy_map_scalar in both systems (not the batched kernels); per system and step "
                    "one timed function runs every start of cost.starts in turn, a start's wall time is its share; " +
-                   timing_method_text(static_cast<int>(s.integer("timing.repeats")), ctx.threads) +
+                   timing_method_text(static_cast<int>(s.integer("timing.repeats"))) +
                    "; force evaluations: one gradient of U per step; ns_per_step at the smallest h";
   cost_ratios(cost, starts.size());
   if (ctx.summary.contains("timing")) cost["scalar_loop_against_kernel_timing"] = same_loop(cost, ctx.summary.at("timing"));

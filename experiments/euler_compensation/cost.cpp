@@ -53,7 +53,7 @@ void run_cost(Context& ctx) {
   ctx.write("cost_energy.csv", energy.csv());
   // (the paper quotes no target error: the set's wall_s_to and evals_to are empty)
   Value cost = {{"energy", energy.summary({})},
-                {"method", timing_method_text(repeats, ctx.threads) + "; the set's runs from (q0, p0) to convergence.t_end, the "
+                {"method", timing_method_text(repeats) + "; the set's runs from (q0, p0) to convergence.t_end, the "
                                                          "transformation (41) once before and once after; ns_per_step "
                                                          "at oscillator.h over timing.steps steps"}};
   ctx.progress("cost: ns per step");

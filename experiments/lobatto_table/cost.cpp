@@ -47,7 +47,7 @@ void run_cost(Context& ctx) {
     }
   set.time(repeats, ctx.threads);
   ctx.write("cost_pendulum.csv", set.csv());
-  Value cost = {{"pendulum", set.summary(s.reals("timing.error_targets"))}, {"method", cost_method_text(repeats, ctx.threads)}};
+  Value cost = {{"pendulum", set.summary(s.reals("timing.error_targets"))}, {"method", cost_method_text(repeats)}};
   // ns per step on the pendulum relative to the first of timing.methods
   cost["relative_ns_per_step"] = set.relative_ns_per_step();
   merge(ctx.summary, "cost", cost);  // (long_run_cost adds its sets beside, in either order, or alone)

@@ -66,8 +66,8 @@ Pendulum pendulum(const Scene& s) { return {NonlinearPendulum{}, make_state(s.re
 
 double period_of(const Scene& s) { return 2 * std::numbers::pi / s.real("oscillator.omega"); }
 
-std::string cost_method_text(int repeats, int workers) {
-  return timing_method_text(repeats, workers) + "; ns_per_step at the smallest h of a set; force evaluations count U_q and U_qq "
+std::string cost_method_text(int repeats) {
+  return timing_method_text(repeats) + "; ns_per_step at the smallest h of a set; force evaluations count U_q and U_qq "
          "calls; long_run_*: a run's wall time is its steps times the time per step measured on a segment of "
          "long_run_cost.timing_steps steps (at most the run), every call of a step through integrate";
 }

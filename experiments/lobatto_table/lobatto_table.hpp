@@ -96,6 +96,6 @@ double period_of(const Scene& s);
 
 // summary.cost.method: how the runs of both cost studies (cost, long_run_cost) are timed; the same text
 // from either, so that each may run alone or after the other (merge of runner/results.hpp).
-std::string cost_method_text(int repeats, int workers);
+std::string cost_method_text(int repeats);
 
 }  // namespace geomint::lobatto_table

@@ -143,7 +143,7 @@ void run_long_run_cost(Context& ctx) {
   // (long_run_cost.error_targets are phase errors: the energy set has none)
   merge(ctx.summary, "cost", {{"long_run_phase", sets.phase.summary(s.reals("long_run_cost.error_targets"))},
                               {"long_run_energy", sets.energy.summary({})},
-                              {"method", cost_method_text(repeats, ctx.threads)}});
+                              {"method", cost_method_text(repeats)}});
 }
 
 StudyPlan plan_long_run_cost(const Scene& s) {

@@ -208,7 +208,7 @@ void report_cost(Context& ctx, const Sets& sets, const Value& ns_per_step_at_h) 
   Value& cost = ctx.summary["cost"];
   cost["trajectory"] = sets.trajectory.summary({s.real("cost.target_err")});
   cost["energy"] = sets.energy.summary({s.real("cost.target_energy_err")});
-  cost["method"] = timing_method_text(static_cast<int>(s.integer("timing.repeats")), ctx.threads) +
+  cost["method"] = timing_method_text(static_cast<int>(s.integer("timing.repeats"))) +
                    "; one run from cloud.center to energies.t_end; ns_per_step at the smallest h (by_method) and, "
                    "for Phi^(4), at the scene's h (ns_per_step_at_h)";
   cost["ns_per_step_at_h"] = ns_per_step_at_h;

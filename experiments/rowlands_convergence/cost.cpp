@@ -60,7 +60,7 @@ void cost_with(Context& ctx, const Sys& sys) {
   phase.time(repeats, ctx.threads);
   ctx.write("cost_phase.csv", phase.csv());
   Value cost = {{"phase", phase.summary(s.reals("timing.error_targets"))},
-                {"method", timing_method_text(repeats, ctx.threads) + "; from initial[0] to t_end (pre- and postprocessing once, every "
+                {"method", timing_method_text(repeats) + "; from initial[0] to t_end (pre- and postprocessing once, every "
                                                          "call inlined); ns_per_step at the smallest h"}};
   // ns per step relative to the first method of timing.methods
   cost["relative_ns_per_step"] = phase.relative_ns_per_step();

@@ -53,7 +53,7 @@ void run_cost(Context& ctx) {
 
   Value cost = {{"henon_heiles", henon_heiles.summary(targets)},
                 {"oscillator", oscillator.summary(targets)},
-                {"method", timing_method_text(repeats, ctx.threads) +
+                {"method", timing_method_text(repeats) +
                                "; one run from the start to work_precision.t_end, processing included, every call inlined"},
                 {"reference", {{"oscillator", "exact solution"},
                                {"henon_heiles_tol", tol / 100},

@@ -12,9 +12,9 @@
 
 namespace geomint {
 
-// The timing protocol (runner/timing.hpp) in words, for summary.json's timing.method; `workers` as given
-// to InterleavedTiming.
-std::string timing_method_text(int repeats, int workers = 1);
+// The timing protocol (runner/timing.hpp) in words, for summary.json's timing.method: the same for every
+// thread count (how many configurations ran at a time is in run.json, timing_concurrency).
+std::string timing_method_text(int repeats);
 
 // The spreads of every timed measurement of a study: their largest and median value and how many.
 class SpreadTally {
