@@ -45,7 +45,13 @@ if [[ -n $resume_np ]]; then
   "${mpi[@]}" -np "$resume_np" "$bin" "$@" --threads 1 --resume --out "$work/mpi" 2> "$work/mpi.stderr"
   label="stopped with $np ranks, resumed with $resume_np"
 else
-  "${mpi[@]}" -np "$np" "$bin" "$@" --threads 1 --out "$work/mpi" 2> "$work/mpi.stderr"
+  # (what the ranks of a killed job left in the temporary directory, of a process that no longer runs, goes;
+  # nothing of this job's stays)
+  exe=$(basename "$bin") dead=$(sh -c 'echo $$')
+  mkdir -p "$work/tmp/$exe-rank1-$dead.partial" && touch "$work/tmp/$exe-rank1-$dead.lock"
+  TMPDIR=$work/tmp "${mpi[@]}" -np "$np" "$bin" "$@" --threads 1 --out "$work/mpi" 2> "$work/mpi.stderr"
+  left=$(ls "$work/tmp")
+  [[ -z $left ]] || { echo "FAIL: left in TMPDIR: $left"; exit 1; }
   label="$np ranks"
 fi
 [[ ! -e "$work/mpi.partial" ]] || { echo "FAIL: $work/mpi.partial left"; exit 1; }

@@ -8,6 +8,7 @@
 #include <cctype>
 #include <chrono>
 #include <cmath>
+#include <cerrno>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -172,6 +173,27 @@ extern "C" void on_signal(int sig) {
   ::_exit(3);
 }
 
+void set_handlers() {
+  struct sigaction sa {};
+  sa.sa_handler = on_signal;
+  sigemptyset(&sa.sa_mask);
+  sigaction(SIGINT, &sa, nullptr);
+  sigaction(SIGTERM, &sa, nullptr);
+  sigaction(SIGUSR1, &sa, nullptr);
+  // A file over the size limit (ulimit -f) fails its write with EFBIG, which the writer reports (OutputError),
+  // instead of SIGXFSZ killing the run with no message.
+  std::signal(SIGXFSZ, SIG_IGN);
+}
+
+// From the start of the process: a signal before the results directory is prepared stops at once with the
+// exit code of a stopped run (3), nothing written (its default action would end the run with 128 + the signal).
+void install_early_signal_handlers(const std::string& name) {
+  std::snprintf(g_exit_message, sizeof g_exit_message, "\n%s: interrupted before the run began: nothing written\n",
+                name.c_str());
+  if (!mpi::is_root()) g_exit_message[0] = '\0';
+  set_handlers();
+}
+
 void install_signal_handlers(const std::string& name, const ResultsDir& results) {
   std::snprintf(g_stop_message, sizeof g_stop_message,
                 "\n%s: interrupted: stopping at the next checkpoint (continue with --resume; a second "
@@ -182,15 +204,7 @@ void install_signal_handlers(const std::string& name, const ResultsDir& results)
   std::snprintf(g_lock_file, sizeof g_lock_file, "%s.lock", results.final_path().c_str());
   if (!mpi::is_root()) g_stop_message[0] = g_exit_message[0] = '\0';  // (rank 0 speaks for the job)
   if (!mpi::is_root()) g_lock_file[0] = '\0';                           // (and holds DIR's lock)
-  struct sigaction sa {};
-  sa.sa_handler = on_signal;
-  sigemptyset(&sa.sa_mask);
-  sigaction(SIGINT, &sa, nullptr);
-  sigaction(SIGTERM, &sa, nullptr);
-  sigaction(SIGUSR1, &sa, nullptr);
-  // A file over the size limit (ulimit -f) fails its write with EFBIG, which the writer reports (OutputError),
-  // instead of SIGXFSZ killing the run with no message.
-  std::signal(SIGXFSZ, SIG_IGN);
+  set_handlers();
 }
 
 }  // namespace
@@ -496,10 +510,25 @@ std::string resume_command(int argc, char** argv) {
   return has_resume ? command : command + " --resume";
 }
 
-// The results directory of a rank other than 0 in an MPI job: a scratch directory, removed at the end.
+// The results directory of a rank other than 0 in an MPI job: a scratch directory, removed at the end. What
+// ranks of earlier jobs that were killed left there (<name>-rank<N>-<pid>, .partial, .lock, of a process that
+// no longer runs) is removed first.
 std::filesystem::path rank_scratch_dir(const std::string& name) {
-  return std::filesystem::temp_directory_path() /
-         (name + "-rank" + std::to_string(mpi::rank()) + "-" + std::to_string(::getpid()));
+  namespace fs = std::filesystem;
+  const fs::path tmp = fs::temp_directory_path();
+  std::error_code ec;
+  std::vector<fs::path> stale;
+  for (const auto& e : fs::directory_iterator(tmp, ec)) {
+    std::string f = e.path().filename().string();
+    if (!f.starts_with(name + "-rank")) continue;
+    for (const std::string suffix : {".partial", ".lock"})
+      if (f.ends_with(suffix)) f.resize(f.size() - suffix.size());
+    const std::string pid = f.substr(f.rfind('-') + 1);
+    if (pid.empty() || pid.size() > 9 || pid.find_first_not_of("0123456789") != std::string::npos) continue;
+    if (::kill(static_cast<pid_t>(std::stol(pid)), 0) != 0 && errno == ESRCH) stale.push_back(e.path());
+  }
+  for (const fs::path& p : stale) fs::remove_all(p, ec);  // (another rank may remove it first)
+  return tmp / (name + "-rank" + std::to_string(mpi::rank()) + "-" + std::to_string(::getpid()));
 }
 
 // A study's counts, checked before any work: exactly representable as doubles (steps are
@@ -654,6 +683,7 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
   const nlohmann::ordered_json load_before = load_average();  // (timings on a shared machine: its load, run.json)
   const auto t0 = std::chrono::steady_clock::now();
   const std::string name = spec.name;
+  install_early_signal_handlers(name);
   for (const Study& st : spec.studies) spec.schema.merge(st.keys);
   for (const Schema::Entry& e : common_keys().entries())  // the runner's keys that a study reads
     if (std::any_of(spec.studies.begin(), spec.studies.end(), [&](const Study& st) { return key_under(e.key, st.reads); }))
@@ -813,7 +843,10 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
     std::cerr << name << ": path error: " << e.what() << '\n';
     refused = 2;
   }
-  if (mpi::all_max(refused) != 0) return 2;  // (DIR is rank 0's alone: the other ranks learn of its refusal here)
+  if (mpi::all_max(refused) != 0) {  // (DIR is rank 0's alone: the other ranks learn of its refusal here)
+    if (!mpi::is_root() && results) results->discard();  // (a rank's scratch directory, not DIR.partial)
+    return 2;
+  }
 
   if (resume && !results->resumed())
     std::cerr << name << ": --resume: no interrupted run in " << results->staging_path().string()
