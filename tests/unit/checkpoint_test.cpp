@@ -370,6 +370,20 @@ TEST(Checkpoint, ResumeRefusesRecordsOutOfTheirPlace) {
   expect_refused(f.log(), "record 0 (task 0) does not match its checksum");
 }
 
+// A header that counts an absurd log (13 GiB, and a sparse log that long) is refused without reading or
+// allocating it: the records are read one at a time, and the bytes beyond them are not records.
+TEST(Checkpoint, ResumeRefusesAnAbsurdLogWithoutAllocatingIt) {
+  stop_after_one_round();
+  const Fixture f(0, 1.0, false);
+  const std::uintmax_t absurd = std::uintmax_t{13} << 30;
+  fs::resize_file(f.log(), absurd);
+  auto h = header_json(f.header());
+  h["log_bytes"] = absurd;
+  write_header(f.header(), h);
+  expect_refused(f.header(), "records (tasks_done) take");
+  fs::remove(f.log());
+}
+
 // A header or a log that is not a regular file (a directory, a symbolic link that loops) is refused, exit 2.
 TEST(Checkpoint, ResumeRefusesAHeaderThatIsNotAFile) {
   stop_after_one_round();
