@@ -193,7 +193,7 @@ const geomint::Published& published(const std::string& key) {
 }
 }  // namespace
 
-TEST(TiDrift, PoincareEpisodesChangeEAsTheIntegratedRateOf43Predicts) {
+TEST(TiDrift, EpisodesChangeEAs43Predicts) {
   // Fig. 5: every growth or decline episode of the trajectory's error of E (found by the rule of the scene's
   // ensemble.episode_*) changes E by h sum (4.3) along its steps, to within 20 %: (4.3) holds up to O(h^6), and
   // the bounded part of the error of E (about 1e-7 at the ends of an episode) is a few per cent of a change of
