@@ -4,10 +4,10 @@
 # files and summary.json, timings aside. With --resume-np M the MPI run is first stopped after one
 # round (checkpoint.stop_after = 1, exit 3) and then resumed with M ranks; with --usr1 as well, it is
 # stopped instead by SIGUSR1 sent to mpirun once the first checkpoint is written (what a batch
-# job's time-limit warning does: scripts/slurm_job.sh), or with --term by SIGTERM (what `kill` does; the
-# mpirun line forwards it as SIGUSR1). With --reference DIR the one-process run is not made again: DIR holds
+# job's time-limit warning does: scripts/slurm_job.sh), with --term by SIGTERM (what `kill` does; the
+# mpirun line forwards it as SIGUSR1), or with --term-rank by SIGTERM to one rank alone. With --reference DIR the one-process run is not made again: DIR holds
 # what BIN with ARGS wrote with 2 threads (the scene's reference run).
-#   check_mpi.sh BIN WORK NP [--reference DIR] [--resume-np M [--usr1 | --term]] -- ARGS...
+#   check_mpi.sh BIN WORK NP [--reference DIR] [--resume-np M [--usr1 | --term | --term-rank]] -- ARGS...
 set -euo pipefail
 bin=$1 work=$2 np=$3
 shift 3
@@ -18,6 +18,8 @@ if [[ ${1:-} == --reference ]]; then reference=$2; shift 2; fi
 if [[ ${1:-} == --resume-np ]]; then resume_np=$2; shift 2; fi
 if [[ ${1:-} == --usr1 ]]; then usr1=USR1; shift; fi
 if [[ ${1:-} == --term ]]; then usr1=TERM; shift; fi
+rank=""
+if [[ ${1:-} == --term-rank ]]; then usr1=TERM rank=1; shift; fi
 [[ ${1:-} == -- ]] && shift
 # Open MPI refuses to run as root unless told; CI runs as root. The mpirun line is the project's
 # (scripts/mpirun.sh, also the Slurm job's), with more ranks than cores allowed.
@@ -35,7 +37,11 @@ if [[ -n $resume_np ]]; then
     "${mpi[@]}" -np "$np" "$bin" "$@" --threads 1 --set checkpoint.interval=0 --out "$work/mpi" 2> "$work/stop.stderr" &
     pid=$!
     until compgen -G "$work/mpi.partial/*.checkpoint.json" > /dev/null || ! kill -0 "$pid" 2> /dev/null; do sleep 0.05; done
-    kill -"$usr1" "$pid" 2> /dev/null
+    if [[ -n $rank ]]; then  # (the newest process of the binary's name: a rank, never mpirun)
+      pkill -TERM -n -x "$(basename "$bin")"
+    else
+      kill -"$usr1" "$pid" 2> /dev/null
+    fi
     wait "$pid"
   else
     "${mpi[@]}" -np "$np" "$bin" "$@" --threads 1 --set checkpoint.stop_after=1 --out "$work/mpi" 2> "$work/stop.stderr"
