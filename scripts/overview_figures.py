@@ -36,7 +36,7 @@ import re
 import sys
 
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
-from report import load_runs  # noqa: E402
+from report import TIMING_VERDICTS, load_runs  # noqa: E402
 from report_tables import comparison_numbers, rule_text, tolerance_at  # noqa: E402
 from tex_format import gnuplot_tex, is_number, number, sci_or_sig  # noqa: E402
 
@@ -274,10 +274,6 @@ def cost_sets(summary):
                 yield name, s
 
 
-VERDICT_WORDS = {"indistinguishable": "≈", "faster": "faster", "slower": "slower",
-                 "contradicts the work": "flagged"}  # (runner/timing.hpp, timing_verdict; as the cost chapter's tables)
-
-
 def cost_groups(runs, methods):
     """[(header, drift, rows)]: per run, set and error target, each method's wall time to the target over the
     reference's (the set's first method that reaches it), as the run judged it (ratios_to of
@@ -335,7 +331,7 @@ def cost_figure(runs, methods, path):
             ax.errorbar([ratio], [y], xerr=[[ratio - interval[0]], [interval[1] - ratio]], fmt="o", ms=2.6,
                         mfc="#0072B2" if claim else "none", color="#0072B2", elinewidth=0.8, capsize=1.5, zorder=3)
             ax.text(right + 0.008, y, f"{math_number(ratio, 'sig3')} ({math_number(interval[0], 'sig3')}–"
-                    f"{math_number(interval[1], 'sig3')}): {VERDICT_WORDS.get(verdict, verdict)}", ha="left", **at)
+                    f"{math_number(interval[1], 'sig3')}): {TIMING_VERDICTS.get(verdict, verdict)}", ha="left", **at)
         y += 1.3
     ax.set_xlabel("wall time to the error target over the reference's (below 1: faster); bar: the quartile interval;\n"
                   "shaded: the drift around 1; filled: faster or slower, hollow: \u2248 (indistinguishable within the drift)",

@@ -81,8 +81,10 @@ void time_scalar_loop(Context& ctx, const MapSetup& g, int repeats, Value& scala
 
 // The sample: the batched kernel on timing.kernel_batches batches of the grid under the timing protocol (the
 // kernel's time where the map did not run in this process and, always, the repeats its target is judged over):
-// the wall times of the two systems; their trajectory-steps in `steps`, the sample in timing.kernel_sample.
-std::vector<RunTime> time_kernel_sample(Context& ctx, const MapSetup& g, int repeats, Value& timing, double& steps) {
+// the wall times of the two systems; their trajectory-steps in `steps`, their ns per step per core in `ns_per_step`,
+// the sample in timing.kernel_sample.
+std::vector<RunTime> time_kernel_sample(Context& ctx, const MapSetup& g, int repeats, Value& timing, double& steps,
+                                        std::vector<RunTime>& ns_per_step) {
   ctx.progress("cost: batched kernel on a sample of batches");
   const auto kernels = energy_map_kernels();
   const auto count = std::min<std::size_t>(static_cast<std::size_t>(ctx.scene.integer("timing.kernel_batches")), g.nbatches);
@@ -101,7 +103,7 @@ std::vector<RunTime> time_kernel_sample(Context& ctx, const MapSetup& g, int rep
   steps = static_cast<double>(trajectories) * static_cast<double>(g.P.steps);
   Value ns;  // per step and core: the median, the quartiles and the drift of the measurement
   for (const auto c : {Coordinates::cartesian, Coordinates::polar}) {
-    const RunTime t = times[c == Coordinates::cartesian ? 0 : 1].scaled(1e9 * ctx.threads / steps);
+    const RunTime& t = ns_per_step.emplace_back(times[c == Coordinates::cartesian ? 0 : 1].scaled(1e9 * ctx.threads / steps));
     ns[coordinates_name(c)] = {{"median", t.median_s}, {"q1", t.q1_s}, {"q3", t.q3_s}, {"drift", t.drift}};
   }
   timing["kernel_sample"] = {{"batches", count}, {"trajectories", trajectories},
@@ -153,9 +155,8 @@ void run_timing(Context& ctx, const MapCost& map) {
                               "the trajectory-steps it computed (the map is one long run, not a repeated measurement: "
                               "no median over repeats and no spread)";
   double sample_steps = 0;
-  const std::vector<RunTime> times = time_kernel_sample(ctx, g, repeats, timing, sample_steps);
   std::vector<RunTime> sample_ns;  // ns per step per core of each run
-  for (const RunTime& t : times) sample_ns.push_back(t.scaled(1e9 * ctx.threads / sample_steps));
+  const std::vector<RunTime> times = time_kernel_sample(ctx, g, repeats, timing, sample_steps, sample_ns);
   if (!map.ran) {
     wall_cart = times[0].seconds(), wall_polar = times[1].seconds();
     kernel_spread = Value::record();
