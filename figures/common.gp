@@ -113,11 +113,19 @@ scene_num(key) = (_i = _fv('scene.' . key), _i > 0 ? sprintf("%g", FV_VAL[_i]) :
 # text, for `do for [m in scene_words('methods')]`; summary_words likewise; "" if there is none.
 scene_words(key) = (_i = _fv('scene.' . key), _i > 0 ? FV_VAL[_i] : "")
 summary_words(key) = (_i = _fv('summary.' . key), _i > 0 ? FV_VAL[_i] : "")
-# made_by('convergence') is what the study made under the run's scene, as its id is spelled everywhere
-# ("000 Fig. 9"): a figure's title names its item with it, never typed in the script; "?" if the study did not run.
+# made_by('convergence') is what the study made under the run's scene, the ids of its items as the study declares
+# them ("<paper> <item>", as paper/papers.toml spells it): a figure's title names its item with it, and no script
+# types an id or a paper's figure number (ctest report.no_typed_items); "?" if the study did not run.
 made_by(study) = (_i = _fv('made.' . study), _i > 0 ? FV_VAL[_i] : "?")
-# made_item('fig52') is the item this run made that a script named <run>_fig52*.gp draws ("003 Fig. 5.2")
+# made_item('fig52') is the id of the item this run made whose name, lower case without spaces and punctuation, is
+# fig52: the item that a script named <run>_fig52*.gp draws
 made_item(slug) = (_i = _fv('item.' . slug), _i > 0 ? FV_VAL[_i] : "?")
+# item_name(made_by('ensemble')) is an item's name without its paper (the id "<paper> <name>"), for a text that
+# names another figure of the run as the paper does ("trajectory no. 3 of" and that name)
+item_name(id) = id[strstrt(id, " ") + 1:]
+# NBSP, a non-breaking space (U+00A0): a section of a paper that is no item, drawn as prose ("Sec." . NBSP . "4",
+# as the report's LaTeX writes Sec.~4), looks like a space
+NBSP = "\302\240"
 
 # ---- x tics for logarithmic axes spanning few decades ------------------------
 # eval LOGTICS("1 2 5") puts the x tics at 1, 2, 5 × 10^k (labelled with the x format, e.g. "%g")
@@ -136,7 +144,7 @@ need_num(var, s) = (s eq "?") \
 # ---- 001 Dubois & Rojas-Quintero, Lobatto variational integrator (figures/lobatto_table_*.gp) ----
 # The paper's method is blue, as the registry colours it (its quantities in one order panel: told apart by marker,
 # figures/convergence.gpi).
-# Fig. 2 compares step sizes of the Lobatto scheme alone: a ramp of its blue, light = large h
+# lobatto_table_fig2.gp compares step sizes of the Lobatto scheme alone: a ramp of its blue, light = large h
 C_LOB_H1 = '#56B4E9';  C_LOB_H2 = '#0072B2';  C_LOB_H3 = '#002338'
 C_STABLE = '#CFE8F6'   # shading: h ω where the Lobatto map is stable (spectral radius 1)
 # scene_full('oscillator.omega'): as scene_num, at full precision (%.17g, as summary_num): scene_num's
@@ -154,7 +162,7 @@ sci(x) = x == 0 ? "0" : gprintf("%.2t·10^{%T}", x)
 # (its colour method_colour), and its alpha, TI_ALPHA: "α = 1/12"
 TI_ALPHA = (_a = summary_num('ti_alpha'), _a eq "?" ? "α = ?" : sprintf("α = 1/%g", 1 / real(_a)))
 C_STAT = '#000000'
-# time as the colour of points (Fig. 5): eval PALETTE_TIME (viridis, cut before its light yellow end)
+# time as the colour of points (ti_drift_fig5.gp): eval PALETTE_TIME (viridis, cut before its light yellow end)
 PALETTE_TIME = "set palette defined (0 '#440154', 0.25 '#3B528B', 0.5 '#21908C', 0.75 '#5DC863', 1 '#B5DE2B')"
 
 # ---- methods named by the scene (registry labels in the CSV columns) -------

@@ -1,11 +1,11 @@
-# What an energy error of Fig. 6 of Takács & Fülöp (2025) costs in either coordinate system
+# What an energy error of the map study's figure (energy_map_fig6.gp) costs in either coordinate system
 # (work-precision), beyond the paper: the energy error ε of eq. (50) over [0, t_end] of symplectic
 # Euler (42)–(43) on the elastic pendulum, from a few starts (x0, y0) at rest of the map (scene key
 # cost.starts), at the steps cost.dt, in Cartesian (73) and polar (72) coordinates, against the wall
 # time of one run (left; the scalar loop energy_map_scalar in both systems, single thread, a start's
 # share of one timed function per system and step) and the number of force evaluations of one run
 # (right; one gradient of U per step in either system). One row per start: the work-precision set
-# start_<i> of the cost study (figures/cost.gpi). Colours as in Fig. 6 (blue Cartesian, red polar: the
+# start_<i> of the cost study (figures/cost.gpi). Colours as in energy_map_fig6.gp (blue Cartesian, red polar: the
 # method, symplectic Euler, is the same: the first coordinate system of the run blue, the second red). The reference is H_0 = H(z_0), conserved by the flow; its
 # own error is the round-off of evaluating H (summary value work_precision.reference_error_max).
 # Input: cost_start_<i>.csv (one per start: method = coordinate system, h, steps, wall_s, wall_q1_s,
@@ -19,8 +19,8 @@ eval need_num('REF_ERR', summary_real('work_precision.reference_error_max'))
 eval need_num('NSTARTS', summary_num('work_precision.start_count'))
 eval need_num('H_MAX', summary_num('work_precision.dt_range.max'))
 eval need_num('H_MIN', summary_num('work_precision.dt_range.min'))
-set style line 201 lc rgb '#2166ac' lw 1.0 pt 7 ps 0.6            # Fig. 6's blue
-set style line 202 lc rgb '#b2182b' lw 1.0 dt (5,3) pt 6 ps 0.7   # Fig. 6's red
+set style line 201 lc rgb '#2166ac' lw 1.0 pt 7 ps 0.6            # energy_map_fig6.gp's blue
+set style line 202 lc rgb '#b2182b' lw 1.0 dt (5,3) pt 6 ps 0.7   # energy_map_fig6.gp's red
 METHODS = summary_words('cost.start_0.methods')
 COST_OWN_STYLES = 1   # (its curves are coordinate systems, not registry methods: named by the run)
 LABEL(m) = summary_words('work_precision.labels.' . m)

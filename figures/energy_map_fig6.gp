@@ -1,4 +1,5 @@
-# Fig. 6 of Takács & Fülöp (2025), Sec. 4.1: difference of the energy errors, eq. (50), of
+# The map study's figure (its item in the title: made_by('map')), after Takács & Fülöp (2025): difference of
+# the energy errors, eq. (50), of
 # symplectic Euler on the planar elastic pendulum (App. A) in Cartesian and in polar coordinates,
 # ε_(x,y) − ε_(r,φ), over the initial positions (x0, y0) with p(0) = 0. Blue: Cartesian better,
 # red: polar better. The colour scale is a signed logarithm, asinh(Δε / ε_lin) (|Δε| spans several
@@ -31,7 +32,7 @@ eval need_num('DMAX', summary_num('map_statistics.eps_difference.max'))
 DX = (XMAX - XMIN) / (NX - 1.0)
 DY = (YMAX - YMIN) / (NY - 1.0)
 
-# ---- analytic boundary of the polar runs through r = 0, 000 Sec. 4.1 ------------
+# ---- analytic boundary of the polar runs through r = 0 (Takács & Fülöp, Section 4.1) ----
 rb(t) = 2 * L + 2 * M * G / K * cos(t)                # θ = t from +y: x = r sin θ, y = r cos θ
 
 # ---- the data ----------------------------------------------------------------

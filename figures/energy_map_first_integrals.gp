@@ -1,9 +1,10 @@
-# Takács & Fülöp (2025), Sec. 5.2: first integrals of a free point mass (61)–(62) under symplectic
-# Euler in the "wrong" coordinates. Left (5.2.1), an order panel (figures/convergence.gpi): in polar coordinates
+# The first_integrals study's figure (its item in the title: made_by('first_integrals'), a section of Takács &
+# Fülöp (2025)): first integrals of a free point mass (61)–(62) under symplectic Euler in the "wrong"
+# coordinates. Left (the item's first subsection), an order panel (figures/convergence.gpi): in polar coordinates
 # the linear momentum is not preserved: |Δp_x| after one step (the largest over the scene's
 # first_integrals.initial states), p_x from (66), against h, with the least-squares fit of orders.csv (dashed)
 # and a line of the paper's order through the point at the smallest h (expected 2: p_x^{j+1} = p_x^j + O(h²)).
-# Right (5.2.2): in Cartesian coordinates the angular momentum (69), L = x p_y − y p_x, is a quadratic
+# Right (its second subsection): in Cartesian coordinates the angular momentum (69), L = x p_y − y p_x, is a quadratic
 # invariant, preserved up to round-off: its relative drift |L_j − L_0| / |L_0| along one run (from the first
 # initial state, at the smallest h), with plain and with compensated (Kahan) summation of the updates. Zeros
 # (exact preservation) cannot be drawn on the log axis and are left out.
@@ -61,8 +62,9 @@ CONV_LAST_PANEL = sprintf("set xlabel 'time t   (h = %g, %d steps, sampled every
     . sprintf("keyentry with points ps 0 title 'max over all steps: %.2g, %.2g'", LMAX_PLAIN, LMAX_COMP)
 CONV_LAST_PANEL_KEYS = 3
 
-CONV_PANEL_TITLES = "'polar coordinates: linear momentum (Sec. 5.2.1)\n{/*0.85 max |Δp_x| over the initial states, p_x from (66)}' " \
-                  . "'Cartesian coordinates: angular momentum (Sec. 5.2.2)\n{/*0.85 " . Z0 . "}'"
+SECTION = item_name(made_by('first_integrals'))   # (the panels: its subsections .1 and .2)
+CONV_PANEL_TITLES = "'polar coordinates: linear momentum (" . SECTION . ".1)\n{/*0.85 max |Δp_x| over the initial states, p_x from (66)}' " \
+                  . "'Cartesian coordinates: angular momentum (" . SECTION . ".2)\n{/*0.85 " . Z0 . "}'"
 CONV_TITLE = "{/:Bold " . made_by('first_integrals') . ":} free point mass, symplectic Euler: first integrals of the other coordinate system"
 CONV_KEY_WIDTH = -4
 load 'figures/convergence.gpi'

@@ -1,4 +1,5 @@
-# What the accuracy of the methods of Fig. 9 costs (work-precision): energy error of symplectic
+# What the accuracy of the methods of the convergence study (euler_compensation_fig9.gp) costs
+# (work-precision): energy error of symplectic
 # Euler without and with the compensating transformation (82), and of RK4, against wall time
 # (left) and against force evaluations (right), on the harmonic oscillator.
 # Input: cost_energy.csv (the work-precision set "energy" of the cost study, figures/cost.gpi;

@@ -1,4 +1,5 @@
-# Fig. 2 of Takács & Fülöp (2025), Sec. 2.3.1: explicit Euler on y' = -alpha y (eq. 14),
+# The decay study's figure (its item in the title: made_by('decay')), after Takács & Fülöp (2025): explicit
+# Euler on y' = -alpha y (eq. 14),
 # in the original coordinate y and in the compensating coordinate ybar = ln(y)/alpha (eq. 15).
 # One method in two coordinates (summary methods.decay): its registry colour, its marker for the run in y
 # and a second one (further_point) for the run in ybar.

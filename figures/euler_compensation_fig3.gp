@@ -1,4 +1,5 @@
-# Fig. 3 of Takács & Fülöp (2025), Sec. 2.3.2: explicit Euler on the Gompertz equation
+# The gompertz study's figure (its item in the title: made_by('gompertz')), after Takács & Fülöp (2025):
+# explicit Euler on the Gompertz equation
 # y' = y (a - b ln y) (eq. 17), in y and in the compensating coordinate ybar = Psi(y) (eq. 18).
 # One method in two coordinates (summary methods.gompertz): its registry colour, its marker for the run in y
 # and a second one (further_point) for the run in ybar.

@@ -1,4 +1,5 @@
-# Fig. 8 of Takács & Fülöp (2025), App. B: phase portrait of symplectic Euler on the harmonic
+# The oscillator study's figure (its item in the title: made_by('oscillator')), after Takács & Fülöp (2025),
+# App. B: phase portrait of symplectic Euler on the harmonic
 # oscillator H = (p^2 + q^2)/2 (eq. 74), without and with the compensating transformation (82).
 # Input: fig8_phase.csv (steps of both runs), fig8_exact.csv (exact circle), summary values (methods.oscillator:
 # the methods of the columns q_se, p_se, then of q_compensated, p_compensated).

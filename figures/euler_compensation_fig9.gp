@@ -1,4 +1,5 @@
-# Fig. 9 of Takács & Fülöp (2025), App. B: convergence of the energy error of the methods the scene
+# The convergence study's figure (its item in the title: made_by('convergence')), after Takács & Fülöp (2025),
+# App. B: convergence of the energy error of the methods the scene
 # names on the harmonic oscillator (the paper's: symplectic Euler without and with the compensating
 # transformation (82), RK4 for reference; left), global error of explicit Euler on eqs. (14) and (17)
 # (right). Dashed lines: least-squares fits from orders.csv, drawn over the h range they were fitted on.

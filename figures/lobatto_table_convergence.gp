@@ -1,8 +1,9 @@
 # Convergence of the Lobatto scheme of Dubois & Rojas-Quintero (2025), an order figure (figures/convergence.gpi).
-# Left, Table 1 (study table1): harmonic oscillator over one period, N steps, h = T/N; maxima over the steps of
+# Left, the table of the study table1 (its item in the title: made_by('table1')): harmonic oscillator over one
+# period, N steps, h = T/N; maxima over the steps of
 # the absolute errors of p, q and H (Lobatto), of the discrete energy H_d (15) (round-off: not fitted), and
 # of q for the methods of the scene key table1.methods (the paper scene: the Simpson scheme and the
-# implicit midpoint rule). Large black rings behind the markers: the values printed in the paper's Table 1
+# implicit midpoint rule). Large black rings behind the markers: the values printed in that table of the paper
 # (summary values comparisons.*_err.published.<N>), so that both show where they agree.
 # Right, beyond the paper (study nonlinear): nonlinear Lagrangians (Newton on the internal nodes), phase-space
 # error |z_N − z(t_end)|_2 against an odeint reference: the pendulum L = q̇²/2 + cos q (Lobatto and
@@ -11,7 +12,7 @@
 # Dashed: the least-squares fits of table1_orders.csv and nonlinear_orders.csv, over the h range fitted.
 # Lobatto's curves (its quantities) are in its colour, told apart by marker (convergence.gpi, CONVS<P>_METHODS).
 # Input: table1.csv, table1_orders.csv, nonlinear.csv, nonlinear_orders.csv, summary values (the compared
-# methods methods.table1 and methods.nonlinear, published Table 1, Newton iterations, nonlinear.error_floor),
+# methods methods.table1 and methods.nonlinear, the published table, Newton iterations, nonlinear.error_floor),
 # scene values (oscillator, meshes, nonlinear).
 if (!exists("results")) results = 'results/lobatto_table'
 load 'figures/common.gp'
@@ -51,7 +52,7 @@ do for [m in summary_words('methods.table1')] {
 CONVS1_YLABEL = "max_{j = 1..N} |error at t_j|"
 CONVS_NO_FIT = "round-off (no fit)"
 
-# the published Table 1 (summary values comparisons.<q>_err.published.<N>, N from the scene key meshes): rings
+# the published table (summary values comparisons.<q>_err.published.<N>, N from the scene key meshes): rings
 set print $PUB
 do for [k = 0:9] {
     n = scene_num(sprintf('meshes.%d', k))
@@ -63,7 +64,7 @@ do for [k = 0:9] {
     }
 }
 unset print
-if (|$PUB| > 0) { CONVS1_MARKS = "$PUB"; CONVS1_MARKS_KEY = "paper, Table 1 (p, q, H, H_d): rings" }
+if (|$PUB| > 0) { CONVS1_MARKS = "$PUB"; CONVS1_MARKS_KEY = "paper, " . item_name(made_by('table1')) . " (p, q, H, H_d): rings" }
 
 # right: Lobatto on the pendulum and the elastic pendulum (columns pendulum_err, elastic_err; fits
 # lobatto_nonlinear_pendulum, lobatto_elastic_pendulum), then the compared methods on the pendulum

@@ -1,8 +1,9 @@
-# Fig. 1 of Dubois & Rojas-Quintero (2025), Sec. 5: the harmonic oscillator over one period with
+# The figure1 study's figure (its item in the title: made_by('figure1')), after Dubois & Rojas-Quintero (2025):
+# the harmonic oscillator over one period with
 # the Lobatto scheme (13)–(14), N = 3 (top row) and N = 10 (bottom row) steps per period, against
 # the exact solution q = A cos ωt, p = −m ω A sin ωt; with the Simpson scheme and the implicit
 # midpoint rule for comparison (as the paper's text says). q (left) and p (right) are drawn in
-# separate panels, p unscaled (the paper's Fig. 1 rescales p to share one axis with q).
+# separate panels, p unscaled (the paper's figure rescales p to share one axis with q).
 # The schemes are drawn as markers alone: a scheme gives values at t_j = j h only.
 # The methods are those of the scene key figure1.methods (summary value methods.figure1: their
 # labels, the columns q_<label>, p_<label>).

@@ -1,4 +1,5 @@
-# Fig. 2 of Dubois & Rojas-Quintero (2025), Sec. 5: the energy error of the Lobatto scheme
+# The long_run study's figure (its item in the title: made_by('long_run')), after Dubois & Rojas-Quintero
+# (2025): the energy error of the Lobatto scheme
 # (13)–(14) on the harmonic oscillator over many periods, for the step sizes of the scene key
 # long_run.h (the paper: h = 0.1, 0.05, 0.025, 10^5 periods). The run is cut into windows of
 # equal length; each point is the maximum over one window.

@@ -1,4 +1,4 @@
-# Stability of the Lobatto scheme (13)–(14) of Dubois & Rojas-Quintero (2025), Sec. 4, on the
+# Stability of the Lobatto scheme (13)–(14) of Dubois & Rojas-Quintero (2025), their Section 4, on the
 # harmonic oscillator: spectral radius ρ of the one-step map Φ against h ω, drawn as ρ − 1 on a
 # logarithmic axis; ρ − 1 ≤ 10^{−14} is drawn at 10^{−14}: there the eigenvalues have modulus 1 to
 # round-off (the scan's ρ − 1 scatters up to a few 10^{−15} where the map is stable),
@@ -9,7 +9,8 @@
 # of stability (summary value reproduced.stability_bound, to compare with the paper's bound (10),
 # √(42 − 6√29), comparisons.stability_bound.published); and the other ends of the exact stable set
 # (summary values stability.exact_set_h_omega): h ω = √10 and √30, where δ of eq. (7) vanishes, and
-# the other two roots of the discriminant Δ of Sec. 4, √60 and √(42 + 6√29).
+# the other two roots of the discriminant Δ of that section, √60 and √(42 + 6√29) (its key names the section,
+# not an item of the paper: "Sec." . NBSP . "4", common.gp).
 # Input: stability.csv; summary values (methods, stable sets, bound, tolerance); scene values (scan range).
 if (!exists("results")) results = 'results/lobatto_table'
 load 'figures/common.gp'
@@ -110,7 +111,7 @@ do for [fmt in FORMATS] {
          keyentry with boxes fillcolor rgb C_STABLE fillstyle solid 1.0 noborder title sprintf("%s stable (ρ ≤ 1 + %s)", method_title(LOB), TOLTXT), \
          for [k = 1:3] keyentry with lines ls 90 + k title (k == 1 ? "computed first bound ≈ √(42−6√29), eq. (10)" \
                                                              : k == 2 ? "h ω = √10, √30: δ = 0, eq. (7)" \
-                                                             : "h ω = √60, √(42+6√29): other roots of Δ, Sec. 4")   # (2: off the yrange)
+                                                             : "h ω = √60, √(42+6√29): other roots of Δ, Sec." . NBSP . "4")   # (2: off the yrange)
     unset multiplot
     unset output
 }

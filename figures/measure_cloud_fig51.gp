@@ -1,4 +1,5 @@
-# Fig. 5.1 of García-Naranjo & Vermeeren (Sec. 5.2.1): the nonholonomic particle in the harmonic
+# The shape study's figure (its item in the title: made_by('shape')), after García-Naranjo & Vermeeren:
+# the nonholonomic particle in the harmonic
 # potential U = (x² + y²)/2, exact flow (reference, no discretization). A cloud of points on the
 # 3-sphere of radius r around z_0 = (x, y, p_x, p_y) = (0, 0, 1, 1), at the times 0, Δt, …, kΔt,
 # projected to the (x, p_x) and (y, p_y) planes; later times lighter (as in the paper: black at t = 0).

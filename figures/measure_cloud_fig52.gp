@@ -1,4 +1,5 @@
-# Fig. 5.2 of García-Naranjo & Vermeeren (Sec. 5.2.1): measure preservation of Φ^(4)_h (E* = ℰ^(4)(z_0)
+# The volumes study's first figure (its item in the title: made_item('fig52')), after García-Naranjo &
+# Vermeeren: measure preservation of Φ^(4)_h (E* = ℰ^(4)(z_0)
 # of each point), harmonic potential U = (x² + y²)/2, h = 0.25, the five discretizations (5.1) and the
 # exact flow, on two clouds of radius 0.01 around z_0 = (0, 0, 1, 1): the authors' cloud (119 vertices of
 # the 600-cell and z_0, as the code of 003 loads it: the cloud of the published figure) and the full one

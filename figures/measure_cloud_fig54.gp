@@ -1,4 +1,5 @@
-# Fig. 5.4 of García-Naranjo & Vermeeren (Sec. 5.2.3): the same experiment as Fig. 5.2 with Φ^(0)_h
+# The volumes study's second figure (its item in the title: made_item('fig54')), after García-Naranjo &
+# Vermeeren: the same experiment as measure_cloud_fig52.gp with Φ^(0)_h
 # (E* = H(z_0) of each point: the method of the earlier literature), harmonic potential U = (x² + y²)/2,
 # h = 0.25, the five discretizations (5.1) and the exact flow, on the authors' cloud (as in the published
 # figure) and the full 600-cell cloud (the correction), radius 0.01 around z_0 = (0, 0, 1, 1): relative volume

@@ -1,4 +1,4 @@
-# Beyond the paper: the order of measure preservation (the paper checks one step size, Fig. 5.2).
+# Beyond the paper: the order of measure preservation (the paper checks one step size, measure_cloud_fig52.gp).
 # Harmonic potential U = (x² + y²)/2; a tiny 600-cell cloud (radius order_study.radius, around z_0) advanced by
 # Φ^(ℓ)_h (E* = ℰ^(ℓ)(z) of each point) with the five discretizations (5.1), for each ℓ of order_study.ells and
 # each step h of order_study.h; the peak-to-peak over t ≤ ptp_window of V(t)/V(0) − 1, V the volume of the convex

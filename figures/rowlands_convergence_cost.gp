@@ -1,4 +1,5 @@
-# What the accuracy of Fig. 4 (Takács & Fülöp (2025), Sec. 3.3) costs (work-precision):
+# What the accuracy of the convergence study (rowlands_convergence_fig4.gp, after Takács & Fülöp (2025)) costs
+# (work-precision):
 # phase-space error at t_max of Störmer–Verlet, of the Rowlands method with either processors, and
 # of three Boost.Odeint steppers (classical RK4, McLachlan's fourth-order symplectic RKN SB3a,
 # velocity Verlet = Störmer–Verlet), and of Forest–Ruth (the standard fourth-order composition,

@@ -1,4 +1,5 @@
-# Fig. 4 of Takács & Fülöp (2025), Sec. 3.3: convergence of Störmer–Verlet (26)–(28) and of the
+# The convergence study's figure (its item in the title: made_by('convergence')), after Takács & Fülöp (2025):
+# convergence of Störmer–Verlet (26)–(28) and of the
 # Rowlands method (kernel (31) with processors) on the planar elastic pendulum in Cartesian
 # coordinates (App. A): energy error, eq. (50), against h (left); phase-space error at t_max (right).
 # Besides the paper's two methods: the cheap processors (34)–(37), the kernel without processing,

@@ -3,9 +3,9 @@
 # time of one run (left; the median of timing.repeats interleaved timed runs of at least 20 ms each) and against
 # the force evaluations of one run (right; gradients and Hessian–vector products, counted, processing
 # included), log-log, one colour per method. TI and the simplified method are processed by (1.5) as in
-# Fig. 1. Top row: Hénon–Heiles k = 3 from the start of Fig. 3, against an odeint Bulirsch–Stoer
+# ti_drift_fig1.gp. Top row: Hénon–Heiles k = 3 from the start of ti_drift_fig3.gp, against an odeint Bulirsch–Stoer
 # reference at tolerances work_precision.reference_tol / 100; bottom row: the harmonic oscillator of
-# Fig. 1 (ω = 1, start q = 0, p = 1; there TI and the simplified method are the same map, so their
+# ti_drift_fig1.gp (ω = 1, start q = 0, p = 1; there TI and the simplified method are the same map, so their
 # points coincide in the right panel), against the exact solution.
 # Input: cost_henon_heiles.csv and cost_oscillator.csv (the work-precision sets of the cost study,
 # figures/cost.gpi), scene values (work_precision.t_end, work_precision.reference_tol, timing.repeats),

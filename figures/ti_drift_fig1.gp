@@ -1,4 +1,5 @@
-# Fig. 1 of 004 (the simplified Takahashi–Imada method), Sect. 1.4: the harmonic oscillator
+# The oscillator study's figure (its item in the title: made_by('oscillator')), after the paper on the
+# simplified Takahashi–Imada method: the harmonic oscillator
 # H = (p² + ω²q²)/2 with ω = 1 and the start q_0 = 0, p_0 = 1 (fixed in experiments/ti_drift/oscillator.cpp;
 # the closed forms hold only for q_0 = 0), against the effective step ω h_eff at equal work: a method
 # with e force evaluations per step (gradient, force or Hessian-vector product) runs at h = e h_eff/2:

@@ -1,4 +1,5 @@
-# Fig. 2 of 004 (the simplified Takahashi–Imada method), Sect. 5.1: the unsymmetric pendulum
+# The pendulum study's figure (its item in the title: made_by('pendulum')), after the paper on the simplified
+# Takahashi–Imada method: the unsymmetric pendulum
 # U(q) = −cos q + 0.2 sin 2q (no symmetry q ↔ −q; p > 0 throughout, the pendulum turns round),
 # integrated with the simplified method (1.6), α = 1/12, without processing.
 #   (a) the shifted energy H + h²H_3 minus its initial value, H_3 = (U''(p,p) − |∇U|²)/12 (Takahashi–

@@ -1,4 +1,5 @@
-# Fig. 3 of 004 (the simplified Takahashi–Imada method), Sect. 5.2.1: the Hénon–Heiles problem
+# The hh3 study's figure (its item in the title: made_by('hh3')), after the paper on the simplified
+# Takahashi–Imada method: the Hénon–Heiles problem
 # U = (q_1² + q_2²)/2 + q_1²q_2 − q_2³/3 (k = 3, where the dominant term of (4.3) vanishes), integrated
 # with the simplified method (1.6), α = 1/12, without processing; start q_1 = 0, q_2, p_2 from the
 # scene, p_1 > 0 such that H = H_0.

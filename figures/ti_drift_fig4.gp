@@ -1,4 +1,5 @@
-# Fig. 4 of 004 (the simplified Takahashi–Imada method), Sect. 5.2.2: Hénon–Heiles with the quintic
+# The ensemble study's figure (its item in the title: made_by('ensemble')), after the paper on the simplified
+# Takahashi–Imada method: Hénon–Heiles with the quintic
 # term, U = (q_1² + q_2²)/2 + q_1²q_2 − q_2^k/k (k = 5 in the paper), where (4.3) predicts no
 # systematic drift of E = Ĥ + h⁴α²K/2 but a random walk: an ensemble of starts near q_1 = 0,
 # q_2, p_2 of the scene (perturbed uniformly), p_1 > 0 such that H = H_0; the simplified method (1.6),

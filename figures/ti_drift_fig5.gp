@@ -1,5 +1,6 @@
-# Fig. 5 of 004 (the simplified Takahashi–Imada method), Sect. 5.2.2: Poincaré cuts of one trajectory
-# of Fig. 4 (summary values reproduced.poincare_trajectory: the one with the largest error), the points
+# The poincare study's figure (its item in the title: made_by('poincare')), after the paper on the simplified
+# Takahashi–Imada method: Poincaré cuts of one trajectory of the ensemble study (ti_drift_fig4.gp; the title names
+# its item, made_by('ensemble')) (summary values reproduced.poincare_trajectory: the one with the largest error), the points
 # (q_2, p_2) where q_1 crosses 0 upwards with p_1 > 0 (linear interpolation between steps). The paper:
 # during linear growth of E the cuts lie on one side (p_2 < 0), otherwise they are spread symmetrically.
 #   (a) the error of E of that trajectory over the whole run (fig5_episodes.csv, every recorded time), with
@@ -76,7 +77,7 @@ set style line 503 lc rgb '#882255' lw 0.9           # running slope
 
 do for [fmt in FORMATS] {
     eval term(fmt, 'ti_drift_fig5', 17, 18)
-    set multiplot title "{/:Bold " . made_by('poincare') . ":} " . sprintf("Poincaré cuts q_1 = 0, p_1 > 0 of trajectory no. %d of Fig. 4 (Hénon–Heiles, k = %d,\n" \
+    set multiplot title "{/:Bold " . made_by('poincare') . ":} " . sprintf("Poincaré cuts q_1 = 0, p_1 > 0 of trajectory no. %d of " . item_name(made_by('ensemble')) . " (Hénon–Heiles, k = %d,\n" \
                                 . method_key(TRAJ_METHOD, "004") . ", h = %g): growth episodes of its error of E found from the data (shaded),\n" \
                                 . "the flattest window and the longest growth episode (each cut coloured by its time t)", TRAJ, K, H) font ",9"
     set mxtics; set mytics

@@ -1,4 +1,5 @@
-# Fig. 6 of 004 (the simplified Takahashi–Imada method), Sect. 5.3: the Lennard-Jones cluster,
+# The lj study's figure (its item in the title: made_by('lj')), after the paper on the simplified
+# Takahashi–Imada method: the Lennard-Jones cluster,
 # N = 9 particles in the plane, V(r) = 0.4(r^{-12} − 2r^{-6}) over all pairs, started on the grid (i, j),
 # i, j ∈ {1, 2, 3}, each coordinate perturbed uniformly by at most lj.perturbation, p = 0 (fixed in
 # experiments/ti_drift/lj.cpp); the simplified method (1.6), α = 1/12, without processing.
@@ -9,7 +10,7 @@
 #       max_H_err, the maximum before the blow-up, is not plotted). The paper prints h = 0.2, at which
 #       every run diverges; the ensemble of (b)–(d) is run at lj.h (docs: shared note ti_drift.md §6).
 #       Dotted: ∝ h^2 through the median at the smallest h of the scan (H itself has an O(h^2) error).
-#   (b) as the paper's Fig. 6: the error of E = Ĥ + ½h^4α^2K (the modified energy, note §3.4) of the
+#   (b) as the paper's figure: the error of E = Ĥ + ½h^4α^2K (the modified energy, note §3.4) of the
 #       trajectories of fig6_trajectories.csv (thin gray), with the mean μ(t) and μ ± σ(t) over the
 #       whole ensemble (bold); key: μ and σ at t_end with their standard errors, and the published ones.
 #   (c) σ(t), log-log: the least-squares line of log σ on log t over t ≥ lj.fit.t_min (as lj.cpp fits
@@ -157,7 +158,7 @@ do for [fmt in FORMATS] {
     set xtics autofreq; set ytics autofreq
     set mxtics; set mytics
 
-    # ---- (b) as the paper's Fig. 6 ----
+    # ---- (b) as the paper's figure ----
     set lmargin at screen 0.50; set rmargin at screen 0.98
     set xrange [0:T_END]
     set format x "%g"

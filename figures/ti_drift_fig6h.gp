@@ -1,4 +1,5 @@
-# Fig. 6 of 004, the printed step (Sect. 5.3): the standard deviation σ over a small ensemble of the error
+# The lj_steps study's figure (its item in the title: made_by('lj_steps'), the figure of ti_drift_fig6.gp at
+# the printed step): the standard deviation σ over a small ensemble of the error
 # of E = Ĥ + ½h^4α^2K at t = lj_steps.t_end, against the step h of the simplified method (1.6), log-log,
 # with one standard error σ/√(2(M−1)) as bars (the same starts at every h, so the bars are a scale, not
 # independent errors). Solid: the least-squares line of log σ on log h (slope summary values's

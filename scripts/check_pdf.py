@@ -97,13 +97,15 @@ def log_problems(log):
 
 
 # What a LaTeX source may hold with an underscore: code and paths (\\texttt, \\path, \\url), a value looked up
-# by its key (\\result, \\ifresult, \\verdict), a method by its registry name (\\method), labels, references,
+# by its key (\\result, \\ifresult, \\verdict), a method by its registry name (\\method), a figure by its script
+# and a run by its name (\\figureitems, \\figref, \\runcomparisons, \\comparisongrid), labels, references,
 # math, and comments.
 SOURCE_EXEMPT = [re.compile(p, re.S) for p in (
     r"(?<!\\)%[^\n]*", r"\\(?:texttt|path|url|href|label|ref|eqref|cite|input|includegraphics|hyperref|pageref|InputIfFileExists|"
     r"figorbox|exe|genfile|missingbox)"
     r"(?:\[[^]]*\])?\{(?:[^{}]|\{(?:[^{}]|\{[^{}]*\})*\})*\}",
-    r"\\(?:result\w*|ifresult|verdict|method|cmpref)(?:\[[^]]*\])?(?:\{[^{}]*\})+", r"\\@namedef\{[^{}]*\}",
+    r"\\(?:result\w*|ifresult|verdict|method|cmpref|figureitems|figref|runcomparisons|comparisongrid)"
+    r"(?:\[[^]]*\])?(?:\{[^{}]*\})+", r"\\@namedef\{[^{}]*\}",
     r"\$\$.*?\$\$", r"(?<!\\)\$.*?(?<!\\)\$", r"\\\[.*?\\\]", r"\\\(.*?\\\)",
     r"\\begin\{(equation|align|gather|multline)\*?\}.*?\\end\{\1\*?\}")]
 RAW_KEY = re.compile(r"\b\w+(?:\\?_(?:\\allowbreak\{\})?\w+)+")
@@ -117,7 +119,8 @@ SOURCE_MATH = [(re.compile(r"\\textasciicircum|\\\^\{\}"), "an ASCII power"),
 # A comparison's key (its row in Appendix A: \\label{cmp:<run>:<key>}, its number: \\@namedef{geomint@cmp@<run>@<key>})
 # may be named only in a reference, a value lookup or a quoted message of a program (``\\texttt{...}'').
 COMPARISON_KEY = re.compile(r"\\label\{cmp:[^:{}]+:([^{}]+)\}|\\@namedef\{geomint@cmp@[^@{}]+@([^{}]+)\}")
-KEY_EXEMPT = re.compile(r"(?<!\\)%[^\n]*|\\(?:label|ref|pageref|cmpref|hyperref|result\w*|ifresult|verdict)"
+KEY_EXEMPT = re.compile(r"(?<!\\)%[^\n]*|\\(?:label|ref|pageref|cmpref|hyperref|result\w*|ifresult|verdict|figureitems|"
+                        r"figref|runcomparisons|comparisongrid)"
                         r"(?:\[[^]]*\])?(?:\{[^{}]*\})*|\\@namedef\{[^{}]*\}"
                         r"|``\\texttt\{(?:[^{}]|\{[^{}]*\})*\}''")  # (a program's words)
 

@@ -19,10 +19,12 @@ into OUT_DIR:
                     value the run may not have (null or absent, e.g. an equal wall time that the
                     runs' times do not reach) is shown as ---.
                       \\ifresult{run}{key}{A}{B}   A if the run has the value (not null), else B
-                      \\verdict{run}{004 Fig. 5}   the verdict of a figure or table (summary.json "figures")
+                      \\verdict{run}{fig5}   the verdict of a run's item by its slug or study (summary.json figures)
   comparisons.tex   per run, its published quantities (summary.json "comparisons", made by the
                     executable from experiments/<name>/published.toml) against the reproduction, each by
                     its number (#1, #2, ...: \\cmpref{run}{key}) and description, never by its key.
+  figure_items.tex  each figure's labels, \\figureitems{name} (figures/<name>.gp; report_tables.py), and with
+                    figure_comparisons.tex each run's tables of comparisons (\\runcomparisons, \\comparisongrid).
   errata.tex        every comparison published.toml expects to differ: what was published, what
                     the project uses instead and why, and the ctest test that shows it.
   methods.tex       the method registry (`geomint-methods --json`).
@@ -52,8 +54,8 @@ from xml.etree import ElementTree
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent))
 from paper_runs import why_not_paper_run  # noqa: E402
 from report_records import LOOKUP, at, expand_record, label_problems, read_records, record_problems  # noqa: E402
-from report_tables import comparison_numbers, comparison_ref, comparisons_tex, figure_comparisons_tex, key_refs, \
-    method_names_tex, methods_tex, rule_text, tolerances_tex  # noqa: E402
+from report_tables import comparison_numbers, comparison_ref, comparisons_tex, figure_comparisons_tex, \
+    figure_items_tex, item_slug, key_refs, method_names_tex, methods_tex, named_items, rule_text, tolerances_tex  # noqa: E402
 from tex_format import FORMATS, GREEK as GREEK_NAMES, ascii_math, code, is_number, longtable, number, prose, \
     quote_tex, repo_paths, tex_escape, value_text  # noqa: E402
 
@@ -62,7 +64,7 @@ ROOT = pathlib.Path(__file__).resolve().parent.parent
 
 TEXT_FORMATS = ("text", "vec", "tverdict")
 HAS = re.compile(r"\\ifresult\{([^}]*)\}\{([^}]*)\}")  # \ifresult{run}{key}{if it has a value}{if not}
-VERDICT = re.compile(r"\\verdict\{([^}]*)\}\{([^}]*)\}")  # \verdict{run}{004 Fig. 5}: summary.json figures
+VERDICT = re.compile(r"\\verdict\{([^}]*)\}\{([^}]*)\}")  # \verdict{run}{fig5}: summary.json figures
 
 
 def lookup_text(run, key, fmt, ranged):
@@ -105,12 +107,14 @@ def results_tex(runs, tex_files, draft):
             if run in runs and at(runs[run]["summary"], key) is not None:
                 lines.append(f"\\@namedef{{geomint@has@{run}@{key}}}{{}}")
         for m in VERDICT.finditer(text):  # a figure's verdict, computed by its run from its own comparisons
-            run, item = m.group(1), m.group(2)
-            verdict = ((runs.get(run, {}).get("summary", {}).get("figures") or {}).get(item) or {}).get("verdict")
+            run, name = m.group(1), m.group(2)
+            items = named_items(runs[run], name) if run in runs else []  # (the one item of that name)
+            verdict = ((runs[run]["summary"].get("figures") or {}).get(items[0]) or {}).get("verdict") \
+                if len(items) == 1 else None
             if verdict is None:
                 missing.append(f"{path.name}: {m.group(0)}")
             else:
-                lines.append(f"\\@namedef{{geomint@verdict@{run}@{item}}}{{\\emph{{{tex_escape(verdict)}}}}}")
+                lines.append(f"\\@namedef{{geomint@verdict@{run}@{name}}}{{\\emph{{{tex_escape(verdict)}}}}}")
         for m in LOOKUP.finditer(text):
             ranged, fmt, run, key = bool(m.group(1)), m.group(2) or "general", m.group(3), m.group(4)
             if (run, key, fmt, ranged) in seen or "#" in run + key + fmt:  # (a macro's own parameters)
@@ -235,12 +239,6 @@ def ledger_cell(cell, text, where):
     return text
 
 
-def item_slug(name):
-    """An item's name as figure scripts spell it (figures/<run>_<slug>*.gp): "Fig. 5.2" -> "fig52",
-    "Table 1" -> "table1", "energy error" -> "energyerror" (the runner's item_slug, figure_values.gp item.<slug>)."""
-    return re.sub(r"[^a-z0-9]", "", name.lower())
-
-
 def ledger_tex(runs, papers, tests):
     """One row per item of the papers, with the verdict its own run computed (summary.json "figures")
     from that item's own comparisons."""
@@ -305,7 +303,7 @@ def ledger_tex(runs, papers, tests):
                 for t in tests_cited:
                     if t not in tests:
                         raise SystemExit(f"report.py: the ledger cites the test '{t}', which ctest does not list")
-            shown = f"\\itemref{{{figure}}}"  # (paper/main.tex: the figure or table carrying \\itemlabel{id})
+            shown = f"\\itemref{{{figure}}}"  # (paper/main.tex: the figure or table whose \\figureitems labels it)
             rerun = "; ".join(commands) + ("; " + ", ".join(code(f"figures/{g}") for g in scripts) if scripts else "") + \
                 "; " + ", ".join(code(t) for t in dict.fromkeys(tests_cited))
             cells = {cell: ledger_cell(cell, text, where) for cell, text in
@@ -552,7 +550,9 @@ def main():
     tex = [pathlib.Path(t) for t in args.tex] if args.tex is not None else \
         [ROOT / "paper" / "main.tex"] + sorted((ROOT / "paper" / "sections").rglob("*.tex"))
     read_records(runs, ROOT)
-    wrong = record_problems(runs) + label_problems({str(t): t.read_text(encoding="utf-8") for t in tex})
+    texts = {str(t): t.read_text(encoding="utf-8") for t in tex}
+    figure_items, wrong = figure_items_tex(runs, ROOT / "figures", texts)  # (a \\figureitems of no figure)
+    wrong += record_problems(runs) + label_problems(texts)
     for w in wrong:  # (a description is the quantity's name: one per key, and what its record says)
         print(f"report.py: {w}", file=sys.stderr)
     if wrong:
@@ -564,11 +564,11 @@ def main():
         roots += [pathlib.Path(f).parent.parent for f in listing.get("backtraceGraph", {}).get("files", [])
                   if pathlib.Path(f).parts[-2:] == ("tests", "CMakeLists.txt")]  # (the tree the tests ran from)
     results, missing = results_tex(runs, tex, args.draft)
-    figure_index, figure_tables = figure_comparisons_tex(runs)
-    files = {"results.tex": results, "comparisons.tex": comparisons_tex(runs),
-             "tolerances.tex": tolerances_tex(runs), "figure_comparisons.tex": figure_index,
-             **figure_tables, "errata.tex": errata_tex(runs, tests), "machine.tex": machine_tex(runs)}
     papers = tomllib.loads(pathlib.Path(args.papers).read_text(encoding="utf-8")) if args.papers else None
+    figure_index, figure_tables = figure_comparisons_tex(runs, papers)
+    files = {"results.tex": results, "comparisons.tex": comparisons_tex(runs), "tolerances.tex": tolerances_tex(runs),
+             "figure_comparisons.tex": figure_index, **figure_tables, "figure_items.tex": figure_items,
+             "errata.tex": errata_tex(runs, tests), "machine.tex": machine_tex(runs)}
     if args.methods:
         methods = json.loads(pathlib.Path(args.methods).read_text(encoding="utf-8"))
         files["methods.tex"] = methods_tex(methods, method_citations(papers))

@@ -1,7 +1,9 @@
-"""The report's generated tables of comparisons and methods (scripts/report.py writes them):
-comparisons.tex (per run), one table per figure for \\comparisons{<paper> <item>} and, where its comparisons
-form a grid, one in the paper's shape for \\comparisongrid{<paper> <item>}, the method registry (methods.tex)
-and the methods' names for \\method (method_names.tex)."""
+"""The report's generated tables of comparisons and methods, and the labels of its figures (scripts/report.py
+writes them): comparisons.tex (per run), one table per figure of the papers with \\runcomparisons{<run>} printing
+those of a run and, where an item's comparisons form a grid, one in the paper's shape for \\comparisongrid{<run>}
+{<name>}, the method registry (methods.tex), the methods' names for \\method (method_names.tex) and each figure's
+items for \\figureitems{<name>} (figure_items.tex). The LaTeX never types an item's id ("000 Fig. 9"): a figure is
+named by its gnuplot script (figures/<run>_<name>.gp), an item by its run and a name (named_items)."""
 import math
 import re
 
@@ -225,39 +227,121 @@ def comparison_grid(item, comparisons):
                       r"\end{tabular}"]) + "\n"
 
 
-def figure_comparisons_tex(runs):
-    """\\comparisons{000 Fig. 9} (paper/main.tex): the table of one figure's comparisons, those of the run
-    that makes it whose published.toml entries belong to it (summary.json "comparisons", field figure), and
-    \\comparisongrid{001 Table 1}: the same in the paper's shape, for a figure whose comparisons form a grid.
-    Returns the index (the file of each figure's tables, each comparison's number for \\cmpref{run}{key}) and
-    the tables, by file name under generated/."""
-    index = ["% The tables of each figure's comparisons, for \\comparisons{<paper> <item>} and "
-             "\\comparisongrid{<paper> <item>} (scripts/report.py).", r"\makeatletter"]
+def item_slug(name):
+    """An item's name as figure scripts spell it (figures/<run>_<slug>*.gp): "Fig. 5.2" -> "fig52",
+    "Table 1" -> "table1", "energy error" -> "energyerror" (the runner's item_slug, figure_values.gp item.<slug>)."""
+    return re.sub(r"[^a-z0-9]", "", name.lower())
+
+
+def made_items(run):
+    """The ids of the items a run made, by study: its studies that ran (run.json study_list), as each declares them."""
+    return {st["name"]: st.get("made", []) for st in run.get("run", {}).get("study_list", []) if st.get("ran")}
+
+
+def named_items(run, name):
+    """The ids `name` stands for in a run: the item it made whose name's slug is `name` ("fig52": "003 Fig. 5.2"),
+    else the items of its study `name` ("first_integrals": "000 Sec. 5.2"); none for neither (a cost figure, one
+    beyond the papers)."""
+    made = made_items(run)
+    items = dict.fromkeys(i for ids in made.values() for i in ids)
+    return [i for i in items if item_slug(i.partition(" ")[2]) == name] or list(made.get(name, []))
+
+
+def figure_comparisons_tex(runs, papers=None):
+    """Each figure's table of comparisons: those of a run whose published.toml entries belong to it (summary.json
+    "comparisons", field figure), a file per run and figure; \\runcomparisons{<run>} (paper/main.tex) prints every
+    one of a run with a computed comparison, its items in the order of paper/papers.toml (`papers`), then the
+    statements that are no item (an equation, a section) in published.toml's order. \\comparisongrid{<run>}{<name>}:
+    an item's comparisons in the paper's shape where they form a grid, the item named by its slug or its study
+    (named_items). Returns the index (the files of each run's tables, each comparison's number for
+    \\cmpref{run}{key}) and the tables, by file name under generated/."""
+    index = ["% The tables of each run's comparisons, for \\runcomparisons{<run>} and \\comparisongrid{<run>}{<name>} "
+             "(scripts/report.py).", r"\makeatletter"]
     tables, numbers = {}, comparison_numbers(runs)
+    order = [f"{p['id']} {item['name']}" for p in (papers or {}).get("paper", []) for item in p.get("item", [])]
     for name, run in runs.items():
         by_figure = {}
         for key, c in (run["summary"].get("comparisons") or {}).items():
-            by_figure.setdefault(c.get("figure", ""), {})[key] = c
-        for figure, comparisons in by_figure.items():
-            if figure:
-                slug = re.sub(r"[^a-z0-9]+", "-", figure.lower()).strip("-") + ".tex"
-                file = "comparisons-" + slug
-                index.append(f"\\@namedef{{geomint@comparisons@{figure}}}{{generated/{file}}}")
-                paper, _, item = figure.partition(" ")
-                tables[file] = "\n".join([f"% {figure}: its comparisons (scripts/report.py).",
-                                          f"\\noindent {{[{paper}]}} {tex_escape(item)}:",
-                                          longtable("footnotesize", *COMPARISON_COLUMNS),
-                                          *COMPARISON_HEAD,
-                                          *comparison_rows(name, comparisons, numbers,
-                                                           fits=run["summary"].get("fit_sources")),
-                                          r"\bottomrule", r"\end{longtable}}"]) + "\n"
-                grid = comparison_grid(figure, comparisons)
-                if grid:
-                    index.append(f"\\@namedef{{geomint@comparisongrid@{figure}}}{{generated/comparisongrid-{slug}}}")
-                    tables["comparisongrid-" + slug] = grid
+            if c.get("figure"):
+                by_figure.setdefault(c["figure"], {})[key] = c
+        shown = []
+        for figure in sorted(by_figure, key=lambda f: order.index(f) if f in order else len(order)):
+            comparisons = by_figure[figure]
+            slug = re.sub(r"[^a-z0-9]+", "-", f"{name} {figure}".lower()).strip("-") + ".tex"
+            paper, _, item = figure.partition(" ")
+            if any(c["verdict"] != "not computed" for c in comparisons.values()):  # (its study ran here)
+                shown.append(f"\\input{{generated/comparisons-{slug}}}")
+            tables["comparisons-" + slug] = "\n".join([f"% {figure}: its comparisons in {name} (scripts/report.py).",
+                                                       f"\\noindent {{[{paper}]}} {tex_escape(item)}:",
+                                                       longtable("footnotesize", *COMPARISON_COLUMNS),
+                                                       *COMPARISON_HEAD,
+                                                       *comparison_rows(name, comparisons, numbers,
+                                                                        fits=run["summary"].get("fit_sources")),
+                                                       r"\bottomrule", r"\end{longtable}}"]) + "\n"
+            grid = comparison_grid(figure, comparisons)
+            if grid:
+                tables["comparisongrid-" + slug] = grid
+                studies = [study for study, ids in made_items(run).items() if figure in ids]
+                for key in dict.fromkeys([item_slug(item)] + studies):
+                    index.append(f"\\@namedef{{geomint@comparisongrid@{name}@{key}}}{{generated/comparisongrid-{slug}}}")
+        if shown:
+            file = "runcomparisons-" + re.sub(r"[^a-z0-9]+", "-", name.lower()).strip("-") + ".tex"
+            tables[file] = "\n".join(
+                [f"% Every figure's comparisons in {name}, in the papers' order (scripts/report.py)."] + shown) + "\n"
+            index.append(f"\\@namedef{{geomint@runcomparisons@{name}}}{{generated/{file}}}")
     index += [f"\\@namedef{{geomint@cmp@{run}@{key}}}{{\\#{n}}}" for (run, key), n in numbers.items()]  # (\\cmpref)
     index.append(r"\makeatother")
     return "\n".join(index) + "\n", tables
+
+
+FIGURE_ITEMS, FIGREF = re.compile(r"\\figureitems\{([^}]*)\}"), re.compile(r"\\figref\{([^}]*)\}")
+
+
+def figure_names(runs, figures):
+    """Every name \\figureitems takes, with the ids of the items it shows: each figure script's (figures/<name>.gp,
+    of the run whose name, the longest that does, begins it: <run>_<rest>, its items named_items(run, rest)), and
+    <run>_<slug> of each item a run made (a table of the report that shows it)."""
+    names = {}
+    for run_name, run in runs.items():
+        for item in dict.fromkeys(i for ids in made_items(run).values() for i in ids):
+            names[f"{run_name}_{item_slug(item.partition(' ')[2])}"] = [item]
+    for gp in sorted(figures.glob("*.gp")):
+        owners = [r for r in runs if gp.stem.startswith(r + "_")]
+        if owners:
+            run_name = max(owners, key=len)
+            names[gp.stem] = named_items(runs[run_name], gp.stem[len(run_name) + 1:])
+    return names
+
+
+def figure_items_tex(runs, figures, texts):
+    """\\figureitems{<name>} after a figure's caption (paper/main.tex): \\label{figure:<name>} for \\figref{<name>}
+    and \\label{item:<id>} of each item it shows (figure_names), for \\itemref{<id>} of the ledger. Returns the file
+    and the problems of `texts` (LaTeX by file name): a name that no script or item has, a figure labelled twice,
+    an item labelled by two figures, a \\figref to no \\figureitems."""
+    names = figure_names(runs, figures)
+    out = ["% Each figure's labels for \\figureitems{<name>}: figures/<name>.gp or <run>_<item slug>, its items from "
+           "run.json (scripts/report.py).", r"\makeatletter"]
+    out += [f"\\@namedef{{geomint@figure@{name}}}{{\\label{{figure:{name}}}" +
+            "".join(f"\\label{{item:{i}}}" for i in items) + "}" for name, items in names.items()]
+    problems, used, labelled, refs = [], {}, {}, []
+    for file, text in texts.items():
+        text = re.sub(r"(?<!\\)%.*", "", text)
+        for m in FIGURE_ITEMS.finditer(text):
+            name, at = m.group(1), f"{file}:{text.count(chr(10), 0, m.start()) + 1}"
+            if "#" in name:  # (a macro's own parameter)
+                continue
+            if name not in names:
+                problems.append(f"{at}: {m.group(0)}: no figure script figures/{name}.gp of a run, no item of that name")
+            elif name in used:
+                problems.append(f"{at}: {m.group(0)}: already at {used[name]}")
+            used.setdefault(name, at)
+            for item in names.get(name, []):
+                if item in labelled and labelled[item] != name:
+                    problems.append(f"{at}: {m.group(0)}: {item} is already labelled by \\figureitems{{{labelled[item]}}}")
+                labelled.setdefault(item, name)
+        refs += [(file, m.group(1)) for m in FIGREF.finditer(text) if "#" not in m.group(1)]
+    problems += [f"{file}: \\figref{{{name}}}: no \\figureitems{{{name}}}" for file, name in refs if name not in used]
+    return "\n".join(out + [r"\makeatother"]) + "\n", problems
 
 
 def methods_tex(methods, cites=None):

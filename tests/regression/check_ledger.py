@@ -146,15 +146,18 @@ def main():
     cited = subprocess.run(report + [str(cites)], capture_output=True, text=True)
     expect(cited.returncode != 0 and "nowhere1999" in cited.stderr and "paper004" not in cited.stderr,
            f"an unknown \\cite key passes: exit {cited.returncode}, {cited.stderr.strip()}")
-    # the text looks a figure's verdict up (\verdict{run}{item}); an item the run did not judge stops the script
+    # the text looks a figure's verdict up (\verdict{run}{name}: the item of the run by the slug of its name, or by
+    # the study that made it, never by its id); a name that is no item the run made stops the script
     verdicts = work / "verdicts.tex"
-    verdicts.write_text("\\verdict{ti_drift}{004 Fig. 5}\n")
-    subprocess.run(report + [str(verdicts)], check=True, capture_output=True, text=True)
-    expect("{\\emph{partly reproduced}}" in (out / "results.tex").read_text(encoding="utf-8"),
-           "\\verdict{ti_drift}{004 Fig. 5} is not defined as its run's verdict")
-    verdicts.write_text("\\verdict{ti_drift}{004 Fig. 9}\n")
+    for name in ("fig5", "poincare"):
+        verdicts.write_text(f"\\verdict{{ti_drift}}{{{name}}}\n")
+        subprocess.run(report + [str(verdicts)], check=True, capture_output=True, text=True)
+        expect(f"\\@namedef{{geomint@verdict@ti_drift@{name}}}{{\\emph{{partly reproduced}}}}" in
+               (out / "results.tex").read_text(encoding="utf-8"),
+               f"\\verdict{{ti_drift}}{{{name}}} is not defined as the verdict of 004 Fig. 5 in its run")
+    verdicts.write_text("\\verdict{ti_drift}{fig9}\n")
     judged = subprocess.run(report + [str(verdicts)], capture_output=True, text=True)
-    expect(judged.returncode != 0 and "004 Fig. 9" in judged.stderr, "a verdict the run did not compute passes")
+    expect(judged.returncode != 0 and "fig9" in judged.stderr, "a verdict of an item the run did not make passes")
     # a ledger cell that would run past 6 lines stops the script, naming it (details go to the experiment's section)
     summary_file = results / "ti_drift" / "summary.json"
     kept = summary_file.read_text()
