@@ -47,9 +47,9 @@ def fail(what):
     print("FAIL " + what, flush=True)
 
 
-def run(cmd, timeout=TIMEOUT_S, cwd=None):
+def run(cmd, timeout=TIMEOUT_S, cwd=None, env=None):
     """(returncode, stdout, stderr); returncode None on a timeout (the process group is killed)."""
-    p = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=cwd,
+    p = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, cwd=cwd, env=env,
                          start_new_session=True)
     try:
         out, err = p.communicate(timeout=timeout)
@@ -204,9 +204,14 @@ def csv_bytes(out_dir):
             for f in sorted(Path(out_dir).glob("*.csv")) if not f.name.startswith("timing")}
 
 
+def checkpointed_studies(keys):
+    """(the key checkpoint.stop_after, study) for every study with a checkpoint: those that read that key."""
+    return sorted({(k["key"], st) for k in keys if k["key"].endswith("checkpoint.stop_after") for st in k["used_by"]})
+
+
 def check_checkpoints(binary, keys, work, rng, kills, settings):
     """Part 3: kill-and-resume and damaged checkpoints, for every study with a checkpoint."""
-    studies = sorted({(k["key"], st) for k in keys if k["key"].endswith("checkpoint.stop_after") for st in k["used_by"]})
+    studies = checkpointed_studies(keys)
     # a save after every round, so that a kill lands between saves
     settings = (["checkpoint.interval=0"] if any(k["key"] == "checkpoint.interval" for k in keys) else []) + settings
     for key, study in studies:

@@ -75,12 +75,6 @@ for f in "$one/"*.csv; do
   fi
   files=$((files + 1))
 done
-python3 - "$one/summary.json" "$work/mpi/summary.json" <<'PY' || { echo "FAIL: summary.json differs ($label)"; exit 1; }
-import json, sys
-a, b = (json.load(open(p)) for p in sys.argv[1:3])
-for s in (a, b):
-    s.pop("timing", None)
-    s.pop("cost", None)  # (the work-precision sets: wall times; their other cells are compared in cost_*.csv)
-sys.exit(0 if a == b else 1)
-PY
+"$(dirname "$0")/../regression/same_summary.py" "$one/summary.json" "$work/mpi/summary.json" ||
+  { echo "FAIL: summary.json differs ($label)"; exit 1; }
 echo "$files CSV files and summary.json identical: one process (2 threads) and $label (1 thread each)"

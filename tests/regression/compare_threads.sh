@@ -3,8 +3,9 @@
 # options ARGS and 1 thread, and require every CSV except timing*.csv (wall times), and
 # figure_values.gp (the numbers of the run but its timings), to be byte-identical to those in
 # REFERENCE, written by the same run with 2 threads (the scene's quick run); a work-precision set
-# cost_*.csv but its wall-time columns (same_csv.py); and summary.json's descriptions of how a value was
-# made (every "method" text) the same words.
+# cost_*.csv but its wall-time columns (same_csv.py); and summary.json but the fields README.md lists as
+# timings (same_summary.py). The scene's run covers every study it asks for: the quick scenes, together,
+# every study of every experiment.
 set -euo pipefail
 bin=$1 work=$2 scene=$3 reference=$4
 shift 4
@@ -23,20 +24,6 @@ for f in "$work"/t1/*.csv; do
 done
 [ "$n" -gt 0 ] || { echo "no CSV written" >&2; exit 1; }
 cmp "$work/t1/figure_values.gp" "$reference/figure_values.gp" || { echo "differs between --threads 1 and 2: figure_values.gp" >&2; exit 1; }
-python3 - "$work/t1/summary.json" "$reference/summary.json" <<'PY' || exit 1
-import json, sys
-def methods(t, path=""):
-    """Every text under a key "method", by its dotted path."""
-    items = t.items() if isinstance(t, dict) else enumerate(t) if isinstance(t, list) else ()
-    for k, v in items:
-        p = f"{path}.{k}" if path else str(k)
-        if k == "method" and isinstance(v, str):
-            yield p, v
-        else:
-            yield from methods(v, p)
-one, two = (dict(methods(json.load(open(f)))) for f in sys.argv[1:3])
-differ = sorted(k for k in one.keys() & two.keys() if one[k] != two[k])
-if differ:
-    sys.exit("differs between --threads 1 and 2: summary.json " + ", ".join(differ))
-PY
-echo "$n CSV files and the summary's method texts identical for --threads 1 and 2"
+"$(dirname "$0")/same_summary.py" "$work/t1/summary.json" "$reference/summary.json" ||
+  { echo "differs between --threads 1 and 2: summary.json" >&2; exit 1; }
+echo "$n CSV files, figure_values.gp and summary.json (timings aside) identical for --threads 1 and 2"

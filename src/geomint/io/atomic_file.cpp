@@ -14,6 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "geomint/io/fault_point.hpp"
 #include "geomint/io/printable.hpp"
 
 namespace geomint {
@@ -38,28 +39,33 @@ void write_file_atomic(const fs::path& path, std::string_view content) {
     data += n;
     left -= static_cast<std::size_t>(n);
   }
-  if (::fsync(fd) != 0 || ::close(fd) != 0 || std::rename(tmp.c_str(), path.c_str()) != 0) {
+  const bool written = ::fsync(fd) == 0 && ::close(fd) == 0;
+  if (written) fault_point("write", tmp);
+  if (!written || std::rename(tmp.c_str(), path.c_str()) != 0) {
     const std::string why = std::strerror(errno);
     ::unlink(tmp.c_str());
     throw OutputError("cannot write " + path.string() + ": " + why);
   }
+  fault_point("rename", path);
 }
 
 OutputDir::OutputDir(fs::path dir) : dir_(std::move(dir)) {
   std::error_code ec;
-  fs::create_directories(dir_, ec);
+  if (fs::create_directories(dir_, ec)) fault_point("mkdir", dir_);
   if (ec || !fs::is_directory(dir_)) {
     throw OutputError("--out " + dir_.string() + ": cannot create the directory (" +
                       (ec ? ec.message() : std::string("not a directory")) + "); give a writable directory");
   }
-  // Probe: create and remove a file, so a read-only directory fails now, not after the run.
-  const fs::path probe = dir_ / (".write-probe-" + std::to_string(::getpid()));
+  // Probe: create and remove a file, so a read-only directory fails now, not after the run (named as a
+  // temporary, which a run killed in between leaves to the next one to remove).
+  const fs::path probe = dir_ / (".write-probe.tmp-" + std::to_string(::getpid()));
   const int fd = ::open(probe.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0644);
   if (fd < 0) {
     throw OutputError("--out " + dir_.string() + ": directory is not writable (" + std::strerror(errno) +
                       "); give a writable directory");
   }
   ::close(fd);
+  fault_point("probe", probe);
   ::unlink(probe.c_str());
 }
 
@@ -99,7 +105,7 @@ void check_replaceable(const fs::path& dir, const std::string& experiment, const
                       "; it is never replaced: give a new or empty directory, or remove it");
 }
 
-bool is_temporary(const fs::path& p) {  // ".<name>.tmp-<pid>": write_file_atomic's
+bool is_temporary(const fs::path& p) {  // ".<name>.tmp-<pid>": write_file_atomic's, and OutputDir's probe
   const std::string f = p.filename().string();
   return f.size() > 1 && f[0] == '.' && f.find(".tmp-") != std::string::npos;
 }
@@ -118,6 +124,26 @@ void clear_if_only_temporaries(const fs::path& dir) {
   for (const auto& e : fs::directory_iterator(dir))
     if (!is_temporary(e.path())) return;
   remove_temporaries(dir);
+}
+
+// Removes a results or staging directory, what marks it as one (run.json, the staging marker) last: a run
+// stopped midway leaves a directory the next one still knows as one (check_replaceable), or an empty one.
+// The first error stops it (in ec).
+void remove_results_dir(const fs::path& dir, std::error_code& ec) {
+  ec.clear();
+  if (std::error_code absent; !fs::is_directory(dir, absent)) return;
+  std::vector<fs::path> rest, marks;  // (collected first: nothing is removed while the directory is read)
+  for (const auto& e : fs::directory_iterator(dir, ec)) {
+    const std::string f = e.path().filename().string();
+    (f == "run.json" || f == kStagingMarker ? marks : rest).push_back(e.path());
+  }
+  rest.insert(rest.end(), marks.begin(), marks.end());
+  rest.push_back(dir);
+  for (const auto& p : rest) {
+    if (ec) return;
+    fs::remove_all(p, ec);
+    if (!ec) fault_point("remove", p);
+  }
 }
 
 // A results directory (run.json, or a staging marker) at `dir`.
@@ -202,6 +228,7 @@ DirLock::DirLock(const fs::path& file) : file_(file) {
   }
   const std::string pid = std::to_string(::getpid()) + "\n";
   if (::ftruncate(fd_, 0) != 0 || ::pwrite(fd_, pid.data(), pid.size(), 0) < 0) {}  // (the holder's id: for messages only)
+  fault_point("lock", file_);
 }
 
 DirLock& DirLock::operator=(DirLock&& o) noexcept {
@@ -217,6 +244,7 @@ DirLock::~DirLock() { release(); }
 void DirLock::release() noexcept {
   if (fd_ < 0) return;
   ::unlink(file_.c_str());  // (while held: a run that opened it before checks the path and takes the new one)
+  fault_point("remove", file_);
   ::close(fd_);
   fd_ = -1;
 }
@@ -241,7 +269,7 @@ ResultsDir::ResultsDir(const fs::path& dir, const std::string& experiment, bool 
   if (resumed_) {
     remove_temporaries(staging_);
   } else {
-    fs::remove_all(staging_, ec);
+    remove_results_dir(staging_, ec);
     if (ec) throw OutputError("--out: cannot empty " + staging_.string() + " (" + ec.message() + ")");
   }
   OutputDir probe(staging_);  // creates it and checks that it is writable
@@ -254,23 +282,26 @@ void ResultsDir::commit(const std::vector<std::string>& files) {
     const std::string f = e.path().filename().string();
     if (f != kStagingMarker && std::find(files.begin(), files.end(), f) == files.end()) other.push_back(e.path());
   }
-  for (const auto& p : other) fs::remove_all(p);
+  for (const auto& p : other) fs::remove_all(p), fault_point("remove", p);
   fs::remove(staging_ / kStagingMarker);  // last: until here a kill leaves a staging directory --resume knows
+  fault_point("remove", staging_ / kStagingMarker);
   std::error_code ec;
   if (!fs::exists(final_, ec)) {
     if (std::rename(staging_.c_str(), final_.c_str()) != 0)
       throw OutputError("cannot move " + staging_.string() + " to " + final_.string() + ": " + std::strerror(errno));
+    fault_point("rename", final_);
     return;
   }
   // Swap the two directories in one step, then remove the old results (now at the staging path).
   if (::renameat2(AT_FDCWD, staging_.c_str(), AT_FDCWD, final_.c_str(), RENAME_EXCHANGE) != 0)
     throw OutputError("cannot replace " + final_.string() + " by " + staging_.string() + ": " + std::strerror(errno));
-  fs::remove_all(staging_, ec);
+  fault_point("exchange", final_);
+  remove_results_dir(staging_, ec);
 }
 
 void ResultsDir::discard() {
   std::error_code ec;
-  fs::remove_all(staging_, ec);
+  remove_results_dir(staging_, ec);
 }
 
 }  // namespace geomint

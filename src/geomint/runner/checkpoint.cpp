@@ -12,6 +12,7 @@
 
 #include "geomint/io/atomic_file.hpp"
 #include "geomint/io/crc32c.hpp"
+#include "geomint/io/fault_point.hpp"
 #include "geomint/io/run_info.hpp"
 #include "geomint/sweep/mpi.hpp"
 
@@ -125,7 +126,8 @@ void CheckpointLog::refuse(const fs::path& file, const std::string& why) const {
 }
 
 void CheckpointLog::reset() {
-  fs::remove(header_), fs::remove(log_);
+  for (const fs::path& f : {header_, log_})  // (the header first, as remove_checkpoints)
+    if (fs::remove(f)) fault_point("remove", f);
   tasks_done_ = 0, log_bytes_ = 0, run_id_ = new_run_id(), chain_ = seed();
 }
 
@@ -258,7 +260,7 @@ CheckpointLog::Records CheckpointLog::load_here(bool resume) {
   if (chain != h["chain_crc32c"].get<std::uint64_t>())
     refuse(log_, "its " + std::to_string(done) + " records do not end with chain_crc32c of " + header_.filename().string() +
                      ": the log is not the one the header counts");
-  if (size > bytes) fs::resize_file(log_, bytes);  // a round appended but not counted
+  if (size > bytes) fs::resize_file(log_, bytes), fault_point("cut", log_);  // a round appended but not counted
   tasks_done_ = done, log_bytes_ = bytes, chain_ = chain;
   return records;
 }
@@ -294,6 +296,7 @@ void CheckpointLog::append(std::span<const double> values, std::span<const std::
   if (fd < 0) throw OutputError("cannot write " + log_.string() + ": " + std::strerror(errno));
   write_all(fd, raw.data(), raw.size(), log_);
   if (::fsync(fd) != 0 || ::close(fd) != 0) throw OutputError("cannot write " + log_.string() + ": " + std::strerror(errno));
+  fault_point("append", log_, raw.size());
   tasks_done_ += lengths.size(), log_bytes_ += raw.size(), chain_ = chain;
   json h = *identity_;
   h["run_id"] = hex16(run_id_), h["tasks_done"] = tasks_done_, h["log_bytes"] = log_bytes_, h["chain_crc32c"] = chain_;
@@ -306,7 +309,7 @@ void remove_checkpoints(const fs::path& dir) {
   // resume, start over), never a header that counts bytes of a log already gone (refused, exit 2).
   for (const char* suffix : {kHeaderSuffix, kLogSuffix})
     for (const auto& e : fs::directory_iterator(dir))
-      if (e.path().filename().string().ends_with(suffix)) fs::remove(e.path());
+      if (e.path().filename().string().ends_with(suffix)) fs::remove(e.path()), fault_point("remove", e.path());
 }
 
 }  // namespace geomint

@@ -122,7 +122,8 @@ inline constexpr std::chrono::seconds kCheckpointInterval{10};
 // (SIGINT/SIGTERM/SIGUSR1, stop_requested(); or the scene's checkpoint.stop_after rounds), the finished
 // tasks not yet saved are appended to the log. A record with a value that is not finite is not
 // saved (nor any after it): a resumed run recomputes it and the study's own check reports it. On a
-// stop, Interrupted names where it stopped and the command that resumes. With ctx.resume the
+// stop, Interrupted names where it stopped and the command that resumes (a signal during the last round, or
+// its save, stops there too: with every task saved, the study's own end is left to --resume). With ctx.resume the
 // tasks the checkpoint holds are read back instead of computed. Each round is a distributed_map:
 // under MPI its tasks are split across the ranks.
 template <class R, class F, class Codec = RecordCodec<R>>
@@ -164,11 +165,12 @@ std::vector<R> checkpointed_map(Context& ctx, const CheckpointSpec& spec, std::s
   const StopPoint stop_point;  // SIGINT/SIGTERM: stop at the next checkpoint
   ctx.progress(log.name(), static_cast<double>(done), static_cast<double>(n), "tasks");  // (where the rate starts)
   for (std::int64_t rounds = 0;; ++rounds) {
-    const bool by_count = stop_after > 0 && rounds == stop_after;
-    const bool stop = done < n && (mpi::all_max(stop_requested()) != 0 || by_count);  // (any rank's signal)
+    const bool by_count = done < n && stop_after > 0 && rounds == stop_after;
+    bool stop = by_count || mpi::all_max(stop_requested()) != 0;  // (any rank's signal; in the last round too)
     if (done > log.tasks_done() && !blocked &&
         (stop || done == n || std::chrono::steady_clock::now() - saved_at >= interval))
       save();
+    if (done == n && !stop) stop = mpi::all_max(stop_requested()) != 0;  // (a signal during the last save)
     if (stop)
       throw Interrupted(log.name() + " after " + std::to_string(done) + " of " + std::to_string(n) + " tasks (" +
                         (by_count ? "checkpoint.stop_after = " + std::to_string(stop_after) : std::string("signal")) +

@@ -156,11 +156,13 @@ void Context::progress(std::string_view what, double done, double total, std::st
 namespace {
 
 volatile std::sig_atomic_t g_stop = 0;
+volatile std::sig_atomic_t g_finishing = 0;  // the results are complete and being moved into DIR: no stop now
 std::atomic<int> g_stop_points{0};
 char g_stop_message[512], g_exit_message[512];  // composed before any signal can arrive
 char g_lock_file[4200];                          // DIR.lock (atomic_file.hpp), removed by a stop at once
 
 extern "C" void on_signal(int sig) {
+  if (g_finishing) return;  // (the run ends with 0 in a moment; exit 3 would tell of a DIR left unchanged)
   if (sig == SIGUSR1 || (g_stop_points.load() > 0 && !g_stop)) {
     g_stop = 1;
     [[maybe_unused]] auto n = ::write(STDERR_FILENO, g_stop_message, std::strlen(g_stop_message));
@@ -936,6 +938,7 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
     run["study_wall_s"] = study_wall;
     run["files"] = out->written();
     out->write("run.json", run.dump(2) + "\n");
+    g_finishing = 1;  // (from here a signal lets the run end: exit 0, DIR replaced)
     remove_checkpoints(out->path());
     if (mpi::is_root()) results->commit(out->written());
     else results->discard();

@@ -88,7 +88,8 @@ std::string progress_line(std::string_view what, double done, double total, std:
 // StopPoint, a signal ends the process at once (the results directory stays as it was: the run
 // writes into its staging directory). SIGUSR1 (which mpirun passes on to every rank, and a batch
 // job's time-limit warning: scripts/slurm_job.sh) only ever sets stop_requested(): the run stops at
-// the next checkpoint, or finishes if none comes. Either way a line on stderr says what happens.
+// the next checkpoint, or finishes if none comes. Either way a line on stderr says what happens. Once
+// the run has written run.json and only moves its complete results into DIR, a signal is ignored (exit 0).
 bool stop_requested();
 struct StopPoint {
   StopPoint();
