@@ -57,16 +57,16 @@ TUNIT = XK == 0 ? "" : sprintf("  [10^{%d}]", XK)
 fmtw(a, b) = sprintf("t ∈ [%g, %g]%s", a / XS, b / XS, XK == 0 ? "" : sprintf("·10^{%d}", XK))
 inflat = 'strcol("window") eq "no_growth"'
 ingrowth(t) = HAS_GROWTH && t >= G0 && t <= G1
-stats PC using (strcol("window") eq "no_growth" ? column("p2") : NaN) nooutput
-N_F = STATS_records
-stats PC using (strcol("window") eq "no_growth" && column("p2") < 0 ? 1 : NaN) nooutput
-NNEG_F = STATS_records
-stats PC using "q2":"p2" nooutput
+stats PC using (@inflat ? column("p2") : NaN):(column("p2") < 0 ? 1 : 0) nooutput   # (one pass: the cuts, those with p_2 < 0)
+N_F = STATS_records; NNEG_F = int(STATS_sum_y)
+eval columns('PC', PC)
+stats PC skip 1 using PC_q2:PC_p2 nooutput
 QMIN = STATS_min_x; QMAX = STATS_max_x; PMIN = STATS_min_y; PMAX = STATS_max_y
 if (HAS_GROWTH) {
     stats EC using (ingrowth(column("t")) ? column("p2") : NaN) nooutput
     N_G = STATS_records
-    stats EC using "q2":"p2" nooutput
+    eval columns('EC', EC)
+    stats EC skip 1 using EC_q2:EC_p2 nooutput
     QMIN = STATS_min_x < QMIN ? STATS_min_x : QMIN; QMAX = STATS_max_x > QMAX ? STATS_max_x : QMAX
     PMIN = STATS_min_y < PMIN ? STATS_min_y : PMIN; PMAX = STATS_max_y > PMAX ? STATS_max_y : PMAX
 }
