@@ -17,6 +17,9 @@
 # Input: fig4_trajectories.csv, fig4_stats.csv; summary values (μ, σ, exponent: reproduced and
 # published; outlier ids); scene values (h, k, H_0, the ensemble).
 if (!exists("results")) results = 'results/ti_drift'
+# the state of seg_x (below), defined before all else: gnuplot finds a variable that an expression assigns by a search
+# through the variables in the order of their definition, and seg_x assigns six of them on each row, 80,000 in all
+_tp = -1; _xp = 0; _yp = 0; _ok = 0; _x0 = 0; _y0 = 0
 load 'figures/common.gp'
 TRAJ_METHOD = summary_words('methods.ensemble')   # the method of its trajectories, as the run names it
 C_M = method_colour(TRAJ_METHOD)
