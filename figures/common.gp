@@ -26,6 +26,16 @@ term(fmt, name, w, h) = (fmt eq "pdf" \
 # numbers to gnuplot: those points are skipped without a warning.
 set datafile separator comma
 csv(file) = results . '/' . file
+# Columns by number, for a large CSV that a script reads more than once: a column named in `using` ("x") is, like
+# any expression there, evaluated by gnuplot on every row; a plain column number is not (less than half the time on
+# a large file). eval columns('SH', SH) sets SH_<name> to the number of each column of the header of the file SH
+# (its first line, read once; the names must be gnuplot names), for
+#     plot SH skip 1 using SH_x:SH_px
+# (skip 1: the header is no row, as when a column is named, so that `every` and column(0) count from the first data row;
+# within an expression, column(SH_t) for column("t")).
+_columns(p, h, i) = (_c = strstrt(h, ","), _c > 0 ? sprintf("%s_%s = %d; ", p, h[1:_c - 1], i) . _columns(p, h[_c + 1:], i + 1) \
+                                                 : sprintf("%s_%s = %d", p, h, i))
+columns(p, file) = _columns(p, system(sprintf("head -n 1 '%s'", file)), 1)
 
 # ---- methods: colour, marker, key title and equations from the registry -------------------------
 # figures/methods.gpi is generated from the method registry (geomint-methods --gnuplot): a method's

@@ -18,6 +18,7 @@ if (!exists("results")) results = 'results/energy_map'
 load 'figures/common.gp'
 set encoding utf8
 MAP = csv('map.csv')
+eval columns('MAP', MAP)               # (map.csv is large and read several times: its columns by number)
 
 # ---- parameters: from scene values (scene) and summary values; none has a default here ----
 eval need_num('NX', summary_num('grid.nx'))
@@ -37,14 +38,14 @@ rb(t) = 2 * L + 2 * M * G / K * cos(t)                # θ = t from +y: x = r si
 
 # ---- the data ----------------------------------------------------------------
 diff(c, p) = column(c) - column(p)                     # NaN if either run diverged
-DEPS = 'diff("eps_cartesian", "eps_polar")'
-diverged = '(column("diverged_cartesian") != 0 || column("diverged_polar") != 0)'
-stats MAP using (abs(@DEPS)) nooutput
+DEPS = 'diff(MAP_eps_cartesian, MAP_eps_polar)'
+diverged = '(column(MAP_diverged_cartesian) != 0 || column(MAP_diverged_polar) != 0)'
+stats MAP skip 1 using (abs(@DEPS)) nooutput
 ADMAX = STATS_max
 EPS_LIN = 10.0**floor(log10(STATS_lo_quartile))       # linear part of the colour scale
-stats MAP using "x0" nooutput
+stats MAP skip 1 using MAP_x0 nooutput
 N_ALL = STATS_records
-stats MAP using "H0" nooutput
+stats MAP skip 1 using MAP_H0 nooutput
 HMIN = STATS_min
 HMAX = STATS_max
 if (N_ALL != NX * NY) { exit error sprintf("map.csv has %d rows, the grid %d x %d", N_ALL, NX, NY) }
@@ -62,11 +63,12 @@ H_STEP = 0.1
 HLEVELS = sprintf("%g", (kl2 = 0.5 * K * L**2))       # the isoline H_0 = kl²/2 and a step H_STEP
 do for [i = -20:20] { h = kl2 + i * H_STEP; if (i != 0 && h > HMIN && h < HMAX) { HLEVELS = HLEVELS . sprintf(", %g", h) } }
 MAPGRID = csv('map_grid.csv')
+eval columns('MAPGRID', MAPGRID)
 set contour base
 unset surface
 eval "set cntrparam linear levels discrete " . HLEVELS
 set table $HISO0
-splot MAPGRID using "x0":"y0":"H0" with lines notitle
+splot MAPGRID skip 1 using MAPGRID_x0:MAPGRID_y0:MAPGRID_H0 with lines notitle
 unset table
 set print $HISO          # (the table is written with blanks between columns: rewrite with commas)
 do for [i = 1:|$HISO0|] {
@@ -124,8 +126,8 @@ do for [fmt in FORMATS] {
     set key at screen PL, screen PB - 1.35 / H left top vertical Left reverse samplen 2.5 spacing 1.15 width -4 \
             opaque fc rgb '#c4c4c4' box lc rgb '#bbbbbb' lw 0.5
 
-    plot MAP using "x0":"y0":(sl(@DEPS)) with image notitle, \
-         MAP using "x0":"y0":(58):(58):(58):(@diverged ? 255 : 0) with rgbalpha notitle, \
+    plot MAP skip 1 using MAP_x0:MAP_y0:(sl(@DEPS)) with image notitle, \
+         MAP skip 1 using MAP_x0:MAP_y0:(58):(58):(58):(@diverged ? 255 : 0) with rgbalpha notitle, \
          $HISO using 1:2 with lines lc rgb C_HISO lw 0.6 notitle, \
          [t=-pi:pi] '+' using (rb(t) * sin(t)):(rb(t) * cos(t)) with lines lc rgb '#ffffff' lw 1.3 dt (5,3) notitle, \
          keyentry with boxes fs solid 1.0 noborder lc rgb C_DIV title "run diverged (polar or Cartesian; |H_j − H_0| beyond the scene's blow-up limit)", \

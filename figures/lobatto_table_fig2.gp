@@ -16,34 +16,38 @@ if (!exists("results")) results = 'results/lobatto_table'
 load 'figures/common.gp'
 set encoding utf8    # (so that the key width counts characters, not bytes)
 F2 = csv('fig2_energy.csv')
+eval columns('F2', F2)          # (read some 30 times, by step size: its columns by number)
 
 eval need_num('PERIODS', scene_full('long_run.periods'))
 eval need_num('WINDOWS', scene_full('long_run.windows'))
 eval need_num('OMEGA', scene_full('oscillator.omega'))
-# the step sizes: H_1 .. H_NH from the scene
+# the step sizes: HS[1] .. HS[NH] from the scene
+array HS[10]
 NH = 0
-do for [k = 0:9] { s = scene_full(sprintf('long_run.h.%d', k)); if (s ne "?") { NH = k + 1; eval sprintf("H_%d = %s", NH, s) } }
+do for [k = 0:9] { s = scene_full(sprintf('long_run.h.%d', k)); if (s ne "?") { NH = k + 1; eval sprintf("HS[%d] = %s", NH, s) } }
 if (NH == 0) { exit error "long_run.h: missing from ".results."/run.json" }
 if (NH > 3) { exit error sprintf("long_run.h has %d step sizes; the figure has colours for 3", NH) }
-HV(i) = value(sprintf("H_%d", i))
+HV(i) = HS[i]
 COL(i) = i == 1 ? C_LOB_H1 : i == 2 ? C_LOB_H2 : C_LOB_H3
 PT(i) = i == 1 ? 6 : i == 2 ? 4 : 8
-sel(i, col) = abs(column("h") / HV(i) - 1) < 1e-9 ? column(col) : NaN    # the rows of step size i
+sel(i, col) = abs(column(F2_h) / HS[i] - 1) < 1e-9 ? column(col) : NaN    # the rows of step size i (col: a column number)
 
 # growth rates (per period) from summary values, keyed by the %.17g string of h: "?" if missing
 KEY(i) = sprintf("%.17g", HV(i))
 RATE(what, i) = summary_num(sprintf('%s.%s', what, KEY(i)))
 fmt_rate(s) = s eq "?" ? "–" : sprintf("%+.2e", real(s))
 fmt_pub(s)  = s eq "?" ? "none" : sprintf("%.2e", real(s))
+array EBAR[NH]
 do for [i = 1:NH] {
     s = RATE('reproduced.energy_growth_rate', i)
     if (s eq "?") { exit error sprintf("reproduced.energy_growth_rate.%s: missing from %s/summary.json", KEY(i), results) }
     eval sprintf("RATE_%d = %s", i, s)
     # centroid of the window maxima of |H − H0| (the least-squares line passes through it)
-    stats F2 using (sel(i, "period")):(sel(i, "H_err")) nooutput
-    eval sprintf("PBAR_%d = STATS_mean_x; EBAR_%d = STATS_mean_y; NWIN_%d = STATS_records", i, i, i)
+    stats F2 skip 1 using (sel(i, F2_period)):(sel(i, F2_H_err)) nooutput
+    eval sprintf("PBAR_%d = STATS_mean_x; NWIN_%d = STATS_records", i, i)
+    EBAR[i] = STATS_mean_y
 }
-stats F2 using "period" nooutput
+stats F2 skip 1 using F2_period nooutput
 PMIN = STATS_min; PMAX = STATS_max
 # (a), (b): the periods in thousands when there are many
 XS = PMAX >= 1e4 ? 1000 : 1
@@ -56,7 +60,7 @@ do for [i = 1:NH] {
     eval sprintf("set style line %d lc rgb '#000000' lw 0.8 dt (2,2)", 80 + i)                                      # fit
 }
 PER_WINDOW = PMIN                    # (the first window ends after one window's periods)
-RELFIT(i, p) = 100 * value(sprintf("RATE_%d", i)) * (p - value(sprintf("PBAR_%d", i))) / value(sprintf("EBAR_%d", i))
+RELFIT(i, p) = 100 * value(sprintf("RATE_%d", i)) * (p - value(sprintf("PBAR_%d", i))) / EBAR[i]
 
 do for [fmt in FORMATS] {
     eval term(fmt, 'lobatto_table_fig2', 17, 17)
@@ -79,7 +83,7 @@ do for [fmt in FORMATS] {
     set title "(a) energy error, window maxima" offset 0, -0.4
     set key top right
     set offsets 0, 0, graph 0.05, graph 0.05
-    plot for [i = 1:NH] F2 using (column("period") / XS):(sel(i, "H_err")) with linespoints ls 60 + i title sprintf("h = %g", HV(i))
+    plot for [i = 1:NH] F2 skip 1 using (column(F2_period) / XS):(sel(i, F2_H_err)) with linespoints ls 60 + i title sprintf("h = %g", HV(i))
 
     # ---- (b) the same, relative to the mean, with the fitted growth ----
     set lmargin at screen 0.61; set rmargin at screen 0.98
@@ -89,7 +93,7 @@ do for [fmt in FORMATS] {
     set title "(b) drift of (a): least-squares slopes (dotted)"
     set key top left Left reverse samplen 2 width -3 font ",8"
     set offsets 0, 0, graph 0.3, graph 0.05
-    plot for [i = 1:NH] F2 using (column("period") / XS):(100 * (sel(i, "H_err") / value(sprintf("EBAR_%d", i)) - 1)) \
+    plot for [i = 1:NH] F2 skip 1 using (column(F2_period) / XS):(100 * (sel(i, F2_H_err) / EBAR[i] - 1)) \
                 with linespoints ls 60 + i title sprintf("h = %g: %s / period (paper %s)", HV(i), \
                                                    fmt_rate(RATE('reproduced.energy_growth_rate', i)), \
                                                    fmt_pub(RATE('comparisons.energy_growth_rate.published', i))), \
@@ -107,9 +111,9 @@ do for [fmt in FORMATS] {
     set title "(c) discrete energy H_d, eq. (15), conserved by the scheme in exact arithmetic: round-off; key: least-squares slopes per period"
     set key top left Left reverse samplen 3 width -2 font ",8" maxrows 3
     set offsets 0, 0, 0, 0
-    plot for [i = 1:NH] F2 using "period":(sel(i, "Hd_err_plain")) with linespoints ls 60 + i \
+    plot for [i = 1:NH] F2 skip 1 using F2_period:(sel(i, F2_Hd_err_plain)) with linespoints ls 60 + i \
                 title sprintf("h = %g, x ← Φx: %s", HV(i), fmt_rate(RATE('reproduced.energy_growth_rate_Hd', i))), \
-         for [i = 1:NH] F2 using "period":(sel(i, "Hd_err_compensated")) with linespoints ls 70 + i \
+         for [i = 1:NH] F2 skip 1 using F2_period:(sel(i, F2_Hd_err_compensated)) with linespoints ls 70 + i \
                 title sprintf("h = %g, y ← y + (Φ − I)y compensated: %s", HV(i), fmt_rate(RATE('reproduced.energy_growth_rate_Hd_compensated', i)))
     unset multiplot
     unset output

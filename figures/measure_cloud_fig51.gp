@@ -16,6 +16,7 @@ load 'figures/common.gp'
 load 'figures/measure_cloud_style.gpi'
 eval mc_need_potential('harmonic')
 SH = csv('shape.csv')
+eval columns('SH', SH)                  # (shape.csv is large and read many times: its columns by number)
 SA = csv('shape_areas.csv')
 SY = csv('shape_symplecticity.csv')
 eval MC_NEED_METHODS
@@ -34,15 +35,15 @@ NSNAP = int(NSNAP)
 TK(k) = k * DT
 at(k) = abs(column("t") - TK(k)) < 1e-9 * (1 + TK(k))   # a row of snapshot k (shape_areas.csv)
 GREY(k) = (g = k == 0 ? 0 : int(255 * (0.25 + 0.5 * (k - 1) / (NSNAP > 1 ? NSNAP - 1 : 1))), sprintf("#%02x%02x%02x", g, g, g))
-stats SH using "t" nooutput
+stats SH skip 1 using SH_t nooutput
 if (STATS_records != (NSNAP + 1) * NPTS) { exit error sprintf("shape.csv: %d rows, expected %d", STATS_records, (NSNAP + 1) * NPTS) }
 do for [k = 0:NSNAP] {
-    stats SH every ::(k * NPTS)::((k + 1) * NPTS - 1) using "t" nooutput
+    stats SH skip 1 every ::(k * NPTS)::((k + 1) * NPTS - 1) using SH_t nooutput
     if (STATS_records != NPTS || abs(STATS_min - TK(k)) > 1e-9 * (1 + TK(k)) || abs(STATS_max - TK(k)) > 1e-9 * (1 + TK(k))) {
         exit error sprintf("shape.csv: rows %d to %d are not all at t = %g", k * NPTS, (k + 1) * NPTS - 1, TK(k))
     }
     do for [c in "x y"] {            # centroid of the projection: where the snapshot's time is written
-        stats SH every ::(k * NPTS)::((k + 1) * NPTS - 1) using c:"p".c nooutput
+        stats SH skip 1 every ::(k * NPTS)::((k + 1) * NPTS - 1) using value("SH_" . c):value("SH_p" . c) nooutput
         eval sprintf("C%s_%d = STATS_mean_x; Cp%s_%d = STATS_mean_y", c, k, c, k)
     }
     stats SA using (at(k) ? column("area_x_px") : NaN) nooutput
@@ -75,7 +76,7 @@ do for [fmt in FORMATS] {
     set xlabel "x" offset 0, 0.3
     set ylabel "p_x" offset 1, 0
     do for [k = 0:NSNAP] { eval TLABEL(k, "x", "px") }
-    plot for [k = NSNAP:0:-1] SH every ::(k * NPTS)::((k + 1) * NPTS - 1) using "x":"px" with points pt 5 ps PS lc rgb GREY(k) notitle
+    plot for [k = NSNAP:0:-1] SH skip 1 every ::(k * NPTS)::((k + 1) * NPTS - 1) using SH_x:SH_px with points pt 5 ps PS lc rgb GREY(k) notitle
 
     # ---- (b) (y, p_y) ----
     set lmargin at screen 0.39; set rmargin at screen 0.66
@@ -83,7 +84,7 @@ do for [fmt in FORMATS] {
     set xlabel "y"
     set ylabel "p_y"
     do for [k = 0:NSNAP] { eval TLABEL(k, "y", "py") }
-    plot for [k = NSNAP:0:-1] SH every ::(k * NPTS)::((k + 1) * NPTS - 1) using "y":"py" with points pt 5 ps PS lc rgb GREY(k) notitle
+    plot for [k = NSNAP:0:-1] SH skip 1 every ::(k * NPTS)::((k + 1) * NPTS - 1) using SH_y:SH_py with points pt 5 ps PS lc rgb GREY(k) notitle
 
     # ---- (c) symplecticity defect against t ----
     do for [k = 0:NSNAP] { unset label 10 + k }

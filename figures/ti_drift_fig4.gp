@@ -17,11 +17,15 @@
 # Input: fig4_trajectories.csv, fig4_stats.csv; summary values (μ, σ, exponent: reproduced and
 # published; outlier ids); scene values (h, k, H_0, the ensemble).
 if (!exists("results")) results = 'results/ti_drift'
+# the state of seg_x (below), defined before all else: gnuplot finds a variable that an expression assigns by a search
+# through the variables in the order of their definition, and seg_x assigns six of them on each row, 80,000 in all
+_tp = -1; _xp = 0; _yp = 0; _ok = 0; _x0 = 0; _y0 = 0
 load 'figures/common.gp'
 TRAJ_METHOD = summary_words('methods.ensemble')   # the method of its trajectories, as the run names it
 C_M = method_colour(TRAJ_METHOD)
 set encoding utf8    # (so that the key width counts characters, not bytes)
 TRJ = csv('fig4_trajectories.csv')
+eval columns('TRJ', TRJ)             # (the trajectories are many rows, read four times: their columns by number)
 STA = csv('fig4_stats.csv')
 
 eval need_num('H', scene_real('h'))
@@ -43,11 +47,11 @@ OUT_IDS = ""
 do for [i = 0:999] { s = summary_real(sprintf('reproduced.hh5_outliers.%d', i)); if (s eq "?") { break }; OUT_IDS = OUT_IDS . (i > 0 ? ", " : "") . sprintf("%d", int(real(s))) }
 
 # counts and ranges from the data
-stats TRJ using (column("t") == 0 ? column("outlier") : NaN) nooutput
+stats TRJ skip 1 using (column(TRJ_t) == 0 ? column(TRJ_outlier) : NaN) nooutput
 NTRAJ = STATS_records; NOUT = int(STATS_sum)
-stats TRJ using (column("trajectory") == 0 ? column("t") : NaN) nooutput
+stats TRJ skip 1 using (column(TRJ_trajectory) == 0 ? column(TRJ_t) : NaN) nooutput
 NPT = STATS_records                                  # samples per drawn trajectory
-stats TRJ using "E_err" nooutput
+stats TRJ skip 1 using TRJ_E_err nooutput
 EABS = abs(STATS_max) > abs(STATS_min) ? abs(STATS_max) : abs(STATS_min)
 stats STA using "t" nooutput
 TMAX = STATS_max; NST = STATS_records
@@ -67,8 +71,8 @@ XLABEL = XK == 0 ? "time t" : sprintf("time t  [10^{%d}]", XK)
 
 # a segment from the previous sample to this one when both belong to the same trajectory and it is
 # (o = 1) or is not (o = 0) an outlier; the first column updates the state, the others read it
-seg_x(o) = (_ok = (column("trajectory") == _tp && column("outlier") == o), _x0 = _xp, _y0 = _yp, \
-            _xp = column("t") / XS, _yp = column("E_err") / ES, _tp = column("trajectory"), _ok ? _x0 : NaN)
+seg_x(o) = (_ok = (column(TRJ_trajectory) == _tp && column(TRJ_outlier) == o), _x0 = _xp, _y0 = _yp, \
+            _xp = column(TRJ_t) / XS, _yp = column(TRJ_E_err) / ES, _tp = column(TRJ_trajectory), _ok ? _x0 : NaN)
 seg_y(o) = _ok ? _y0 : NaN
 seg_dx(o) = _xp - _x0
 seg_dy(o) = _yp - _y0
@@ -106,7 +110,7 @@ do for [fmt in FORMATS] {
         set title sprintf("(a) the %d %s with max |error| > %s (%s %s)", NOUT, NOUT == 1 ? "trajectory" : "trajectories", \
                           sci(THR), NOUT == 1 ? "no." : "nos.", OUT_IDS) offset 0, -0.4
         eval reset_seg
-        plot TRJ using (seg_x(1)):(seg_y(1)):(seg_dx(1)):(seg_dy(1)) with vectors nohead ls 401 notitle, \
+        plot TRJ skip 1 using (seg_x(1)):(seg_y(1)):(seg_dx(1)):(seg_dy(1)) with vectors nohead ls 401 notitle, \
              [t=0:TMAX:TMAX] '+' using (t / XS):(THR / ES) with lines ls 405 title sprintf("±%s, applied to the %d samples per trajectory of (b)'s μ, σ", sci(THR), NST), \
              [t=0:TMAX:TMAX] '+' using (t / XS):(-THR / ES) with lines ls 405 notitle
     } else {
@@ -125,7 +129,7 @@ do for [fmt in FORMATS] {
     set title NOUT > 0 ? sprintf("(b) the other %d trajectories", NTRAJ - NOUT) : sprintf("(b) all %d trajectories", NTRAJ)
     set key bottom left Left reverse samplen 2.5 width -2 font ",8"
     eval reset_seg
-    plot TRJ using (seg_x(0)):(seg_y(0)):(seg_dx(0)):(seg_dy(0)) with vectors nohead ls 402 notitle, \
+    plot TRJ skip 1 using (seg_x(0)):(seg_y(0)):(seg_dx(0)):(seg_dy(0)) with vectors nohead ls 402 notitle, \
          keyentry with lines ls 402 title sprintf("%d trajectories (%d samples each%s)", NTRAJ - NOUT, NPT, NOUT > 0 ? "; (a) likewise" : ""), \
          STA using (column("t") / XS):(column("mu") / ES) with lines ls 403 \
              title sprintf("mean μ over all %d (%d samples)", NTRAJ, NST), \

@@ -55,18 +55,18 @@ EK = floor(log10(EABS)); ES = 10.0**EK
 XK = TMAX >= 1e5 ? 3 * floor(log10(TMAX) / 3 + 1e-9) : 0; XS = 10.0**XK
 TUNIT = XK == 0 ? "" : sprintf("  [10^{%d}]", XK)
 fmtw(a, b) = sprintf("t ∈ [%g, %g]%s", a / XS, b / XS, XK == 0 ? "" : sprintf("·10^{%d}", XK))
-inflat = 'strcol("window") eq "no_growth"'
+eval columns('PC', PC)    # (the cut files are many rows, read several times: their columns by number)
+eval columns('EC', EC)
+inflat = 'strcol(PC_window) eq "no_growth"'
 ingrowth(t) = HAS_GROWTH && t >= G0 && t <= G1
-stats PC using (strcol("window") eq "no_growth" ? column("p2") : NaN) nooutput
-N_F = STATS_records
-stats PC using (strcol("window") eq "no_growth" && column("p2") < 0 ? 1 : NaN) nooutput
-NNEG_F = STATS_records
-stats PC using "q2":"p2" nooutput
+stats PC skip 1 using (@inflat ? column(PC_p2) : NaN):(column(PC_p2) < 0 ? 1 : 0) nooutput   # (one pass: the cuts, those with p_2 < 0)
+N_F = STATS_records; NNEG_F = int(STATS_sum_y)
+stats PC skip 1 using PC_q2:PC_p2 nooutput
 QMIN = STATS_min_x; QMAX = STATS_max_x; PMIN = STATS_min_y; PMAX = STATS_max_y
 if (HAS_GROWTH) {
-    stats EC using (ingrowth(column("t")) ? column("p2") : NaN) nooutput
+    stats EC skip 1 using (ingrowth(column(EC_t)) ? column(EC_p2) : NaN) nooutput
     N_G = STATS_records
-    stats EC using "q2":"p2" nooutput
+    stats EC skip 1 using EC_q2:EC_p2 nooutput
     QMIN = STATS_min_x < QMIN ? STATS_min_x : QMIN; QMAX = STATS_max_x > QMAX ? STATS_max_x : QMAX
     PMIN = STATS_min_y < PMIN ? STATS_min_y : PMIN; PMAX = STATS_max_y > PMAX ? STATS_max_y : PMAX
 }
@@ -132,17 +132,17 @@ do for [fmt in FORMATS] {
     set colorbox user origin screen 0.40, screen 0.06 size screen 0.014, screen 0.39
     set cbrange [F0 / XS:F1 / XS]
     set title sprintf("(c) flattest of 20 windows: %s\n%d cuts, %.0f%% of them with p_2 < 0", fmtw(F0, F1), N_F, 100.0 * NNEG_F / N_F) offset 0, -0.3
-    plot PC using (@inflat ? column("q2") : NaN):"p2":(column("t") / XS) with points pt 7 ps 0.12 lc palette
+    plot PC skip 1 using (@inflat ? column(PC_q2) : NaN):PC_p2:(column(PC_t) / XS) with points pt 7 ps 0.12 lc palette
     set lmargin at screen 0.57; set rmargin at screen 0.87
     set colorbox user origin screen 0.88, screen 0.06 size screen 0.014, screen 0.39
     if (HAS_GROWTH) {
         set cbrange [G0 / XS:G1 / XS]
         set title sprintf("(d) longest growth episode: %s, %d cuts,\n%.1f%% with p_2 < 0; ΔE = %s, by (4.3) %s", fmtw(G0, G1), N_G, \
                           100.0 * G_SHARE, sci(G_CHANGE), sci(G_PRED)) offset 0, -0.3
-        plot EC using (ingrowth(column("t")) ? column("q2") : NaN):"p2":(column("t") / XS) with points pt 7 ps 0.12 lc palette
+        plot EC skip 1 using (ingrowth(column(EC_t)) ? column(EC_q2) : NaN):EC_p2:(column(EC_t) / XS) with points pt 7 ps 0.12 lc palette
     } else {
         set title "(d) no growth episode by the rule of (b)" offset 0, -0.3
-        plot PC using (NaN):"p2" with points
+        plot PC skip 1 using (NaN):PC_p2 with points
     }
     unset arrow 1
     unset multiplot

@@ -80,10 +80,11 @@ stable(col) = column("diverged") == 0 ? column(col) : NaN
 h2guide(h) = MED_HMIN * (h / HMIN)**2
 
 # ---- (b): the trajectories and the ensemble ----
-stats TRAJ using "trajectory" nooutput
+eval columns('TRAJ', TRAJ)      # (the trajectories are many rows, read once per trajectory: their columns by number)
+stats TRAJ skip 1 using TRAJ_trajectory nooutput
 NT = int(STATS_max) + 1
 RT = int(STATS_records) / NT      # rows per trajectory: trajectory i is the rows i RT .. (i + 1) RT - 1 (checked)
-stats TRAJ using (column("trajectory") == int(column(0)) / RT ? 1 : 0) nooutput
+stats TRAJ skip 1 using (column(TRAJ_trajectory) == int(column(0)) / RT ? 1 : 0) nooutput
 if (RT * NT != STATS_records || STATS_min != 1) {
     exit error sprintf("fig6_trajectories.csv: not %d trajectories of %d rows each, one after another", NT, RT)
 }
@@ -167,7 +168,7 @@ do for [fmt in FORMATS] {
     set ylabel "E(p_n, q_n) − E(p_0, q_0)   [10^{−6}]" offset 1, 0
     set title sprintf("(b) error in E = Ĥ + ½h^4α^2K: %d trajectories, μ and μ ± σ over %d", NT, M_LJ)
     set key top left Left reverse samplen 2 width -6 font ",7"
-    plot for [i = 0:NT - 1] TRAJ every ::(i * RT)::((i + 1) * RT - 1) using "t":(column("E_err") / U6) with lines ls 205 notitle, \
+    plot for [i = 0:NT - 1] TRAJ skip 1 every ::(i * RT)::((i + 1) * RT - 1) using TRAJ_t:(column(TRAJ_E_err) / U6) with lines ls 205 notitle, \
          STATF using "t":(column("mu") / U6) with lines ls 206 \
              title sprintf("μ(%g) = %s (paper %g·10^{−6})", T_END, pm(MU, MU_SE), MU_PUB / U6), \
          STATF using "t":((column("mu") + column("sigma")) / U6) with lines ls 207 \

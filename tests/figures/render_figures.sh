@@ -68,15 +68,16 @@ missing_inputs() {
     done
 }
 
-root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
+# (make figures runs this once per figure: no program is started here that a shell expansion can replace)
+case "${BASH_SOURCE[0]}" in */*) here=${BASH_SOURCE[0]%/*} ;; *) here=. ;; esac
+root=$(cd "$here/../.." && pwd)
 cd "$root" || exit 1
-mkdir -p "$out" || exit 1
-log=$(mktemp "${TMPDIR:-/tmp}/render_figures.XXXXXX") || exit 1
-trap 'rm -f "$log"' EXIT
+[ -d "$out" ] || mkdir -p "$out" || exit 1
+exec 3>&1                                          # (gnuplot's stdout, while its stderr is captured)
 
 failed=()
 for script in "${scripts[@]}"; do
-    name=$(basename "$script" .gp)
+    name=${script##*/}; name=${name%.gp}
     why=""
     if [ ! -f "$script" ]; then
         why="script not found"
@@ -85,12 +86,12 @@ for script in "${scripts[@]}"; do
         continue
     else
         rm -f "$out/$name.pdf" "$out/$name.png"        # no stale figure may pass the check
-        gnuplot -e "results='$results'; out='$out'" "$script" 2>"$log"
+        err=$(gnuplot -e "results='$results'; out='$out'" "$script" 2>&1 >&3 3>&-)
         rc=$?
-        if [ -s "$log" ]; then sed "s|^|  $name: |" "$log" >&2; fi
+        if [ -n "$err" ]; then printf '%s\n' "$err" | sed "s|^|  $name: |" >&2; fi
         if [ $rc -ne 0 ]; then
             why="gnuplot exited with status $rc"
-        elif grep -qi warning "$log"; then
+        elif [[ ${err,,} == *warning* ]]; then
             why="gnuplot printed a warning"
         else
             for ext in pdf png; do
@@ -98,8 +99,8 @@ for script in "${scripts[@]}"; do
             done
             if [ -z "$why" ] && [ -n "$check_later" ]; then
                 printf '%s\n' "$out/$name.pdf" >> "$check_later"   # (one short line: an atomic append)
-            elif [ -z "$why" ] && ! python3 tests/figures/check_figure_text.py "$out/$name.pdf" >"$log"; then
-                sed "s|^|  $name: |" "$log" >&2
+            elif [ -z "$why" ] && ! err=$(python3 tests/figures/check_figure_text.py "$out/$name.pdf"); then
+                printf '%s\n' "$err" | sed "s|^|  $name: |" >&2
                 why="text off the canvas or overlapping"
             fi
         fi
