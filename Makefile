@@ -79,7 +79,7 @@ $(RESULTS)/$(3)/run.json: $(BUILD)/bin/$(1) $(2) $(filter-out experiments/$(1)/q
 	@start=$$$$(date +%s%N); $(BUILD)/bin/$(1) --scene $(2) --out $(RESULTS)/$(3) && \
 	  awk -v ns=$$$$(( $$$$(date +%s%N) - start )) 'BEGIN { printf "== $(3): %.1f s\n", ns / 1e9 }'
 FIGURES_$(3) := $(patsubst figures/%.gp,figures/out/%.pdf,$(wildcard figures/$(3)_*.gp))
-$$(FIGURES_$(3)): figures/out/%.pdf: figures/%.gp figures/common.gp figures/cost.gpi $(RESULTS)/$(3)/run.json
+$$(FIGURES_$(3)): figures/out/%.pdf: figures/%.gp figures/common.gp $(wildcard figures/*.gpi) $(RESULTS)/$(3)/run.json
 	@tests/figures/render_figures.sh --check-later $(UNCHECKED) $(RESULTS)/$(3) figures/out $$<
 ALL_FIGURES += $$(FIGURES_$(3)) $(RESULTS)/$(3)/run.json
 ALL_RUNS += $(RESULTS)/$(3)/run.json
