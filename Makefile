@@ -26,7 +26,7 @@ EXPERIMENTS := $(sort $(notdir $(patsubst %/,%,$(dir $(wildcard experiments/*/*.
 DEPS_STAMP := .deps
 UNCHECKED := figures/out/.unchecked   # figures rendered by make figures whose text is not yet checked
 
-.PHONY: all deps build test figures figure-runs figure-files scaling paper overview-figures experiment bench plan-rates methods-gpi new-study clean FORCE
+.PHONY: all deps build build-figures test figures figure-runs figure-files scaling paper overview-figures experiment bench plan-rates methods-gpi new-study clean FORCE
 all: build
 
 $(DEPS_STAMP)/%.stamp: scripts/install-deps.sh
@@ -41,6 +41,11 @@ $(BUILD)/CMakeCache.txt: | $(DEPS_STAMP)/build.stamp
 build: $(DEPS_STAMP)/build.stamp $(BUILD)/CMakeCache.txt
 	cmake --build $(BUILD) -j $(JOBS)
 
+# What the runs and figures need: the experiments and geomint-methods (CMake target geomint_figures), no test
+# suite or benchmark.
+build-figures: $(DEPS_STAMP)/build.stamp $(BUILD)/CMakeCache.txt
+	cmake --build $(BUILD) -j $(JOBS) --target geomint_figures
+
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
@@ -54,7 +59,7 @@ scene_id = $(if $(filter $(1),$(2)),$(1),$(1)-$(2))
 # figures into that directory's figures/: never over the paper run that make figures and make paper report.
 SCENE ?= $(NAME)
 ARGS_QUOTED = '$(subst ','\'',$(ARGS))'
-experiment: build $(DEPS_STAMP)/figures.stamp
+experiment: build-figures $(DEPS_STAMP)/figures.stamp
 	@test -n "$(NAME)" || { echo "usage: make experiment NAME=<one of: $(EXPERIMENTS)> [SCENE=<variant>] [ARGS='--study S --set key=value'] [OUT=DIR]"; exit 2; }
 	@id=$(call scene_id,$(NAME),$(SCENE)); out="$(OUT)"; figs=figures/out; \
 	if [ -z "$$out" ] && [ -n "$(strip $(ARGS))" ]; then \
@@ -94,7 +99,7 @@ $(BUILD)/bin/%: ;   # made by `build`, before figure-files is asked for
 # The runs one after another (each uses every core, and times itself), then the figures rendered
 # in parallel; at the end each experiment's wall time (its run.json), the rendering's and that of the
 # whole make figures.
-figures: build $(DEPS_STAMP)/figures.stamp
+figures: build-figures $(DEPS_STAMP)/figures.stamp
 	@start=$$(date +%s.%N); $(MAKE) --no-print-directory figure-runs && render=$$(date +%s.%N) && \
 	  $(MAKE) --no-print-directory -j $(JOBS) figure-files && \
 	  python3 scripts/figure_times.py --rendering-from $$render $(RESULTS) $$start $(foreach sc,$(PAPER_SCENES),$(call id_of,$(sc)))
@@ -114,7 +119,7 @@ figure-files: $(ALL_FIGURES)
 # Strong scaling of the energy map under MPI and the projection of the cluster scene (the cost chapter).
 $(RESULTS)/mpi_scaling/summary.json: $(BUILD)/bin/energy_map bench/mpi_scaling.py experiments/energy_map/energy_map.toml experiments/energy_map/fine.toml
 	python3 bench/mpi_scaling.py $(BUILD) $(RESULTS)/mpi_scaling
-scaling: build
+scaling: build-figures
 	@$(MAKE) --no-print-directory $(RESULTS)/mpi_scaling/summary.json
 
 # The hard cases are rerun only when a binary or the test list changed (a second make paper with
@@ -123,7 +128,7 @@ paper/generated/hardcases.xml: $(wildcard $(BUILD)/bin/*) $(wildcard $(BUILD)/te
 	@mkdir -p paper/generated
 	ctest --test-dir $(BUILD) -j $(JOBS) -L hardcase --output-junit $(CURDIR)/$@ > /dev/null
 
-paper: figures scaling $(DEPS_STAMP)/paper.stamp paper/generated/hardcases.xml
+paper: figures scaling build $(DEPS_STAMP)/paper.stamp paper/generated/hardcases.xml
 	@mkdir -p paper/generated
 	$(BUILD)/bin/geomint-methods --json > paper/generated/methods.json
 	ctest --test-dir $(BUILD) --show-only=json-v1 > paper/generated/tests.json
