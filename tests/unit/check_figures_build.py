@@ -35,10 +35,13 @@ for line in dry_run(["-B", "geomint_figures"], build):
     m = re.search(r" -c (\S+\.(?:cpp|cxx|cc))\b", line)
     if m:
         compiled.add(pathlib.Path(m.group(1)))
-for f in sorted(compiled):
-    rel = f.relative_to(source) if f.is_relative_to(source) else f
-    if rel.parts and rel.parts[0] in ("tests", "bench"):
-        problems.append(f"geomint_figures compiles {rel}")
+for f in sorted(compiled):  # (a test's source, or a unity batch of them under BUILD_DIR/tests)
+    for root in (build, source):
+        if f.is_relative_to(root):
+            rel = f.relative_to(root)
+            if rel.parts[0] in ("tests", "bench"):
+                problems.append(f"geomint_figures compiles {rel}")
+            break
 for f in sorted(source.glob("experiments/*/*.cpp")):
     if f not in compiled:
         problems.append(f"geomint_figures does not compile {f.relative_to(source)}")
