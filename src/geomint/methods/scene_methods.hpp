@@ -24,4 +24,10 @@ inline bool beyond_bound(double omega_h, double bound) { return !std::isnan(boun
 void check_oscillatory_bound(const Scene& s, const char* step_key, const char* methods_key, const std::string& method,
                              double hw, const std::string& what, const std::string& formula = {});
 
+// The same for a study that steps the one method `method` (no methods key): blamed on the step key.
+inline void check_step_bound(const Scene& s, const char* step_key, const std::string& method, double hw,
+                             const std::string& what, const std::string& formula = {}) {
+  check_oscillatory_bound(s, step_key, step_key, method, hw, what, formula);
+}
+
 }  // namespace geomint
