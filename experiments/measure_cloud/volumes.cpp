@@ -156,7 +156,8 @@ void run_volumes(Context& ctx) {
   const auto cloud = cloud_around(p.z0, six_hundred_cell_vertices(), r);
   cloud_volumes(ctx, p, cloud, "volumes_", "");
   const auto facets0 = hull_facets(cloud);
-  ctx.summary["reproduced"]["hull_volume_initial_over_r4"] = hull_integral(cloud, facets0, cloud.front(), [](const Point4&) { return 1.0; }) / std::pow(r, 4);
+  ctx.summary["reproduced"]["hull_volume_initial_over_r4"] =
+      hull_integral(cloud, facets0, cloud.front(), [](const Point4&) { return 1.0; }) / std::pow(r, 4);
   ctx.summary["reproduced"]["hull_volume_exact_over_r4"] = six_hundred_cell_volume(1.0);
   const auto small = cloud_around(p.z0, six_hundred_cell_vertices(), artefact_radius_fraction * r);
   const std::vector<double> small_volumes = reference_volumes(ctx, "volumes.reference_small", kReferencePathKeys, p, small, steps_within(s.real("ptp_window"), p.h));

@@ -5,10 +5,8 @@
 // when that study runs in the same process; alone, that study integrates the ensemble too
 // (sweep/henon_heiles_ensemble.hpp: the ensemble, its starts, checkpoint and the hand-over).
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdint>
-#include <span>
 #include <string>
 #include <utility>
 #include <vector>
