@@ -18,16 +18,24 @@
 #include <string>
 #include <vector>
 
+#include "geomint/analysis/phi_study.hpp"
 #include "geomint/analysis/work_precision_set.hpp"
+#include "geomint/core/integrate.hpp"
+#include "geomint/geometry/clouds.hpp"
 #include "geomint/integrators/runge_kutta4.hpp"
+#include "geomint/methods/discretizations.hpp"
 #include "geomint/methods/registry.hpp"
+#include "geomint/methods/scene_methods.hpp"
 #include "geomint/observables/error_norms.hpp"
 #include "geomint/observables/order_fit.hpp"
+#include "geomint/runner/experiment.hpp"
 #include "geomint/runner/fits.hpp"
+#include "geomint/runner/plan_rates.hpp"
 #include "geomint/runner/summary.hpp"
 #include "geomint/runner/timing.hpp"
 #include "geomint/runner/timing_report.hpp"
-#include "measure_cloud.hpp"
+#include "geomint/systems/nonholonomic_modified_series.hpp"
+#include "geomint/systems/nonholonomic_particle.hpp"
 
 namespace geomint::measure_cloud {
 namespace {
@@ -37,7 +45,7 @@ namespace {
 struct TimedRun {
   std::string method;
   double h;
-  Trajectory tr;
+  PointTrajectory tr;
   double evals;
   std::function<void()> again;
 };
@@ -53,9 +61,9 @@ struct ParticleField {
   }
 };
 
-Trajectory run_rk4(const NonholonomicParticle& sys, double h, const Point4& z0, std::int64_t n, std::int64_t* evals) {
+PointTrajectory run_rk4(const NonholonomicParticle& sys, double h, const Point4& z0, std::int64_t n, std::int64_t* evals) {
   const ParticleField field{sys, evals};
-  Trajectory t;
+  PointTrajectory t;
   t.z.reserve(static_cast<std::size_t>(n) + 1);
   Vec<4> y(z0[0], z0[1], z0[2], z0[3]);
   t.z.push_back(z0);
@@ -71,7 +79,7 @@ std::string phi_label(int ell, Discretization d) { return "phi" + std::to_string
 // Phi^(ell) of d at the step h to T = energies.t_end (timed by timed_runs).
 TimedRun timed_phi(const Scene& s, const PhiStudy& p, Discretization d, int ell, double h) {
   const std::int64_t n = steps_within(s.real("energies.t_end"), h);  // n h <= T: the error is taken there
-  Trajectory tr = run_phi(d, p.sys, h, ell, p.z0, n);
+  PointTrajectory tr = run_phi(d, p.sys, h, ell, p.z0, n);
   const double evals = static_cast<double>(tr.iterations);
   return {phi_label(ell, d), h, std::move(tr), evals, [&p, d, h, ell, n] {
             do_not_optimize(run_phi(d, p.sys, h, ell, p.z0, n).z.back());
@@ -83,7 +91,7 @@ TimedRun timed_phi(const Scene& s, const PhiStudy& p, Discretization d, int ell,
 TimedRun timed_rk4(const Scene& s, const PhiStudy& p, double h) {
   const std::int64_t n = steps_within(s.real("energies.t_end"), h);
   std::int64_t evals = 0;
-  Trajectory tr = run_rk4(p.sys, h, p.z0, n, &evals);
+  PointTrajectory tr = run_rk4(p.sys, h, p.z0, n, &evals);
   return {"rk4", h, std::move(tr), static_cast<double>(evals), [&p, h, n] {
             std::int64_t uncounted = 0;
             do_not_optimize(run_rk4(p.sys, h, p.z0, n, &uncounted).z.back());
@@ -113,7 +121,7 @@ struct Sets {
 // the wall times: the trajectory set times the runs (every run together), the energy set has the same.
 Sets errors_of(Context& ctx, const PhiStudy& p, const std::vector<TimedRun>& runs) {
   Sets out;
-  const double H0 = p.sys.H(as_state(p.z0));
+  const double H0 = p.sys.H(from_array(p.z0));
   std::map<double, Point4> refs;  // by t_N
   for (const TimedRun& r : runs) {
     const auto n = static_cast<std::int64_t>(r.tr.z.size()) - 1;
@@ -121,12 +129,12 @@ Sets errors_of(Context& ctx, const PhiStudy& p, const std::vector<TimedRun>& run
     if (!refs.contains(tN)) {
       const auto ref = reference_samples(p.sys, p.z0, tN, 1, p.rtol, p.atol).back();
       const auto tight = reference_samples(p.sys, p.z0, tN, 1, reference_check_factor * p.rtol, reference_check_factor * p.atol).back();
-      out.reference_error = std::max(out.reference_error, phase_distance(as_state(ref), as_state(tight)));
+      out.reference_error = std::max(out.reference_error, phase_distance(from_array(ref), from_array(tight)));
       refs.emplace(tN, ref);
     }
     double e_energy = 0;
-    for (const Point4& z : r.tr.z) e_energy = std::max(e_energy, std::abs(p.sys.H(as_state(z)) - H0));
-    const double err = phase_distance(as_state(r.tr.z.back()), as_state(refs.at(tN)));
+    for (const Point4& z : r.tr.z) e_energy = std::max(e_energy, std::abs(p.sys.H(from_array(z)) - H0));
+    const double err = phase_distance(from_array(r.tr.z.back()), from_array(refs.at(tN)));
     out.trajectory.add({r.method, r.h, static_cast<double>(n), {}, r.evals, err}, r.again);
     out.energy.add({r.method, r.h, static_cast<double>(n), {}, r.evals, e_energy});
   }
@@ -169,8 +177,8 @@ Value report_discretizations(Context& ctx, const PhiStudy& p, const WorkPrecisio
   }
   put_methods(ctx, "newton_iterations_per_step_phi4", newton_at_h);
   if (!names.empty()) ctx.summary["cost"]["relative_ns_per_step_at_h"] = relative_timings(names, per_step, work);
-  put(ctx, "reproduced", "cost_h_at_t_end", h_at_T);
-  put(ctx, "reproduced", "cost_err_at_t_end", err_at_T);
+  ctx.summary["reproduced"]["cost_h_at_t_end"] = h_at_T;
+  ctx.summary["reproduced"]["cost_err_at_t_end"] = err_at_T;
   ctx.summary["orders"]["cost_error_phi4"] = order;
   ctx.summary["ranges"]["cost_error_phi4"] = method_ranges(order);
   return ns_per_step;
@@ -252,7 +260,7 @@ StudyPlan plan_cost(const Scene& s) {
     steps += step_count_within(T, h), kept += step_count_within(T, h) + 1;
     calls.push_back(TimedCall{step_count_within(T, h), rate.ns_per_step});
   }
-  StudyPlan p = make_plan(steps, kept * kPointBytes, rate, "the runs, then the timing protocol");
+  StudyPlan p = phi_plan(steps, kept * kPointBytes, rate, "the runs, then the timing protocol");
   p.time(s, calls);
   return p;
 }
@@ -260,11 +268,11 @@ StudyPlan plan_cost(const Scene& s) {
 void check_cost(const Scene& s) {
   check_at_least_one_step(s, "energies.t_end", s.reals("order_study.h"), "max(order_study.h)");
   check_at_least_one_step(s, "energies.t_end", s.reals("cost.rk4_h"), "max(cost.rk4_h)");
-  const auto ms = scene_methods(s);
+  const auto ms = scene_discretizations(s);
   if (std::find(ms.begin(), ms.end(), *parse_discretization(method_info(s.text("cost.discretization")).label)) == ms.end())
     s.reject("cost.discretization", "must be one of the scene's methods (its Phi^(4) runs are reused)");
-  check_first_step(s, "h", {s.real("h")});
-  check_first_step(s, "order_study.h", s.reals("order_study.h"));
+  check_first_conformal_step(s, "h", {s.real("h")});
+  check_first_conformal_step(s, "order_study.h", s.reals("order_study.h"));
 }
 
 }  // namespace
@@ -275,7 +283,7 @@ Study cost_study() {
           .about = "work precision: Phi^(4) of each discretization, Phi^(0) and RK4; trajectory and energy errors",
           .files = {"cost_trajectory.csv", "cost_energy.csv"},
           .keys = Schema()
-                      .text("cost.discretization", method_choices(),
+                      .text("cost.discretization", discretization_choices(),
                             "the discrete Lagrangian (5.1) of Phi^(4) and Phi^(0) in the comparison with RK4")
                       .reals("cost.rk4_h", positive(), 3,
                              "steps of the classical RK4 on (3.8), the baseline that preserves neither")

@@ -8,10 +8,14 @@
 #include <string>
 #include <vector>
 
+#include "geomint/analysis/phi_study.hpp"
+#include "geomint/core/integrate.hpp"
+#include "geomint/methods/discretizations.hpp"
+#include "geomint/methods/scene_methods.hpp"
 #include "geomint/observables/error_norms.hpp"
 #include "geomint/runner/distributed_map.hpp"
 #include "geomint/systems/nonholonomic_modified_series.hpp"
-#include "measure_cloud.hpp"
+#include "geomint/systems/nonholonomic_particle.hpp"
 
 namespace geomint::measure_cloud {
 namespace {
@@ -28,12 +32,12 @@ void run_energies(Context& ctx) {
   const auto ref_tight =
       reference_samples(sys, z0, h, n, reference_check_factor * rtol, reference_check_factor * atol);
   double self_check = 0;
-  for (std::size_t j = 0; j < ref.size(); ++j) self_check = std::max(self_check, phase_distance(as_state(ref[j]), as_state(ref_tight[j])));
-  put(ctx, "reproduced", "reference_self_check", self_check);
-  put(ctx, "reproduced", "reference_check_factor", reference_check_factor);
-  put(ctx, "reproduced", "energy_steps", n);
-  const double H0 = sys.H(as_state(z0));
-  put(ctx, "reproduced", "H0", H0);
+  for (std::size_t j = 0; j < ref.size(); ++j) self_check = std::max(self_check, phase_distance(from_array(ref[j]), from_array(ref_tight[j])));
+  ctx.summary["reproduced"]["reference_self_check"] = self_check;
+  ctx.summary["reproduced"]["reference_check_factor"] = reference_check_factor;
+  ctx.summary["reproduced"]["energy_steps"] = n;
+  const double H0 = sys.H(from_array(z0));
+  ctx.summary["reproduced"]["H0"] = H0;
   Value H_end, err_end_of;
   for (int ell : {4, 0}) {
     const auto runs = distributed_map(methods.size(), [&](std::size_t k) { return run_phi(methods[k], sys, h, ell, z0, n); });
@@ -44,13 +48,13 @@ void run_energies(Context& ctx) {
     const std::size_t M = methods.size();
     std::vector<ModifiedSeries> ms;
     std::vector<double> E_star, max_H(M, 0.0), max_K(M, 0.0), max_Kmod(M, 0.0), err_end(M), H_err_end(M);
-    for (Discretization d : methods) ms.emplace_back(d, sys, h), E_star.push_back(ms.back().E(ell, as_state(z0)));
+    for (Discretization d : methods) ms.emplace_back(d, sys, h), E_star.push_back(ms.back().E(ell, from_array(z0)));
     for (std::size_t j = 0; j <= static_cast<std::size_t>(n); ++j) {
-      csv << static_cast<double>(j) * h << sys.H(as_state(ref[j]));
+      csv << static_cast<double>(j) * h << sys.H(from_array(ref[j]));
       for (std::size_t k = 0; k < M; ++k) {
-        const Z z = as_state(runs[k].z[j]);
+        const PhaseState<2> z = from_array(runs[k].z[j]);
         const double H = sys.H(z), K = sys.K(z, H0), Kmod = ms[k].K4(z, E_star[k]);
-        const double err = phase_distance(z, as_state(ref[j]));
+        const double err = phase_distance(z, from_array(ref[j]));
         csv << H << K << Kmod << ms[k].E(4, z) << err;
         max_H[k] = std::max(max_H[k], std::abs(H - H0)), max_K[k] = std::max(max_K[k], std::abs(K));
         max_Kmod[k] = std::max(max_Kmod[k], std::abs(Kmod));
@@ -83,7 +87,7 @@ void run_energies(Context& ctx) {
 StudyPlan plan_energies(const Scene& s) {
   const double n = step_count_within(s.real("energies.t_end"), s.real("h")), M = static_cast<double>(s.texts("methods").size());
   const double runs = M * (max_modified_order / 2 + 1) + 2;
-  return make_plan(runs * n, runs * (n + 1) * kPointBytes, plan_rate("cloud energies"));
+  return phi_plan(runs * n, runs * (n + 1) * kPointBytes, plan_rate("cloud energies"));
 }
 
 }  // namespace
@@ -99,7 +103,7 @@ Study energies_study() {
           .validate =
               [](const Scene& s) {
                 check_at_least_one_step(s, "energies.t_end", {s.real("h")}, "h");
-                check_first_step(s, "h", {s.real("h")});
+                check_first_conformal_step(s, "h", {s.real("h")});
               },
           .plan = plan_energies,
           // Fig 5.3 is the harmonic particle's, Figs 5.5 (Phi^(4)) and 5.6 (Phi^(0)) the free particle's (003 Sec. 5.3)

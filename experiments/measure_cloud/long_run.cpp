@@ -4,9 +4,16 @@
 #include <string>
 #include <vector>
 
+#include "geomint/analysis/phi_study.hpp"
+#include "geomint/core/integrate.hpp"
+#include "geomint/methods/discretizations.hpp"
+#include "geomint/methods/scene_methods.hpp"
 #include "geomint/observables/error_norms.hpp"
 #include "geomint/runner/distributed_map.hpp"
-#include "measure_cloud.hpp"
+#include "geomint/runner/experiment.hpp"
+#include "geomint/runner/plan_rates.hpp"
+#include "geomint/systems/nonholonomic_modified_series.hpp"
+#include "geomint/systems/nonholonomic_particle.hpp"
 
 namespace geomint::measure_cloud {
 namespace {
@@ -24,10 +31,10 @@ void run_long_run(Context& ctx) {
   for (int ell : {0, 4})
     for (Discretization d : methods) cols.push_back(std::string(discretization_name(d)) + "_H_phi" + std::to_string(ell));
   Csv csv(cols);
-  const double H0 = sys.H(as_state(z0));
+  const double H0 = sys.H(from_array(z0));
   for (std::size_t j = 0; j <= static_cast<std::size_t>(n); ++j) {
     csv << static_cast<double>(j) * h;
-    for (const auto& r : runs) csv << sys.H(as_state(r.z[j])) - H0;
+    for (const auto& r : runs) csv << sys.H(from_array(r.z[j])) - H0;
     csv.end_row();
   }
   ctx.write("long_run.csv", csv);
@@ -35,9 +42,9 @@ void run_long_run(Context& ctx) {
   Value H0_end, H4_end, e0, e4;
   for (std::size_t k = 0; k < M; ++k) {
     const char* name = discretization_name(methods[k]);
-    H0_end[name] = sys.H(as_state(runs[k].z.back())) - H0, H4_end[name] = sys.H(as_state(runs[M + k].z.back())) - H0;
-    e0[name] = phase_distance(as_state(runs[k].z.back()), as_state(ref)),
-    e4[name] = phase_distance(as_state(runs[M + k].z.back()), as_state(ref));
+    H0_end[name] = sys.H(from_array(runs[k].z.back())) - H0, H4_end[name] = sys.H(from_array(runs[M + k].z.back())) - H0;
+    e0[name] = phase_distance(from_array(runs[k].z.back()), from_array(ref)),
+    e4[name] = phase_distance(from_array(runs[M + k].z.back()), from_array(ref));
     count_newton(ctx, runs[k].iterations + runs[M + k].iterations, 2 * n);
   }
   put_methods(ctx, "long_H_err_phi0", H0_end), put_methods(ctx, "long_H_err_phi4", H4_end);
@@ -46,7 +53,7 @@ void run_long_run(Context& ctx) {
 
 StudyPlan plan_long_run(const Scene& s) {
   const double n = step_count_within(s.real("long_run.t_end"), s.real("h")), M = static_cast<double>(s.texts("methods").size());
-  return make_plan(2 * M * n, 2 * M * (n + 1) * kPointBytes, plan_rate("cloud long run"));
+  return phi_plan(2 * M * n, 2 * M * (n + 1) * kPointBytes, plan_rate("cloud long run"));
 }
 
 }  // namespace
@@ -61,7 +68,7 @@ Study long_run_study() {
           .validate =
               [](const Scene& s) {
                 check_at_least_one_step(s, "long_run.t_end", {s.real("h")}, "h");
-                check_first_step(s, "h", {s.real("h")});
+                check_first_conformal_step(s, "h", {s.real("h")});
               },
           .plan = plan_long_run};
 }

@@ -14,8 +14,23 @@
 // names conformal_M ... or their labels M ...); nothing else is computed.
 // Every study reads the potential and the centre cloud.center; all but order_study the reference
 // flow. Here: the studies, and the scene keys that several of them read (the runner declares reference.*,
-// checkpoint.* and timing.repeats: common_keys(); measure_cloud.hpp: what else they share).
-#include "measure_cloud.hpp"
+// checkpoint.* and timing.repeats: common_keys(); what else they share is the library's: analysis/phi_study.hpp).
+#include <utility>
+
+#include "geomint/methods/discretizations.hpp"
+#include "geomint/runner/experiment.hpp"
+
+namespace geomint::measure_cloud {
+
+// The studies, in the order they run (each in the file of its name).
+Study shape_study();
+Study volumes_study();
+Study energies_study();
+Study long_run_study();
+Study order_study_study();
+Study cost_study();
+
+}  // namespace geomint::measure_cloud
 
 using namespace geomint;
 using namespace geomint::measure_cloud;
@@ -27,7 +42,7 @@ Schema shared_keys() {
   s.text("potential", {"harmonic", "free"}, "U = (x^2 + y^2)/2 or U = 0 (003 Secs 5.2, 5.3)")
       .real("h", positive(), "time step (003: 0.25)")
       .real("ptp_window", positive(), "peak-to-peak volume errors are taken over t <= ptp_window (the hull stays convex)")
-      .texts("methods", method_choices(), 1,
+      .texts("methods", discretization_choices(), 1,
              "discrete Lagrangians (5.1) by registry name (conformal_M, ...) or label (M, ...); CSV columns and "
              "summary keys use the label")
       .reals("cloud.center", any_finite(), 4, "centre [x, y, px, py] of every cloud and start of every trajectory")

@@ -11,12 +11,17 @@
 #include <vector>
 
 #include "geomint/analysis/convergence_study.hpp"
+#include "geomint/analysis/phi_study.hpp"
+#include "geomint/core/integrate.hpp"
 #include "geomint/geometry/clouds.hpp"
 #include "geomint/geometry/hull_volume.hpp"
 #include "geomint/geometry/volume_series.hpp"
+#include "geomint/methods/discretizations.hpp"
+#include "geomint/methods/scene_methods.hpp"
 #include "geomint/runner/checkpoint.hpp"
+#include "geomint/runner/experiment.hpp"
+#include "geomint/runner/plan_rates.hpp"
 #include "geomint/systems/nonholonomic_modified_series.hpp"
-#include "measure_cloud.hpp"
 
 namespace geomint::measure_cloud {
 namespace {
@@ -24,8 +29,8 @@ namespace {
 // ---- order of measure preservation: Phi^(ell) in its own mu^(ell)_mod on tiny clouds ----
 
 void check_order_study(const Scene& s) {
-  check_ells(s, "order_study.ells");
-  check_first_step(s, "order_study.h", s.reals("order_study.h"));
+  check_modified_orders(s, "order_study.ells");
+  check_first_conformal_step(s, "order_study.h", s.reals("order_study.h"));
   if (s.real("order_study.t_end") < s.real("ptp_window")) s.reject("order_study.t_end", "must be at least ptp_window");
   check_at_least_one_step(s, "order_study.t_end", s.reals("order_study.h"), "max(order_study.h)");
 }
@@ -75,12 +80,12 @@ void record_per_ell(Context& ctx, const ConvergenceStudy& conv, const std::vecto
 
 void run_order_study(Context& ctx) {
   const Scene& s = ctx.scene;
-  const auto [sys, z0] = setup(s);
+  const auto [sys, z0] = particle_setup(s);
   check_modified_series(ctx, sys);
-  const auto methods = scene_methods(s);
+  const auto methods = scene_discretizations(s);
   put_run_facts(ctx, methods);
   const auto hs = s.reals("order_study.h");
-  const auto es = ells(s, "order_study.ells");
+  const auto es = modified_orders(s, "order_study.ells");
   const double t_end = s.real("order_study.t_end");
   const auto cloud = cloud_around(z0, six_hundred_cell_vertices(), s.real("order_study.radius"));
   std::vector<Task> tasks;
@@ -128,12 +133,11 @@ void run_order_study(Context& ctx) {
   ctx.write("order_study_probe.csv", probe);
   // Points within a factor 2 of the measured round-off noise are left out of the fits.
   const double floor = 2 * noise;
-  put(ctx, "reproduced", "order_study_noise", noise);
-  put(ctx, "reproduced", "order_study_noise_floor", floor);
-  put(ctx, "reproduced", "order_study_h_probe", h_probe);
-  put(ctx, "reproduced", "order_study_h",
-      {{"min", *std::min_element(hs.begin(), hs.end())}, {"max", *std::max_element(hs.begin(), hs.end())}});
-  put(ctx, "reproduced", "order_study_h_count", hs.size());
+  ctx.summary["reproduced"]["order_study_noise"] = noise;
+  ctx.summary["reproduced"]["order_study_noise_floor"] = floor;
+  ctx.summary["reproduced"]["order_study_h_probe"] = h_probe;
+  ctx.summary["reproduced"]["order_study_h"] = {{"min", *std::min_element(hs.begin(), hs.end())}, {"max", *std::max_element(hs.begin(), hs.end())}};
+  ctx.summary["reproduced"]["order_study_h_count"] = hs.size();
 
   // Record: order_study.csv (h, steps, <label>_ell<k>) and the orders <label>_ell<k> fitted over the
   // peak-to-peak volumes above the floor (fewer than 3 such points: no order, null).
@@ -158,7 +162,7 @@ StudyPlan plan_order_study(const Scene& s) {
   const double ells_n = static_cast<double>(s.reals("order_study.ells").size()), h_min = *std::min_element(hs.begin(), hs.end());
   double steps = M * 120 * step_count_within(T, h_min / 2);  // the round-off probes
   for (double h : hs) steps += M * ells_n * 120 * step_count_within(T, h);
-  StudyPlan p = make_plan(steps, 2 * (step_count_within(T, h_min / 2) + 1) * 121 * kPointBytes, plan_rate("cloud order study"), "the snapshots of two runs at once");
+  StudyPlan p = phi_plan(steps, 2 * (step_count_within(T, h_min / 2) + 1) * 121 * kPointBytes, plan_rate("cloud order study"), "the snapshots of two runs at once");
   p.tasks = M * (ells_n * static_cast<double>(hs.size()) + 1);  // (a cloud run each)
   return p;
 }
@@ -170,7 +174,7 @@ Study order_study_study() {
           .about = "order of measure preservation (003 Cor. 4.3)",
           .files = {"order_study.csv", "orders.csv", "order_study_probe.csv"},
           .keys = Schema()
-                      .real("order_study.radius", {.gt = 0.0, .ge = {}, .lt = {}, .le = kMaxRadius},
+                      .real("order_study.radius", {.gt = 0.0, .ge = {}, .lt = {}, .le = kMaxCloudRadius},
                             "radius of its 600-cell clouds (small enough for no hull artefact)")
                       .real("order_study.t_end", positive(), "its end time")
                       .reals("order_study.ells", at_least(0), 1, "its truncation orders ell"),

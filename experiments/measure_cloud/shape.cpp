@@ -12,13 +12,18 @@
 #include <string>
 #include <vector>
 
+#include "geomint/analysis/phi_study.hpp"
+#include "geomint/core/integrate.hpp"
 #include "geomint/geometry/clouds.hpp"
 #include "geomint/geometry/convex_area.hpp"
+#include "geomint/integrators/conformal_variational.hpp"
+#include "geomint/methods/discretizations.hpp"
 #include "geomint/observables/symplecticity.hpp"
-#include "geomint/runner/distributed_map.hpp"
+#include "geomint/runner/experiment.hpp"
+#include "geomint/runner/plan_rates.hpp"
 #include "geomint/sweep/parallel_map.hpp"
+#include "geomint/systems/nonholonomic_particle.hpp"
 #include "geomint/systems/nonholonomic_variational.hpp"
-#include "measure_cloud.hpp"
 
 namespace geomint::measure_cloud {
 namespace {
@@ -37,7 +42,7 @@ void run_symplecticity(Context& ctx, const NonholonomicParticle& sys, const Poin
                        double atol) {
   const Scene& s = ctx.scene;
   const double h = s.real("h");
-  const auto methods = scene_methods(s);
+  const auto methods = scene_discretizations(s);
   put_run_facts(ctx, methods);
   const std::int64_t n = steps_within(t_end, h);
   ctx.progress("Fig. 5.1: symplecticity defect of the flow");
@@ -45,19 +50,8 @@ void run_symplecticity(Context& ctx, const NonholonomicParticle& sys, const Poin
   const auto flows = parallel_map(2, [&](std::size_t k) {
     return variational_flow(sys, z0, k == 0 ? ParticleFlow::conformal : ParticleFlow::hamiltonian, h, n, rtol, atol);
   });
-  const double E = sys.H(as_state(z0a));
-  const auto psi = distributed_map(methods.size(), [&](std::size_t k) {
-    std::vector<double> defect{0.0};
-    Mat<4> J = Mat<4>::Identity();
-    Z z = as_state(z0a);
-    for (std::int64_t j = 0; j < n; ++j) {
-      const Z z1 = conformal_variational_step(methods[k], sys, z, h, E).z;
-      J = psi_step_jacobian(methods[k], sys, z, z1, h, E) * J;
-      defect.push_back(symplecticity_defect<4>(J));
-      z = z1;
-    }
-    return defect;
-  });
+  const double E = sys.H(from_array(z0a));
+  const auto psi = psi_symplecticity_defects(methods, sys, z0a, h, E, n);
   std::vector<std::string> cols{"t", "conformal_flow", "hamiltonian_flow", "measure_identity_err"};
   for (Discretization d : methods) cols.push_back(std::string("psi_") + discretization_name(d));
   Csv csv(cols);
@@ -111,18 +105,18 @@ void put_shear(Context& ctx, const std::vector<std::vector<Point4>>& paths, doub
     a.push_back({z[0], z[2]}), b.push_back({z[1], z[3]});
   }
   const double after = convex_area(a) + convex_area(b), ball = 2 * std::numbers::pi * radius * radius;
-  put(ctx, "reproduced", "shape_area_sum_after_shear", after);
-  put(ctx, "reproduced", "shape_area_sum_round_ball", ball);
+  ctx.summary["reproduced"]["shape_area_sum_after_shear"] = after;
+  ctx.summary["reproduced"]["shape_area_sum_round_ball"] = ball;
   const double change = after / sum0 - 1;
   const double hull_error = std::abs(sum0 / ball - 1) + std::abs(after / (std::numbers::sqrt2 * ball) - 1);
-  put(ctx, "reproduced", "shape_area_sum_shear_change", change);
-  put(ctx, "reproduced", "shape_area_sum_hull_error", hull_error);
-  put(ctx, "reproduced", "shape_area_sum_shear_change_over_hull_error", hull_error > 0 ? Value(std::abs(change) / hull_error) : Value());
+  ctx.summary["reproduced"]["shape_area_sum_shear_change"] = change;
+  ctx.summary["reproduced"]["shape_area_sum_hull_error"] = hull_error;
+  ctx.summary["reproduced"]["shape_area_sum_shear_change_over_hull_error"] = hull_error > 0 ? Value(std::abs(change) / hull_error) : Value();
 }
 
 void run_shape(Context& ctx) {
   const Scene& s = ctx.scene;
-  const auto [sys, z0] = setup(s);
+  const auto [sys, z0] = particle_setup(s);
   const auto [rtol, atol] = reference_tolerances(s);
   ctx.progress("Fig. 5.1: sphere cloud, reference flow");
   put_run_facts(ctx, {});
@@ -132,7 +126,7 @@ void run_shape(Context& ctx) {
   const auto cloud = scaled_cloud(unit, z0, s.real("shape.radius"));
   const double dt = s.real("shape.snapshot_dt");
   const std::int64_t snaps = s.integer("shape.snapshots");
-  const auto paths = distributed_map(cloud.size(), [&](std::size_t i) { return reference_samples(sys, cloud[i], dt, snaps, rtol, atol); });
+  const auto paths = reference_paths(sys, cloud, dt, snaps, rtol, atol);
   Csv pts({"t", "x", "y", "px", "py"}), areas({"t", "area_x_px", "area_y_py", "area_sum"});
   std::vector<double> sums;
   for (std::int64_t j = 0; j <= snaps; ++j) {
@@ -149,16 +143,16 @@ void run_shape(Context& ctx) {
   ctx.write("shape.csv", pts);
   ctx.write("shape_areas.csv", areas);
   put_shear(ctx, paths, sums.front(), s.real("shape.radius"));
-  put(ctx, "reproduced", "shape_area_sum", sums);  // a description of the figure, not an invariant
-  put(ctx, "reproduced", "shape_area_sum_last", sums.back());
-  put(ctx, "reproduced", "shape_t_end", static_cast<double>(snaps) * dt);  // the time of the last snapshot
+  ctx.summary["reproduced"]["shape_area_sum"] = sums;  // a description of the figure, not an invariant
+  ctx.summary["reproduced"]["shape_area_sum_last"] = sums.back();
+  ctx.summary["reproduced"]["shape_t_end"] = static_cast<double>(snaps) * dt;  // the time of the last snapshot
   run_symplecticity(ctx, sys, z0, static_cast<double>(snaps) * dt, rtol, atol);
 }
 
 StudyPlan plan_shape(const Scene& s) {
   const double snaps = static_cast<double>(s.integer("shape.snapshots")), points = static_cast<double>(s.integer("shape.points"));
   const double n = step_count_within(snaps * s.real("shape.snapshot_dt"), s.real("h")), M = static_cast<double>(s.texts("methods").size());
-  return make_plan(M * n + points * snaps + 2 * n, points * (snaps + 1) * kPointBytes * 2 + (2 + M) * (n + 1) * 20 * 8, plan_rate("cloud shape"));
+  return phi_plan(M * n + points * snaps + 2 * n, points * (snaps + 1) * kPointBytes * 2 + (2 + M) * (n + 1) * 20 * 8, plan_rate("cloud shape"));
 }
 
 }  // namespace
@@ -171,13 +165,13 @@ Study shape_study() {
           .keys = Schema()
                       .integer("seed", at_least(0), "seed of the random cloud of Fig. 5.1")
                       .integer("shape.points", at_least(5), "points on the 3-sphere of Fig. 5.1 (003: 5000)")
-                      .real("shape.radius", {.gt = 0.0, .ge = {}, .lt = {}, .le = kMaxRadius},
+                      .real("shape.radius", {.gt = 0.0, .ge = {}, .lt = {}, .le = kMaxCloudRadius},
                             "radius of that sphere (003: 0.3)")
                       .real("shape.snapshot_dt", positive(), "time between snapshots (003: 2.75)")
                       .integer("shape.snapshots", at_least(1), "snapshots after t = 0 (003: 5)"),
           .reads = {"potential", "cloud.center", "h", "methods", "reference"},
           .run = run_shape,
-          .validate = [](const Scene& s) { check_first_step(s, "h", {s.real("h")}); },
+          .validate = [](const Scene& s) { check_first_conformal_step(s, "h", {s.real("h")}); },
           .plan = plan_shape};
 }
 

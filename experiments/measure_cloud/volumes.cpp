@@ -10,31 +10,27 @@
 #include <string>
 #include <vector>
 
+#include "geomint/analysis/phi_study.hpp"
+#include "geomint/core/integrate.hpp"
 #include "geomint/geometry/clouds.hpp"
 #include "geomint/geometry/hull_volume.hpp"
 #include "geomint/geometry/volume_series.hpp"
-#include "geomint/runner/checkpoint.hpp"
-#include "geomint/runner/distributed_map.hpp"
+#include "geomint/methods/discretizations.hpp"
+#include "geomint/methods/scene_methods.hpp"
+#include "geomint/runner/experiment.hpp"
 #include "geomint/runner/fits.hpp"
+#include "geomint/runner/plan_rates.hpp"
 #include "geomint/systems/nonholonomic_modified_series.hpp"
-#include "measure_cloud.hpp"
+#include "geomint/systems/nonholonomic_particle.hpp"
 
 namespace geomint::measure_cloud {
 namespace {
 
 void check_volumes(const Scene& s) {
-  check_ells(s, "cloud.ells");
-  check_first_step(s, "h", {s.real("h")});
+  check_modified_orders(s, "cloud.ells");
+  check_first_conformal_step(s, "h", {s.real("h")});
   check_at_least_one_step(s, "t_end", {s.real("h")}, "h");
   if (s.real("ptp_window") > s.real("t_end")) s.reject("ptp_window", "must not exceed t_end");
-}
-
-// hull_volumes of each snapshot of a run, its hulls checked against that of the first snapshot.
-std::vector<std::vector<double>> snapshot_volumes(const CloudRun& run, const ModifiedSeries& ms, const std::vector<int>& measures) {
-  const std::vector<HullFacet> first = cloud_hull(run.snapshots.front());
-  return distributed_map(run.snapshots.size(), [&](std::size_t j) {
-    return hull_volumes(run.snapshots[j], cloud_hull(run.snapshots[j], first), ms, measures);
-  });
 }
 
 std::string measure_name(int m) { return m == 0 ? "mu" : "mu" + std::to_string(m); }
@@ -45,29 +41,13 @@ std::string measure_name(int m) { return m == 0 ? "mu" : "mu" + std::to_string(m
 const std::vector<std::string> kReferencePathKeys = {"potential", "cloud.center", "cloud.radius", "h",
                                                      "t_end",     "ptp_window",   "reference"};
 
-// Hull volumes in mu of the images of `cloud` under the reference flow at t_j = j h, j = 0..n; the
-// paths kept in the checkpoint `name`.
-std::vector<double> reference_volumes(Context& ctx, const std::string& name, const PhiStudy& p,
-                                      const std::vector<Point4>& cloud, std::int64_t n) {
-  const auto paths = checkpointed_map<std::vector<Point4>>(
-      ctx, {name, kReferencePathKeys}, cloud.size(),
-      [&](std::size_t i) { return reference_samples(p.sys, cloud[i], p.h, n, p.rtol, p.atol); });
-  std::vector<Trajectory> per_point;
-  for (const auto& z : paths) per_point.push_back(Trajectory{z, 0});
-  const CloudRun ref = transpose(per_point);
-  const ModifiedSeries plain(Discretization::M, p.sys, p.h);  // only its ell = 0 density 1/N is used
-  std::vector<double> v;
-  for (const auto& per_step : snapshot_volumes(ref, plain, {0})) v.push_back(per_step[0]);
-  return v;
-}
-
 // The hull volumes of the cloud under Phi^(ell) of each method, in every measure of `measures`
 // ([method][measure][step]), written beside the reference's to the CSV `file` (t, reference_mu,
 // <method>_<measure>...).
 using Volumes = std::vector<std::vector<std::vector<double>>>;
 Volumes phi_volumes(Context& ctx, const PhiStudy& p, const std::vector<Point4>& cloud, int ell, std::int64_t n,
                     const std::vector<int>& measures, const std::vector<double>& ref_volumes, const std::string& file) {
-  const auto runs = distributed_map(p.methods.size(), [&](std::size_t k) { return cloud_phi(p.methods[k], p.sys, p.h, ell, cloud, n); });
+  const auto runs = cloud_phi_runs(p, cloud, ell, n);
   std::vector<std::string> cols{"t", "reference_mu"};
   for (Discretization d : p.methods)
     for (int m : measures) cols.push_back(std::string(discretization_name(d)) + "_" + measure_name(m));
@@ -104,11 +84,11 @@ void cloud_volumes(Context& ctx, const PhiStudy& p, const std::vector<Point4>& c
   const std::int64_t n = steps_within(s.real("t_end"), p.h);
   const std::size_t window = static_cast<std::size_t>(steps_within(s.real("ptp_window"), p.h)) + 1;
   const auto put_here = [&](const std::string& key, Value value) {
-    if (nest.empty()) put(ctx, "reproduced", key, std::move(value));
+    if (nest.empty()) ctx.summary["reproduced"][key] = std::move(value);
     else ctx.summary["reproduced"][nest][key] = std::move(value);
   };
   ctx.progress("Figs 5.2, 5.4: reference, " + std::to_string(cloud.size()) + " points");
-  const std::vector<double> ref_volumes = reference_volumes(ctx, nest.empty() ? "volumes.reference" : "volumes.reference_" + nest, p, cloud, n);
+  const std::vector<double> ref_volumes = reference_volumes(ctx, nest.empty() ? "volumes.reference" : "volumes.reference_" + nest, kReferencePathKeys, p, cloud, n);
   const std::vector<double> ref_relative = relative_volumes(ref_volumes, ref_volumes.size());
   put_here("cloud_points", cloud.size());
   put_here("ptp_reference_mu", relative_peak_to_peak(ref_volumes, window));
@@ -122,11 +102,11 @@ void cloud_volumes(Context& ctx, const PhiStudy& p, const std::vector<Point4>& c
   put_here("reference_rel_volume_at_window", ref_relative[window - 1]);
   put_here("reference_rel_volume_at_t_end", ref_relative.back());
 
-  for (int ell : ells(s, "cloud.ells")) {
+  for (int ell : modified_orders(s, "cloud.ells")) {
     ctx.progress("Figs 5.2, 5.4: Phi^(" + std::to_string(ell) + "), " + std::to_string(cloud.size()) + " points");
     const std::string file = prefix + "phi" + std::to_string(ell) + ".csv";
     const Volumes vols = phi_volumes(ctx, p, cloud, ell, n, all_measures, ref_volumes, file);
-    if (ell == ells(s, "cloud.ells").front()) record_ptp("ptp_reference_mu", file, "reference_mu", "relative_ptp");
+    if (ell == modified_orders(s, "cloud.ells").front()) record_ptp("ptp_reference_mu", file, "reference_mu", "relative_ptp");
     const std::string phi = "ptp_phi" + std::to_string(ell) + "_";
     const auto column = [&](std::size_t k, int m) { return std::string(discretization_name(p.methods[k])) + "_" + measure_name(m); };
     for (std::size_t m = 0; m < all_measures.size(); ++m) {
@@ -176,18 +156,17 @@ void run_volumes(Context& ctx) {
   const auto cloud = cloud_around(p.z0, six_hundred_cell_vertices(), r);
   cloud_volumes(ctx, p, cloud, "volumes_", "");
   const auto facets0 = hull_facets(cloud);
-  put(ctx, "reproduced", "hull_volume_initial_over_r4",
-      hull_integral(cloud, facets0, cloud.front(), [](const Point4&) { return 1.0; }) / std::pow(r, 4));
-  put(ctx, "reproduced", "hull_volume_exact_over_r4", six_hundred_cell_volume(1.0));
+  ctx.summary["reproduced"]["hull_volume_initial_over_r4"] =
+      hull_integral(cloud, facets0, cloud.front(), [](const Point4&) { return 1.0; }) / std::pow(r, 4);
+  ctx.summary["reproduced"]["hull_volume_exact_over_r4"] = six_hundred_cell_volume(1.0);
   const auto small = cloud_around(p.z0, six_hundred_cell_vertices(), artefact_radius_fraction * r);
-  const std::vector<double> small_volumes = reference_volumes(ctx, "volumes.reference_small", p, small, steps_within(s.real("ptp_window"), p.h));
+  const std::vector<double> small_volumes = reference_volumes(ctx, "volumes.reference_small", kReferencePathKeys, p, small, steps_within(s.real("ptp_window"), p.h));
   const double ptp_small = relative_peak_to_peak(small_volumes, small_volumes.size());
-  put(ctx, "reproduced", "artefact_radius_fraction", artefact_radius_fraction);
-  put(ctx, "reproduced", "ptp_reference_mu_small_radius", ptp_small);
+  ctx.summary["reproduced"]["artefact_radius_fraction"] = artefact_radius_fraction;
+  ctx.summary["reproduced"]["ptp_reference_mu_small_radius"] = ptp_small;
   record_unfittable(ctx.summary, "reproduced.ptp_reference_mu_small_radius",
                     "the reference volumes of the small cloud are not written to a CSV (only their peak-to-peak is reported)");
-  put(ctx, "reproduced", "ptp_reference_mu_ratio_to_small_radius",
-      ctx.summary.at("reproduced").at("ptp_reference_mu").number() / ptp_small);
+  ctx.summary["reproduced"]["ptp_reference_mu_ratio_to_small_radius"] = ctx.summary.at("reproduced").at("ptp_reference_mu").number() / ptp_small;
   if (s.boolean("cloud.authors_cloud"))  // the cloud of the published figures
     cloud_volumes(ctx, p, cloud_around(p.z0, authors_six_hundred_cell_vertices(), r), "volumes_authors_", "authors_cloud");
 }
@@ -196,7 +175,7 @@ StudyPlan plan_volumes(const Scene& s) {
   const double n = step_count_within(s.real("t_end"), s.real("h")), M = static_cast<double>(s.texts("methods").size());
   const double runs = M * static_cast<double>(s.reals("cloud.ells").size()) + 1;  // + the reference
   const double points = 2 * 121.0;  // the full cloud and the authors' (at most)
-  return make_plan(runs * points * n, runs * (n + 1) * 121 * kPointBytes, plan_rate("cloud volumes"));
+  return phi_plan(runs * points * n, runs * (n + 1) * 121 * kPointBytes, plan_rate("cloud volumes"));
 }
 
 }  // namespace
@@ -208,7 +187,7 @@ Study volumes_study() {
           .files = {"volumes_phi*.csv", "volumes_authors_phi*.csv"},
           .keys = Schema()
                       .real("t_end", positive(), "end time of the cloud runs (003 Figs 5.2, 5.4: 30)")
-                      .real("cloud.radius", {.gt = 0.0, .ge = {}, .lt = {}, .le = kMaxRadius},
+                      .real("cloud.radius", {.gt = 0.0, .ge = {}, .lt = {}, .le = kMaxCloudRadius},
                             "circumradius of the 600-cell cloud (003: 0.01)")
                       .boolean("cloud.authors_cloud",
                                "also the cloud of the code of 003 (it drops the vertex (0, 0, r, 0): 119 vertices + "

@@ -2,55 +2,36 @@
 // (in SIMD lanes, bit for bit the scalar method; checkpointed): the mean and standard deviation of the error of
 // the modified energy E of (3.3) and (4.2), its random walk (sigma^2 against t) and the outliers. Its trajectory
 // with the largest error goes to Fig. 5, the Poincare cuts and growth episodes (study poincare, poincare.cpp),
-// when that study runs in the same process; alone, it integrates the ensemble here too (integrate_ensemble).
+// when that study runs in the same process; alone, that study integrates the ensemble too
+// (sweep/henon_heiles_ensemble.hpp: the ensemble, its starts, checkpoint and the hand-over).
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdint>
-#include <span>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "geomint/core/integrate.hpp"
-#include "geomint/observables/ensemble_statistics.hpp"
 #include "geomint/integrators/takahashi_imada_systems.hpp"
-#include "geomint/runner/checkpoint.hpp"
+#include "geomint/methods/force_evals.hpp"
+#include "geomint/observables/ensemble_statistics.hpp"
+#include "geomint/observables/error_norms.hpp"
+#include "geomint/runner/experiment.hpp"
 #include "geomint/runner/fits.hpp"
+#include "geomint/runner/plan_rates.hpp"
+#include "geomint/runner/summary.hpp"
 #include "geomint/sweep/ensemble_kernels.hpp"
-#include "ti_drift.hpp"
+#include "geomint/sweep/henon_heiles_ensemble.hpp"
 
 namespace geomint::ti_drift {
 namespace {
-
-// max_k |e_k| of a trajectory's recorded error (Fig. 4's outliers; its largest error goes to Fig. 5).
-double max_abs(const std::vector<double>& e) {
-  double mx = 0;
-  for (double x : e) mx = std::max(mx, std::abs(x));
-  return mx;
-}
-
-// The error of E along the trajectories of batch b (sweep/ensemble_kernels.hpp: in lanes, bit for bit the scalar
-// method) at its ns output times, every `every` of the n steps.
-template <class HH>
-std::vector<std::vector<double>> batch_errors(const HH& hhk, const std::vector<Z2>& starts, std::size_t b, double h,
-                                              std::int64_t n, std::int64_t every) {
-  const LaneBatch batch = lane_batch(b, starts.size());
-  std::vector<std::vector<double>> e(batch.count);
-  std::vector<double> E0;
-  for (std::size_t i = 0; i < batch.count; ++i) E0.push_back(simplified_ti_modified_energy(hhk, starts[batch.first + i], h));
-  simplified_ti_lanes(hhk, simplified_ti_lanes_kernels<HH>().front().steps,
-                      std::span<const Z2>(starts).subspan(batch.first, batch.count), h, n, every,
-                      [&](int i, std::int64_t, const Z2& z) { e[i].push_back(simplified_ti_modified_energy(hhk, z, h) - E0[i]); });
-  return e;
-}
 
 // Fig. 4: the mean and standard deviation over the ensemble at each output time (fig4_stats.csv).
 struct Stats {
   std::vector<double> ts, mus, sigmas;
 };
 
-Stats write_stats(Context& ctx, const Run& run, Value& reproduced) {
+Stats write_stats(Context& ctx, const HenonHeilesEnsemble& run, Value& reproduced) {
   const auto& series = run.series;
   const std::size_t ns = run.ns;
   const double t_end = run.t_end;
@@ -64,7 +45,7 @@ Stats write_stats(Context& ctx, const Run& run, Value& reproduced) {
   }
   ctx.write("fig4_stats.csv", f4s);
   reproduced["hh5_mu_final"] = m.mean.back(), reproduced["hh5_sigma_final"] = m.sd.back();
-  const double t_fit = fit_t_min(ctx.scene, "ensemble", t_end);  // past the bounded part
+  const double t_fit = fit_window_start(ctx.scene, "ensemble", t_end);  // past the bounded part
   reproduced["hh5_sigma_exponent"] = power_law_exponent(ts, m.sd, t_fit);
   // its standard error over the ensemble (bootstrap over the trajectories: published.toml's tolerance)
   reproduced["hh5_sigma_exponent_stderr"] = bootstrap_exponent_stderr(
@@ -79,7 +60,7 @@ struct Outliers {
   std::size_t stride;  // of the thinned times
 };
 
-Outliers write_trajectories(Context& ctx, const Run& run, Value& reproduced) {
+Outliers write_trajectories(Context& ctx, const HenonHeilesEnsemble& run, Value& reproduced) {
   const Scene& s = ctx.scene;
   const auto& series = run.series;
   const std::size_t M = run.M, ns = run.ns;
@@ -89,7 +70,7 @@ Outliers write_trajectories(Context& ctx, const Run& run, Value& reproduced) {
   std::vector<std::size_t> kept;
   const std::size_t stride = std::max<std::size_t>(1, ns / 200);
   for (std::size_t i = 0; i < M; ++i) {
-    const bool out = max_abs(series[i]) > s.real("ensemble.outlier");
+    const bool out = largest_abs(series[i]) > s.real("ensemble.outlier");
     if (out) outliers.push_back(i);
     else kept.push_back(i);
     for (std::size_t k = 0; k < ns; k += stride)
@@ -101,7 +82,7 @@ Outliers write_trajectories(Context& ctx, const Run& run, Value& reproduced) {
 }
 
 // The statistics without the outliers, at the times of fig4_trajectories.csv; p1: of the unperturbed start.
-Value ensemble_summary(const Context& ctx, double p1, const Run& run, const Stats& st, const Outliers& out) {
+Value ensemble_summary(const Context& ctx, double p1, const HenonHeilesEnsemble& run, const Stats& st, const Outliers& out) {
   const Scene& s = ctx.scene;
   const std::vector<double>& ts = st.ts;
   const std::vector<double>& mus = st.mus;
@@ -112,7 +93,7 @@ Value ensemble_summary(const Context& ctx, double p1, const Run& run, const Stat
   const auto& series = run.series;
   const std::size_t M = run.M, ns = run.ns;
   const double t_end = run.t_end;
-  const double t_fit = fit_t_min(s, "ensemble", t_end);
+  const double t_fit = fit_window_start(s, "ensemble", t_end);
   const std::int64_t n4 = run.n4;
   const auto time_of = [&](std::size_t k) { return run.time_of(k); };
   Value ensemble = {{"p1", p1},
@@ -162,9 +143,9 @@ Value ensemble_summary(const Context& ctx, double p1, const Run& run, const Stat
 }
 
 void run_ensemble(Context& ctx, LargestError& largest) {
-  put_trajectory_method(ctx, "ensemble");
+  put_simplified_ti_method(ctx.summary, "ensemble");
   const Scene& s = ctx.scene;
-  const Run run = integrate_ensemble(ctx);
+  const HenonHeilesEnsemble run = integrate_ensemble(ctx);
   Value reproduced;
   const Stats stats = write_stats(ctx, run, reproduced);
   const Outliers out = write_trajectories(ctx, run, reproduced);
@@ -175,7 +156,7 @@ void run_ensemble(Context& ctx, LargestError& largest) {
   merge(ctx.summary, "reproduced", reproduced);
   ctx.summary["ensemble"] = ensemble;
   largest = trajectory_of(run, largest_error(run));  // (Fig. 5: the poincare study of this process)
-  const double t_fit = fit_t_min(ctx.scene, "ensemble", run.t_end), t_last = stats.ts.back();
+  const double t_fit = fit_window_start(ctx.scene, "ensemble", run.t_end), t_last = stats.ts.back();
   record_fit(ctx.summary, {"reproduced.hh5_sigma_exponent", {"fig4_stats.csv", "t", "sigma"}, "power_law", t_fit, t_last, "ensemble.fit_from"});
   record_fit(ctx.summary, {"ensemble.sigma_exponent_from_hundredth", {"fig4_stats.csv", "t", "sigma"}, "power_law", t_fit / 10,
                            t_last, "ensemble.fit_from", 0.1});
@@ -197,54 +178,14 @@ void run_ensemble(Context& ctx, LargestError& largest) {
 StudyPlan plan_ensemble(const Scene& s) {
   const double n = s.real("t_end") / s.real("h"), M = static_cast<double>(s.integer("ensemble.size"));
   const double rows = kept_samples(n, static_cast<double>(s.integer("samples")));
+  const PlanRate& lanes = plan_rate("henon-heiles lanes");
   // M trajectories; the series of all M (and the copy of the one handed to Fig. 5), and the CSVs
   return {M * n, M * n * static_cast<double>(evals_per_step("simplified_takahashi_imada")),
-          (M + 1) * rows * 8 + M * std::min(rows, 201.0) * 60, hh_lanes_rate().ns_per_step, hh_lanes_rate().note,
+          (M + 1) * rows * 8 + M * std::min(rows, 201.0) * 60, lanes.ns_per_step, lanes.note,
           static_cast<double>(lane_batches(static_cast<std::size_t>(M)))};  // (tasks: batches of lanes)
 }
 
 }  // namespace
-
-Run integrate_ensemble(Context& ctx) {
-  const Scene& s = ctx.scene;
-  ctx.progress("Fig. 4: ensemble");
-  const double h = s.real("h"), t_end = s.real("t_end");
-  const std::int64_t samples = s.integer("samples");
-  const auto M = static_cast<std::size_t>(s.integer("ensemble.size"));
-  const std::int64_t n4 = steps_to(t_end, h), every4 = std::max<std::int64_t>(1, n4 / samples);
-  const auto time_of = [&](std::size_t k) { return static_cast<double>(k) * static_cast<double>(every4) * h; };
-  std::vector<Z2> starts(M);
-  with_ensemble_system(s, [&](const auto& hhk) {
-    for (std::size_t i = 0; i < M; ++i) starts[i] = ensemble_start(s, hhk, i);
-  });
-  const auto t0 = std::chrono::steady_clock::now();  // (on --resume: the part run since)
-  auto series = concatenate(checkpointed_map<std::vector<std::vector<double>>>(
-      ctx, {"ensemble", kEnsembleKeys}, lane_batches(M), [&](std::size_t b) {
-        return with_ensemble_system(s, [&](const auto& hhk) { return batch_errors(hhk, starts, b, h, n4, every4); });
-      }));
-  const double wall4 = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  for (std::size_t i = 0; i < M; ++i)
-    for (std::size_t k = 0; k < series[i].size(); ++k)
-      if (!std::isfinite(series[i][k]))
-        throw NumericalFailure("simplified_takahashi_imada: E of trajectory " + std::to_string(i) +
-                               " is not finite at step " + std::to_string(static_cast<std::int64_t>(k) * every4) +
-                               ", t = " + format_double(time_of(k)));
-  const std::size_t ns = series[0].size();
-  return {h, t_end, M, n4, every4, std::move(starts), std::move(series), ns, wall4};
-}
-
-void check_ensemble_run(const Scene& s) {
-  with_ensemble_system(s, [&](const auto& hh) { check_hh_starts(s, "hh3", hh, s.real("ensemble.perturbation"), true); });
-  if (s.real("t_end") / s.real("h") < 2) s.reject("t_end", "must be at least two steps h");
-}
-
-std::size_t largest_error(const Run& run) {
-  std::size_t worst_i = 0;
-  double worst_e = 0;
-  for (std::size_t i = 0; i < run.M; ++i)
-    if (const double mx = max_abs(run.series[i]); mx > worst_e) worst_e = mx, worst_i = i;
-  return worst_i;
-}
 
 Study ensemble_study(LargestError& largest) {
   std::vector<std::string> reads = kEnsembleKeys;  // (main.cpp's shared keys: the poincare study reads them too)

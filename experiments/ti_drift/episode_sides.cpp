@@ -9,12 +9,19 @@
 #include <vector>
 
 #include "geomint/analysis/episode_cuts.hpp"
+#include "geomint/core/integrate.hpp"
+#include "geomint/methods/force_evals.hpp"
 #include "geomint/runner/checkpoint.hpp"
+#include "geomint/runner/experiment.hpp"
+#include "geomint/runner/plan_rates.hpp"
+#include "geomint/runner/summary.hpp"
 #include "geomint/sweep/ensemble_kernels.hpp"
-#include "ti_drift.hpp"
+#include "geomint/sweep/henon_heiles_ensemble.hpp"
 
 namespace geomint::ti_drift {
 namespace {
+
+using Z2 = PhaseState<2>;
 
 constexpr std::size_t kMinClaimSamples = 20;  // the share of a claim from at least this many samples
 
@@ -22,20 +29,23 @@ constexpr std::size_t kMinClaimSamples = 20;  // the share of a claim from at le
 // ensemble's streams (its own first, integrated again; analysis/episode_cuts.hpp), one independent sample each. The
 // claim holds for a sample where most of its cuts lie in p2 < 0; its share over the samples (from kMinClaimSamples on)
 // with the binomial standard error, against a coin flip (fig5_starts.csv, summary episode_sides: runner/summary.hpp).
-template <class HH>
-Value write_starts(Context& ctx, const HH& hhk) {
+Value write_starts(Context& ctx) {
   const Scene& s = ctx.scene;
   const auto N = static_cast<std::size_t>(s.integer("episode_sides.starts"));
   ctx.progress("Fig. 5: growth episodes of " + std::to_string(N) + " starts");
   const double h = s.real("h");
   const std::int64_t n = steps_to(s.real("t_end"), h), every = std::max<std::int64_t>(1, n / s.integer("samples"));
-  const EpisodeRule rule = episode_rule(s, static_cast<double>(every) * h);
+  const EpisodeRule rule = episode_rule(s, "ensemble", static_cast<double>(every) * h);
   std::vector<Z2> starts(N);
-  for (std::size_t i = 0; i < N; ++i) starts[i] = ensemble_start(s, hhk, i);
+  with_ensemble_system(s, [&](const auto& hhk) {
+    for (std::size_t i = 0; i < N; ++i) starts[i] = ensemble_start(s, hhk, i);
+  });
   const std::vector<EpisodeSample> found = concatenate(checkpointed_map<std::vector<EpisodeSample>>(
       ctx, {"episode_sides.starts"}, lane_batches(N), [&](std::size_t b) {  // (the keys: all the study reads)
         const LaneBatch batch = lane_batch(b, N);
-        return first_growth_episode_cuts(hhk, std::span<const Z2>(starts).subspan(batch.first, batch.count), h, n, every, rule);
+        return with_ensemble_system(s, [&](const auto& hhk) {
+          return first_growth_episode_cuts(hhk, std::span<const Z2>(starts).subspan(batch.first, batch.count), h, n, every, rule);
+        });
       }));
   Csv f5s({"start", "t_start", "t_end", "cuts", "share_p2_negative", "mean_p2"});
   std::vector<double> share, one_side;
@@ -54,15 +64,14 @@ Value write_starts(Context& ctx, const HH& hhk) {
   return out;
 }
 
-void run_episode_sides(Context& ctx) {
-  with_ensemble_system(ctx.scene, [&](const auto& hhk) { ctx.summary["episode_sides"] = write_starts(ctx, hhk); });
-}
+void run_episode_sides(Context& ctx) { ctx.summary["episode_sides"] = write_starts(ctx); }
 
 // The episode_sides.starts starts in lanes (their episodes' few steps cut again by the scalar method left out).
 StudyPlan plan_episode_sides(const Scene& s) {
   const double n = s.real("t_end") / s.real("h"), N = static_cast<double>(s.integer("episode_sides.starts"));
   const double evals = static_cast<double>(evals_per_step("simplified_takahashi_imada"));
-  return {N * n, N * n * evals, N * 64, hh_lanes_rate().ns_per_step, "the starts in lanes; " + hh_lanes_rate().note,
+  const PlanRate& lanes = plan_rate("henon-heiles lanes");
+  return {N * n, N * n * evals, N * 64, lanes.ns_per_step, "the starts in lanes; " + lanes.note,
           static_cast<double>(lane_batches(static_cast<std::size_t>(N)))};
 }
 
@@ -83,7 +92,7 @@ Study episode_sides_study() {
                                    "the Fig. 4 ensemble's streams (its own first), the side of p2 = 0 its cuts lie on"),
           .reads = reads,
           .run = run_episode_sides,
-          .validate = [](const Scene& s) { check_ensemble_run(s), check_episode_rule(s); },
+          .validate = [](const Scene& s) { check_ensemble_run(s), check_episode_rule(s, "ensemble", "t_end"); },
           .plan = plan_episode_sides};
 }
 

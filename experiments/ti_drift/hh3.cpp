@@ -8,14 +8,20 @@
 
 #include "geomint/core/integrate.hpp"
 #include "geomint/integrators/takahashi_imada_systems.hpp"
+#include "geomint/methods/force_evals.hpp"
+#include "geomint/observables/linear_fit.hpp"
+#include "geomint/runner/experiment.hpp"
 #include "geomint/runner/fits.hpp"
-#include "ti_drift.hpp"
+#include "geomint/runner/plan_rates.hpp"
+#include "geomint/systems/henon_heiles.hpp"
 
 namespace geomint::ti_drift {
 namespace {
 
+using Z2 = PhaseState<2>;
+
 void run_hh3(Context& ctx) {
-  put_trajectory_method(ctx, "hh3");
+  put_simplified_ti_method(ctx.summary, "hh3");
   const Scene& s = ctx.scene;
   ctx.progress("Fig. 3: Henon-Heiles k = 3");
   const double h = s.real("h");
@@ -38,7 +44,7 @@ void run_hh3(Context& ctx) {
     worst_H = std::max(worst_H, std::abs(hh.H(z) - hh.H(start)));
   });
   ctx.write("fig3_hh3.csv", f3);
-  const double drift = slope(ts, es);
+  const double drift = linear_fit(ts, es).slope;
   record_fit(ctx.summary, {"reproduced.hh3_drift_slope", {"fig3_hh3.csv", "t", "E_err"}, "slope", 0, ts.back()});
   record_fit(ctx.summary, {"hh3.E_err_peak_to_peak", {"fig3_hh3.csv", "t", "E_err"}, "ptp", 0, ts.back()});
   merge(ctx.summary, "reproduced", {{"hh3_drift_slope", drift}, {"hh3_max_E_err", worst}});
@@ -53,14 +59,15 @@ void run_hh3(Context& ctx) {
 }
 
 void check_hh3(const Scene& s) {
-  check_hh_starts(s, "hh3", HenonHeiles{{}, 3}, 0.0, true);
+  check_henon_heiles_starts(s, "hh3", HenonHeiles{{}, 3}, 0.0, true);
   if (s.real("hh3.t_end") / s.real("h") < 2) s.reject("hh3.t_end", "must be at least two steps h");
 }
 
 StudyPlan plan_hh3(const Scene& s) {
   const double n = s.real("hh3.t_end") / s.real("h");
+  const PlanRate& rate = plan_rate("henon-heiles splitting");
   return {n, n * static_cast<double>(evals_per_step("simplified_takahashi_imada")),
-          kept_samples(n, static_cast<double>(s.integer("samples"))) * (2 * 8 + 80), hh_rate().ns_per_step, hh_rate().note};
+          kept_samples(n, static_cast<double>(s.integer("samples"))) * (2 * 8 + 80), rate.ns_per_step, rate.note};
 }
 
 }  // namespace

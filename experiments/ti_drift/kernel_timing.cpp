@@ -7,13 +7,17 @@
 #include <vector>
 
 #include "geomint/methods/by_name.hpp"
+#include "geomint/methods/force_evals.hpp"
 #include "geomint/methods/registry.hpp"
-#include "geomint/methods/scene_methods.hpp"
+#include "geomint/runner/experiment.hpp"
+#include "geomint/runner/plan_rates.hpp"
 #include "geomint/runner/timing.hpp"
 #include "geomint/runner/timing_report.hpp"
 #include "geomint/sweep/ensemble_kernels.hpp"
+#include "geomint/sweep/henon_heiles_ensemble.hpp"
 #include "geomint/sweep/lanes_timing.hpp"
-#include "ti_drift.hpp"
+#include "geomint/sweep/lennard_jones_ensemble.hpp"
+#include "geomint/systems/lennard_jones.hpp"
 
 namespace geomint::ti_drift {
 namespace {
@@ -22,7 +26,7 @@ template <class HH>
 void timing_with(Context& ctx, const HH& hhk) {
   const Scene& s = ctx.scene;
   ctx.progress("cost: ns per step");
-  const Z2 z = ensemble_start(s, hhk, 0);
+  const PhaseState<2> z = ensemble_start(s, hhk, 0);
   const double h = s.real("h");
   const std::int64_t n = s.integer("timing.steps");
   const int repeats = static_cast<int>(s.integer("timing.repeats"));
@@ -50,12 +54,12 @@ void timing_with(Context& ctx, const HH& hhk) {
                   "every call inlined; fig4_wall_s, fig6_wall_s: the ensembles on --threads threads, one run"}});
   // The ensembles of Figs 4 and 6 in SIMD lanes against the scalar method: their first kEnsembleLanes starts.
   const std::int64_t n_lj = s.integer("timing.lj_steps");
-  std::vector<Z2> hh_starts;
-  std::vector<Z18> lj_starts;
-  for (std::size_t i = 0; i < kEnsembleLanes; ++i) hh_starts.push_back(ensemble_start(s, hhk, i)), lj_starts.push_back(lj_start_of(s, i));
+  std::vector<PhaseState<2>> hh_starts;
+  std::vector<PhaseState<18>> lj_starts;
+  for (std::size_t i = 0; i < kEnsembleLanes; ++i) hh_starts.push_back(ensemble_start(s, hhk, i)), lj_starts.push_back(lennard_jones_start(s, i));
   merge(ctx.summary, "timing",
       {{"lanes", {{"fig4", time_lanes(hhk, hh_starts, h, n, repeats).summary(kEnsembleLanes, n)},
-                  {"fig6", time_lanes(LJ{}, lj_starts, s.real("lj.h"), n_lj, repeats).summary(kEnsembleLanes, n_lj)},
+                  {"fig6", time_lanes(LennardJones<9>{}, lj_starts, s.real("lj.h"), n_lj, repeats).summary(kEnsembleLanes, n_lj)},
                   {"method", "ns per trajectory-step of " + std::to_string(kEnsembleLanes) + " trajectories (the first starts of "
                              "Figs 4 and 6), simplified Takahashi-Imada unprocessed: scalar, one trajectory after another "
                              "(integrate, every call inlined), against each lane kernel this CPU runs (all lanes at once, the "
@@ -77,16 +81,16 @@ StudyPlan plan_timing(const Scene& s) {
   // runs for Figs 4 and 6 (the Lennard-Jones scalar run planned at the lanes' rate: a lower bound)
   const double n = static_cast<double>(s.integer("timing.steps")), lanes = static_cast<double>(kEnsembleLanes);
   const double lj_n = static_cast<double>(s.integer("timing.lj_steps"));
-  const std::size_t kernels = simplified_ti_lanes_kernels<LJ>().size();
-  std::vector<TimedCall> calls(s.texts("timing.methods").size(), TimedCall{n, hh_rate().ns_per_step});
-  calls.push_back(TimedCall{lanes * n, hh_rate().ns_per_step});
-  calls.insert(calls.end(), kernels, TimedCall{lanes * n, hh_lanes_rate().ns_per_step});
-  calls.insert(calls.end(), 1 + kernels, TimedCall{lanes * lj_n, lj_lanes_rate().ns_per_step});
+  const std::size_t kernels = simplified_ti_lanes_kernels<LennardJones<9>>().size();
+  const PlanRate &hh = plan_rate("henon-heiles splitting"), &hh_lanes = plan_rate("henon-heiles lanes");
+  std::vector<TimedCall> calls(s.texts("timing.methods").size(), TimedCall{n, hh.ns_per_step});
+  calls.push_back(TimedCall{lanes * n, hh.ns_per_step});
+  calls.insert(calls.end(), kernels, TimedCall{lanes * n, hh_lanes.ns_per_step});
+  calls.insert(calls.end(), 1 + kernels, TimedCall{lanes * lj_n, plan_rate("lennard-jones lanes").ns_per_step});
   StudyPlan p;
-  p.memory_bytes = 1e4;
-  p.ns_per_step = hh_rate().ns_per_step;
+  p.memory_bytes = 1e4, p.ns_per_step = hh.ns_per_step;
   p.time(s, calls);
-  p.note = "the timing protocol; " + hh_rate().note;
+  p.note = "the timing protocol; " + hh.note;
   return p;
 }
 
@@ -96,21 +100,17 @@ Study kernel_timing_study() {
   return {.name = "kernel_timing",
           .about = "cost: ns per step of each method",
           .keys = Schema()
-                      .texts("timing.methods", MethodsOn<HenonHeiles>::choices(), 1,
-                             "methods timed (their kernels, on the Fig. 4 system; registry names or labels)")
+                      .texts("timing.methods", MethodsOn<HenonHeiles>::choices(), 1, "methods timed (their kernels, on the Fig. 4 system; registry names or labels)")
                       .integer("timing.steps", at_least(1), "steps of each timed run")
-                      .integer("timing.lj_steps", at_least(1),
-                               "steps of each timed run of the Lennard-Jones lanes (Fig. 6 cluster, lj.h)"),
-          .reads = {"timing.repeats", "h", "hh", "hh3.q2", "hh3.p2", "ensemble.seed", "ensemble.perturbation", "lj.h",
-                    "lj.seed", "lj.perturbation"},
+                      .integer("timing.lj_steps", at_least(1), "steps of each timed run of the Lennard-Jones lanes (Fig. 6 cluster, lj.h)"),
+          .reads = {"timing.repeats", "h", "hh", "hh3.q2", "hh3.p2", "ensemble.seed", "ensemble.perturbation", "lj.h", "lj.seed", "lj.perturbation"},
           .run = run_timing,
-          .validate =
-              [](const Scene& s) {
-                with_ensemble_system(s, [&](const auto& hh) {
-                  MethodsOn<std::decay_t<decltype(hh)>>::check(s, "timing.methods", hh);
-                  check_hh_starts(s, "hh3", hh, s.real("ensemble.perturbation"), true);
-                });
-              },
+          .validate = [](const Scene& s) {
+            with_ensemble_system(s, [&](const auto& hh) {
+              MethodsOn<std::decay_t<decltype(hh)>>::check(s, "timing.methods", hh);
+              check_henon_heiles_starts(s, "hh3", hh, s.real("ensemble.perturbation"), true);
+            });
+          },
           .plan = plan_timing,
           .aliases = {"timing"}};
 }

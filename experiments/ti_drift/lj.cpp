@@ -3,27 +3,30 @@
 // and standard deviation of the error of the modified energy E of (3.3) and (4.2), the error of H, and of H
 // at the processed variables (1.5).
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdint>
-#include <span>
 #include <string>
-#include <tuple>
 #include <utility>
 #include <vector>
 
 #include "geomint/core/integrate.hpp"
 #include "geomint/integrators/takahashi_imada_systems.hpp"
+#include "geomint/methods/force_evals.hpp"
 #include "geomint/observables/ensemble_statistics.hpp"
 #include "geomint/observables/stiffness.hpp"
-#include "geomint/runner/checkpoint.hpp"
+#include "geomint/runner/experiment.hpp"
 #include "geomint/runner/fits.hpp"
-#include "geomint/runner/distributed_map.hpp"
+#include "geomint/runner/plan_rates.hpp"
+#include "geomint/runner/summary.hpp"
 #include "geomint/sweep/ensemble_kernels.hpp"
-#include "ti_drift.hpp"
+#include "geomint/sweep/lennard_jones_ensemble.hpp"
+#include "geomint/systems/lennard_jones.hpp"
 
 namespace geomint::ti_drift {
 namespace {
+
+using Z18 = PhaseState<18>;
+using LJ = LennardJones<9>;  // 004 Fig. 6
 
 constexpr std::size_t kLjShown = 50;          // Fig. 6: trajectories drawn (004: 50)
 constexpr std::int64_t kStiffnessEvery = 10;   // Fig. 6: the stiffness along the scan starts, every this many steps of lj.h
@@ -36,36 +39,15 @@ struct Scan {
 };
 
 // The step-size scan (fig6_scan.csv) and the stiffness of the cluster.
-Scan scan_steps(Context& ctx, const LJ& lj, Value& reproduced) {
+Scan scan_steps(Context& ctx, Value& reproduced) {
   const Scene& s = ctx.scene;
-  // The step-size scan: max |H - H0| over t <= lj.scan_t, diverged beyond lj.blowup or when not finite.
   const auto hs = s.reals("lj.h_scan");
   const auto scan_size = static_cast<std::size_t>(s.integer("lj.scan_size"));
-  const auto scan = distributed_map(hs.size() * scan_size, [&](std::size_t task) {
-    const double hh = hs[task / scan_size];
-    const Z18 start = lj_start_of(s, task % scan_size);
-    const double Hs = lj.H(start);
-    double worst = 0;
-    std::int64_t diverged = -1;
-    simplified_ti_integrate(lj, start, hh, steps_to(s.real("lj.scan_t"), hh), [&](std::int64_t j, const Z18& z) {
-      if (diverged >= 0) return;
-      const double e = std::abs(lj.H(z) - Hs);
-      if (!(e <= s.real("lj.blowup"))) diverged = j;
-      else worst = std::max(worst, e);
-    });
-    return std::pair{worst, diverged};
-  });
+  const auto scan = lennard_jones_step_scan(s);
   // The stiffness omega_max^2 (largest eigenvalue of the Hessian): at the grid, at the starts of the
   // ensemble, and along the scan starts integrated at lj.h to lj.scan_t (its largest value on each).
-  const double hl = s.real("lj.h");
-  const double grid_stiffness = lj_grid_stiffness();
-  const auto along = distributed_map(scan_size, [&](std::size_t i) {
-    double largest = 0;
-    simplified_ti_integrate(lj, lj_start_of(s, i), hl, steps_to(s.real("lj.scan_t"), hl), [&](std::int64_t j, const Z18& z) {
-      if (j % kStiffnessEvery == 0) largest = std::max(largest, max_hessian_eigenvalue(lj, z.q));
-    });
-    return largest;
-  });
+  const double grid_stiffness = lennard_jones_grid_stiffness();
+  const auto along = lennard_jones_stiffness_along(s, kStiffnessEvery);
   const auto [along_lo, along_hi] = std::minmax_element(along.begin(), along.end());
   Csv sc({"h", "trajectory", "max_H_err", "diverged", "diverge_step"});
   sc.flags({"diverged"});
@@ -96,55 +78,6 @@ Scan scan_steps(Context& ctx, const LJ& lj, Value& reproduced) {
   return {scan_summary, stable, grid_stiffness, *along_lo, *along_hi};
 }
 
-struct Series {
-  std::vector<double> E, H, Hhat;
-  auto fields() { return std::tie(E, H, Hhat); }
-};
-
-// The ensemble at lj.h: E error (3.3)+(4.2), H error, and H at the processed variables (1.5).
-struct Ensemble {
-  double hl;
-  std::size_t Ml;
-  std::int64_t nl, every_l;  // steps, and steps between output times
-  std::vector<Series> lj_series;
-  double wall6;  // (on --resume: the part run since)
-};
-
-Ensemble integrate_ensemble(Context& ctx, const LJ& lj) {
-  const Scene& s = ctx.scene;
-  const std::int64_t samples = s.integer("samples");
-  const double hl = s.real("lj.h");
-  const auto Ml = static_cast<std::size_t>(s.integer("lj.size"));
-  const std::int64_t nl = steps_to(s.real("lj.t_end"), hl), every_l = std::max<std::int64_t>(1, nl / samples);
-  const auto tl0 = std::chrono::steady_clock::now();  // (on --resume: the part run since)
-  const std::vector<std::string> series_keys = {"samples", "lj.h", "lj.t_end", "lj.size", "lj.seed", "lj.perturbation"};
-  const auto lanes = simplified_ti_lanes_kernels<LJ>().front().steps;  // (bit for bit the scalar method)
-  auto lj_series = concatenate(checkpointed_map<std::vector<Series>>(ctx, {"lj", series_keys}, lane_batches(Ml), [&](std::size_t b) {
-    const LaneBatch batch = lane_batch(b, Ml);
-    std::vector<Z18> starts;
-    std::vector<double> E0, Hs;
-    for (std::size_t i = batch.first; i < batch.first + batch.count; ++i)
-      starts.push_back(lj_start_of(s, i)), E0.push_back(simplified_ti_modified_energy(lj, starts.back(), hl)), Hs.push_back(lj.H(starts.back()));
-    std::vector<Series> r(batch.count);
-    simplified_ti_lanes(lj, lanes, std::span<const Z18>(starts), hl, nl, every_l, [&](int i, std::int64_t, const Z18& z) {
-      r[i].E.push_back(simplified_ti_modified_energy(lj, z, hl) - E0[i]);
-      r[i].H.push_back(lj.H(z) - Hs[i]);
-      r[i].Hhat.push_back(lj.H(ti_process(lj, z, hl, takahashi_imada_alpha)) - Hs[i]);
-    });
-    return r;
-  }));
-  const double wall6 = std::chrono::duration<double>(std::chrono::steady_clock::now() - tl0).count();
-  for (std::size_t i = 0; i < Ml; ++i)  // diverged as the scan counts it (|H - H0| beyond lj.blowup), or not finite
-    for (std::size_t k = 0; k < lj_series[i].E.size(); ++k)
-      if (!std::isfinite(lj_series[i].E[k]) || !std::isfinite(lj_series[i].Hhat[k]) ||
-          !(std::abs(lj_series[i].H[k]) <= s.real("lj.blowup")))
-        throw NumericalFailure("simplified_takahashi_imada at lj.h = " + format_double(hl) + ": trajectory " +
-                               std::to_string(i) + " diverged (|H - H0| = " + format_double(std::abs(lj_series[i].H[k])) +
-                               " > lj.blowup) by step " + std::to_string(static_cast<std::int64_t>(k) * every_l) +
-                               ", t = " + format_double(static_cast<double>(k) * static_cast<double>(every_l) * hl));
-  return {hl, Ml, nl, every_l, std::move(lj_series), wall6};
-}
-
 // The ensemble's statistics at each output time (fig6_stats.csv), its first trajectories (fig6_trajectories.csv),
 // and the reproduced values of Fig. 6.
 struct Stats {
@@ -152,12 +85,12 @@ struct Stats {
   double mu_f, sigma_f, mu_se, sigma_se;
 };
 
-Stats write_stats(Context& ctx, const Ensemble& en, Value& reproduced) {
+Stats write_stats(Context& ctx, const LennardJonesEnsemble& en, Value& reproduced) {
   const Scene& s = ctx.scene;
   const double hl = en.hl;
   const std::size_t Ml = en.Ml;
   const std::int64_t every_l = en.every_l;
-  const std::vector<Series>& lj_series = en.lj_series;
+  const std::vector<LennardJonesSeries>& lj_series = en.lj_series;
   Csv f6({"t", "mu", "sigma", "H_err_rms", "Hhat_err_rms", "Hhat_change_rms"});
   std::vector<double> ts, sigmas, H_rms, Hhat_rms, Hhat_change;
   const std::size_t nsl = lj_series[0].E.size();
@@ -190,18 +123,18 @@ Stats write_stats(Context& ctx, const Ensemble& en, Value& reproduced) {
   const double sigma_se = standard_error_of_deviation(sigma_f, static_cast<double>(Ml));
   reproduced["lj_mu_final_stderr"] = mu_se;
   reproduced["lj_sigma_final_stderr"] = sigma_se;
-  reproduced["lj_sigma_exponent"] = power_law_exponent(ts, sigmas, fit_t_min(s, "lj", s.real("lj.t_end")));
+  reproduced["lj_sigma_exponent"] = power_law_exponent(ts, sigmas, fit_window_start(s, "lj", s.real("lj.t_end")));
   std::vector<std::vector<double>> E_series;  // its standard error over the ensemble (bootstrap: published.toml)
   for (const auto& r : lj_series) E_series.push_back(r.E);
   reproduced["lj_sigma_exponent_stderr"] = bootstrap_exponent_stderr(
-      E_series, ts, fit_t_min(s, "lj", s.real("lj.t_end")), kBootstrapResamples, static_cast<std::uint64_t>(s.integer("lj.seed")));
+      E_series, ts, fit_window_start(s, "lj", s.real("lj.t_end")), kBootstrapResamples, static_cast<std::uint64_t>(s.integer("lj.seed")));
   reproduced["lj_H_err_max"] = H_max;
   return {ts, H_rms, Hhat_rms, Hhat_change, mu_f, sigma_f, mu_se, sigma_se};
 }
 
 // summary.lj: the scan, the stiffness, the errors of H and of H at the processed variables, and the standard
 // scores of the published mean and standard deviation.
-void put_summary(Context& ctx, const LJ& lj, const Scan& scan, const Ensemble& en, const Stats& st) {
+void put_summary(Context& ctx, const LJ& lj, const Scan& scan, const LennardJonesEnsemble& en, const Stats& st) {
   const Scene& s = ctx.scene;
   const double hl = en.hl;
   const std::size_t Ml = en.Ml;
@@ -220,7 +153,7 @@ void put_summary(Context& ctx, const LJ& lj, const Scan& scan, const Ensemble& e
   double Hhat_variation = 0;
   for (double b : Hhat_later) Hhat_variation = std::max(Hhat_variation, std::abs(b / Hhat_rms[0] - 1));
   std::vector<double> start_stiffness;
-  for (std::size_t i = 0; i < Ml; ++i) start_stiffness.push_back(max_hessian_eigenvalue(lj, lj_start_of(s, i).q));
+  for (std::size_t i = 0; i < Ml; ++i) start_stiffness.push_back(max_hessian_eigenvalue(lj, lennard_jones_start(s, i).q));
   ctx.summary["lj"] = {
       {"particles", LJ::D / 2},
       {"pairs", LJ::D / 2 * (LJ::D / 2 - 1) / 2},
@@ -241,14 +174,14 @@ void put_summary(Context& ctx, const LJ& lj, const Scan& scan, const Ensemble& e
       // H(p^_n, q^_n) - H(p^_0, q^_0): its root mean square at t_end, against sigma of E, and its growth exponent
       {"Hhat_change_rms_final", Hhat_change.back()},
       {"Hhat_change_over_sigma_final", Hhat_change.back() / sigma_f},
-      {"Hhat_change_exponent", power_law_exponent(ts, Hhat_change, fit_t_min(s, "lj", s.real("lj.t_end")))},
-      {"fit", {{"t_min", fit_t_min(s, "lj", s.real("lj.t_end"))}, {"t_max", s.real("lj.t_end")}}},
+      {"Hhat_change_exponent", power_law_exponent(ts, Hhat_change, fit_window_start(s, "lj", s.real("lj.t_end")))},
+      {"fit", {{"t_min", fit_window_start(s, "lj", s.real("lj.t_end"))}, {"t_max", s.real("lj.t_end")}}},
       // the published mean and standard deviation (published.toml) in standard errors of ours, and ours from zero
       {"standard_scores", {{"mu_from_printed", std::abs(mu_f - ctx.published_value("lj_mu_final")) / mu_se},
                            {"mu_from_zero", std::abs(mu_f) / mu_se},
                            {"sigma_from_printed", std::abs(sigma_f - ctx.published_value("lj_sigma_final")) / sigma_se}}}};
   if (!stable.empty()) ctx.summary["lj"]["stable_steps"] = range_of(stable);
-  const double t_fit = fit_t_min(s, "lj", s.real("lj.t_end"));
+  const double t_fit = fit_window_start(s, "lj", s.real("lj.t_end"));
   record_fit(ctx.summary, {"reproduced.lj_sigma_exponent", {"fig6_stats.csv", "t", "sigma"}, "power_law", t_fit, ts.back(), "lj.fit_from"});
   record_fit(ctx.summary, {"lj.Hhat_change_exponent", {"fig6_stats.csv", "t", "Hhat_change_rms"}, "power_law", t_fit, ts.back(), "lj.fit_from"});
   // the smallest step of the scan: the median of its largest errors of H
@@ -260,12 +193,12 @@ void put_summary(Context& ctx, const LJ& lj, const Scan& scan, const Ensemble& e
 }
 
 void run_lj(Context& ctx) {
-  put_trajectory_method(ctx, "lj");
+  put_simplified_ti_method(ctx.summary, "lj");
   ctx.progress("Fig. 6: Lennard-Jones cluster");
   const LJ lj;
   Value reproduced;
-  const Scan scan = scan_steps(ctx, lj, reproduced);
-  const Ensemble en = integrate_ensemble(ctx, lj);
+  const Scan scan = scan_steps(ctx, reproduced);
+  const LennardJonesEnsemble en = integrate_lennard_jones_ensemble(ctx);
   const Stats st = write_stats(ctx, en, reproduced);
   merge(ctx.summary, "reproduced", reproduced);
   put_summary(ctx, lj, scan, en, st);
@@ -279,11 +212,8 @@ void run_lj(Context& ctx) {
        {"fig6_ns_per_step_thread", 1e9 * wall6 * ctx.threads / (static_cast<double>(Ml) * static_cast<double>(nl))}});
 }
 
-// Fig. 6: lj.h below the bound at the stiffness of the unperturbed grid (omega^2 = 86.8; the perturbed starts and
-// the motion are stiffer: a run that diverges anyway ends with a numerical failure, exit 4).
 void check_lj(const Scene& s) {
-  check_step_bound(s, "lj.h", s.real("lj.h"), std::sqrt(lj_grid_stiffness()),
-                   "omega^2 = max eig U'' at the 3 x 3 grid of Fig. 6");
+  check_lennard_jones_step(s, "lj.h", s.real("lj.h"));
   if (s.real("lj.t_end") / s.real("lj.h") < 2) s.reject("lj.t_end", "must be at least two steps lj.h");
   for (double h : s.reals("lj.h_scan"))
     if (s.real("lj.scan_t") / h < 1) s.reject("lj.scan_t", "must be at least one step of every lj.h_scan");
@@ -297,8 +227,9 @@ StudyPlan plan_lj(const Scene& s) {
   p.steps += scan_size * scan_t / hl + M * n;
   p.force_evals = p.steps * static_cast<double>(evals_per_step("simplified_takahashi_imada"));
   p.memory_bytes = M * kept_samples(n, static_cast<double>(s.integer("samples"))) * 3 * 8;  // E, H, H^ of each trajectory
-  p.ns_per_step = lj_lanes_rate().ns_per_step;
-  p.note = lj_lanes_rate().note;
+  const PlanRate& rate = plan_rate("lennard-jones lanes");
+  p.ns_per_step = rate.ns_per_step;
+  p.note = rate.note;
   p.tasks = static_cast<double>(lane_batches(static_cast<std::size_t>(M)));  // the ensemble's batches of lanes (the scan before it: a small part)
   return p;
 }

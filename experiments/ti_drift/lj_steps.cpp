@@ -10,20 +10,23 @@
 
 #include "geomint/core/integrate.hpp"
 #include "geomint/integrators/takahashi_imada_systems.hpp"
+#include "geomint/methods/force_evals.hpp"
 #include "geomint/observables/ensemble_statistics.hpp"
 #include "geomint/observables/linear_fit.hpp"
-#include "geomint/observables/modified_energy.hpp"
-#include "geomint/observables/stiffness.hpp"
 #include "geomint/runner/distributed_map.hpp"
-#include "geomint/sweep/ensemble_kernels.hpp"
+#include "geomint/runner/experiment.hpp"
 #include "geomint/runner/fits.hpp"
-#include "ti_drift.hpp"
+#include "geomint/runner/plan_rates.hpp"
+#include "geomint/sweep/ensemble_kernels.hpp"
+#include "geomint/sweep/lennard_jones_ensemble.hpp"
+#include "geomint/systems/lennard_jones.hpp"
 
 namespace geomint::ti_drift {
 namespace {
 
+using LJ = LennardJones<9>;  // 004 Fig. 6
 void run_lj_steps(Context& ctx) {
-  put_trajectory_method(ctx, "lj_steps");
+  put_simplified_ti_method(ctx.summary, "lj_steps");
   const Scene& s = ctx.scene;
   ctx.progress("Fig. 6: sigma against h");
   const LJ lj;
@@ -35,10 +38,10 @@ void run_lj_steps(Context& ctx) {
   const auto err = concatenate(distributed_map(hs.size() * nb, [&](std::size_t task) {
     const double h = hs[task / nb];
     const LaneBatch batch = lane_batch(task % nb, M);
-    std::vector<Z18> starts;
-    for (std::size_t i = batch.first; i < batch.first + batch.count; ++i) starts.push_back(lj_start_of(s, i));
+    std::vector<LJ::State> starts;
+    for (std::size_t i = batch.first; i < batch.first + batch.count; ++i) starts.push_back(lennard_jones_start(s, i));
     const std::int64_t n = steps_to(T, h);
-    const auto last = simplified_ti_lanes(lj, lanes, std::span<const Z18>(starts), h, n, n, [](int, std::int64_t, const Z18&) {});
+    const auto last = simplified_ti_lanes(lj, lanes, std::span<const LJ::State>(starts), h, n, n, [](int, std::int64_t, const LJ::State&) {});
     std::vector<double> e;
     for (std::size_t i = 0; i < batch.count; ++i)
       e.push_back(simplified_ti_modified_energy(lj, last[i], h) - simplified_ti_modified_energy(lj, starts[i], h));
@@ -82,9 +85,8 @@ void run_lj_steps(Context& ctx) {
 }
 
 void check_lj_steps(const Scene& s) {
-  const double omega = std::sqrt(lj_grid_stiffness());
   for (double h : s.reals("lj_steps.h")) {
-    check_step_bound(s, "lj_steps.h", h, omega, "omega^2 = max eig U'' at the 3 x 3 grid of Fig. 6");
+    check_lennard_jones_step(s, "lj_steps.h", h);
     if (s.real("lj_steps.t_end") / h < 1) s.reject("lj_steps.t_end", "must be at least one step of every lj_steps.h");
   }
 }
@@ -94,7 +96,7 @@ StudyPlan plan_lj_steps(const Scene& s) {
   double steps = 0;
   for (double h : s.reals("lj_steps.h")) steps += M * s.real("lj_steps.t_end") / h;
   const double evals = steps * static_cast<double>(evals_per_step("simplified_takahashi_imada"));
-  return {steps, evals, M * hs * 8, lj_lanes_rate().ns_per_step, lj_lanes_rate().note,
+  return {steps, evals, M * hs * 8, plan_rate("lennard-jones lanes").ns_per_step, plan_rate("lennard-jones lanes").note,
           static_cast<double>(lane_batches(static_cast<std::size_t>(M))) * hs};
 }
 
@@ -106,10 +108,8 @@ Study lj_steps_study() {
           .about = "sigma against h (the printed step)",
           .files = {"fig6_steps.csv"},
           .keys = Schema()
-                      .reals("lj_steps.h", positive(), 3,
-                             "Fig. 6: steps at which sigma of the error of E is measured (its power of h)")
-                      .integer("lj_steps.size", at_least(2),
-                               "trajectories per step of lj_steps (the starts of Fig. 6: lj.seed)")
+                      .reals("lj_steps.h", positive(), 3, "Fig. 6: steps at which sigma of the error of E is measured (its power of h)")
+                      .integer("lj_steps.size", at_least(2), "trajectories per step of lj_steps (the starts of Fig. 6: lj.seed)")
                       .real("lj_steps.t_end", positive(), "time at which sigma is measured in lj_steps"),
           .reads = {"lj.seed", "lj.perturbation"},
           .run = run_lj_steps,

@@ -7,7 +7,7 @@
 //   Fig 4      its random walk over an ensemble for k = 5                             ensemble.cpp
 //   Fig 5      Poincare cuts and growth episodes of the ensemble's trajectory with
 //              the largest error (from the ensemble study of the same run, or the
-//              ensemble integrated again: ti_drift.hpp)                               poincare.cpp
+//              ensemble integrated again: sweep/henon_heiles_ensemble.hpp)            poincare.cpp
 //   Fig 5      the printed side of the cuts over the growth episodes of many starts   episode_sides.cpp
 //   Fig 6      the Lennard-Jones cluster: a step-size scan and the ensemble statistics lj.cpp
 //   Fig 6      sigma against h (the printed step)                                     lj_steps.cpp
@@ -15,10 +15,28 @@
 // plus the cost: error against wall time and force evaluations (study `cost`)         cost.cpp
 //            and ns per step of each method's kernel (study `kernel_timing`)          kernel_timing.cpp
 // One study per figure (or analysis); the scene's sections say which run. Here: the studies, and the
-// scene keys that several of them read (what they share otherwise: ti_drift.hpp).
+// scene keys that several of them read (what they share otherwise is the library's).
 #include <utility>
 
-#include "ti_drift.hpp"
+#include "geomint/runner/experiment.hpp"
+#include "geomint/sweep/henon_heiles_ensemble.hpp"
+
+namespace geomint::ti_drift {
+
+// The studies, in the order they run (each in the file of its name).
+Study oscillator_study();
+Study pendulum_study();
+Study hh3_study();
+Study ensemble_study(LargestError& largest);  // hands its trajectory with the largest error to ...
+Study poincare_study(const LargestError& largest);  // ... this study of the same process
+Study episode_sides_study();
+Study lj_study();
+Study lj_steps_study();
+Study cost_study();
+Study symplecticity_study();
+Study kernel_timing_study();
+
+}  // namespace geomint::ti_drift
 
 using namespace geomint;
 using namespace geomint::ti_drift;

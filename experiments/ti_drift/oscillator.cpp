@@ -15,16 +15,23 @@
 #include "geomint/core/integrate.hpp"
 #include "geomint/integrators/takahashi_imada.hpp"
 #include "geomint/methods/by_name.hpp"
+#include "geomint/methods/force_evals.hpp"
 #include "geomint/methods/registry.hpp"
 #include "geomint/methods/scene_methods.hpp"
 #include "geomint/observables/ensemble_statistics.hpp"
 #include "geomint/observables/order_fit.hpp"
-#include "geomint/systems/counting.hpp"
+#include "geomint/runner/experiment.hpp"
 #include "geomint/runner/fits.hpp"
-#include "ti_drift.hpp"
+#include "geomint/runner/plan_rates.hpp"
+#include "geomint/runner/summary.hpp"
+#include "geomint/systems/counting.hpp"
+#include "geomint/systems/harmonic_oscillator.hpp"
 
 namespace geomint::ti_drift {
 namespace {
+
+using Z1 = PhaseState<1>;
+const HarmonicOscillator kOscillator{1.0, 1.0};  // Fig. 1: omega = 1
 
 constexpr double kFitMaxOmegaH = 0.5;  // Fig. 1: the orders are fitted over omega h_eff <= 0.5
 

@@ -12,19 +12,24 @@
 #include "geomint/analysis/orbit_average.hpp"
 #include "geomint/analysis/sample_windows.hpp"
 #include "geomint/core/integrate.hpp"
-#include "geomint/integrators/takahashi_imada.hpp"
 #include "geomint/integrators/runge_kutta4.hpp"
-#include "geomint/systems/hamiltonian_field.hpp"
+#include "geomint/integrators/takahashi_imada_systems.hpp"
+#include "geomint/methods/force_evals.hpp"
+#include "geomint/methods/scene_methods.hpp"
 #include "geomint/observables/ensemble_statistics.hpp"
 #include "geomint/observables/linear_fit.hpp"
 #include "geomint/observables/modified_energy.hpp"
 #include "geomint/observables/stiffness.hpp"
-#include "geomint/systems/unsymmetric_pendulum.hpp"
+#include "geomint/runner/experiment.hpp"
 #include "geomint/runner/fits.hpp"
-#include "ti_drift.hpp"
+#include "geomint/runner/plan_rates.hpp"
+#include "geomint/systems/hamiltonian_field.hpp"
+#include "geomint/systems/unsymmetric_pendulum.hpp"
 
 namespace geomint::ti_drift {
 namespace {
+
+using Z1 = PhaseState<1>;
 
 constexpr double kReferenceStep = 1e-3;       // Fig. 2: the exact orbit, RK4 at this step ...
 constexpr std::int64_t kReferenceSteps = 2000000;  // ... over 2000 time units
@@ -66,7 +71,7 @@ void write_local_slopes(Context& ctx, const UnsymmetricPendulum& up, const Z1& p
 }
 
 void run_pendulum(Context& ctx) {
-  put_trajectory_method(ctx, "pendulum");
+  put_simplified_ti_method(ctx.summary, "pendulum");
   const Scene& s = ctx.scene;
   ctx.progress("Fig. 2: unsymmetric pendulum");
   const double h = s.real("h");
@@ -93,7 +98,7 @@ void run_pendulum(Context& ctx) {
     if (t <= s.real("pendulum.fit_t")) ts.push_back(t), es.push_back(e);
   });
   ctx.write("fig2_pendulum.csv", f2);
-  const double rate = slope(ts, es), rate_predicted = predicted / static_cast<double>(kReferenceSteps);
+  const double rate = linear_fit(ts, es).slope, rate_predicted = predicted / static_cast<double>(kReferenceSteps);
   record_fit(ctx.summary, {"reproduced.unsym_pendulum_drift_rate", {"fig2_pendulum.csv", "t", "shifted_energy_err"}, "slope", 0,
                            s.real("pendulum.fit_t"), "", 1, 0, "pendulum.fit_t"});
   record_fit(ctx.summary, {"reproduced.unsym_pendulum_drift_rate_whole", {"fig2_pendulum.csv", "t", "shifted_energy_err"}, "slope",
@@ -105,7 +110,7 @@ void run_pendulum(Context& ctx) {
                                kind, 0, ts_all.back()});
   merge(ctx.summary, "reproduced",
       {{"unsym_pendulum_drift_rate", rate},                         // at the start's energy
-       {"unsym_pendulum_drift_rate_whole", slope(ts_all, es_all)},  // over the whole span (the rate falls with H)
+       {"unsym_pendulum_drift_rate_whole", linear_fit(ts_all, es_all).slope},  // over the whole span (the rate falls with H)
        {"unsym_pendulum_drift_rate_predicted", rate_predicted}});
   const double t_ref = kReferenceStep * static_cast<double>(kReferenceSteps);
   ctx.summary["pendulum"] = {
@@ -114,7 +119,7 @@ void run_pendulum(Context& ctx) {
       {"sample_dt", static_cast<double>(every) * h},
       {"change", es_all.back()},               // of H + h^2 H_3 over the run
       {"change_relative_to_H0", es_all.back() / up.H(p0)},
-      {"H_drift_rate", slope(ts_all, Hs_all)},  // the slope of the error of H over the run
+      {"H_drift_rate", linear_fit(ts_all, Hs_all).slope},  // the slope of the error of H over the run
       {"peak_to_peak_about_trend", {{"shifted_energy", peak_to_peak_about_line(ts_all, es_all)},
                                     {"H", peak_to_peak_about_line(ts_all, Hs_all)}}},
       // the same about a least-squares quadratic, without the curvature of the drift (004 Fig. 2)
@@ -140,7 +145,8 @@ double pendulum_omega() {
 
 void check_pendulum(const Scene& s) {
   const double h = s.real("h"), t_end = s.real("pendulum.t_end");
-  check_step_bound(s, "h", h, pendulum_omega(), "omega^2 = max_q U''(q) of the pendulum of Fig. 2");
+  check_step_bound(s, "h", "simplified_takahashi_imada", h * pendulum_omega(),
+                   "omega^2 = max_q U''(q) of the pendulum of Fig. 2", "2 sqrt(3)");
   const double H0 = UnsymmetricPendulum().H(make_state(s.real("pendulum.q0"), s.real("pendulum.p0")));
   if (!(std::isfinite(H0) && H0 > UnsymmetricPendulum::U_max()))  // Fig. 2 and (4.3) averaged over the orbit need a pendulum that turns over
     s.reject("pendulum.p0", "the start must turn over: H(q0, p0) = " + format_double(H0) + " must exceed max U = " +
@@ -165,8 +171,9 @@ StudyPlan plan_pendulum(const Scene& s) {
   p.force_evals = e * n + 4 * static_cast<double>(kReferenceSteps);
   const PlanRate& reference = plan_rate("pendulum odeint reference");
   p.memory_bytes = kept_samples(n, static_cast<double>(s.integer("samples"))) * (3 * 8 + 80);  // 3 series + the CSV rows
-  p.ns_per_step = (n * hh_rate().ns_per_step + static_cast<double>(kReferenceSteps) * reference.ns_per_step) / p.steps;
-  p.note = hh_rate().note + "; " + reference.note;
+  const PlanRate& rate = plan_rate("henon-heiles splitting");
+  p.ns_per_step = (n * rate.ns_per_step + static_cast<double>(kReferenceSteps) * reference.ns_per_step) / p.steps;
+  p.note = rate.note + "; " + reference.note;
   return p;
 }
 

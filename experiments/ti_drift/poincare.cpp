@@ -1,7 +1,7 @@
 // 004 Fig. 5: Poincare cuts (q1 = 0 upwards, p1 > 0) of the trajectory of the Fig. 4 ensemble with the largest
 // error, in the window where its error grows fastest and in the flattest, and the growth episodes of its error
 // against (4.3). The trajectory: the ensemble study's, when it ran in the same process (LargestError, main.cpp);
-// else this study integrates the ensemble itself (integrate_ensemble, ensemble.cpp: the same starts, checkpoint
+// else this study integrates the ensemble itself (sweep/henon_heiles_ensemble.hpp: the same starts, checkpoint
 // and numbers) and takes its trajectory with the largest error. The printed side of the cuts over many starts is the
 // study episode_sides (episode_sides.cpp).
 #include <algorithm>
@@ -20,12 +20,18 @@
 #include "geomint/analysis/poincare.hpp"
 #include "geomint/core/integrate.hpp"
 #include "geomint/integrators/takahashi_imada_systems.hpp"
-#include "geomint/runner/checkpoint.hpp"
+#include "geomint/methods/force_evals.hpp"
+#include "geomint/observables/linear_fit.hpp"
+#include "geomint/runner/experiment.hpp"
+#include "geomint/runner/plan_rates.hpp"
 #include "geomint/sweep/ensemble_kernels.hpp"
-#include "ti_drift.hpp"
+#include "geomint/sweep/henon_heiles_ensemble.hpp"
 
 namespace geomint::ti_drift {
 namespace {
+
+using Z2 = PhaseState<2>;
+using Trajectory = EnsembleTrajectory;
 
 constexpr std::size_t kPoincareWindows = 20;  // Fig. 5: the run of the trajectory is cut into this many windows
 
@@ -45,7 +51,7 @@ Windows choose_windows(const Trajectory& run, const std::vector<double>& e) {
   for (std::size_t w = 0; w < windows && (w + 1) * per <= ns; ++w, ++compared) {
     std::vector<double> x, y;
     for (std::size_t k = w * per; k < (w + 1) * per; ++k) x.push_back(static_cast<double>(k)), y.push_back(e[k]);
-    const double sl_w = std::abs(slope(x, y));
+    const double sl_w = std::abs(linear_fit(x, y).slope);
     if (sl_w > smax) smax = sl_w, steep = w;
     if (sl_w < smin) smin = sl_w, flat = w;
   }
@@ -76,7 +82,7 @@ Episodes find_episodes(Context& ctx, const Trajectory& run, const std::vector<do
   const std::size_t ns = run.ns;
   const auto time_of = [&](std::size_t k) { return run.time_of(k); };
   const double sample_dt = time_of(1);
-  const EpisodeRule rule = episode_rule(s, sample_dt);
+  const EpisodeRule rule = episode_rule(s, "ensemble", sample_dt);
   const std::size_t half = rule.half, min_samples = rule.min_samples;
   std::vector<double> t_rec(ns);
   for (std::size_t k = 0; k < ns; ++k) t_rec[k] = time_of(k);
@@ -284,10 +290,10 @@ Value write_fig5(Context& ctx, const HH& hhk, const Trajectory& run) {
 // The trajectory with the largest error: the ensemble study's of this process, or that of the ensemble integrated
 // here when that study did not run (the same function, starts and checkpoint: the same trajectory).
 void run_poincare(Context& ctx, const LargestError& largest) {
-  put_trajectory_method(ctx, "poincare");
+  put_simplified_ti_method(ctx.summary, "poincare");
   LargestError own;
   if (!largest) {
-    const Run run = integrate_ensemble(ctx);
+    const HenonHeilesEnsemble run = integrate_ensemble(ctx);
     own = trajectory_of(run, largest_error(run));
   }
   const Trajectory& worst = largest ? *largest : *own;
@@ -298,7 +304,7 @@ void run_poincare(Context& ctx, const LargestError& largest) {
 
 void check_poincare(const Scene& s) {
   check_ensemble_run(s);
-  check_episode_rule(s);
+  check_episode_rule(s, "ensemble", "t_end");
 }
 
 // With the ensemble study in the same process: the rerun of one trajectory (scalar, (4.3) and a cut test every step),
@@ -308,11 +314,12 @@ StudyPlan plan_poincare(const Scene& s) {
   const double n = s.real("t_end") / s.real("h"), M = static_cast<double>(s.integer("ensemble.size"));
   const double evals = static_cast<double>(evals_per_step("simplified_takahashi_imada"));
   const double rows = kept_samples(n, static_cast<double>(s.integer("samples")));
-  const double lanes = hh_lanes_rate().ns_per_step, scalar = hh_rate().ns_per_step;
-  const StudyPlan taken{n, n * evals, rows * 208 + kEnsembleLanes * rows * 40, scalar,
-                        "the trajectory of the ensemble study of this run; " + hh_rate().note, 1};
-  StudyPlan alone{(M + 1) * n, (M + 1) * n * evals, M * rows * 8 + rows * 200, (scalar + M * lanes) / (M + 1),
-                  "the ensemble integrated again (without the ensemble study); " + hh_lanes_rate().note,
+  const PlanRate &lanes = plan_rate("henon-heiles lanes"), &scalar = plan_rate("henon-heiles splitting");
+  const StudyPlan taken{n, n * evals, rows * 208 + kEnsembleLanes * rows * 40, scalar.ns_per_step,
+                        "the trajectory of the ensemble study of this run; " + scalar.note, 1};
+  StudyPlan alone{(M + 1) * n, (M + 1) * n * evals, M * rows * 8 + rows * 200,
+                  (scalar.ns_per_step + M * lanes.ns_per_step) / (M + 1),
+                  "the ensemble integrated again (without the ensemble study); " + lanes.note,
                   static_cast<double>(lane_batches(static_cast<std::size_t>(M)))};  // (tasks: batches of lanes)
   alone.reuses = "ensemble", alone.when_reusing = std::make_shared<const StudyPlan>(taken);
   return alone;

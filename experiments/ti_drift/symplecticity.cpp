@@ -13,11 +13,16 @@
 #include "geomint/methods/scene_methods.hpp"
 #include "geomint/observables/order_fit.hpp"
 #include "geomint/observables/symplecticity.hpp"
+#include "geomint/runner/experiment.hpp"
 #include "geomint/runner/fits.hpp"
-#include "ti_drift.hpp"
+#include "geomint/runner/plan_rates.hpp"
+#include "geomint/runner/summary.hpp"
+#include "geomint/systems/henon_heiles.hpp"
 
 namespace geomint::ti_drift {
 namespace {
+
+using Z2 = PhaseState<2>;
 
 HenonHeiles symplecticity_system(const Scene& s) { return {{}, static_cast<int>(s.integer("symplecticity.k"))}; }
 
@@ -62,7 +67,8 @@ void run_symplecticity(Context& ctx) {
 StudyPlan plan_symplecticity(const Scene& s) {
   // per method: 16 central differences of one step; Sect. 3.3: 4 steps of each of two methods
   const double m = static_cast<double>(s.texts("symplecticity.methods").size());
-  return {16 * m + 8, 2 * (16 * m + 8), 1e4, hh_rate().ns_per_step, hh_rate().note};
+  const PlanRate& rate = plan_rate("henon-heiles splitting");
+  return {16 * m + 8, 2 * (16 * m + 8), 1e4, rate.ns_per_step, rate.note};
 }
 
 }  // namespace
@@ -82,7 +88,7 @@ Study symplecticity_study() {
           .validate =
               [](const Scene& s) {
                 MethodsOn<HenonHeiles>::check(s, "symplecticity.methods", symplecticity_system(s));
-                check_hh_starts(s, "symplecticity", symplecticity_system(s), 0.0, true);
+                check_henon_heiles_starts(s, "symplecticity", symplecticity_system(s), 0.0, true);
               },
           .plan = plan_symplecticity};
 }

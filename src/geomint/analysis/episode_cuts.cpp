@@ -1,11 +1,30 @@
 // 004 Fig. 5 over many starts (analysis/episode_cuts.hpp), compiled once for the Henon-Heiles systems of 004.
 #include "geomint/analysis/episode_cuts.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 #include "geomint/analysis/poincare.hpp"
 #include "geomint/integrators/takahashi_imada_systems.hpp"
+#include "geomint/io/csv.hpp"
+#include "geomint/scene/scene.hpp"
 #include "geomint/sweep/ensemble_kernels.hpp"
 
 namespace geomint {
+
+EpisodeRule episode_rule(const Scene& s, const std::string& section, double sample_dt) {
+  const auto samples = [&](const char* key) {
+    return static_cast<std::size_t>(std::max(1.0, std::round(s.real(section + key) / sample_dt)));
+  };
+  return {samples(".episode_half_width"), s.real(section + ".episode_threshold"), samples(".episode_min_length")};
+}
+
+void check_episode_rule(const Scene& s, const std::string& section, const std::string& t_end_key) {
+  const double t_end = s.real(t_end_key);
+  for (const char* key : {".episode_half_width", ".episode_min_length"})
+    if (s.real(section + key) > t_end) s.reject(section + key, "must not exceed " + t_end_key + " = " + format_double(t_end));
+}
+
 namespace {
 
 // The cuts of q1 = 0 upwards along n steps of (1.6) from z.

@@ -10,6 +10,7 @@
 #include <cstdint>
 #include <optional>
 #include <span>
+#include <string>
 #include <tuple>
 #include <vector>
 
@@ -19,6 +20,8 @@
 
 namespace geomint {
 
+class Scene;
+
 // The episode rule in samples: the running slope over +- half samples, the threshold in robust standard
 // deviations, the shortest episode.
 struct EpisodeRule {
@@ -26,6 +29,12 @@ struct EpisodeRule {
   double threshold = 0;
   std::size_t min_samples = 1;
 };
+
+// The scene's rule: the running slope over +- <section>.episode_half_width, the threshold
+// <section>.episode_threshold, the shortest episode <section>.episode_min_length (times), in samples of sample_dt.
+EpisodeRule episode_rule(const Scene& s, const std::string& section, double sample_dt);
+// Rejects a width of the rule above (episode_half_width, episode_min_length) that exceeds the scene's value t_end_key.
+void check_episode_rule(const Scene& s, const std::string& section, const std::string& t_end_key);
 
 // The first growth episode (sign +1) of y(t) by the rule, if any.
 inline std::optional<Episode> first_growth_episode(std::span<const double> t, std::span<const double> y,

@@ -10,6 +10,7 @@
 // A plain one-step map is the processed method with identity processors
 // (one_step_method). `integrate` drives any of them with an integer step
 // counter: t_j = j h is computed by the observer, never accumulated.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -46,6 +47,8 @@ inline double steps_to_each(double t_end, const std::vector<double>& hs) {
   for (double h : hs) steps += t_end / h;
   return steps;
 }
+// The samples a run of n steps keeps when it samples every max(1, floor(n / samples)) steps from step 0 (--plan).
+inline double kept_samples(double n, double samples) { return std::floor(n / std::max(1.0, std::floor(n / samples))) + 1; }
 
 namespace detail {
 template <class M, class S>

@@ -89,4 +89,12 @@ inline std::vector<Point4> scaled_cloud(const std::vector<Point4>& unit, const P
   return out;
 }
 
+// The centre z0 and the vertices of a polytope of circumradius `radius` around it (the unit `vertices` scaled), the
+// centre first: the apex of the hull triangulation (003 Figs 5.2, 5.4).
+inline std::vector<Point4> cloud_around(const Point4& z0, const std::vector<Point4>& vertices, double radius) {
+  std::vector<Point4> unit{{0, 0, 0, 0}};
+  unit.insert(unit.end(), vertices.begin(), vertices.end());
+  return scaled_cloud(unit, z0, radius);
+}
+
 }  // namespace geomint

@@ -1,5 +1,7 @@
 #include "geomint/geometry/hull_volume.hpp"
 
+#include "geomint/core/numerical_failure.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -143,6 +145,14 @@ bool bounds_hull(const std::vector<Point4>& points, const std::vector<HullFacet>
 
 std::vector<HullFacet> hull_facets(const std::vector<Point4>& points, const std::vector<HullFacet>& known) {
   return bounds_hull(points, known) ? known : hull_facets(points);
+}
+
+std::vector<HullFacet> cloud_hull(const std::vector<Point4>& points, const std::vector<HullFacet>& known) {
+  try {
+    return hull_facets(points, known);
+  } catch (const std::domain_error& e) {
+    throw NumericalFailure(std::string("hull volume: ") + e.what());
+  }
 }
 
 }  // namespace geomint

@@ -31,6 +31,10 @@ bool bounds_hull(const std::vector<Point4>& points, const std::vector<HullFacet>
 // hull_facets(points), without Qhull when bounds_hull(points, known) (same value either way).
 std::vector<HullFacet> hull_facets(const std::vector<Point4>& points, const std::vector<HullFacet>& known);
 
+// hull_facets(points, known) of a cloud under a flow, where a cloud that left the domain of the hull (not finite,
+// degenerate) is a NumericalFailure (core/numerical_failure.hpp), not a programming error.
+std::vector<HullFacet> cloud_hull(const std::vector<Point4>& points, const std::vector<HullFacet>& known = {});
+
 // int_{conv(points)} rho over the simplices conv(apex, facet), apex inside the hull: the
 // degree-2 rule |T|/5 sum_i rho(xi_i), xi_i with barycentric weight alpha on vertex i and
 // beta on the other four, alpha = (6 + 4 sqrt 6)/30, beta = (6 - sqrt 6)/30

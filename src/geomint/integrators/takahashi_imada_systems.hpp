@@ -6,6 +6,7 @@
 // these again. (The SIMD lane kernels, compiled per instruction set, instantiate their own.)
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <type_traits>
 
 #include "geomint/integrators/takahashi_imada.hpp"
@@ -24,6 +25,12 @@
                                                         const StepObserver<D>&);
 
 namespace geomint {
+
+class Value;
+
+// A figure whose trajectories the simplified method (1.6) steps, unprocessed, at the alpha of (1.4): summary
+// methods.<study> (its label) and ti_alpha, which the figure's title names.
+void put_simplified_ti_method(Value& summary, const std::string& study);
 
 template <int D>  // (not deduced from a study's lambda: the system and z0 say D)
 using StepObserver = std::type_identity_t<std::function<void(std::int64_t, const PhaseState<D>&)>>;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "geomint/io/csv.hpp"
 #include "geomint/methods/registry.hpp"
@@ -23,5 +24,14 @@ inline bool beyond_bound(double omega_h, double bound) { return !std::isnan(boun
 // `what` says where hw comes from; `formula`: how the paper writes the bound, if it does.
 void check_oscillatory_bound(const Scene& s, const char* step_key, const char* methods_key, const std::string& method,
                              double hw, const std::string& what, const std::string& formula = {});
+
+// Rejects `key` unless a run to s.real(key) takes at least one step of each length in `steps` (`what` names them).
+void check_at_least_one_step(const Scene& s, const char* key, const std::vector<double>& steps, const char* what);
+
+// The same for a study that steps the one method `method` (no methods key): blamed on the step key.
+inline void check_step_bound(const Scene& s, const char* step_key, const std::string& method, double hw,
+                             const std::string& what, const std::string& formula = {}) {
+  check_oscillatory_bound(s, step_key, step_key, method, hw, what, formula);
+}
 
 }  // namespace geomint

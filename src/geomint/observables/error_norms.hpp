@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <vector>
 
 #include "geomint/core/state.hpp"
 
@@ -27,6 +28,13 @@ class ErrorSeries {
   double max_ = 0, sum_sq_ = 0;
   std::int64_t count_ = 0;
 };
+
+// max_j |e_j| of a recorded error sequence (0 for none).
+inline double largest_abs(const std::vector<double>& e) {
+  double mx = 0;
+  for (double x : e) mx = std::max(mx, std::abs(x));
+  return mx;
+}
 
 inline double relative_error(double approx, double exact) { return std::abs(approx - exact) / std::abs(exact); }
 

@@ -1,6 +1,12 @@
 #include "geomint/runner/fits.hpp"
 
+#include "geomint/scene/scene.hpp"
+
 namespace geomint {
+
+double fit_window_start(const Scene& s, const std::string& section, double t_end) {
+  return s.real(section + ".fit_from") * t_end;
+}
 
 void record_fit(Value& summary, const FitRecord& f) {
   Value where = Value::record();

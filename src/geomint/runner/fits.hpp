@@ -13,6 +13,11 @@
 
 namespace geomint {
 
+class Scene;
+
+// The start of a fit window [t_min, t_end] from the scene: <section>.fit_from of t_end.
+double fit_window_start(const Scene& s, const std::string& section, double t_end);
+
 // Where a fitted number's data are: columns x and y of `csv` (y "c^2": the square of column c), on the
 // rows whose columns `where` hold the given values (as the CSV writes them); for "relative_ptp", less
 // the relative change of column `minus` if it is not empty.

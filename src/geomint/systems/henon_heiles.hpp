@@ -8,11 +8,17 @@
 // geomint: MethodsOn<Counting<HenonHeilesT<true>>>
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <random>
+#include <string>
 
 #include "geomint/core/state.hpp"
 #include "geomint/systems/unit_mass.hpp"
 
 namespace geomint {
+
+class Scene;
 
 // x^n for a small integer n >= 0 (std::pow is slow in the inner loop); T = double or a vector of lanes.
 template <class T>
@@ -90,6 +96,15 @@ struct HenonHeilesT : UnitMassSeparable<2> {
     const double p1 = std::sqrt(2 * (H0 - U(Vec<2>(0.0, q2))) - p2 * p2);
     return make_state<2>(Vec<2>(0.0, q2), Vec<2>(p1, p2));
   }
+  // Start i of an ensemble (004 Fig. 4): (q2, p2) each perturbed uniformly by at most d, from the stream seeded by
+  // (seed, i), on the energy shell H = H0 (start).
+  State perturbed_start(double q2, double p2, double H0, double d, std::uint64_t seed, std::size_t i) const {
+    std::seed_seq seq{seed, static_cast<std::uint64_t>(i)};
+    std::mt19937_64 rng(seq);
+    std::uniform_real_distribution<double> u(-d, d);
+    const double dq = u(rng), dp = u(rng);
+    return start(q2 + dq, p2 + dp, H0);
+  }
 };
 
 using HenonHeiles = HenonHeilesT<true>;
@@ -101,5 +116,15 @@ decltype(auto) with_henon_heiles(int k, double c, F&& f) {
   if (c == 0.0) return f(HenonHeilesT<false>{{}, k, 0.0});
   return f(HenonHeilesT<true>{{}, k, c});
 }
+
+// The scene's Henon-Heiles starts q1 = 0, q2 in [q2 - d, q2 + d], p2 in [p2 - d, p2 + d] (<section>.q2, <section>.p2;
+// d: an ensemble's perturbation, 0 for one start) lie in the bounded well below the escape energy (the lowest saddle
+// of U): hh.H0 below it, every q2 between the saddles on the axis (q2 < 1, and q2 > -1 for even k: U(0, .) is
+// monotone on either side of 0 there, so p1^2 = 2 (H0 - U(0, q2)) - p2^2 > 0 at the corners of the box holds on all
+// of it), and, if check_h, the step h below the bound of the simplified method (004 (1.6)) at the frequency of the
+// linearisation at the start, max eig U''(0, q2) (a necessary condition). Rejects the key at fault.
+// Compiled once, in henon_heiles.cpp, for HenonHeilesT<true> and HenonHeilesT<false>.
+template <class HH>
+void check_henon_heiles_starts(const Scene& s, const std::string& section, const HH& hh, double d, bool check_h);
 
 }  // namespace geomint

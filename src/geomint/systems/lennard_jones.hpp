@@ -10,6 +10,8 @@
 //   U^(5)(a^5) = 32 G^(5) x^5 + 160 G'''' x^3 y + 120 G''' x y^2.
 #include <array>
 #include <cmath>
+#include <cstddef>
+#include <cstdint>
 
 #include "geomint/core/state.hpp"
 
@@ -129,5 +131,13 @@ struct LennardJones {
   Vec<D> H_q(const Vec<D>& q, const Vec<D>&) const { return U_q(q); }
   Vec<D> H_p(const Vec<D>&, const Vec<D>& p) const { return p; }
 };
+
+// 004 Fig. 6: the cluster of 9 particles near the 3 x 3 grid (i, j), i, j in {1, 2, 3} (lennard_jones.cpp).
+Vec<2> lennard_jones_grid(int k);  // particle k at (1 + k % 3, 1 + k / 3)
+// omega_max^2 = max eig U'' of the cluster at the grid (observables/stiffness.hpp), the stiffness of Fig. 6's step bound.
+double lennard_jones_grid_stiffness();
+// Start i of Fig. 6: the grid with each coordinate perturbed uniformly by at most `perturbation`, p = 0, from the
+// stream seeded by (seed, i).
+PhaseState<18> lennard_jones_grid_start(std::uint64_t seed, double perturbation, std::size_t i);
 
 }  // namespace geomint

@@ -6,6 +6,11 @@
 // by scripts/derive_nonholonomic.py into nonholonomic_modified.hpp, which only
 // nonholonomic_modified_series.cpp compiles (the series of every method and potential
 // are compiled once, not in each file that evaluates one).
+#include <array>
+#include <cstdint>
+#include <tuple>
+#include <vector>
+
 #include "geomint/integrators/conformal_variational.hpp"
 #include "geomint/systems/nonholonomic_particle.hpp"
 
@@ -32,5 +37,38 @@ class ModifiedSeries {
   NonholonomicParticle sys_;
   double h_;
 };
+
+// ---- The method Phi^(ell) of 003 (4.5): Psi_{h,E*} with E* = E^(ell)(z_0), E fixed at the start
+// (nonholonomic_phi.cpp) ----
+
+// One point's run: z_0 .. z_n as (x, y, px, py), and the Newton iterations summed over its steps.
+struct PointTrajectory {
+  std::vector<std::array<double, 4>> z;
+  std::int64_t iterations = 0;
+  auto fields() { return std::tie(z, iterations); }  // (a record of runner/distributed_map.hpp)
+};
+
+// n steps of Phi^(ell) of discretization d at the step h from z0.
+PointTrajectory run_phi(Discretization d, const NonholonomicParticle& sys, double h, int ell,
+                        const std::array<double, 4>& z0, std::int64_t n);
+
+// A cloud's run: snapshots[j][i] is point i at step j (point 0: the image of the centre), and the Newton iterations
+// and steps over all its points.
+struct CloudRun {
+  std::vector<std::vector<std::array<double, 4>>> snapshots;
+  std::int64_t iterations = 0, steps = 0;
+  auto fields() { return std::tie(snapshots, iterations, steps); }
+};
+
+// The runs of the points of a cloud as a CloudRun.
+CloudRun transpose(const std::vector<PointTrajectory>& per_point);
+
+// n steps of Phi^(ell) of d at the step h from each point of `cloud`, each point its own E*.
+CloudRun cloud_phi(Discretization d, const NonholonomicParticle& sys, double h, int ell,
+                   const std::vector<std::array<double, 4>>& cloud, std::int64_t n);
+
+// The largest relative difference of the generated E^(2), E^(4), N^(2), N^(4) and K^(4)_mod from independent
+// reference values at h = 0.25 (systems/nonholonomic_golden.hpp) for the potential of sys.
+double modified_series_golden_error(const NonholonomicParticle& sys);
 
 }  // namespace geomint

@@ -9,8 +9,10 @@
 // forward-mode automatic differentiation.
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "geomint/core/state.hpp"
 
@@ -88,5 +90,13 @@ struct NonholonomicParticle {
 
 inline std::array<double, 4> to_array(const PhaseState<2>& z) { return {z.q[0], z.q[1], z.p[0], z.p[1]}; }
 inline PhaseState<2> from_array(const std::array<double, 4>& a) { return make_state<2>(Vec<2>(a[0], a[1]), Vec<2>(a[2], a[3])); }
+
+// The reference flow of (3.8): odeint Bulirsch-Stoer (reference/odeint_reference.hpp) at tolerances (rtol, atol)
+// from z0 = (x, y, px, py), sampled at t_j = j dt, j = 0..n (nonholonomic_particle.cpp).
+std::vector<std::array<double, 4>> reference_samples(const NonholonomicParticle& sys, const std::array<double, 4>& z0,
+                                                     double dt, std::int64_t n, double rtol, double atol);
+
+// The reference is checked against a second one with both tolerances multiplied by this factor.
+constexpr double reference_check_factor = 1e-2;
 
 }  // namespace geomint
