@@ -6,12 +6,9 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <functional>
 #include <limits>
 #include <optional>
 #include <string>
-#include <tuple>
-#include <utility>
 #include <vector>
 
 #include "geomint/analysis/convergence_study.hpp"
@@ -37,7 +34,6 @@ struct Errors {
   double energy_rms = 0, energy_max = 0;  // of H(z_j) - H(z_0), j = 0..N: eq. (50) and the max
   double phase = 0;                       // |z_N - z(t_N)|_2 against the reference
   std::int64_t force_evals = 0;           // with postprocessing at every step
-  auto fields() { return std::tie(energy_rms, energy_max, phase, force_evals); }  // (a record of runner/distributed_map.hpp)
 };
 
 // What the convergence study records (the scene's `observables`).
@@ -70,13 +66,10 @@ Errors convergence_run(const ElasticPendulumRuns& sys, const std::string& method
 // methods whose kernel is of order 2 (Stormer-Verlet, the Rowlands kernel alone and processed), by
 // their declared order: {"order_2": {min, max}, "order_4": {min, max}}.
 Value order_ranges(const std::vector<std::string>& methods, const Value& by_initial) {
-  std::vector<int> orders;  // the declared orders of those methods, ascending
-  for (const auto& m : methods)
-    if (method_info(m).kernel_order == 2) orders.push_back(method_info(m).order);
-  std::sort(orders.begin(), orders.end());
-  orders.erase(std::unique(orders.begin(), orders.end()), orders.end());
+  int top = 0;  // the largest declared order
+  for (const auto& m : methods) top = std::max(top, method_info(m).order);
   Value out = Value::record();
-  for (const int order : orders) {
+  for (int order = 1; order <= top; ++order) {
     double lo = std::numeric_limits<double>::infinity(), hi = -lo;
     for (const auto& m : methods)
       if (method_info(m).kernel_order == 2 && method_info(m).order == order)
@@ -96,21 +89,21 @@ Value order_ranges(const std::vector<std::string>& methods, const Value& by_init
 std::optional<Value> printed_over_kernel(const std::vector<std::string>& methods,
                                          const std::vector<std::vector<Errors>>& runs, const std::vector<double>& hs,
                                          std::size_t n_initial, Observables obs) {
-  const auto index_of = [&](const char* name) {
-    const auto it = std::find_if(methods.begin(), methods.end(), [&](const auto& m) { return label_of(m) == label_of(name); });
-    return it == methods.end() ? std::nullopt : std::optional(static_cast<std::size_t>(it - methods.begin()));
-  };
-  const auto kp = index_of("rowlands_printed"), kk = index_of("rowlands_kernel");
-  if (!kp || !kk) return std::nullopt;
+  std::size_t kp = methods.size(), kk = methods.size();  // (each method is named once)
+  for (std::size_t k = 0; k < methods.size(); ++k) {
+    if (label_of(methods[k]) == label_of("rowlands_printed")) kp = k;
+    if (label_of(methods[k]) == label_of("rowlands_kernel")) kk = k;
+  }
+  if (kp == methods.size() || kk == methods.size()) return std::nullopt;
   const std::size_t j_min = static_cast<std::size_t>(std::min_element(hs.begin(), hs.end()) - hs.begin());
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  const auto ratio = [&](double a, double b) {
+    if (b != 0 && std::isfinite(a / b)) lo = std::min(lo, a / b), hi = std::max(hi, a / b);
+  };
   for (std::size_t i = 0; i < n_initial; ++i) {
-    const Errors &printed = runs[i * hs.size() + j_min][*kp], &kernel = runs[i * hs.size() + j_min][*kk];
-    std::vector<std::pair<double, double>> pairs;
-    if (obs.phase) pairs.emplace_back(printed.phase, kernel.phase);
-    if (obs.energy) pairs.emplace_back(printed.energy_rms, kernel.energy_rms);
-    for (const auto& [a, b] : pairs)
-      if (b != 0 && std::isfinite(a / b)) lo = std::min(lo, a / b), hi = std::max(hi, a / b);
+    const Errors &printed = runs[i * hs.size() + j_min][kp], &kernel = runs[i * hs.size() + j_min][kk];
+    if (obs.phase) ratio(printed.phase, kernel.phase);
+    if (obs.energy) ratio(printed.energy_rms, kernel.energy_rms);
   }
   if (!(lo <= hi)) return std::nullopt;
   return Value{{"min", lo}, {"max", hi}, {"h", hs[j_min]}};
@@ -134,23 +127,32 @@ std::vector<ElasticPendulumRuns::Reference> references(Context& ctx, const Elast
   return refs;
 }
 
-// Convergence: one task per (initial condition, h), all methods in it.
-// runs[i * hs.size() + j][k]: initial condition i, step hs[j], method k.
+// Convergence: one task per (initial condition, h), all methods in it, a run's errors as 4 doubles (a record of
+// runner/distributed_map.hpp: the force evaluations are exact). runs[i * hs.size() + j][k]: initial condition i,
+// step hs[j], method k.
 std::vector<std::vector<Errors>> convergence_runs(Context& ctx, const ElasticPendulumRuns& sys, const std::vector<double>& hs,
                                                   const std::vector<std::vector<double>>& initial,
                                                   const std::vector<std::string>& methods, Observables obs,
                                                   double t_end, const std::vector<ElasticPendulumRuns::Reference>& refs) {
   ctx.progress("Fig. 4: convergence");
   const std::size_t nh = hs.size();
-  return distributed_map(initial.size() * nh, [&](std::size_t task) {
+  const auto flat = distributed_map(initial.size() * nh, [&](std::size_t task) {
     const std::size_t i = task / nh;
     const double h = hs[task % nh];
-    std::vector<Errors> out;
-    for (const auto& m : methods)
-      out.push_back(convergence_run(sys, m, elastic_pendulum_state(initial[i]), obs.phase ? &refs[i].z : nullptr, h,
-                                    steps_to(t_end, h), obs));
+    std::vector<double> out;
+    for (const auto& m : methods) {
+      const Errors e = convergence_run(sys, m, elastic_pendulum_state(initial[i]), obs.phase ? &refs[i].z : nullptr, h,
+                                       steps_to(t_end, h), obs);
+      out.insert(out.end(), {e.energy_rms, e.energy_max, e.phase, static_cast<double>(e.force_evals)});
+    }
     return out;
   });
+  std::vector<std::vector<Errors>> runs(flat.size());
+  for (std::size_t task = 0; task < flat.size(); ++task)
+    for (std::size_t k = 0; k < methods.size(); ++k)
+      runs[task].push_back({flat[task][4 * k], flat[task][4 * k + 1], flat[task][4 * k + 2],
+                            static_cast<std::int64_t>(flat[task][4 * k + 3])});
+  return runs;
 }
 
 // fig4_convergence.csv and the orders fitted per initial condition and norm (orders.csv); the

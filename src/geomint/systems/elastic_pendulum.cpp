@@ -7,6 +7,11 @@
 
 namespace geomint {
 
+template PhaseState<2> reference_solution<ElasticPendulumWithGravity>(const ElasticPendulumWithGravity&, const PhaseState<2>&,
+                                                                      double, double, double);
+template PhaseState<2> reference_solution<ElasticPendulumWithoutGravity>(const ElasticPendulumWithoutGravity&,
+                                                                         const PhaseState<2>&, double, double, double);
+
 ElasticPendulumParams elastic_pendulum_params(const Scene& s, const std::string& section) {
   return {s.real(section + ".l"), s.real(section + ".m"), s.real(section + ".k"), s.real(section + ".g")};
 }

@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "geomint/core/state.hpp"
+#include "geomint/reference/odeint_reference.hpp"
 
 namespace geomint {
 
@@ -174,6 +175,13 @@ using ElasticPendulumWithoutGravity = ElasticPendulumCartesian<SpringTerm>;
 using ElasticPendulumPolarWithGravity = ElasticPendulumPolar<SpringPolarTerm, GravityPolarTerm>;
 using FreeParticleCartesian = ElasticPendulumCartesian<>;  // 000 eq. (61)
 using FreeParticlePolar = ElasticPendulumPolar<>;          // 000 eq. (62)
+
+// The odeint reference (reference/odeint_reference.hpp) on the pendulum with and without gravity, compiled once
+// (elastic_pendulum.cpp).
+extern template PhaseState<2> reference_solution<ElasticPendulumWithGravity>(const ElasticPendulumWithGravity&,
+                                                                             const PhaseState<2>&, double, double, double);
+extern template PhaseState<2> reference_solution<ElasticPendulumWithoutGravity>(const ElasticPendulumWithoutGravity&,
+                                                                                const PhaseState<2>&, double, double, double);
 
 // ---- the pendulum of a scene (elastic_pendulum.cpp) ----
 

@@ -15,6 +15,9 @@
 
 namespace geomint {
 
+template PhaseState<1> reference_solution<NonlinearPendulum>(const NonlinearPendulum&, const PhaseState<1>&, double, double,
+                                                             double);
+
 OscillatorFromRest oscillator_from_rest(const Scene& s) {
   const HarmonicOscillator osc{s.real("oscillator.m"), s.real("oscillator.omega")};
   const double A = s.real("oscillator.amplitude");

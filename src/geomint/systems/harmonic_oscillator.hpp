@@ -16,6 +16,7 @@
 #include <vector>
 
 #include "geomint/core/state.hpp"
+#include "geomint/reference/odeint_reference.hpp"
 
 namespace geomint {
 
@@ -75,6 +76,10 @@ struct NonlinearPendulum {
   // The largest linear frequency: sqrt of the largest U'' = cos q, at the bottom.
   static double max_frequency() { return 1.0; }
 };
+
+// Its odeint reference (reference/odeint_reference.hpp), compiled once (harmonic_oscillator.cpp).
+extern template PhaseState<1> reference_solution<NonlinearPendulum>(const NonlinearPendulum&, const PhaseState<1>&, double,
+                                                                    double, double);
 
 // ---- 001 Table 1, Figs 1, 2: the oscillator released from rest, and its one-step matrices ----
 
