@@ -19,8 +19,7 @@
 namespace geomint::euler_compensation {
 namespace {
 
-// --plan: force evaluations per step, the most of the paper scene's methods (rk4).
-constexpr double kEvalsPerStep = 4;
+constexpr double kEvalsPerStep = 4;  // --plan: force evaluations per step, the most of the paper scene's methods (rk4)
 
 // Max over t_j in [0, N h] of the global error of explicit Euler on a scalar ODE.
 template <class Sys>

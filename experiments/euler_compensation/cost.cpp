@@ -22,8 +22,7 @@
 namespace geomint::euler_compensation {
 namespace {
 
-// --plan: force evaluations per step, the most of the paper scene's methods (rk4).
-constexpr double kEvalsPerStep = 4;
+constexpr double kEvalsPerStep = 4;  // --plan: force evaluations per step, the most of the paper scene's methods (rk4)
 
 // The set "energy": counting runs in parallel, then every (h, method) timed together (runner/timing.hpp).
 WorkPrecisionSet energy_set(const Scene& s, const PhaseState<1>& z0, int workers) {

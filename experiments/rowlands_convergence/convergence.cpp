@@ -27,8 +27,7 @@ namespace {
 
 using State = PhaseState<2>;
 
-// --plan: force evaluations per step, the most of the paper scene's methods (odeint_rkn_sb3a).
-constexpr double kEvalsPerStep = 6;
+constexpr double kEvalsPerStep = 6;  // --plan: force evaluations per step, the most of the paper scene's methods (odeint_rkn_sb3a)
 
 struct Errors {
   double energy_rms = 0, energy_max = 0;  // of H(z_j) - H(z_0), j = 0..N: eq. (50) and the max

@@ -25,8 +25,7 @@ namespace {
 
 using State = PhaseState<2>;
 
-// --plan: force evaluations per step, the most of the paper scene's methods (odeint_rkn_sb3a).
-constexpr double kEvalsPerStep = 6;
+constexpr double kEvalsPerStep = 6;  // --plan: force evaluations per step, the most of the paper scene's methods (odeint_rkn_sb3a)
 
 void run_cost(Context& ctx) {
   const Scene& s = ctx.scene;
