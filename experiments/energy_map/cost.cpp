@@ -1,32 +1,31 @@
 // What an energy error costs in either coordinate system (study `cost`): symplectic Euler (42)-(43) from
 // a few starts of the map of 000 Fig. 6 (at rest, inside the polar runs' divergence boundary) at several
 // steps to cost.t_end, the scalar loop (energy_map_scalar) in both systems. One work-precision set per
-// start (analysis/work_precision_set.hpp), "start_<i>", methods "cartesian" and "polar": the error is
-// eq. (50) against H_0 = H(z_0), the wall time a start's share of one timed function (runner/timing.hpp)
-// per system and step, one force evaluation per step. Per start besides (summary work_precision, not a
+// start (sweep/energy_map_cost.hpp), "start_<i>", methods "cartesian" and "polar": the error is eq. (50)
+// against H_0 = H(z_0), the wall time a start's share of one timed function (runner/timing.hpp) per system
+// and step, one force evaluation per step. Per start besides (summary work_precision, not a
 // cost): where it lies, the reference's own error, the fitted orders and the error target, the
 // geometric middle of the error range both systems cover there.
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <functional>
 #include <limits>
 #include <optional>
 #include <string>
 #include <utility>
 #include <vector>
 
-#include "energy_map.hpp"
 #include "geomint/analysis/work_precision_set.hpp"
-#include "geomint/core/integrate.hpp"
 #include "geomint/methods/registry.hpp"
+#include "geomint/methods/scene_methods.hpp"
 #include "geomint/observables/order_fit.hpp"
+#include "geomint/runner/experiment.hpp"
 #include "geomint/runner/fits.hpp"
-#include "geomint/runner/distributed_map.hpp"
 #include "geomint/runner/summary.hpp"
 #include "geomint/runner/timing.hpp"
 #include "geomint/runner/timing_report.hpp"
+#include "geomint/sweep/energy_map_cost.hpp"
 #include "geomint/systems/elastic_pendulum.hpp"
 
 namespace geomint::energy_map {
@@ -36,19 +35,9 @@ namespace {
 constexpr Coordinates systems[] = {Coordinates::cartesian, Coordinates::polar};
 
 void check_cost(const Scene& s) {
-  const ElasticPendulumParams p{s.real("pendulum.l"), s.real("pendulum.m"), s.real("pendulum.k"), s.real("pendulum.g")};
-  const double bound = method_info("symplectic_euler_pq").oscillatory_bound, omega = spring_frequency(s);
-  const double t_end = s.real("cost.t_end");
-  for (double dt : s.reals("cost.dt")) {
-    if (!(dt * omega < bound))
-      s.reject("cost.dt", "symplectic Euler is unstable for dt sqrt(k/m) >= " + format_double(bound) +
-                              " (methods/registry.hpp): dt < " + format_double(bound / omega));
-    const double n = std::round(t_end / dt);
-    if (n < 1 || std::abs(n * dt - t_end) > 1e-9 * t_end)
-      s.reject("cost.t_end", "must be a positive multiple of every cost.dt, here " + format_double(dt));
-    if (!(n <= max_exact_count))  // steps are counted in int64 and t = j dt
-      s.reject("cost.t_end", "cost.t_end / cost.dt must be at most 2^53 steps, here cost.dt = " + format_double(dt));
-  }
+  check_oscillatory_bound(s, {"cost.dt", spring_frequency(s), false, ", omega = sqrt(k/m)"}, "cost.dt", "symplectic_euler_pq");
+  check_whole_steps(s, "cost.dt", "cost.t_end", "cost.t_end");
+  const ElasticPendulumParams p = elastic_pendulum_params(s);
   for (const auto& x : s.real_rows("cost.starts")) {
     const double r = std::hypot(x[0], x[1]);
     if (!(r > 0) || !(r < polar_boundary_radius(p, x[1] / r)))
@@ -58,18 +47,19 @@ void check_cost(const Scene& s) {
 }
 
 StudyPlan plan_cost(const Scene& s) {
+  const PlanRate& rate = plan_rate("energy map scalar loop");
   const double starts = static_cast<double>(s.real_rows("cost.starts").size());
   double steps = 0;
   std::vector<TimedCall> calls;  // per system and step: every start in turn
   for (double dt : s.reals("cost.dt")) {
     const double n = std::round(s.real("cost.t_end") / dt);
     steps += 2 * starts * n;  // (the untimed runs, both systems)
-    calls.insert(calls.end(), 2, TimedCall{starts * n, scalar_rate().ns_per_step});
+    calls.insert(calls.end(), 2, TimedCall{starts * n, rate.ns_per_step});
   }
   StudyPlan p;
-  p.steps = steps, p.force_evals = steps, p.ns_per_step = scalar_rate().ns_per_step;
+  p.steps = steps, p.force_evals = steps, p.ns_per_step = rate.ns_per_step;
   p.memory_bytes = starts * static_cast<double>(s.reals("cost.dt").size()) * 2 * 200.0;
-  p.note = "the untimed runs, then the timing protocol; " + scalar_rate().note;
+  p.note = "the untimed runs, then the timing protocol; " + rate.note;
   p.time(s, calls);
   return p;
 }
@@ -165,39 +155,6 @@ Value same_loop(const Value& cost, const Value& timing) {
   return out;
 }
 
-// The energy errors (50): one untimed run per system, step and start (split across threads and ranks);
-// the wall time: per system and step one timed function integrates every start in turn (one thread; all
-// of them timed together under the timing protocol, up to `workers` at a time), a start's share its time
-// over the number of starts (the loop's time per step does not depend on the start: its only branch is
-// the divergence test). One set per start.
-std::vector<WorkPrecisionSet> timed_sets(const Scene& s, int workers, const std::vector<std::vector<double>>& starts,
-                                         const std::function<EnergyMapParams(double)>& params) {
-  const auto dts = s.reals("cost.dt");
-  const std::size_t ns = starts.size(), nd = dts.size();
-  const auto eps = distributed_map(2 * nd * ns, [&](std::size_t task) {
-    const std::size_t c = task / (nd * ns), d = task / ns % nd, i = task % ns;
-    return energy_map_scalar(systems[c], params(dts[d]), starts[i][0], starts[i][1]);
-  });
-  std::vector<WorkPrecisionSet> sets(ns, WorkPrecisionSet("eq. (50) over [0, cost.t_end] against H_0 = H(z_0)"));
-  InterleavedTiming timing(static_cast<int>(s.integer("timing.repeats")), kTimingFloorS, workers);  // every system and step together
-  std::vector<EnergyMapParams> P;
-  for (std::size_t d = 0; d < nd; ++d) P.push_back(params(dts[d]));
-  for (std::size_t d = 0; d < nd; ++d)
-    for (std::size_t c = 0; c < 2; ++c)
-      timing.add([&, c, d] {
-        for (const auto& x : starts) do_not_optimize(energy_map_scalar(systems[c], P[d], x[0], x[1]).eps);
-      });
-  const std::vector<RunTime> times = timing.run();
-  for (std::size_t d = 0; d < nd; ++d)
-    for (std::size_t c = 0; c < 2; ++c) {
-      const RunTime share = times[2 * d + c].scaled(1 / static_cast<double>(ns));  // (the same spread)
-      for (std::size_t i = 0; i < ns; ++i)  // symplectic Euler (42): one gradient of U per step
-        sets[i].add({coordinates_name(systems[c]), dts[d], static_cast<double>(P[d].steps), share,
-                     static_cast<double>(P[d].steps), eps[(c * nd + d) * ns + i].eps});
-    }
-  return sets;
-}
-
 // cost_start_<i>.csv and summary cost.start_<i> per start, its facts in summary work_precision.
 void run_cost(Context& ctx) {
   const Scene& s = ctx.scene;
@@ -205,10 +162,10 @@ void run_cost(Context& ctx) {
   const auto starts = s.real_rows("cost.starts");
   const auto dts = s.reals("cost.dt");
   const double t_end = s.real("cost.t_end");
-  const ElasticPendulumParams pendulum{s.real("pendulum.l"), s.real("pendulum.m"), s.real("pendulum.k"), s.real("pendulum.g")};
-  const auto sets = timed_sets(s, ctx.threads, starts, [&](double dt) {
-    return EnergyMapParams{pendulum.l, pendulum.m, pendulum.k, pendulum.g, dt, steps_to(t_end, dt), s.real("divergence.blowup")};
-  });
+  const ElasticPendulumParams pendulum = elastic_pendulum_params(s);
+  const auto sets = energy_map_cost_sets({pendulum.l, pendulum.m, pendulum.k, pendulum.g, 0, 0, s.real("divergence.blowup")}, t_end,
+                                         dts, starts, static_cast<int>(s.integer("timing.repeats")), ctx.threads,
+                                         "eq. (50) over [0, cost.t_end] against H_0 = H(z_0)");
   Value start_list = Value::list(), cost;
   double reference_error = 0;
   for (std::size_t i = 0; i < starts.size(); ++i) {

@@ -8,13 +8,13 @@
 #include <limits>
 #include <vector>
 
-#include "energy_map.hpp"
 #include "geomint/analysis/convergence_study.hpp"
 #include "geomint/core/state.hpp"
 #include "geomint/integrators/symplectic_euler.hpp"
 #include "geomint/observables/order_fit.hpp"
-#include "geomint/runner/summary.hpp"
 #include "geomint/runner/distributed_map.hpp"
+#include "geomint/runner/experiment.hpp"
+#include "geomint/runner/summary.hpp"
 #include "geomint/systems/elastic_pendulum.hpp"
 #include "geomint/transforms/polar.hpp"
 
@@ -29,7 +29,8 @@ void check_first_integrals(const Scene& s) {
 StudyPlan plan_first_integrals(const Scene& s) {
   const double polar = static_cast<double>(s.reals("first_integrals.h").size() * s.real_rows("first_integrals.initial").size());
   const double steps = polar + 2 * (static_cast<double>(s.integer("first_integrals.steps")) + 1);  // plain and compensated
-  return {steps, steps, 1001 * 100.0, scalar_rate().ns_per_step, scalar_rate().note};  // angular_momentum.csv: at most 1001 rows
+  const PlanRate& rate = plan_rate("energy map scalar loop");
+  return {steps, steps, 1001 * 100.0, rate.ns_per_step, rate.note};  // angular_momentum.csv: at most 1001 rows
 }
 
 // ---- Section 5.2, free particle (m = 1): polar symplectic Euler changes p_x by

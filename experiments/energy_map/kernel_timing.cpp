@@ -8,42 +8,51 @@
 #include <string>
 #include <vector>
 
-#include "energy_map.hpp"
 #include "geomint/runner/clock.hpp"
+#include "geomint/runner/experiment.hpp"
 #include "geomint/runner/timing.hpp"
 #include "geomint/runner/timing_report.hpp"
+#include "geomint/sweep/energy_map_grid.hpp"
 #include "geomint/sweep/parallel_map.hpp"
 
 namespace geomint::energy_map {
 namespace {
 
+// The batched kernel's own ceiling in cycles per trajectory-step: its multiplies and FMAs on two multiply
+// pipes, counted in its compiled object (bench/README.md); 0 where not counted (SSE2).
+double kernel_ceiling_cycles(const std::string& isa, Coordinates c) {
+  const bool polar = c == Coordinates::polar;
+  return isa == "avx512" ? (polar ? 2.7 : 1.5) : isa == "avx2" ? (polar ? 5.4 : 3.125) : 0.0;
+}
+
 void check_timing(const Scene& s) {
-  check_map(s);
+  check_energy_map(s);
   for (const char* key : {"timing.ceiling.cartesian", "timing.ceiling.polar"})
     if (s.reals(key).size() != 2 || !(s.reals(key)[0] <= s.reals(key)[1])) s.reject(key, "must be [low, high] with low <= high");
 }
 
 StudyPlan plan_timing(const Scene& s) {
-  const GridCount n = grid_count(s);
+  const EnergyMapCount n = energy_map_count(s);
   // the timing protocol over both systems: the kernel's sample (an upper bound, as if on one thread) and the
   // scalar loop
   const double kernel = std::min(static_cast<double>(s.integer("timing.kernel_batches")), n.batches) *
                         kEnergyMapBatch * n.steps;
   const double scalar = std::min(static_cast<double>(s.integer("timing.scalar_points")), n.points) *
                         static_cast<double>(s.integer("timing.scalar_steps"));
+  const PlanRate &rate = plan_rate("energy map scalar loop"), &kernel_rate = energy_map_kernel_rate();
   StudyPlan p;
-  p.memory_bytes = n.batches * kEnergyMapBatch * 2 * sizeof(double), p.ns_per_step = scalar_rate().ns_per_step;
-  p.note = "the timing protocol; " + scalar_rate().note;
+  p.memory_bytes = n.batches * kEnergyMapBatch * 2 * sizeof(double), p.ns_per_step = rate.ns_per_step;
+  p.note = "the timing protocol; " + rate.note;
   const double repeats = static_cast<double>(s.integer("timing.repeats"));
-  const TimedPlan sample = timing_plan({{kernel, kernel_rate().ns_per_step}, {kernel, kernel_rate().ns_per_step}}, repeats);
-  const TimedPlan loop = timing_plan({{scalar, scalar_rate().ns_per_step}, {scalar, scalar_rate().ns_per_step}}, repeats);
+  const TimedPlan sample = timing_plan({{kernel, kernel_rate.ns_per_step}, {kernel, kernel_rate.ns_per_step}}, repeats);
+  const TimedPlan loop = timing_plan({{scalar, rate.ns_per_step}, {scalar, rate.ns_per_step}}, repeats);
   p.timed_seconds = sample.seconds + loop.seconds, p.timed_steps = sample.steps + loop.steps;
   return p;
 }
 
 // The batched kernel on the batches batch(0), ..., batch(count - 1) of the grid, in parallel.
 template <class BatchIndex>
-std::vector<std::vector<EnergyMapPoint>> run_batches(EnergyMapKernel kernel, Coordinates c, const MapSetup& g,
+std::vector<std::vector<EnergyMapPoint>> run_batches(EnergyMapKernel kernel, Coordinates c, const EnergyMapGrid& g,
                                                      std::size_t count, BatchIndex batch) {
   return parallel_map(count, [&](std::size_t b) {
     std::vector<EnergyMapPoint> out(kEnergyMapBatch);
@@ -54,7 +63,7 @@ std::vector<std::vector<EnergyMapPoint>> run_batches(EnergyMapKernel kernel, Coo
 }
 
 // The scalar loop, one trajectory at a time, single thread: ns per step and the spread, per coordinate system.
-void time_scalar_loop(Context& ctx, const MapSetup& g, int repeats, Value& scalar_ns, Value& scalar_spread, double& drift) {
+void time_scalar_loop(Context& ctx, const EnergyMapGrid& g, int repeats, Value& scalar_ns, Value& scalar_spread, double& drift) {
   const Scene& s = ctx.scene;
   ctx.progress("cost: scalar reference loop");
   const auto nsc = static_cast<std::size_t>(
@@ -83,7 +92,7 @@ void time_scalar_loop(Context& ctx, const MapSetup& g, int repeats, Value& scala
 // kernel's time where the map did not run in this process and, always, the repeats its target is judged over):
 // the wall times of the two systems; their trajectory-steps in `steps`, their ns per step per core in `ns_per_step`,
 // the sample in timing.kernel_sample.
-std::vector<RunTime> time_kernel_sample(Context& ctx, const MapSetup& g, int repeats, Value& timing, double& steps,
+std::vector<RunTime> time_kernel_sample(Context& ctx, const EnergyMapGrid& g, int repeats, Value& timing, double& steps,
                                         std::vector<RunTime>& ns_per_step) {
   ctx.progress("cost: batched kernel on a sample of batches");
   const auto kernels = energy_map_kernels();
@@ -139,9 +148,9 @@ void against_targets(Value& timing, const Scene& s, double ns_cart, double ns_po
 
 // The batched kernel (the map study's wall time, or a sample of batches), the scalar loop, and the kernels
 // against their targets: summary timing.
-void run_timing(Context& ctx, const MapCost& map) {
+void run_timing(Context& ctx, const EnergyMapCost& map) {
   const Scene& s = ctx.scene;
-  const MapSetup g = map_setup(s);
+  const EnergyMapGrid g = energy_map_grid(s);
   const auto kernels = energy_map_kernels();
   Value timing;
   timing["kernel_isa"] = kernels.front().isa;
@@ -195,8 +204,8 @@ void run_timing(Context& ctx, const MapCost& map) {
 
 }  // namespace
 
-Study kernel_timing_study(const MapCost& map) {
-  std::vector<std::string> reads = kMapKeys;
+Study kernel_timing_study(const EnergyMapCost& map) {
+  std::vector<std::string> reads = kEnergyMapKeys;
   reads.emplace_back("timing.repeats");
   return {.name = "kernel_timing",
           .about = "cost: batched kernel against the scalar loop, ns per step",

@@ -8,9 +8,16 @@
 // loop, ns per step (study `kernel_timing`, formerly `timing`)                         kernel_timing.cpp
 // and the energy error against wall time and force evaluations (work-precision of the
 // two coordinate systems on a few starts, study `cost`)                                cost.cpp
-// Here: the studies, and the scene keys that several of them read.
-#include "energy_map.hpp"
-#include "geomint/runner/timing.hpp"
+// Here: the studies, in the order they run, and the scene keys that several of them read.
+#include "geomint/runner/experiment.hpp"
+#include "geomint/sweep/energy_map_grid.hpp"
+
+namespace geomint::energy_map {
+Study map_study(EnergyMapCost& cost);                  // 000 Fig 6 (and --resume)             map.cpp
+Study first_integrals_study();                         // 000 Sec 5.2                           first_integrals.cpp
+Study kernel_timing_study(const EnergyMapCost& map);   // batched kernel against scalar loop    kernel_timing.cpp
+Study cost_study();                                    // work-precision, Cartesian and polar   cost.cpp
+}  // namespace geomint::energy_map
 
 using namespace geomint;
 using namespace geomint::energy_map;
@@ -39,7 +46,7 @@ Schema shared_keys() {
 }  // namespace
 
 int main(int argc, char** argv) {
-  MapCost map_cost;  // the map study's kernel wall time, for the timing study of the same run
+  EnergyMapCost map_cost;  // the map study's kernel wall time, for the timing study of the same run
   ExperimentSpec spec{"energy_map",
                       "000 Fig. 6: RMS energy error of symplectic Euler in Cartesian and polar coordinates "
                       "over initial conditions; first integrals of Sec. 5.2",

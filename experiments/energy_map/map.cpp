@@ -4,24 +4,19 @@
 // the analytic boundary of the polar runs' divergence, r0 >= 2l + (2mg/k) cos(theta0); the energy of
 // (72) against (73) at the map's starts (000 eq. (63)); and the statistics the report gives about the map.
 #include <algorithm>
-#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <span>
-#include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "energy_map.hpp"
-#include "geomint/core/state.hpp"
 #include "geomint/methods/registry.hpp"
-#include "geomint/runner/checkpoint.hpp"
+#include "geomint/runner/experiment.hpp"
 #include "geomint/runner/summary.hpp"
+#include "geomint/sweep/energy_map_grid.hpp"
 #include "geomint/sweep/energy_map_statistics.hpp"
 #include "geomint/systems/elastic_pendulum.hpp"
-#include "geomint/transforms/polar.hpp"
 
 namespace geomint::energy_map {
 namespace {
@@ -31,36 +26,12 @@ struct Point {
   EnergyMapPoint cart, polar;
 };
 
-// A batch's points as a checkpoint record (runner/checkpoint.hpp): eps and diverge_step per point, eps
-// of a diverged point (NaN by contract) stored as 0 and restored from its diverge_step >= 0.
-struct BatchCodec {
-  void encode(const std::vector<EnergyMapPoint>& batch, std::vector<double>& out) const {
-    for (const EnergyMapPoint& p : batch) {
-      if (p.diverge_step >= 0 && !std::isnan(p.eps)) throw std::logic_error("energy_map: a diverged point with a finite eps");
-      out.push_back(p.diverge_step >= 0 ? 0.0 : p.eps), out.push_back(static_cast<double>(p.diverge_step));
-    }
-  }
-  std::vector<EnergyMapPoint> decode(std::span<const double> v) const {
-    if (v.size() != 2 * kEnergyMapBatch)
-      throw std::invalid_argument("a record of " + std::to_string(v.size()) + " values, not " + std::to_string(2 * kEnergyMapBatch));
-    std::vector<EnergyMapPoint> batch(kEnergyMapBatch);
-    for (std::size_t i = 0; i < batch.size(); ++i) {
-      const double step = v[2 * i + 1];
-      if (!(step >= -1 && step == std::floor(step)))
-        throw std::invalid_argument("point " + std::to_string(i) + ": diverge_step " + std::to_string(step) + " is not a step");
-      batch[i].diverge_step = static_cast<std::int64_t>(step);
-      batch[i].eps = step >= 0 ? std::numeric_limits<double>::quiet_NaN() : v[2 * i];
-    }
-    return batch;
-  }
-};
-
 // The grid spacing of an inclusive linspace (0 for a single value).
 double spacing(const std::vector<double>& v) { return v.size() > 1 ? (v.back() - v.front()) / static_cast<double>(v.size() - 1) : 0.0; }
 
 // map_grid.csv: x0, y0, H0 of map.csv in grid scans, a blank line between the rows of the grid (the
 // form gnuplot contours: figures/energy_map_fig6.gp draws the H_0 isolines from it).
-std::string grid_scans(const MapSetup& g, const std::vector<EnergyMapRow>& rows) {
+std::string grid_scans(const EnergyMapGrid& g, const std::vector<EnergyMapRow>& rows) {
   std::string out = "x0,y0,H0\n";
   for (std::size_t i = 0; i < rows.size(); ++i) {
     out += format_double(rows[i].x0) + "," + format_double(rows[i].y0) + "," + format_double(rows[i].H0) + "\n";
@@ -70,14 +41,12 @@ std::string grid_scans(const MapSetup& g, const std::vector<EnergyMapRow>& rows)
 }
 
 // The largest |H of (72) - H of (73)| at rest over the initial positions of the map (the origin
-// aside), with (r, theta) from (x, y) by `to_polar`: 000 eq. (63), either half.
-template <class ToPolar>
-double polar_mismatch(const ElasticPendulumParams& p, const std::vector<EnergyMapRow>& rows, ToPolar to_polar) {
-  const ElasticPendulumPolarWithGravity polar{p.m, {SpringPolarTerm{p.k, p.l}, GravityPolarTerm{p.m, p.g}}};
+// aside), with (r, theta) from (x, y) by 000 eq. (63), or by (63) as printed.
+double polar_mismatch(const ElasticPendulumParams& p, const std::vector<EnergyMapRow>& rows, bool as_printed_63) {
   double worst = 0;
   for (const EnergyMapRow& row : rows)
     if (std::hypot(row.x0, row.y0) > 0)
-      worst = std::max(worst, std::abs(polar.H(to_polar(make_state<2>(Vec<2>(row.x0, row.y0), Vec<2>(0.0, 0.0)))) - row.H0));
+      worst = std::max(worst, std::abs(polar_energy_at_rest(p, row.x0, row.y0, as_printed_63) - row.H0));
   return worst;
 }
 
@@ -86,7 +55,7 @@ double polar_mismatch(const ElasticPendulumParams& p, const std::vector<EnergyMa
 // upright line; in polar coordinates theta0 = fl(pi) has sin(theta0) ~ 1.2e-16, and the run falls
 // over like its neighbours. Checked at the column point nearest (0, -l): the Cartesian run started
 // at x0 = r0 sin(fl(pi)), the polar run's own start, against both runs of the map there.
-Value upright_column(const MapSetup& g, const std::vector<Point>& points) {
+Value upright_column(const EnergyMapGrid& g, const std::vector<Point>& points) {
   const auto zero = std::find(g.xs.begin(), g.xs.end(), 0.0);
   if (zero == g.xs.end() || g.ys.front() >= 0) return nullptr;
   const auto nearest = std::min_element(g.ys.begin(), g.ys.end(), [&](double a, double b) {
@@ -110,41 +79,31 @@ Value upright_column(const MapSetup& g, const std::vector<Point>& points) {
 }
 
 StudyPlan plan_map(const Scene& s) {
-  const GridCount n = grid_count(s);
+  const EnergyMapCount n = energy_map_count(s);
   const double padded = n.batches * kEnergyMapBatch;
   // x0, y0 (padded) and both runs' points, then per grid point the statistics row and the text of map.csv
   // and map_grid.csv (about 160 and 60 characters)
   const double bytes = padded * (2 * sizeof(double) + sizeof(Point)) + n.points * (sizeof(EnergyMapRow) + 220.0);
   const double steps = 2 * padded * n.steps;  // one run per coordinate system and grid point (padding lanes die at once)
-  return {steps, steps, bytes, kernel_rate().ns_per_step, kernel_rate().note, 2 * n.batches};  // (batches of both maps)
+  return {steps, steps, bytes, energy_map_kernel_rate().ns_per_step, energy_map_kernel_rate().note, 2 * n.batches};  // (batches of both maps)
 }
 
 // ---- Fig. 6: the map, in rounds of batches with a checkpoint after each ----
 
 // Each coordinate system's batches as a checkpointed map (runner/checkpoint.hpp): a stopped run
 // continues with --resume; the kernel's wall time and the batches computed in this run, for the cost.
-std::vector<Point> integrate_map(Context& ctx, const MapSetup& g, MapCost& cost) {
-  const EnergyMapKernel kernel = energy_map_kernels().front().run;
+std::vector<Point> integrate_map(Context& ctx, const EnergyMapGrid& g, EnergyMapCost& cost) {
   std::vector<Point> points(g.nbatches * kEnergyMapBatch);
   double steps_done[2] = {0, 0}, wall[2] = {0, 0};
   for (const auto c : {Coordinates::cartesian, Coordinates::polar}) {
     const int ci = c == Coordinates::cartesian ? 0 : 1;
-    std::atomic<std::size_t> computed = 0;
+    std::size_t computed = 0;
     const auto t0 = std::chrono::steady_clock::now();
-    const auto batches = checkpointed_map<std::vector<EnergyMapPoint>>(
-        ctx, {std::string("map.") + coordinates_name(c)}, g.nbatches,
-        [&](std::size_t b) {
-          std::vector<EnergyMapPoint> out(kEnergyMapBatch);
-          kernel(c, g.P, &g.x0[b * kEnergyMapBatch], &g.y0[b * kEnergyMapBatch], out.data());
-          ++computed;
-          return out;
-        },
-        BatchCodec{});
+    const auto map = energy_map_points(ctx, std::string("map.") + coordinates_name(c), g, c, computed);
     wall[ci] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     steps_done[ci] = static_cast<double>(g.npoints) * static_cast<double>(g.P.steps) *
                      static_cast<double>(computed) / static_cast<double>(g.nbatches);
-    for (std::size_t i = 0; i < points.size(); ++i)
-      (ci == 0 ? points[i].cart : points[i].polar) = batches[i / kEnergyMapBatch][i % kEnergyMapBatch];
+    for (std::size_t i = 0; i < points.size(); ++i) (ci == 0 ? points[i].cart : points[i].polar) = map[i];
   }
   // (a run resumed after one coordinate system was done has no kernel time for it: the timing study samples)
   cost = {steps_done[0] > 0 && steps_done[1] > 0, wall[0], wall[1], steps_done[0], steps_done[1]};
@@ -153,7 +112,7 @@ std::vector<Point> integrate_map(Context& ctx, const MapSetup& g, MapCost& cost)
 
 // The map, and the analytic boundary of the polar runs r0 >= 2l + (2mg/k) cos(theta0), cos(theta0) = y0/r0:
 // map.csv, map_grid.csv and the summary.
-void write_map(Context& ctx, const MapSetup& g, const std::vector<Point>& points) {
+void write_map(Context& ctx, const EnergyMapGrid& g, const std::vector<Point>& points) {
   const Scene& s = ctx.scene;
   Csv map({"x0", "y0", "H0", "eps_cartesian", "eps_polar", "diverged_cartesian", "diverged_polar",
            "diverge_step_polar"});
@@ -161,14 +120,12 @@ void write_map(Context& ctx, const MapSetup& g, const std::vector<Point>& points
   std::int64_t agree = 0, counted = 0, both_alive = 0, polar_better = 0, cart_diverged = 0, polar_diverged = 0;
   const auto [l, m, k, gravity, dt, steps, blowup] = g.P;
   const ElasticPendulumParams pendulum{l, m, k, gravity};
-  const ElasticPendulumWithGravity cart{m, {SpringTerm{k, l}, GravityTerm{m, gravity}}};
   std::vector<EnergyMapRow> rows;
   for (std::size_t i = 0; i < g.npoints; ++i) {
     const double x = g.x0[i], y = g.y0[i], r = std::hypot(x, y);
     const Point& p = points[i];
     const bool dc = p.cart.diverge_step >= 0, dp = p.polar.diverge_step >= 0;
-    const auto at_rest = make_state<2>(Vec<2>(x, y), Vec<2>(0.0, 0.0));
-    const double H0 = cart.H(at_rest);
+    const double H0 = cartesian_energy_at_rest(pendulum, x, y);
     map.row(x, y, H0, p.cart.eps, p.polar.eps, static_cast<std::int64_t>(dc), static_cast<std::int64_t>(dp),
             p.polar.diverge_step);
     rows.push_back({x, y, H0, p.cart.eps, p.polar.eps, dc, dp, p.polar.diverge_step});
@@ -187,10 +144,8 @@ void write_map(Context& ctx, const MapSetup& g, const std::vector<Point>& points
   reproduced["fraction_polar_better"] = both_alive ? fraction(polar_better, both_alive) : 0.0;
   reproduced["fraction_diverged_polar"] = fraction(polar_diverged, static_cast<std::int64_t>(g.npoints));
   reproduced["fraction_diverged_cartesian"] = fraction(cart_diverged, static_cast<std::int64_t>(g.npoints));
-  reproduced["polar_energy_mismatch"] = polar_mismatch(pendulum, rows, polar_from_cartesian);
-  reproduced["printed_63_energy_mismatch"] = polar_mismatch(pendulum, rows, [](const PhaseState<2>& z) {
-    return make_state<2>(polar_position_as_printed_63(z.q), Vec<2>(0.0, 0.0));  // (at rest: p = 0 in either)
-  });
+  reproduced["polar_energy_mismatch"] = polar_mismatch(pendulum, rows, false);
+  reproduced["printed_63_energy_mismatch"] = polar_mismatch(pendulum, rows, true);
   merge(ctx.summary, "timing", {{"kernel_isa", energy_map_kernels().front().isa}});  // (the kernel the map ran)
   ctx.summary["grid"] = {{"nx", g.xs.size()}, {"ny", g.ys.size()}, {"points", g.npoints}, {"steps", g.P.steps},
                          {"dx", spacing(g.xs)}, {"dy", spacing(g.ys)}};
@@ -203,9 +158,9 @@ void write_map(Context& ctx, const MapSetup& g, const std::vector<Point>& points
   ctx.summary["map_statistics"]["upright_column"] = upright_column(g, points);
 }
 
-void run_map(Context& ctx, MapCost& cost) {
+void run_map(Context& ctx, EnergyMapCost& cost) {
   const Scene& s = ctx.scene;
-  const MapSetup g = map_setup(s);
+  const EnergyMapGrid g = energy_map_grid(s);
   const std::vector<Point> points = integrate_map(ctx, g, cost);
   write_map(ctx, g, points);
 }
@@ -213,8 +168,8 @@ void run_map(Context& ctx, MapCost& cost) {
 
 }  // namespace
 
-Study map_study(MapCost& cost) {
-  std::vector<std::string> reads = kMapKeys;
+Study map_study(EnergyMapCost& cost) {
+  std::vector<std::string> reads = kEnergyMapKeys;
   reads.emplace_back("checkpoint");
   return {.name = "map",
           .makes = {{"000", "Fig. 6"}},
@@ -225,7 +180,7 @@ Study map_study(MapCost& cost) {
                                 "the more accurate"),
           .reads = reads,
           .run = [&cost](Context& ctx) { run_map(ctx, cost); },
-          .validate = check_map,
+          .validate = check_energy_map,
           .plan = plan_map};
 }
 

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <vector>
 
-#include "euler_compensation.hpp"
 #include "geomint/analysis/convergence_study.hpp"
 #include "geomint/core/integrate.hpp"
 #include "geomint/integrators/explicit_euler.hpp"
@@ -11,12 +10,16 @@
 #include "geomint/observables/error_norms.hpp"
 #include "geomint/observables/order_fit.hpp"
 #include "geomint/runner/distributed_map.hpp"
+#include "geomint/runner/experiment.hpp"
 #include "geomint/runner/summary.hpp"
 #include "geomint/systems/exponential_decay.hpp"
 #include "geomint/systems/gompertz.hpp"
+#include "geomint/systems/harmonic_oscillator.hpp"
 
 namespace geomint::euler_compensation {
 namespace {
+
+constexpr double kEvalsPerStep = 4;  // --plan: force evaluations per step, the most of the paper scene's methods (rk4)
 
 // Max over t_j in [0, N h] of the global error of explicit Euler on a scalar ODE.
 template <class Sys>
@@ -33,19 +36,19 @@ void run_convergence(Context& ctx) {
   const ExponentialDecay decay{s.real("decay.alpha")};
   const Gompertz gompertz{s.real("gompertz.a"), s.real("gompertz.b")};
   const double gy0 = s.real("gompertz.y0");
-  const State z0 = initial_state(s);
-  const double H0 = Oscillator{}.H(z0);
+  const PhaseState<1> z0 = oscillator_start(s);
+  const double H0 = HarmonicOscillator{}.H(z0);
   const auto hs = s.reals("convergence.h");
   const double t_end = s.real("convergence.t_end"), k = s.real("oscillator.k");
   const auto methods = s.texts("convergence.methods");
   struct Row {
-    std::vector<EnergyRun> osc;  // one per method
+    std::vector<OscillatorEnergyErrors> osc;  // one per method
     double ee_decay, ee_gompertz;
     auto fields() { return std::tie(osc, ee_decay, ee_gompertz); }
   };
   const auto rows = distributed_map(hs.size(), [&](std::size_t j) {
     const std::int64_t n = steps_to(t_end, hs[j]);
-    return Row{oscillator_runs(methods, z0, hs[j], k, n), euler_max_err(decay, s.real("decay.y0"), hs[j], n),
+    return Row{oscillator_energy_errors(methods, k, z0, hs[j], n), euler_max_err(decay, s.real("decay.y0"), hs[j], n),
                euler_max_err(gompertz, gy0, hs[j], n)};
   });
   std::vector<double> steps;
@@ -56,9 +59,9 @@ void run_convergence(Context& ctx) {
     for (std::size_t m = 0; m < methods.size(); ++m)
       conv.column(label_of(methods[m]) + suffix, [&](std::size_t, std::size_t j) { return field(rows[j].osc[m]); });
   };
-  per_method("_max", [](const EnergyRun& r) { return r.max_err; });
-  per_method("_rms", [](const EnergyRun& r) { return r.rms_err; });
-  per_method("_evals", [](const EnergyRun& r) { return static_cast<double>(r.force_evals); });
+  per_method("_max", [](const OscillatorEnergyErrors& r) { return r.max_err; });
+  per_method("_rms", [](const OscillatorEnergyErrors& r) { return r.rms_err; });
+  per_method("_evals", [](const OscillatorEnergyErrors& r) { return static_cast<double>(r.force_evals); });
   const std::string ee = label_of("explicit_euler");  // (the right panel's method, on (14) and (17))
   conv.column(ee + "_decay_max", [&](std::size_t, std::size_t j) { return rows[j].ee_decay; })
       .column(ee + "_gompertz_max", [&](std::size_t, std::size_t j) { return rows[j].ee_gompertz; });
@@ -84,10 +87,10 @@ void run_convergence(Context& ctx) {
 StudyPlan plan_convergence(const Scene& s) {
   const double methods = static_cast<double>(s.texts("convergence.methods").size());
   const double steps = (methods + 2) * steps_to_each(s.real("convergence.t_end"), s.reals("convergence.h"));  // and Euler on (14), (17)
-  return {steps, steps * kEvalsPerStep, static_cast<double>(s.reals("convergence.h").size()) * (4 + 3 * methods) * kCellBytes,
-          oscillator_rate().ns_per_step, oscillator_rate().note};
+  const PlanRate& rate = plan_rate("oscillator compensated symplectic euler");
+  return {steps, steps * kEvalsPerStep, static_cast<double>(s.reals("convergence.h").size()) * (4 + 3 * methods) * kCsvCellBytes,
+          rate.ns_per_step, rate.note};
 }
-
 
 }  // namespace
 
@@ -97,14 +100,15 @@ Study convergence_study() {
           .about = "error in H against h: orders 1 and 2",
           .files = {"fig9_convergence.csv", "orders.csv"},
           .keys = Schema()
-                      .texts("convergence.methods", oscillator_method_choices(), 1,
+                      .texts("convergence.methods", compensated_oscillator_choices(), 1,
                              "methods of Fig 9 on the oscillator (registry names or labels); compensated_symplectic_euler "
                              "uses oscillator.k")
                       .reals("convergence.h", positive(), 3, "steps of the convergence study (Fig 9); each divides t_end"),
           .reads = {"convergence.t_end", "oscillator.q0", "oscillator.p0", "oscillator.k", "decay.alpha", "decay.y0",
                     "gompertz.a", "gompertz.b", "gompertz.y0"},
           .run = run_convergence,
-          .validate = [](const Scene& s) { check_steps(s, "convergence.h", "convergence.methods"); },
+          .validate =
+              [](const Scene& s) { check_compensated_methods(s, "convergence.h", "convergence.methods", "convergence.t_end"); },
           .plan = plan_convergence};
 }
 

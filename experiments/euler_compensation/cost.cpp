@@ -10,33 +10,36 @@
 #include <string>
 #include <vector>
 
-#include "euler_compensation.hpp"
 #include "geomint/analysis/work_precision_set.hpp"
 #include "geomint/core/integrate.hpp"
 #include "geomint/runner/distributed_map.hpp"
+#include "geomint/runner/experiment.hpp"
 #include "geomint/runner/summary.hpp"
 #include "geomint/runner/timing.hpp"
 #include "geomint/runner/timing_report.hpp"
+#include "geomint/systems/harmonic_oscillator.hpp"
 
 namespace geomint::euler_compensation {
 namespace {
 
+constexpr double kEvalsPerStep = 4;  // --plan: force evaluations per step, the most of the paper scene's methods (rk4)
+
 // The set "energy": counting runs in parallel, then every (h, method) timed together (runner/timing.hpp).
-WorkPrecisionSet energy_set(const Scene& s, const State& z0, int workers) {
+WorkPrecisionSet energy_set(const Scene& s, const PhaseState<1>& z0, int workers) {
   const double t_end = s.real("convergence.t_end"), k = s.real("oscillator.k");
   const int repeats = static_cast<int>(s.integer("timing.repeats"));
   const auto methods = s.texts("timing.methods");
   const auto hs = s.reals("timing.h");
   const auto counted = distributed_map(hs.size(), [&](std::size_t i) {
-    return oscillator_runs(methods, z0, hs[i], k, steps_to(t_end, hs[i]));
+    return oscillator_energy_errors(methods, k, z0, hs[i], steps_to(t_end, hs[i]));
   });
   WorkPrecisionSet energy("largest energy error |H(q_j, p_j) - H_0| over the run to convergence.t_end");
   for (std::size_t i = 0; i < hs.size(); ++i) {
     const std::int64_t n = steps_to(t_end, hs[i]);
     for (std::size_t m = 0; m < methods.size(); ++m) {
-      const EnergyRun& r = counted[i][m];
+      const OscillatorEnergyErrors& r = counted[i][m];
       energy.add({label_of(methods[m]), hs[i], static_cast<double>(n), {}, static_cast<double>(r.force_evals), r.max_err},
-                 oscillator_method_timed(methods[m], k, z0, hs[i], n));
+                 oscillator_timed(methods[m], k, z0, hs[i], n));
     }
   }
   energy.time(repeats, workers);
@@ -45,7 +48,7 @@ WorkPrecisionSet energy_set(const Scene& s, const State& z0, int workers) {
 
 void run_cost(Context& ctx) {
   const Scene& s = ctx.scene;
-  const State z0 = initial_state(s);
+  const PhaseState<1> z0 = oscillator_start(s);
   const int repeats = static_cast<int>(s.integer("timing.repeats"));
   const auto methods = s.texts("timing.methods");
   ctx.progress("cost: work-precision runs");
@@ -60,7 +63,7 @@ void run_cost(Context& ctx) {
   const double h8 = s.real("oscillator.h"), k = s.real("oscillator.k");
   const std::int64_t n_ns = s.integer("timing.steps");
   InterleavedTiming timing(repeats, kTimingFloorS, ctx.threads);  // runs of their own, not the set's: the step of Fig 8 over timing.steps steps
-  for (const auto& m : methods) timing.add(oscillator_method_timed(m, k, z0, h8, n_ns));
+  for (const auto& m : methods) timing.add(oscillator_timed(m, k, z0, h8, n_ns));
   const std::vector<RunTime> times = timing.run();
   std::vector<std::string> labels;
   std::vector<RunTime> per_step;
@@ -84,17 +87,17 @@ void run_cost(Context& ctx) {
 StudyPlan plan_cost(const Scene& s) {
   const auto methods = s.texts("timing.methods");
   const double counted = static_cast<double>(methods.size()) * steps_to_each(s.real("convergence.t_end"), s.reals("timing.h"));
+  const PlanRate& rate = plan_rate("oscillator compensated symplectic euler");
   std::vector<TimedCall> calls;  // the set's runs, then a run of timing.steps per method
-  for (double h : s.reals("timing.h")) calls.insert(calls.end(), methods.size(), TimedCall{s.real("convergence.t_end") / h, oscillator_rate().ns_per_step});
-  calls.insert(calls.end(), methods.size(), TimedCall{static_cast<double>(s.integer("timing.steps")), oscillator_rate().ns_per_step});
+  for (double h : s.reals("timing.h")) calls.insert(calls.end(), methods.size(), TimedCall{s.real("convergence.t_end") / h, rate.ns_per_step});
+  calls.insert(calls.end(), methods.size(), TimedCall{static_cast<double>(s.integer("timing.steps")), rate.ns_per_step});
   StudyPlan p;
   p.steps = counted, p.force_evals = counted * kEvalsPerStep;
-  p.memory_bytes = static_cast<double>(calls.size()) * 8 * kCellBytes, p.ns_per_step = oscillator_rate().ns_per_step;
-  p.note = "counting runs, then the timing protocol; " + oscillator_rate().note;
+  p.memory_bytes = static_cast<double>(calls.size()) * 8 * kCsvCellBytes, p.ns_per_step = rate.ns_per_step;
+  p.note = "counting runs, then the timing protocol; " + rate.note;
   p.time(s, calls);
   return p;
 }
-
 
 }  // namespace
 
@@ -103,12 +106,12 @@ Study cost_study() {
           .about = "cost of Figs 8-9's methods: error against wall time and force evaluations",
           .files = {"cost_energy.csv"},
           .keys = Schema()
-                      .texts("timing.methods", oscillator_method_choices(), 1, "methods of the cost study (registry names or labels)")
+                      .texts("timing.methods", compensated_oscillator_choices(), 1, "methods of the cost study (registry names or labels)")
                       .reals("timing.h", positive(), 3, "steps of the work-precision runs (to convergence.t_end)")
                       .integer("timing.steps", at_least(1), "steps of the run that measures ns per step"),
           .reads = {"timing.repeats", "convergence.t_end", "oscillator.q0", "oscillator.p0", "oscillator.k", "oscillator.h"},
           .run = run_cost,
-          .validate = [](const Scene& s) { check_steps(s, "timing.h", "timing.methods"); },
+          .validate = [](const Scene& s) { check_compensated_methods(s, "timing.h", "timing.methods", "convergence.t_end"); },
           .plan = plan_cost,
           .aliases = {"timing"}};
 }

@@ -1,7 +1,11 @@
 // 000 Fig 2: explicit Euler on y' = -alpha y (14), in y and in ybar = Psi(y) of (15); and the field
 // (16) as printed, checked against (15).
+#include <string>
+
+#include "geomint/analysis/variable_compensation.hpp"
+#include "geomint/methods/registry.hpp"
+#include "geomint/runner/experiment.hpp"
 #include "geomint/systems/exponential_decay.hpp"
-#include "scalar_figure.hpp"
 
 namespace geomint::euler_compensation {
 namespace {
@@ -23,19 +27,20 @@ void run_decay(Context& ctx) {
   const Scene& s = ctx.scene;
   ctx.progress("Fig 2: explicit Euler in y and ybar");
   const ExponentialDecay decay{s.real("decay.alpha")};
-  write_scalar_figure(ctx, "fig2_decay", "decay", decay, DecayCompensation{decay.alpha}, s.real("decay.y0"),
-                      s.real("decay.h"), s.integer("decay.steps"));
+  write_compensated_euler_figure(ctx, "fig2_decay", "decay", decay, DecayCompensation{decay.alpha}, s.real("decay.y0"),
+                                 s.real("decay.h"), s.integer("decay.steps"));
   // (16) as printed, ybar' = -alpha, in place of the field of (15), at decay.printed_alpha (at the
   // alpha = 1 of Fig 2 the two coincide): the error of Euler in ybar mapped back by (15).
   const ExponentialDecay check{s.real("decay.printed_alpha")};
   ctx.summary["reproduced"]["decay_printed_field_max_rel_err"] =
-      scalar_figure(check, DecayCompensation{check.alpha}, DecayFieldAsPrinted16{check.alpha}, s.real("decay.y0"),
-                    s.real("decay.h"), s.integer("decay.steps"))
+      compensated_euler_figure(check, DecayCompensation{check.alpha}, DecayFieldAsPrinted16{check.alpha},
+                               s.real("decay.y0"), s.real("decay.h"), s.integer("decay.steps"))
           .compensated_max_rel_err;
 }
 
-
-StudyPlan plan_decay(const Scene& s) { return plan_scalar(static_cast<double>(s.integer("decay.steps")), 2); }
+StudyPlan plan_decay(const Scene& s) {
+  return compensated_euler_plan(static_cast<double>(s.integer("decay.steps")), 2);
+}
 
 }  // namespace
 

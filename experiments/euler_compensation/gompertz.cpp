@@ -1,8 +1,10 @@
 // 000 Fig 3: explicit Euler on the Gompertz equation (17), in y and in ybar of (18).
 #include <cmath>
 
+#include "geomint/analysis/variable_compensation.hpp"
+#include "geomint/methods/registry.hpp"
+#include "geomint/runner/experiment.hpp"
 #include "geomint/systems/gompertz.hpp"
-#include "scalar_figure.hpp"
 
 namespace geomint::euler_compensation {
 namespace {
@@ -25,12 +27,14 @@ void run_gompertz(Context& ctx) {
   ctx.progress("Fig 3: explicit Euler in y and ybar");
   const Gompertz gompertz{s.real("gompertz.a"), s.real("gompertz.b")};
   const double y0 = s.real("gompertz.y0");
-  write_scalar_figure(ctx, "fig3_gompertz", "gompertz", gompertz, GompertzCompensation{gompertz.a, gompertz.b, y0},
-                      y0, s.real("gompertz.h"), s.integer("gompertz.steps"));
+  write_compensated_euler_figure(ctx, "fig3_gompertz", "gompertz", gompertz,
+                                 GompertzCompensation{gompertz.a, gompertz.b, y0}, y0, s.real("gompertz.h"),
+                                 s.integer("gompertz.steps"));
 }
 
-
-StudyPlan plan_gompertz(const Scene& s) { return plan_scalar(static_cast<double>(s.integer("gompertz.steps")), 1); }
+StudyPlan plan_gompertz(const Scene& s) {
+  return compensated_euler_plan(static_cast<double>(s.integer("gompertz.steps")), 1);
+}
 
 }  // namespace
 

@@ -5,8 +5,16 @@
 //          the compensating point transformation (82)                            oscillator.cpp
 //   Fig 9  error in H against h for both: fitted orders 1 and 2                  convergence.cpp
 // plus what the accuracy costs (study `cost`): error against wall time, ns per step  cost.cpp
-// Here: the studies, and the scene keys that several of them read.
-#include "euler_compensation.hpp"
+// Here: the studies, in the order they run, and the scene keys that several of them read.
+#include "geomint/runner/experiment.hpp"
+
+namespace geomint::euler_compensation {
+Study decay_study();        // 000 Fig 2      decay.cpp
+Study gompertz_study();     // 000 Fig 3      gompertz.cpp
+Study oscillator_study();   // 000 Fig 8      oscillator.cpp
+Study convergence_study();  // 000 Fig 9      convergence.cpp
+Study cost_study();         // cost of Figs 8-9's methods   cost.cpp
+}  // namespace geomint::euler_compensation
 
 using namespace geomint;
 using namespace geomint::euler_compensation;

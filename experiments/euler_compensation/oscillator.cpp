@@ -5,21 +5,26 @@
 #include <numbers>
 #include <vector>
 
-#include "euler_compensation.hpp"
 #include "geomint/core/integrate.hpp"
 #include "geomint/methods/methods.hpp"
 #include "geomint/observables/error_norms.hpp"
+#include "geomint/runner/experiment.hpp"
 #include "geomint/runner/summary.hpp"
+#include "geomint/systems/harmonic_oscillator.hpp"
 #include "geomint/transforms/point_transform.hpp"
 
 namespace geomint::euler_compensation {
 namespace {
 
+using State = PhaseState<1>;
+
+constexpr int kExactCurvePoints = 400;  // resolution of the exact curve
+
 void run_oscillator(Context& ctx) {
   const Scene& s = ctx.scene;
   ctx.progress("Fig 8: phase portraits");
-  const Oscillator osc;
-  const State z0 = initial_state(s);
+  const HarmonicOscillator osc;  // (74)
+  const State z0 = oscillator_start(s);
   const double H0 = osc.H(z0);
   const double h = s.real("oscillator.h"), k = s.real("oscillator.k");
   const auto se = SymplecticEulerPQ::bind(osc);
@@ -32,7 +37,7 @@ void run_oscillator(Context& ctx) {
   double max_qhat = 0, dist_se = 0, dist_comp = 0;  // largest distance from the exact orbit, the circle through z0
   const double radius = std::hypot(z0.q[0], z0.p[0]);
   integrate(compensated, z0, h, n, [&](std::int64_t j, const State& zc) {
-    check_finite(zc, "compensated_symplectic_euler", j, h);
+    check_compensated_state(zc, "compensated_symplectic_euler", j, h);
     const State& z = zs[static_cast<std::size_t>(j)];
     const double e_se = osc.H(z) - H0, e_comp = osc.H(zc) - H0;
     err_se.add(e_se), err_comp.add(e_comp);
@@ -63,7 +68,8 @@ void run_oscillator(Context& ctx) {
 
 StudyPlan plan_oscillator(const Scene& s) {
   const double n = static_cast<double>(s.integer("oscillator.steps"));
-  return {2 * n, 2 * n, (n + 1) * (sizeof(State) + 8 * kCellBytes), oscillator_rate().ns_per_step, oscillator_rate().note};
+  const PlanRate& rate = plan_rate("oscillator compensated symplectic euler");
+  return {2 * n, 2 * n, (n + 1) * (sizeof(State) + 8 * kCsvCellBytes), rate.ns_per_step, rate.note};
 }
 
 }  // namespace
@@ -76,7 +82,7 @@ Study oscillator_study() {
           .keys = Schema().integer("oscillator.steps", at_least(1), "number of steps in Fig 8"),
           .reads = {"oscillator"},
           .run = run_oscillator,
-          .validate = [](const Scene& s) { check_oscillator_step(s, "oscillator.h", s.real("oscillator.h")); },
+          .validate = [](const Scene& s) { check_compensated_step(s, "oscillator.h", s.real("oscillator.h")); },
           .plan = plan_oscillator};
 }
 

@@ -14,16 +14,23 @@
 #include "geomint/observables/error_norms.hpp"
 #include "geomint/reference/odeint_reference.hpp"
 #include "geomint/runner/timing.hpp"
+#include "geomint/runner/experiment.hpp"
+#include "geomint/runner/summary.hpp"
+#include "geomint/runner/timing_report.hpp"
 #include "geomint/systems/counting.hpp"
-#include "lobatto_table.hpp"
+#include "geomint/systems/harmonic_oscillator.hpp"
 
 namespace geomint::lobatto_table {
 namespace {
 
+using Z1 = PhaseState<1>;
+
+constexpr double kEvalsPerStep = 16;  // --plan: force evaluations per step, the most of 001's methods (Lobatto's Newton)
+
 void check_cost(const Scene& s) {
   check_distinct_methods(s, "timing.methods");
-  check_nonlinear_steps(s);
-  for (const auto& m : s.texts("timing.methods")) check_pendulum_steps(s, "timing.methods", m);
+  check_whole_steps(s, "nonlinear.h", "nonlinear.t_end");
+  check_oscillatory_bounds(s, {"nonlinear.h", NonlinearPendulum::max_frequency(), false, ", frequency 1"}, "timing.methods");
 }
 
 void run_cost(Context& ctx) {
@@ -31,7 +38,8 @@ void run_cost(Context& ctx) {
   ctx.progress("cost");
   const auto nh = s.reals("nonlinear.h");
   const double t_end = s.real("nonlinear.t_end");
-  const auto [pend, pz0] = pendulum(s);
+  const NonlinearPendulum pend;
+  const Z1 pz0 = make_state(s.real("nonlinear.pendulum_q0"), 0.0);
   const Z1 pref = reference_solution(pend, pz0, t_end, s.real("reference.rtol"), s.real("reference.atol"));
   const int repeats = static_cast<int>(s.integer("timing.repeats"));
   const auto methods = s.texts("timing.methods");
@@ -47,7 +55,7 @@ void run_cost(Context& ctx) {
     }
   set.time(repeats, ctx.threads);
   ctx.write("cost_pendulum.csv", set.csv());
-  Value cost = {{"pendulum", set.summary(s.reals("timing.error_targets"))}, {"method", cost_method_text(repeats)}};
+  Value cost = {{"pendulum", set.summary(s.reals("timing.error_targets"))}, {"method", segmented_timing_method_text(repeats, "long_run_*", "long_run_cost.timing_steps")}};
   // ns per step on the pendulum relative to the first of timing.methods
   cost["relative_ns_per_step"] = set.relative_ns_per_step();
   merge(ctx.summary, "cost", cost);  // (long_run_cost adds its sets beside, in either order, or alone)
@@ -61,7 +69,7 @@ StudyPlan plan_cost(const Scene& s) {
   std::vector<TimedCall> calls;
   for (std::size_t m = 0; m < methods.size(); ++m)
     for (double h : s.reals("nonlinear.h")) steps += t_end / h, calls.push_back(TimedCall{t_end / h, rate.ns_per_step});
-  StudyPlan p{steps, steps * kPendulumEvals, static_cast<double>(calls.size()) * 8 * kCellBytes, rate.ns_per_step,
+  StudyPlan p{steps, steps * kEvalsPerStep, static_cast<double>(calls.size()) * 8 * kCsvCellBytes, rate.ns_per_step,
               "a counting run per method and h, then the timing protocol; " + rate.note};
   p.time(s, calls);
   return p;

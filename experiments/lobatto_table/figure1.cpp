@@ -10,14 +10,20 @@
 #include "geomint/methods/by_name.hpp"
 #include "geomint/methods/registry.hpp"
 #include "geomint/methods/scene_methods.hpp"
-#include "lobatto_table.hpp"
+#include "geomint/runner/experiment.hpp"
+#include "geomint/runner/summary.hpp"
+#include "geomint/systems/harmonic_oscillator.hpp"
 
 namespace geomint::lobatto_table {
 namespace {
 
+using Z1 = PhaseState<1>;
+
+constexpr double kEvalsPerStep = 11;  // --plan: force evaluations per step, the most of 001's methods (Lobatto)
+
 void check_figure1(const Scene& s) {
   check_distinct_methods(s, "figure1.methods");
-  check_meshes(s, "figure1.meshes", "figure1.methods", false);
+  check_oscillatory_bounds(s, {"figure1.meshes", 1, true}, "figure1.methods");
 }
 
 // How close Lobatto's curves are at the smallest mesh of the figure: its largest errors in q and p relative to
@@ -42,7 +48,7 @@ Value closeness(const Scene& s, const Value& max_error, double q_amplitude, doub
 void run_figure1(Context& ctx) {
   const Scene& s = ctx.scene;
   ctx.progress("Fig. 1");
-  const auto [osc, A, T, z0] = oscillator(s);
+  const auto [osc, A, T, z0] = oscillator_from_rest(s);
   const auto methods = s.texts("figure1.methods");
   std::vector<std::string> columns = {"j", "t"};
   for (const auto& m : methods) columns.push_back("q_" + label_of(m)), columns.push_back("p_" + label_of(m));
@@ -61,13 +67,8 @@ void run_figure1(Context& ctx) {
     ctx.write("fig1_N" + std::to_string(N) + ".csv", f);
     Value errors = Value::record();
     for (std::size_t k = 0; k < methods.size(); ++k) {
-      double eq = 0, ep = 0;
-      for (std::int64_t j = 0; j <= N; ++j) {
-        const Z1& z = zs[k][static_cast<std::size_t>(j)];
-        const Z1 ex = osc.exact(z0, static_cast<double>(j) * h);
-        eq = std::max(eq, std::abs(z.q[0] - ex.q[0])), ep = std::max(ep, std::abs(z.p[0] - ex.p[0]));
-      }
-      errors[label_of(methods[k])] = {{"q", eq}, {"p", ep}};
+      const PhaseErrors e = max_errors(osc, z0, zs[k], h);
+      errors[label_of(methods[k])] = {{"q", e.q}, {"p", e.p}};
     }
     max_error.push_back(errors);
   }
@@ -88,7 +89,7 @@ StudyPlan plan_figure1(const Scene& s) {
   double steps = 0, largest = 0;
   for (double n : s.reals("figure1.meshes")) steps += methods * n, largest = std::max(largest, n);
   const PlanRate& rate = plan_rate("oscillator lobatto");
-  return {steps, steps * kOscillatorEvals, (largest + 1) * (methods * kStateBytes + (2 + 2 * methods) * kCellBytes),
+  return {steps, steps * kEvalsPerStep, (largest + 1) * (methods * sizeof(Z1) + (2 + 2 * methods) * kCsvCellBytes),
           rate.ns_per_step, rate.note};
 }
 

@@ -10,9 +10,11 @@
 #include "geomint/analysis/lobatto_oscillator.hpp"
 #include "geomint/core/compensated_sum.hpp"
 #include "geomint/core/integrate.hpp"
+#include "geomint/methods/scene_methods.hpp"
 #include "geomint/observables/drift.hpp"
 #include "geomint/runner/distributed_map.hpp"
-#include "lobatto_table.hpp"
+#include "geomint/runner/experiment.hpp"
+#include "geomint/systems/harmonic_oscillator.hpp"
 
 namespace geomint::lobatto_table {
 namespace {
@@ -25,10 +27,10 @@ struct Long {
 };
 
 // One run at step h: the window maxima of |H_d - H_d(0)| (plain and compensated) and of |H - H(0)|.
-Long long_run(const Scene& s, const Oscillator& o, double h, std::int64_t windows) {
+Long long_run(const Scene& s, const OscillatorFromRest& o, double h, std::int64_t windows) {
   const auto& [osc, A, T, z0] = o;
   const std::int64_t n = std::llround(s.real("long_run.periods") * T / h), per = std::max<std::int64_t>(1, n / windows);
-  const Mat<2> Phi = lobatto_matrix(osc, h), PhiI = Phi - Mat<2>::Identity();
+  const Mat<2> Phi = one_step_pq_matrix("lobatto", osc, h), PhiI = Phi - Mat<2>::Identity();
   const double Hd0 = discrete_energy(Phi, z0), H0 = osc.H(z0);
   WindowMaxima wp(per), wc(per), wH(per);
   Vec<2> x(z0.p[0], z0.q[0]), y = x, c = Vec<2>::Zero();
@@ -47,7 +49,7 @@ Long long_run(const Scene& s, const Oscillator& o, double h, std::int64_t window
 void run_long_run(Context& ctx) {
   const Scene& s = ctx.scene;
   ctx.progress("Fig. 2: long runs");
-  const Oscillator o = oscillator(s);
+  const OscillatorFromRest o = oscillator_from_rest(s);
   const auto& [osc, A, T, z0] = o;
   const auto long_h = s.reals("long_run.h");
   const std::int64_t windows = s.integer("long_run.windows");
@@ -95,11 +97,11 @@ void run_long_run(Context& ctx) {
 }
 
 StudyPlan plan_long_run(const Scene& s) {
-  const double periods = s.real("long_run.periods"), T = period_of(s);
+  const double periods = s.real("long_run.periods"), T = oscillator_from_rest(s).T;
   const double windows = static_cast<double>(s.integer("long_run.windows")), runs = static_cast<double>(s.reals("long_run.h").size());
   const double steps = steps_to_each(periods * T, s.reals("long_run.h"));
   const PlanRate& rate = plan_rate("oscillator one-step matrix");
-  return {steps, 0, runs * windows * (3 * sizeof(double) + 5 * kCellBytes), rate.ns_per_step,
+  return {steps, 0, runs * windows * (3 * sizeof(double) + 5 * kCsvCellBytes), rate.ns_per_step,
           "iterates the one-step matrix (13), no force evaluations; " + rate.note};
 }
 
@@ -115,7 +117,7 @@ Study long_run_study() {
                       .integer("long_run.windows", at_least(2), "windows for the maxima of the energy error"),
           .reads = {"long_run.periods", "oscillator"},
           .run = run_long_run,
-          .validate = [](const Scene& s) { check_lobatto_steps(s, "long_run.h", s.real("oscillator.omega")); },
+          .validate = [](const Scene& s) { check_lobatto_bound(s, {"long_run.h", s.real("oscillator.omega")}); },
           .plan = plan_long_run};
 }
 

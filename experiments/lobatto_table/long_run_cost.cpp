@@ -19,21 +19,23 @@
 #include "geomint/methods/scene_methods.hpp"
 #include "geomint/observables/error_norms.hpp"
 #include "geomint/runner/checkpoint.hpp"
+#include "geomint/runner/experiment.hpp"
+#include "geomint/runner/summary.hpp"
 #include "geomint/runner/timing.hpp"
+#include "geomint/runner/timing_report.hpp"
 #include "geomint/systems/counting.hpp"
-#include "lobatto_table.hpp"
+#include "geomint/systems/harmonic_oscillator.hpp"
 
 namespace geomint::lobatto_table {
 namespace {
 
+using Z1 = PhaseState<1>;
+
+constexpr double kEvalsPerStep = 11;  // --plan: force evaluations per step, the most of 001's methods (Lobatto)
+
 void check_long_run_cost(const Scene& s) {
   check_distinct_methods(s, "long_run_cost.methods");
-  for (double h : s.reals("long_run_cost.h")) {
-    const double hw = h * s.real("oscillator.omega");
-    const std::string what = "h = " + format_double(h);
-    for (const auto& m : s.texts("long_run_cost.methods"))
-      check_oscillatory_bound(s, "long_run_cost.h", "long_run_cost.methods", m, hw, what);
-  }
+  check_oscillatory_bounds(s, {"long_run_cost.h", s.real("oscillator.omega")}, "long_run_cost.methods");
 }
 
 // The steps of a run of `periods` periods T at step h.
@@ -49,7 +51,7 @@ struct Measured {
 };
 
 // The counting runs: task = method index * (number of steps) + step index.
-std::vector<Measured> measure(Context& ctx, const Oscillator& o, const std::vector<std::string>& methods,
+std::vector<Measured> measure(Context& ctx, const OscillatorFromRest& o, const std::vector<std::string>& methods,
                               const std::vector<double>& hs, double periods) {
   const auto& [osc, A, T, z0] = o;
   const std::size_t nh = hs.size();
@@ -77,7 +79,7 @@ struct Sets {
 
 // Wall time of the same runs without observation, under the timing protocol (runner/timing.hpp). Writes
 // cost_long_run_phase.csv and cost_long_run_energy.csv.
-Sets time_and_write(Context& ctx, const Oscillator& o, const std::vector<std::string>& methods,
+Sets time_and_write(Context& ctx, const OscillatorFromRest& o, const std::vector<std::string>& methods,
                     const std::vector<double>& hs, double periods, int repeats, const std::vector<Measured>& measured) {
   const auto& [osc, A, T, z0] = o;
   const std::size_t nh = hs.size();
@@ -112,7 +114,7 @@ Sets time_and_write(Context& ctx, const Oscillator& o, const std::vector<std::st
 void run_long_run_cost(Context& ctx) {
   const Scene& s = ctx.scene;
   ctx.progress("cost: long runs on the oscillator");
-  const Oscillator o = oscillator(s);
+  const OscillatorFromRest o = oscillator_from_rest(s);
   const auto& [osc, A, T, z0] = o;
   const auto methods = s.texts("long_run_cost.methods");
   const auto hs = s.reals("long_run_cost.h");
@@ -143,11 +145,11 @@ void run_long_run_cost(Context& ctx) {
   // (long_run_cost.error_targets are phase errors: the energy set has none)
   merge(ctx.summary, "cost", {{"long_run_phase", sets.phase.summary(s.reals("long_run_cost.error_targets"))},
                               {"long_run_energy", sets.energy.summary({})},
-                              {"method", cost_method_text(repeats)}});
+                              {"method", segmented_timing_method_text(repeats, "long_run_*", "long_run_cost.timing_steps")}});
 }
 
 StudyPlan plan_long_run_cost(const Scene& s) {
-  const double periods = s.real("long_run.periods"), T = period_of(s);
+  const double periods = s.real("long_run.periods"), T = oscillator_from_rest(s).T;
   const double methods = static_cast<double>(s.texts("long_run_cost.methods").size());
   const double timed = static_cast<double>(s.integer("long_run_cost.timing_steps"));
   const PlanRate& rate = plan_rate("oscillator lobatto");
@@ -158,8 +160,8 @@ StudyPlan plan_long_run_cost(const Scene& s) {
     counted += methods * n;
     calls.insert(calls.end(), s.texts("long_run_cost.methods").size(), TimedCall{std::min(n, timed), rate.ns_per_step});
   }
-  StudyPlan p{counted, counted * kOscillatorEvals,
-              methods * static_cast<double>(s.reals("long_run_cost.h").size()) * 9 * kCellBytes, rate.ns_per_step,
+  StudyPlan p{counted, counted * kEvalsPerStep,
+              methods * static_cast<double>(s.reals("long_run_cost.h").size()) * 9 * kCsvCellBytes, rate.ns_per_step,
               "the runs, then the timing protocol on their segments; " + rate.note};
   p.time(s, calls);
   return p;

@@ -12,9 +12,18 @@
 //      cost (study cost): error against wall time, nonlinear pendulum        cost.cpp
 //      cost over the long run of Fig 2: error against wall time               long_run_cost.cpp
 // The compared methods are registry names (methods/registry.hpp); CSV columns and summary keys carry
-// their labels. Here: the studies, and the scene keys that several of them read.
-#include "lobatto_table.hpp"
-#include "geomint/runner/timing.hpp"
+// their labels. Here: the studies, in the order they run, and the scene keys that several of them read.
+#include "geomint/runner/experiment.hpp"
+
+namespace geomint::lobatto_table {
+Study table1_study();         // 001 Table 1                                   table1.cpp
+Study figure1_study();        // 001 Fig 1                                     figure1.cpp
+Study long_run_study();       // 001 Fig 2                                     long_run.cpp
+Study stability_study();      // the stability set beyond 001 eq. (10)         stability.cpp
+Study nonlinear_study();      // nonlinear Lagrangians (Newton)                nonlinear.cpp
+Study cost_study();           // cost on the nonlinear pendulum                cost.cpp
+Study long_run_cost_study();  // cost over the long run of Fig 2               long_run_cost.cpp
+}  // namespace geomint::lobatto_table
 
 using namespace geomint;
 using namespace geomint::lobatto_table;

@@ -2,10 +2,10 @@
 // pendulum L = qdot^2/2 + cos q and on a planar elastic pendulum, against odeint's Bulirsch-Stoer
 // reference at nonlinear.t_end: the fitted orders (6), the Newton iterations per step, the compared
 // methods' errors, and the symplecticity of the one-step maps.
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <string>
-#include <tuple>
 #include <vector>
 
 #include "geomint/analysis/convergence_study.hpp"
@@ -18,28 +18,32 @@
 #include "geomint/observables/symplecticity.hpp"
 #include "geomint/reference/odeint_reference.hpp"
 #include "geomint/runner/distributed_map.hpp"
+#include "geomint/runner/experiment.hpp"
+#include "geomint/runner/summary.hpp"
 #include "geomint/systems/elastic_pendulum.hpp"
-#include "lobatto_table.hpp"
+#include "geomint/systems/harmonic_oscillator.hpp"
 
 namespace geomint::lobatto_table {
 namespace {
+
+using Z1 = PhaseState<1>;
+
+constexpr double kEvalsPerStep = 16;  // --plan: force evaluations per step, the most of 001's methods (Lobatto's Newton)
 
 // Errors of the nonlinear study below this many times the reference's absolute tolerance are not fitted.
 constexpr double kReferenceFloorFactor = 100;
 
 void check_nonlinear(const Scene& s) {
   check_distinct_methods(s, "nonlinear.methods");
-  check_nonlinear_steps(s);
-  const auto e = s.real_rows("nonlinear.elastic_initial")[0];
-  if (std::hypot(e[0], e[1]) == 0.0) s.reject("nonlinear.elastic_initial", "the spring force is singular at x = y = 0");
-  check_lobatto_steps(s, "nonlinear.h", kNonlinearOmega, ", frequency 1");
-  for (const auto& m : s.texts("nonlinear.methods")) check_pendulum_steps(s, "nonlinear.methods", m);
+  check_whole_steps(s, "nonlinear.h", "nonlinear.t_end");
+  check_elastic_pendulum_states(s, "nonlinear.elastic_initial");
+  check_lobatto_bound(s, {"nonlinear.h", NonlinearPendulum::max_frequency(), false, ", frequency 1"});
+  check_oscillatory_bounds(s, {"nonlinear.h", NonlinearPendulum::max_frequency(), false, ", frequency 1"}, "nonlinear.methods");
 }
 
 // The planar elastic pendulum of the scene (y pointing down, systems/elastic_pendulum.hpp).
 ElasticPendulumWithGravity elastic_pendulum(const Scene& s) {
-  const ElasticPendulumParams p{s.real("nonlinear.elastic.l"), s.real("nonlinear.elastic.m"), s.real("nonlinear.elastic.k"),
-                                s.real("nonlinear.elastic.g")};
+  const ElasticPendulumParams p = elastic_pendulum_params(s, "nonlinear.elastic");
   return {p.m, {SpringTerm{p.k, p.l}, GravityTerm{p.m, p.g}}};
 }
 
@@ -49,53 +53,34 @@ void run_nonlinear(Context& ctx) {
   const auto nh = s.reals("nonlinear.h");
   const double t_end = s.real("nonlinear.t_end"), rtol = s.real("reference.rtol"), atol = s.real("reference.atol");
   const auto methods = s.texts("nonlinear.methods");
-  const auto lob = lobatto_rule();
-  const auto [pend, pz0] = pendulum(s);
+  const NonlinearPendulum pend;
+  const Z1 pz0 = make_state(s.real("nonlinear.pendulum_q0"), 0.0);
   const auto elastic = elastic_pendulum(s);
-  const auto er = s.real_rows("nonlinear.elastic_initial")[0];
-  const PhaseState<2> ez0 = make_state<2>(Vec<2>(er[0], er[1]), Vec<2>(er[2], er[3]));
+  const PhaseState<2> ez0 = elastic_pendulum_state(s.real_rows("nonlinear.elastic_initial")[0]);
   const Z1 pref = reference_solution(pend, pz0, t_end, rtol, atol);
   const PhaseState<2> eref = reference_solution(elastic, ez0, t_end, rtol, atol);
-  struct Row {
-    double pendulum_err, pendulum_iterations, elastic_err, elastic_iterations;
-    std::vector<double> compared;  // the pendulum error of each of nonlinear.methods
-    auto fields() { return std::tie(pendulum_err, pendulum_iterations, elastic_err, elastic_iterations, compared); }
-  };
+  // Per step h: the columns of nonlinear.csv, the errors and Newton iterations per step of Lobatto on both pendulums,
+  // then the pendulum error of each of nonlinear.methods.
+  std::vector<std::string> columns = {"pendulum_err", "pendulum_newton_iterations", "elastic_err", "elastic_newton_iterations"};
+  for (const auto& m : methods) columns.push_back(label_of(m) + "_pendulum_err");
   const auto rows = distributed_map(nh.size(), [&](std::size_t i) {
     const double h = nh[i];
     const std::int64_t n = steps_to(t_end, h);
-    int it = 0;
-    double it_p = 0, it_e = 0;
-    Z1 zp = pz0;
-    PhaseState<2> ze = ez0;
-    for (std::int64_t j = 0; j < n; ++j) {
-      zp = galerkin_step(lob, pend, zp, h, &it), it_p += it;
-      ze = galerkin_step(lob, elastic, ze, h, &it), it_e += it;
-    }
-    Row r{phase_distance(zp, pref), it_p / static_cast<double>(n), phase_distance(ze, eref),
-          it_e / static_cast<double>(n), {}};
-    for (const auto& m : methods)
-      r.compared.push_back(phase_distance(
-          MethodsOn<NonlinearPendulum>::integrate(m, pend, pz0, h, n), pref));
-    return r;
+    const auto p = lobatto_run(pend, pz0, h, n);
+    const auto e = lobatto_run(elastic, ez0, h, n);
+    std::vector<double> row = {phase_distance(p.z, pref), p.newton_iterations, phase_distance(e.z, eref), e.newton_iterations};
+    for (const auto& m : methods) row.push_back(phase_distance(MethodsOn<NonlinearPendulum>::integrate(m, pend, pz0, h, n), pref));
+    return row;
   });
-  for (std::size_t j = 0; j < nh.size(); ++j) {
-    bool finite = std::isfinite(rows[j].pendulum_err) && std::isfinite(rows[j].elastic_err);
-    for (double e : rows[j].compared) finite = finite && std::isfinite(e);
-    if (!finite)
+  for (std::size_t j = 0; j < nh.size(); ++j)
+    if (!std::all_of(rows[j].begin(), rows[j].end(), [](double v) { return std::isfinite(v); }))
       throw NumericalFailure("study nonlinear: a non-finite error at h = " + format_double(nh[j]) + ", t = " +
                              format_double(t_end) + " (pendulum, elastic pendulum or one of nonlinear.methods)");
-  }
   // nonlinear.csv and the orders fitted over the errors above the reference's accuracy.
   std::vector<double> steps;
   for (double h : nh) steps.push_back(static_cast<double>(steps_to(t_end, h)));
   ConvergenceStudy conv({.csv = "nonlinear.csv", .h = nh, .steps = steps, .orders_csv = "nonlinear_orders.csv"});
-  conv.column("pendulum_err", [&](std::size_t, std::size_t j) { return rows[j].pendulum_err; })
-      .column("pendulum_newton_iterations", [&](std::size_t, std::size_t j) { return rows[j].pendulum_iterations; })
-      .column("elastic_err", [&](std::size_t, std::size_t j) { return rows[j].elastic_err; })
-      .column("elastic_newton_iterations", [&](std::size_t, std::size_t j) { return rows[j].elastic_iterations; });
-  for (std::size_t k = 0; k < methods.size(); ++k)
-    conv.column(label_of(methods[k]) + "_pendulum_err", [&](std::size_t, std::size_t j) { return rows[j].compared[k]; });
+  for (std::size_t c = 0; c < columns.size(); ++c) conv.column(columns[c], [&rows, c](std::size_t, std::size_t j) { return rows[j][c]; });
   const double nfloor = kReferenceFloorFactor * atol;
   const std::string below = "at the reference's accuracy (" + format_double(kReferenceFloorFactor) + " reference.atol)";
   conv.fit("lobatto_nonlinear_pendulum", "pendulum_err", nfloor, below)
@@ -111,8 +96,8 @@ void run_nonlinear(Context& ctx) {
                               {"fits", conv.fits()}};
   // Symplecticity of the nonlinear one-step maps: max |J^T Omega J - Omega|.
   merge(ctx.summary, "reproduced",
-        {{"symplecticity_defect_pendulum", symplecticity_defect(galerkin_step_jacobian(lob, pend, pz0, nh.front()))},
-         {"symplecticity_defect_elastic", symplecticity_defect(galerkin_step_jacobian(lob, elastic, ez0, nh.front()))}});
+        {{"symplecticity_defect_pendulum", symplecticity_defect(lobatto_step_jacobian(pend, pz0, nh.front()))},
+         {"symplecticity_defect_elastic", symplecticity_defect(lobatto_step_jacobian(elastic, ez0, nh.front()))}});
   ctx.summary["norms"]["nonlinear"] = "|z_N - z(t_end)|_2 against the odeint Bulirsch-Stoer reference";
 }
 
@@ -122,7 +107,7 @@ StudyPlan plan_nonlinear(const Scene& s) {
   double steps = 0;
   for (double h : s.reals("nonlinear.h")) steps += runs * t_end / h;
   const PlanRate& rate = plan_rate("pendulum lobatto");
-  return {steps, steps * kPendulumEvals, static_cast<double>(s.reals("nonlinear.h").size()) * runs * 4 * sizeof(double),
+  return {steps, steps * kEvalsPerStep, static_cast<double>(s.reals("nonlinear.h").size()) * runs * 4 * sizeof(double),
           rate.ns_per_step, "odeint reference steps not counted; " + rate.note};
 }
 

@@ -15,7 +15,9 @@
 #include "geomint/methods/by_name.hpp"
 #include "geomint/methods/registry.hpp"
 #include "geomint/methods/scene_methods.hpp"
-#include "lobatto_table.hpp"
+#include "geomint/runner/experiment.hpp"
+#include "geomint/runner/summary.hpp"
+#include "geomint/systems/harmonic_oscillator.hpp"
 
 namespace geomint::lobatto_table {
 namespace {
@@ -42,12 +44,12 @@ Value stable_set_of(const std::vector<double>& hw, const std::vector<double>& rh
 }
 
 // Runs of long_run.periods periods at kBoundFactors times the bound `lo`: by factor, and as a list.
-std::pair<Value, Value> bound_runs(const Scene& s, const Oscillator& o, double lo) {
+std::pair<Value, Value> bound_runs(const Scene& s, const OscillatorFromRest& o, double lo) {
   const auto& [osc, A, T, z0] = o;
   Value runs, run_list = Value::list();
   for (double factor : kBoundFactors) {
     const double h = factor * lo / osc.w;
-    const Mat<2> Phi = lobatto_matrix(osc, h);
+    const Mat<2> Phi = one_step_pq_matrix("lobatto", osc, h);
     Vec<2> x(0.0, A);
     const std::int64_t n = std::llround(s.real("long_run.periods") * T / h);
     std::int64_t diverged_at = -1;
@@ -70,12 +72,12 @@ std::pair<Value, Value> bound_runs(const Scene& s, const Oscillator& o, double l
 void run_stability(Context& ctx) {
   const Scene& s = ctx.scene;
   ctx.progress("stability scan");
-  const Oscillator o = oscillator(s);
+  const OscillatorFromRest o = oscillator_from_rest(s);
   const HarmonicOscillator& osc = o.osc;
   const double hw0 = s.real("stability.hw_min"), hw1 = s.real("stability.hw_max");
   const auto npts = s.integer("stability.points");
   const auto methods = s.texts("stability.methods");
-  const auto radius_at = [&](double hw) { return spectral_radius(lobatto_matrix(osc, hw / osc.w)); };
+  const auto radius_at = [&](double hw) { return spectral_radius(one_step_pq_matrix("lobatto", osc, hw / osc.w)); };
   std::vector<std::string> columns = {"h_omega", "spectral_radius"};
   for (const auto& m : methods) columns.push_back("spectral_radius_" + label_of(m));
   Csv st(columns);
@@ -86,7 +88,7 @@ void run_stability(Context& ctx) {
     const double rho = radius_at(hw);
     st << hw << rho;
     for (std::size_t k = 0; k < methods.size(); ++k) {
-      rho_m[k].push_back(spectral_radius(pq_matrix(methods[k], osc, hw / osc.w)));
+      rho_m[k].push_back(spectral_radius(one_step_pq_matrix(methods[k], osc, hw / osc.w)));
       st << rho_m[k].back();
     }
     st.end_row();
@@ -123,7 +125,7 @@ void run_stability(Context& ctx) {
     if (std::abs(hws[i] - std::numbers::pi) < std::abs(hws[near_pi] - std::numbers::pi)) near_pi = i;
   const double steps_per_period = 2 * std::numbers::pi / lo;  // N = T/h = 2 pi / (h omega)
   ctx.summary["methods"]["stability"] = labels_of(methods);
-  ctx.summary["methods"]["stability_scheme"] = labels_of({kScheme});  // (the spectral_radius column's method)
+  ctx.summary["methods"]["stability_scheme"] = labels_of({"lobatto"});  // (the spectral_radius column's method)
   ctx.summary["stability"] = {
       {"grid_step", (hw1 - hw0) / static_cast<double>(npts - 1)},
       {"radius_tolerance", kRadiusTolerance},
@@ -143,9 +145,9 @@ StudyPlan plan_stability(const Scene& s) {
   const double methods = static_cast<double>(s.texts("stability.methods").size());
   const double periods = s.real("long_run.periods");
   double steps = points * (1 + methods);  // one one-step matrix per point and method
-  for (double factor : kBoundFactors) steps += periods * 2 * std::numbers::pi / (factor * method_info(kScheme).oscillatory_bound);
+  for (double factor : kBoundFactors) steps += periods * 2 * std::numbers::pi / (factor * method_info("lobatto").oscillatory_bound);
   const PlanRate& rate = plan_rate("oscillator one-step matrix");
-  return {steps, 0, points * (2 + methods) * (sizeof(double) + kCellBytes), rate.ns_per_step,
+  return {steps, 0, points * (2 + methods) * (sizeof(double) + kCsvCellBytes), rate.ns_per_step,
           "runs at the bound iterate the one-step matrix (13); " + rate.note};
 }
 

@@ -8,27 +8,26 @@
 #include <string>
 #include <vector>
 
+#include "geomint/analysis/convergence_study.hpp"
 #include "geomint/analysis/lobatto_oscillator.hpp"
 #include "geomint/methods/by_name.hpp"
 #include "geomint/methods/registry.hpp"
 #include "geomint/methods/scene_methods.hpp"
-#include "geomint/analysis/convergence_study.hpp"
-#include "lobatto_table.hpp"
+#include "geomint/runner/experiment.hpp"
+#include "geomint/runner/summary.hpp"
+#include "geomint/systems/harmonic_oscillator.hpp"
 
 namespace geomint::lobatto_table {
 namespace {
 
+using Z1 = PhaseState<1>;
+
+constexpr double kEvalsPerStep = 11;  // --plan: force evaluations per step, the most of 001's methods (Lobatto)
+
 void check_table1(const Scene& s) {
   check_distinct_methods(s, "table1.methods");
-  check_meshes(s, "meshes", "table1.methods", true);
-}
-
-// max_{j = 1..N} |q_j - q(t_j)| of the trajectory z_0..z_N.
-double max_q_error(const std::vector<Z1>& zs, const Oscillator& o, double h) {
-  double e = 0;
-  for (std::size_t j = 1; j < zs.size(); ++j)
-    e = std::max(e, std::abs(zs[j].q[0] - o.osc.exact(o.z0, static_cast<double>(j) * h).q[0]));
-  return e;
+  check_lobatto_bound(s, {"meshes", 1, true});
+  check_oscillatory_bounds(s, {"meshes", 1, true}, "table1.methods");
 }
 
 // Table 1's errors by N, which 001 prints (published.toml): p, q and H, and H_d (round-off, compared apart).
@@ -38,8 +37,7 @@ const std::vector<std::string> kTable1Errors = {"reproduced.p_err", "reproduced.
 void run_table1(Context& ctx) {
   const Scene& s = ctx.scene;
   ctx.progress("Table 1");
-  const Oscillator o = oscillator(s);
-  const auto& [osc, A, T, z0] = o;
+  const auto [osc, A, T, z0] = oscillator_from_rest(s);
   const auto methods = s.texts("table1.methods");
   std::vector<double> hs, Ns, ep, eq, eH, eHd, Hd0s, e12;
   std::vector<std::vector<double>> em(methods.size());
@@ -47,9 +45,9 @@ void run_table1(Context& ctx) {
   for (double Nd : s.reals("meshes")) {
     const auto N = static_cast<std::int64_t>(Nd);
     const double h = T / Nd;
-    const Mat<2> Phi = lobatto_matrix(osc, h);
+    const Mat<2> Phi = one_step_pq_matrix("lobatto", osc, h);
     double p = 0, q = 0, H = 0, Hd = 0;
-    const auto lobatto = trajectory(kScheme, osc, z0, h, N);
+    const auto lobatto = trajectory("lobatto", osc, z0, h, N);
     const double H0 = osc.H(z0), Hd0 = discrete_energy(Phi, z0);
     for (std::int64_t j = 1; j <= N; ++j) {
       const Z1& zl = lobatto[static_cast<std::size_t>(j)];
@@ -57,13 +55,13 @@ void run_table1(Context& ctx) {
       p = std::max(p, std::abs(zl.p[0] - ex.p[0])), q = std::max(q, std::abs(zl.q[0] - ex.q[0]));
       H = std::max(H, std::abs(osc.H(zl) - H0)), Hd = std::max(Hd, std::abs(discrete_energy(Phi, zl) - Hd0));
     }
-    for (std::size_t k = 0; k < methods.size(); ++k) em[k].push_back(max_q_error(trajectory(methods[k], osc, z0, h, N), o, h));
+    for (std::size_t k = 0; k < methods.size(); ++k) em[k].push_back(max_errors(osc, z0, trajectory(methods[k], osc, z0, h, N), h).q);
     const std::string n = std::to_string(N);  // the errors by N
     reproduced["p_err"][n] = p, reproduced["q_err"][n] = q, reproduced["H_err"][n] = H, reproduced["Hd_err"][n] = Hd;
     reproduced["Hd_err_roundoff"][n] = roundoff_floor(std::abs(Hd0));  // (published.toml: H_d is round-off below it)
     hs.push_back(h), Ns.push_back(Nd), ep.push_back(p), eq.push_back(q), eH.push_back(H), eHd.push_back(Hd), Hd0s.push_back(Hd0);
     // 001 eq. (12) as printed, iterated as a scheme of its own (it is not (13)-(14): see the unit tests)
-    e12.push_back(max_q_error(pq_orbit(lobatto_map_12(h, osc.m, osc.w, Eq12::printed), z0, N), o, h));
+    e12.push_back(max_errors(osc, z0, pq_orbit(lobatto_map_12(h, osc.m, osc.w, Eq12::printed), z0, N), h).q);
   }
   // table1.csv (h, steps N, the errors) and the orders fitted to them over the errors above round-off.
   ConvergenceStudy conv({.csv = "table1.csv", .h = hs, .steps = Ns, .orders_csv = "table1_orders.csv"});
@@ -80,7 +78,7 @@ void run_table1(Context& ctx) {
   Value relative = Value::list();  // H_d(0) (15) per mesh, the H_d errors relative to it, the q errors, the printed digits
   for (std::size_t i = 0; i < eHd.size(); ++i) relative.push_back(eHd[i] / Hd0s[i]);
   ctx.summary["methods"]["table1"] = labels_of(methods);
-  ctx.summary["methods"]["table1_scheme"] = labels_of({kScheme});  // (the fits lobatto_*: Table 1's method)
+  ctx.summary["methods"]["table1_scheme"] = labels_of({"lobatto"});  // (the fits lobatto_*: Table 1's method)
   Value compared = Value::record();  // the q errors of the compared methods per mesh, as table1.csv
   for (std::size_t k = 0; k < methods.size(); ++k) compared[label_of(methods[k])] = em[k];
   ctx.summary["table1"] = {{"Hd0", Hd0s},
@@ -95,7 +93,7 @@ StudyPlan plan_table1(const Scene& s) {
   const double runs = 2.0 + static_cast<double>(s.texts("table1.methods").size());  // Lobatto, (12), compared
   for (double n : s.reals("meshes")) steps += runs * n, largest = std::max(largest, n);
   const PlanRate& rate = plan_rate("oscillator lobatto");
-  return {steps, steps * kOscillatorEvals, 2 * (largest + 1) * kStateBytes, rate.ns_per_step, rate.note};
+  return {steps, steps * kEvalsPerStep, 2 * (largest + 1) * sizeof(Z1), rate.ns_per_step, rate.note};
 }
 
 }  // namespace

@@ -6,35 +6,33 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <functional>
 #include <limits>
-#include <map>
 #include <optional>
 #include <string>
-#include <tuple>
-#include <utility>
 #include <vector>
 
 #include "geomint/analysis/convergence_study.hpp"
 #include "geomint/core/integrate.hpp"
-#include "geomint/core/numerical_failure.hpp"
-#include "geomint/methods/by_name.hpp"
 #include "geomint/methods/registry.hpp"
+#include "geomint/methods/scene_methods.hpp"
 #include "geomint/observables/error_norms.hpp"
 #include "geomint/observables/order_fit.hpp"
-#include "geomint/reference/odeint_reference.hpp"
 #include "geomint/runner/distributed_map.hpp"
-#include "geomint/systems/counting.hpp"
-#include "rowlands_convergence.hpp"
+#include "geomint/runner/experiment.hpp"
+#include "geomint/runner/summary.hpp"
+#include "geomint/systems/elastic_pendulum.hpp"
 
 namespace geomint::rowlands_convergence {
 namespace {
+
+using State = PhaseState<2>;
+
+constexpr double kEvalsPerStep = 6;  // --plan: force evaluations per step, the most of the paper scene's methods (odeint_rkn_sb3a)
 
 struct Errors {
   double energy_rms = 0, energy_max = 0;  // of H(z_j) - H(z_0), j = 0..N: eq. (50) and the max
   double phase = 0;                       // |z_N - z(t_N)|_2 against the reference
   std::int64_t force_evals = 0;           // with postprocessing at every step
-  auto fields() { return std::tie(energy_rms, energy_max, phase, force_evals); }  // (a record of runner/distributed_map.hpp)
 };
 
 // What the convergence study records (the scene's `observables`).
@@ -50,60 +48,36 @@ Observables observables_of(const Scene& s) {
 }
 
 // One run of a method; z_ref is read only for the phase error.
-template <class Sys>
-Errors convergence_run(const std::string& method, const Sys& sys, const State& z0, const State* z_ref, double h,
-                       std::int64_t n, Observables obs) {
+Errors convergence_run(const ElasticPendulumRuns& sys, const std::string& method, const State& z0, const State* z_ref,
+                       double h, std::int64_t n, Observables obs) {
   Errors e;
-  const Counting<Sys> counted{sys, &e.force_evals};
   const double H0 = sys.H(z0);
   ErrorSeries energy;
-  const State zN = obs.energy ? MethodsOn<Counting<Sys>>::integrate(method, counted, z0, h, n,
-                                                                      [&](std::int64_t, const State& z) { energy.add(sys.H(z) - H0); })
-                               : MethodsOn<Counting<Sys>>::integrate(method, counted, z0, h, n);  // pre once, post once (eq. (23))
+  const auto observe = [&](std::int64_t, const State& z) { energy.add(sys.H(z) - H0); };
+  // (without the energy: pre once, post once, eq. (23))
+  const State zN = sys.integrate(method, z0, h, n, &e.force_evals, obs.energy ? ElasticPendulumRuns::Observer(observe) : nullptr);
   if (obs.energy) e.energy_rms = energy.rms50(), e.energy_max = energy.max_abs();
   if (obs.phase) e.phase = phase_distance(zN, *z_ref);
   return e;
-}
-
-// The system as the study uses it (with or without gravity: with_elastic_pendulum), bound once; the rest of the
-// study is compiled once, not per system.
-struct Pendulum {
-  std::function<Errors(const std::string& method, const State& z0, const State* z_ref, double h, std::int64_t n,
-                       Observables obs)> run;                                        // convergence_run
-  std::function<State(const State& z0, double t_end, double rtol, double atol)> reference;  // reference_solution
-  std::function<double(const State& z)> H;
-};
-
-template <class Sys>
-Pendulum bound(const Sys& sys) {
-  return {[&sys](const std::string& m, const State& z0, const State* z_ref, double h, std::int64_t n, Observables obs) {
-            return convergence_run(m, sys, z0, z_ref, h, n, obs);
-          },
-          [&sys](const State& z0, double t_end, double rtol, double atol) {
-            return reference_solution(sys, z0, t_end, rtol, atol);
-          },
-          [&sys](const State& z) { return sys.H(z); }};
 }
 
 // The ranges of the fitted orders (orders_by_initial) over all initial conditions and norms, of the
 // methods whose kernel is of order 2 (Stormer-Verlet, the Rowlands kernel alone and processed), by
 // their declared order: {"order_2": {min, max}, "order_4": {min, max}}.
 Value order_ranges(const std::vector<std::string>& methods, const Value& by_initial) {
-  std::map<int, std::pair<double, double>> ranges;
-  for (const auto& m : methods) {
-    if (method_info(m).kernel_order != 2) continue;
-    auto& [lo, hi] = ranges.try_emplace(method_info(m).order, std::numeric_limits<double>::infinity(),
-                                        -std::numeric_limits<double>::infinity()).first->second;
-    for (std::size_t i = 0; i < by_initial.size(); ++i)
-      for (const char* suffix : {"_energy", "_energy_max", "_phase"})
-        if (const Value* o = by_initial.at(i).find(label_of(m) + suffix)) {
-          const double v = o->number();
-          if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
-        }
-  }
+  int top = 0;  // the largest declared order
+  for (const auto& m : methods) top = std::max(top, method_info(m).order);
   Value out = Value::record();
-  for (const auto& [order, range] : ranges)
-    if (range.first <= range.second) out["order_" + std::to_string(order)] = {{"min", range.first}, {"max", range.second}};
+  for (int order = 1; order <= top; ++order) {
+    double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+    for (const auto& m : methods)
+      if (method_info(m).kernel_order == 2 && method_info(m).order == order)
+        for (std::size_t i = 0; i < by_initial.size(); ++i)
+          for (const char* suffix : {"_energy", "_energy_max", "_phase"})
+            if (const Value* o = by_initial.at(i).find(label_of(m) + suffix); o && std::isfinite(o->number()))
+              lo = std::min(lo, o->number()), hi = std::max(hi, o->number());
+    if (lo <= hi) out["order_" + std::to_string(order)] = {{"min", lo}, {"max", hi}};
+  }
   return out;
 }
 
@@ -114,75 +88,75 @@ Value order_ranges(const std::vector<std::string>& methods, const Value& by_init
 std::optional<Value> printed_over_kernel(const std::vector<std::string>& methods,
                                          const std::vector<std::vector<Errors>>& runs, const std::vector<double>& hs,
                                          std::size_t n_initial, Observables obs) {
-  const auto index_of = [&](const char* name) {
-    const auto it = std::find_if(methods.begin(), methods.end(), [&](const auto& m) { return label_of(m) == label_of(name); });
-    return it == methods.end() ? std::nullopt : std::optional(static_cast<std::size_t>(it - methods.begin()));
-  };
-  const auto kp = index_of("rowlands_printed"), kk = index_of("rowlands_kernel");
-  if (!kp || !kk) return std::nullopt;
+  std::size_t kp = methods.size(), kk = methods.size();  // (each method is named once)
+  for (std::size_t k = 0; k < methods.size(); ++k) {
+    if (label_of(methods[k]) == label_of("rowlands_printed")) kp = k;
+    if (label_of(methods[k]) == label_of("rowlands_kernel")) kk = k;
+  }
+  if (kp == methods.size() || kk == methods.size()) return std::nullopt;
   const std::size_t j_min = static_cast<std::size_t>(std::min_element(hs.begin(), hs.end()) - hs.begin());
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;
+  const auto ratio = [&](double a, double b) {
+    if (b != 0 && std::isfinite(a / b)) lo = std::min(lo, a / b), hi = std::max(hi, a / b);
+  };
   for (std::size_t i = 0; i < n_initial; ++i) {
-    const Errors &printed = runs[i * hs.size() + j_min][*kp], &kernel = runs[i * hs.size() + j_min][*kk];
-    std::vector<std::pair<double, double>> pairs;
-    if (obs.phase) pairs.emplace_back(printed.phase, kernel.phase);
-    if (obs.energy) pairs.emplace_back(printed.energy_rms, kernel.energy_rms);
-    for (const auto& [a, b] : pairs)
-      if (b != 0 && std::isfinite(a / b)) lo = std::min(lo, a / b), hi = std::max(hi, a / b);
+    const Errors &printed = runs[i * hs.size() + j_min][kp], &kernel = runs[i * hs.size() + j_min][kk];
+    if (obs.phase) ratio(printed.phase, kernel.phase);
+    if (obs.energy) ratio(printed.energy_rms, kernel.energy_rms);
   }
   if (!(lo <= hi)) return std::nullopt;
   return Value{{"min", lo}, {"max", hi}, {"h", hs[j_min]}};
 }
 
-// The reference at t_end of an initial condition, and its self-check (odeint Bulirsch-Stoer).
-struct Ref {
-  State z;
-  double self_check;
-  auto fields() { return std::tie(z.q[0], z.q[1], z.p[0], z.p[1], self_check); }
-};
-
-// References, one per initial condition, and their self-check at 100x tighter tolerances (none
-// unless phase errors are recorded; reference.csv); `self_check` becomes the largest of them.
-std::vector<Ref> references(Context& ctx, const Pendulum& sys, const std::vector<std::vector<double>>& initial,
-                            Observables obs, double t_end, double rtol, double atol, double& self_check) {
-  if (obs.phase) ctx.progress("references (odeint Bulirsch-Stoer)");
-  const auto refs = distributed_map(obs.phase ? initial.size() : 0, [&](std::size_t i) {
-    const State z0 = state_of(initial[i]);
-    const State a = sys.reference(z0, t_end, rtol, atol);
-    const State b = sys.reference(z0, t_end, rtol / 100, atol / 100);
-    return Ref{a, phase_distance(a, b)};
-  });
+// References, one per initial condition, with their self-check (none unless phase errors are recorded;
+// reference.csv); `self_check` becomes the largest of them.
+std::vector<ElasticPendulumRuns::Reference> references(Context& ctx, const ElasticPendulumRuns& sys,
+                                                       const std::vector<std::vector<double>>& initial, Observables obs,
+                                                       double t_end, double rtol, double atol, double& self_check) {
+  if (!obs.phase) return {};
+  ctx.progress("references (odeint Bulirsch-Stoer)");
+  const auto refs = sys.references(initial, t_end, rtol, atol);
   Csv ref_csv({"initial", "x", "y", "px", "py", "self_check"});
   for (std::size_t i = 0; i < refs.size(); ++i) {
     ref_csv.row(static_cast<std::int64_t>(i), refs[i].z.q[0], refs[i].z.q[1], refs[i].z.p[0], refs[i].z.p[1],
                 refs[i].self_check);
     self_check = std::max(self_check, refs[i].self_check);
   }
-  if (obs.phase) ctx.write("reference.csv", ref_csv);
+  ctx.write("reference.csv", ref_csv);
   return refs;
 }
 
-// Convergence: one task per (initial condition, h), all methods in it.
-// runs[i * hs.size() + j][k]: initial condition i, step hs[j], method k.
-std::vector<std::vector<Errors>> convergence_runs(Context& ctx, const Pendulum& sys, const std::vector<double>& hs,
+// Convergence: one task per (initial condition, h), all methods in it, a run's errors as 4 doubles (a record of
+// runner/distributed_map.hpp: the force evaluations are exact). runs[i * hs.size() + j][k]: initial condition i,
+// step hs[j], method k.
+std::vector<std::vector<Errors>> convergence_runs(Context& ctx, const ElasticPendulumRuns& sys, const std::vector<double>& hs,
                                                   const std::vector<std::vector<double>>& initial,
                                                   const std::vector<std::string>& methods, Observables obs,
-                                                  double t_end, const std::vector<Ref>& refs) {
+                                                  double t_end, const std::vector<ElasticPendulumRuns::Reference>& refs) {
   ctx.progress("Fig. 4: convergence");
   const std::size_t nh = hs.size();
-  return distributed_map(initial.size() * nh, [&](std::size_t task) {
+  const auto flat = distributed_map(initial.size() * nh, [&](std::size_t task) {
     const std::size_t i = task / nh;
     const double h = hs[task % nh];
-    std::vector<Errors> out;
-    for (const auto& m : methods)
-      out.push_back(sys.run(m, state_of(initial[i]), obs.phase ? &refs[i].z : nullptr, h, steps_to(t_end, h), obs));
+    std::vector<double> out;
+    for (const auto& m : methods) {
+      const Errors e = convergence_run(sys, m, elastic_pendulum_state(initial[i]), obs.phase ? &refs[i].z : nullptr, h,
+                                       steps_to(t_end, h), obs);
+      out.insert(out.end(), {e.energy_rms, e.energy_max, e.phase, static_cast<double>(e.force_evals)});
+    }
     return out;
   });
+  std::vector<std::vector<Errors>> runs(flat.size());
+  for (std::size_t task = 0; task < flat.size(); ++task)
+    for (std::size_t k = 0; k < methods.size(); ++k)
+      runs[task].push_back({flat[task][4 * k], flat[task][4 * k + 1], flat[task][4 * k + 2],
+                            static_cast<std::int64_t>(flat[task][4 * k + 3])});
+  return runs;
 }
 
 // fig4_convergence.csv and the orders fitted per initial condition and norm (orders.csv); the
 // reference's error bounds what can be fitted of the phase error.
-ConvergenceStudy convergence_table(const Pendulum& sys, const std::vector<double>& hs, double t_end,
+ConvergenceStudy convergence_table(const ElasticPendulumRuns& sys, const std::vector<double>& hs, double t_end,
                                    const std::vector<std::vector<double>>& initial,
                                    const std::vector<std::string>& methods, Observables obs,
                                    const std::vector<std::vector<Errors>>& runs, double self_check) {
@@ -190,8 +164,10 @@ ConvergenceStudy convergence_table(const Pendulum& sys, const std::vector<double
   for (double h : hs) steps.push_back(static_cast<double>(steps_to(t_end, h)));
   ConvergenceStudy conv({.csv = "fig4_convergence.csv", .h = hs, .steps = steps, .initials = initial.size()});
   for (std::size_t k = 0; k < methods.size(); ++k) {
-    const auto column = [&](const char* suffix, auto field) {
-      conv.column(label_of(methods[k]) + suffix, [&](std::size_t i, std::size_t j) { return field(runs[i * hs.size() + j][k]); });
+    const auto column = [&](const char* suffix, double (*field)(const Errors&)) {
+      conv.column(label_of(methods[k]) + suffix, [&runs, &hs, k, field](std::size_t i, std::size_t j) {
+        return field(runs[i * hs.size() + j][k]);
+      });
     };
     if (obs.energy) {
       column("_energy_rms", [](const Errors& e) { return e.energy_rms; });
@@ -200,7 +176,7 @@ ConvergenceStudy convergence_table(const Pendulum& sys, const std::vector<double
     if (obs.phase) column("_phase", [](const Errors& e) { return e.phase; });
     column("_evals", [](const Errors& e) { return static_cast<double>(e.force_evals); });
   }
-  const auto energy_floor = [&](std::size_t i) { return roundoff_floor() * std::max(std::abs(sys.H(state_of(initial[i]))), 1.0); };
+  const auto energy_floor = [&](std::size_t i) { return roundoff_floor() * std::max(std::abs(sys.H(elastic_pendulum_state(initial[i]))), 1.0); };
   const double phase_floor = std::max(100.0 * self_check, roundoff_floor());
   for (const auto& m : methods) {  // (the CSV's columns by label)
     if (obs.energy)
@@ -254,13 +230,13 @@ void summarize(Context& ctx, const std::vector<double>& hs, std::size_t n_initia
 
   ctx.summary["methods"]["convergence"] = labels_of(methods);
   for (const auto& m : methods) ctx.summary["declared_orders"][label_of(m)] = method_info(m).order;  // the registry's
-  scene_summary(ctx);
-  ctx.summary["pendulum"] = {{"y_equilibrium", hanging_equilibrium_y(pendulum_of(s))}};
+  record_steps_and_starts(ctx.summary, s, "h", "initial");
+  ctx.summary["pendulum"] = {{"y_equilibrium", hanging_equilibrium_y(elastic_pendulum_params(s))}};
   ctx.summary["order_ranges"] = order_ranges(methods, by_initial);
   if (const auto ratio = printed_over_kernel(methods, runs, hs, n_initial, obs)) ctx.summary["printed_over_kernel"] = *ratio;
 }
 
-void convergence_with(Context& ctx, const Pendulum& sys) {
+void convergence_with(Context& ctx, const ElasticPendulumRuns& sys) {
   const Scene& s = ctx.scene;
   const auto hs = s.reals("h");
   const auto initial = s.real_rows("initial");
@@ -277,15 +253,16 @@ void convergence_with(Context& ctx, const Pendulum& sys) {
 }
 
 void run_convergence(Context& ctx) {
-  with_elastic_pendulum(pendulum_of(ctx.scene), [&](const auto& sys) { convergence_with(ctx, bound(sys)); });
+  convergence_with(ctx, ElasticPendulumRuns(elastic_pendulum_params(ctx.scene)));
 }
 
 StudyPlan plan_convergence(const Scene& s) {
   const double runs = static_cast<double>(s.real_rows("initial").size() * s.texts("methods").size());
   const double steps = runs * steps_to_each(s.real("t_end"), s.reals("h"));
   const double rows = static_cast<double>(s.real_rows("initial").size() * s.reals("h").size());
-  return {steps, steps * kEvalsPerStep, rows * (3 + 4 * static_cast<double>(s.texts("methods").size())) * kCellBytes,
-          step_rate().ns_per_step, "odeint reference steps not counted; " + step_rate().note};
+  const PlanRate& rate = plan_rate("elastic pendulum rowlands");
+  return {steps, steps * kEvalsPerStep, rows * (3 + 4 * static_cast<double>(s.texts("methods").size())) * kCsvCellBytes,
+          rate.ns_per_step, "odeint reference steps not counted; " + rate.note};
 }
 
 
@@ -297,7 +274,7 @@ Study convergence_study() {
           .about = "Stormer-Verlet vs Rowlands on the elastic pendulum: orders 2 and 4",
           .files = {"fig4_convergence.csv", "orders.csv", "reference.csv"},
           .keys = Schema()
-                      .texts("methods", pendulum_method_choices(), 1, "methods of the convergence study (registry names or labels)")
+                      .texts("methods", ElasticPendulumRuns::choices(), 1, "methods of the convergence study (registry names or labels)")
                       .texts("observables", {"energy_error", "phase_error"}, 1,
                              "what the convergence study records: energy_error (eq. (50) and the max over the run), "
                              "phase_error (|z_N - z(t_end)|_2 against the odeint reference, computed only if named)"),
@@ -305,8 +282,9 @@ Study convergence_study() {
           .run = run_convergence,
           .validate =
               [](const Scene& s) {
-                check_common(s);
-                check_methods(s, "methods");
+                check_whole_steps(s, "h", "t_end");
+                check_elastic_pendulum_states(s, "initial");
+                ElasticPendulumRuns(elastic_pendulum_params(s)).check(s, "methods", "h");
               },
           .plan = plan_convergence};
 }

@@ -10,30 +10,34 @@
 
 #include "geomint/analysis/work_precision_set.hpp"
 #include "geomint/core/integrate.hpp"
-#include "geomint/methods/by_name.hpp"
 #include "geomint/methods/registry.hpp"
+#include "geomint/methods/scene_methods.hpp"
 #include "geomint/observables/error_norms.hpp"
-#include "geomint/reference/odeint_reference.hpp"
 #include "geomint/runner/distributed_map.hpp"
+#include "geomint/runner/experiment.hpp"
+#include "geomint/runner/summary.hpp"
 #include "geomint/runner/timing.hpp"
 #include "geomint/runner/timing_report.hpp"
-#include "geomint/systems/counting.hpp"
-#include "rowlands_convergence.hpp"
+#include "geomint/systems/elastic_pendulum.hpp"
 
 namespace geomint::rowlands_convergence {
 namespace {
 
-template <class Sys>
-void cost_with(Context& ctx, const Sys& sys) {
+using State = PhaseState<2>;
+
+constexpr double kEvalsPerStep = 6;  // --plan: force evaluations per step, the most of the paper scene's methods (odeint_rkn_sb3a)
+
+void run_cost(Context& ctx) {
   const Scene& s = ctx.scene;
+  const ElasticPendulumRuns sys(elastic_pendulum_params(s));
   const auto hs = s.reals("h");
   const std::size_t nh = hs.size();
   const double t_end = s.real("t_end");
   const auto methods = s.texts("timing.methods");
   const int repeats = static_cast<int>(s.integer("timing.repeats"));
-  const State z0 = state_of(s.real_rows("initial")[0]);
+  const State z0 = elastic_pendulum_state(s.real_rows("initial")[0]);
   ctx.progress("cost: reference (odeint Bulirsch-Stoer)");
-  const State z_ref = reference_solution(sys, z0, t_end, s.real("reference.rtol"), s.real("reference.atol"));
+  const State z_ref = sys.reference(z0, t_end, s.real("reference.rtol"), s.real("reference.atol"));
 
   ctx.progress("cost: counting runs");
   struct Count {
@@ -44,7 +48,7 @@ void cost_with(Context& ctx, const Sys& sys) {
   const auto counts = distributed_map(methods.size() * nh, [&](std::size_t task) {
     Count c;
     const double h = hs[task % nh];
-    const State zN = MethodsOn<Counting<Sys>>::integrate(methods[task / nh], {sys, &c.evals}, z0, h, steps_to(t_end, h));
+    const State zN = sys.integrate(methods[task / nh], z0, h, steps_to(t_end, h), &c.evals);
     c.phase = phase_distance(zN, z_ref);
     return c;
   });
@@ -55,7 +59,7 @@ void cost_with(Context& ctx, const Sys& sys) {
     const std::int64_t n = steps_to(t_end, h);
     phase.add({label_of(methods[task / nh]), h, static_cast<double>(n), {}, static_cast<double>(counts[task].evals),
                counts[task].phase},
-              MethodsOn<Sys>::timed(methods[task / nh], sys, {z0}, h, n));  // (the dispatch outside the clock)
+              sys.timed(methods[task / nh], z0, h, n));  // (the dispatch outside the clock)
   }
   phase.time(repeats, ctx.threads);
   ctx.write("cost_phase.csv", phase.csv());
@@ -65,21 +69,18 @@ void cost_with(Context& ctx, const Sys& sys) {
   // ns per step relative to the first method of timing.methods
   cost["relative_ns_per_step"] = phase.relative_ns_per_step();
   ctx.summary["cost"] = cost;
-  scene_summary(ctx);
-}
-
-void run_cost(Context& ctx) {
-  with_elastic_pendulum(pendulum_of(ctx.scene), [&](const auto& sys) { cost_with(ctx, sys); });
+  record_steps_and_starts(ctx.summary, s, "h", "initial");
 }
 
 StudyPlan plan_cost(const Scene& s) {
   const double methods = static_cast<double>(s.texts("timing.methods").size());
   const double counted = methods * steps_to_each(s.real("t_end"), s.reals("h"));
   std::vector<TimedCall> calls;  // the timed configurations: a run per method and h
+  const PlanRate& rate = plan_rate("elastic pendulum rowlands");
   for (std::size_t m = 0; m < s.texts("timing.methods").size(); ++m)
-    for (double h : s.reals("h")) calls.push_back(TimedCall{s.real("t_end") / h, step_rate().ns_per_step});
-  StudyPlan p{counted, counted * kEvalsPerStep, methods * static_cast<double>(s.reals("h").size()) * 8 * kCellBytes,
-              step_rate().ns_per_step, "a counting run per method and h, then the timing protocol; " + step_rate().note};
+    for (double h : s.reals("h")) calls.push_back(TimedCall{s.real("t_end") / h, rate.ns_per_step});
+  StudyPlan p{counted, counted * kEvalsPerStep, methods * static_cast<double>(s.reals("h").size()) * 8 * kCsvCellBytes,
+              rate.ns_per_step, "a counting run per method and h, then the timing protocol; " + rate.note};
   p.time(s, calls);
   return p;
 }
@@ -92,15 +93,16 @@ Study cost_study() {
           .about = "cost of Fig 4's methods: error against wall time and force evaluations, against odeint's steppers",
           .files = {"cost_phase.csv"},
           .keys = Schema()
-                      .texts("timing.methods", pendulum_method_choices(), 1, "methods of the cost study (registry names or labels)")
+                      .texts("timing.methods", ElasticPendulumRuns::choices(), 1, "methods of the cost study (registry names or labels)")
                       .reals("timing.error_targets", positive(), 1,
                              "phase errors for which the wall time and the force evaluations to reach them are reported"),
           .reads = {"timing.repeats", "initial", "t_end", "h", "pendulum", "reference"},
           .run = run_cost,
           .validate =
               [](const Scene& s) {
-                check_common(s);
-                check_methods(s, "timing.methods");
+                check_whole_steps(s, "h", "t_end");
+                check_elastic_pendulum_states(s, "initial");
+                ElasticPendulumRuns(elastic_pendulum_params(s)).check(s, "timing.methods", "h");
               },
           .plan = plan_cost,
           .aliases = {"timing"}};

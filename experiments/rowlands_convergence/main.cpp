@@ -7,8 +7,13 @@
 //          several initial conditions; fitted orders (study `convergence`)    convergence.cpp
 // plus what the accuracy costs, against odeint's own steppers: error against
 //          wall time and force evaluations (study `cost`)                     cost.cpp
-// Here: the studies, and the scene keys that both of them read.
-#include "rowlands_convergence.hpp"
+// Here: the studies, in the order they run, and the scene keys that both of them read.
+#include "geomint/runner/experiment.hpp"
+
+namespace geomint::rowlands_convergence {
+Study convergence_study();  // 000 Fig 4                                                   convergence.cpp
+Study cost_study();         // `timing`: error against wall time and force evaluations   cost.cpp
+}  // namespace geomint::rowlands_convergence
 
 using namespace geomint;
 using namespace geomint::rowlands_convergence;

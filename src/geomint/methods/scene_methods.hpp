@@ -1,7 +1,8 @@
 #pragma once
-// Checks on the methods a scene names (`<study>.methods = [...]`), before any
-// work: each named once and every step below the stability bound the registry
-// declares for it (that each can step the study's system: MethodsOn::check, by_name.hpp).
+// Checks on the methods a scene names (`<study>.methods = [...]`) and on its steps, before any
+// work: each method named once and every step below the stability bound the registry declares
+// for it (that each can step the study's system: MethodsOn::check, by_name.hpp); every step a
+// whole number of times in the run it ends.
 #include <cmath>
 #include <string>
 #include <string_view>
@@ -33,5 +34,26 @@ inline void check_step_bound(const Scene& s, const char* step_key, const std::st
                              const std::string& what, const std::string& formula = {}) {
   check_oscillatory_bound(s, step_key, step_key, method, hw, what, formula);
 }
+
+// A scene's list of steps on an oscillator of frequency `omega`: h omega for each step h of `key`; or, with
+// `per_period`, each entry of `key` a whole number N of steps per period (any other is rejected), h omega = 2 pi / N.
+// `at` follows the step in a message (e.g. ", frequency 1").
+struct OscillatorSteps {
+  const char* key;
+  double omega = 1;
+  bool per_period = false;
+  std::string at = {};
+};
+
+// check_oscillatory_bound of `method` at every step of `steps`.
+void check_oscillatory_bound(const Scene& s, const OscillatorSteps& steps, const char* methods_key,
+                             const std::string& method, const std::string& formula = {});
+
+// The same for every method that `methods_key` names.
+void check_oscillatory_bounds(const Scene& s, const OscillatorSteps& steps, const char* methods_key);
+
+// Each step h of `step_key` divides t_end (`end_key`) into n = t_end / h steps, a whole number 1 <= n <= 2^53
+// (steps are counted in int64, t = j h); else rejects `blame` (default: step_key).
+void check_whole_steps(const Scene& s, const char* step_key, const char* end_key, const char* blame = nullptr);
 
 }  // namespace geomint

@@ -21,6 +21,9 @@ double symplecticity_defect(const Mat<D2>& J) {
   const Mat<D2> O = canonical_form<D2>();
   return (J.transpose() * O * J - O).cwiseAbs().maxCoeff();
 }
+// (compiled once for one and two degrees of freedom: symplecticity.cpp)
+extern template double symplecticity_defect<2>(const Mat<2>&);
+extern template double symplecticity_defect<4>(const Mat<4>&);
 
 // d(q1, p1)/d(q0, p0) of one step of a processed method, by central differences of size d.
 template <class Method, int D>

@@ -12,6 +12,9 @@ struct PlanRate {
   std::string note;    // what the rate is and where it was measured, for the plan's note
 };
 
+// --plan's memory of a CSV: one cell held in memory (its text and separator), in bytes.
+inline constexpr double kCsvCellBytes = 24;
+
 // The rate `name` (e.g. "pendulum lobatto"); std::logic_error for a name the table lacks.
 const PlanRate& plan_rate(std::string_view name);
 

@@ -52,6 +52,11 @@ Value h_range(const std::vector<double>& hs) {
   return r;
 }
 
+void record_steps_and_starts(Value& summary, const Scene& s, const char* steps_key, const char* starts_key) {
+  summary["h_range"] = h_range(s.reals(steps_key));
+  summary["initial_conditions"] = s.real_rows(starts_key).size();
+}
+
 namespace {
 
 // Does `reproduced` round to `printed` at `digits` significant digits?

@@ -23,6 +23,11 @@ Value spread_of(const std::vector<double>& v);
 // {min, max, count} of a scene's non-empty list of steps.
 Value h_range(const std::vector<double>& hs);
 
+class Scene;
+// What a study of steps from several starts reports of its scene: "h_range" (h_range of the steps `steps_key`) and
+// "initial_conditions" (the number of rows of `starts_key`).
+void record_steps_and_starts(Value& summary, const Scene& s, const char* steps_key, const char* starts_key);
+
 // {min, q1, median, q3, max} of a non-empty list (analysis/claim_share.hpp).
 Value quartiles(const std::vector<double>& v);
 

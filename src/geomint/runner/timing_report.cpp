@@ -12,4 +12,10 @@ std::string timing_method_text(int repeats) {  // (the same words for every thre
          "two timings with an interval from their quartiles, widened by the measurement's drift (run.json timing_control)";
 }
 
+std::string segmented_timing_method_text(int repeats, const std::string& long_sets, const std::string& segment_key) {
+  return timing_method_text(repeats) + "; ns_per_step at the smallest h of a set; force evaluations count U_q and U_qq "
+         "calls; " + long_sets + ": a run's wall time is its steps times the time per step measured on a segment of " +
+         segment_key + " steps (at most the run), every call of a step through integrate";
+}
+
 }  // namespace geomint

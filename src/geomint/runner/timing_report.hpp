@@ -16,6 +16,11 @@ namespace geomint {
 // thread count (how many configurations ran at a time is in run.json, timing_concurrency).
 std::string timing_method_text(int repeats);
 
+// The same for work-precision sets (analysis/work_precision_set.hpp) of counted force evaluations, some of them of
+// long runs (the sets `long_sets`, e.g. "long_run_*") timed on a segment of `segment_key` steps: the same words
+// from every study that adds sets to one summary record, so that each may run alone or after the other.
+std::string segmented_timing_method_text(int repeats, const std::string& long_sets, const std::string& segment_key);
+
 // The spreads of every timed measurement of a study: their largest and median value and how many.
 class SpreadTally {
  public:

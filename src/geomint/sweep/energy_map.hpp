@@ -28,6 +28,10 @@ namespace geomint {
 
 enum class Coordinates { cartesian, polar };
 
+// A coordinate system's name in scenes, CSV columns and summary keys, and in a figure, with its equation of 000.
+inline const char* coordinates_name(Coordinates c) { return c == Coordinates::cartesian ? "cartesian" : "polar"; }
+inline const char* coordinates_label(Coordinates c) { return c == Coordinates::cartesian ? "Cartesian (73)" : "polar (72)"; }
+
 struct EnergyMapParams {
   double l, m, k, g;   // pendulum (000 Appendix A)
   double h;            // step

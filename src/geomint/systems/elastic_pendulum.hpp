@@ -14,11 +14,19 @@
 // geomint: MethodsOn<Counting<ElasticPendulumWithGravity>>
 // geomint: MethodsOn<Counting<ElasticPendulumWithoutGravity>>
 #include <cmath>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <string_view>
 #include <tuple>
+#include <vector>
 
 #include "geomint/core/state.hpp"
+#include "geomint/reference/odeint_reference.hpp"
 
 namespace geomint {
+
+class Scene;
 
 // U = (k/2)(|q| - l)^2: the spring of 000 eq. (73).
 struct SpringTerm {
@@ -168,11 +176,78 @@ using ElasticPendulumPolarWithGravity = ElasticPendulumPolar<SpringPolarTerm, Gr
 using FreeParticleCartesian = ElasticPendulumCartesian<>;  // 000 eq. (61)
 using FreeParticlePolar = ElasticPendulumPolar<>;          // 000 eq. (62)
 
+// The odeint reference (reference/odeint_reference.hpp) on the pendulum with and without gravity, compiled once
+// (elastic_pendulum.cpp).
+extern template PhaseState<2> reference_solution<ElasticPendulumWithGravity>(const ElasticPendulumWithGravity&,
+                                                                             const PhaseState<2>&, double, double, double);
+extern template PhaseState<2> reference_solution<ElasticPendulumWithoutGravity>(const ElasticPendulumWithoutGravity&,
+                                                                                const PhaseState<2>&, double, double, double);
+
+// ---- the pendulum of a scene (elastic_pendulum.cpp) ----
+
+// The scene's <section>.l, .m, .k, .g.
+ElasticPendulumParams elastic_pendulum_params(const Scene& s, const std::string& section = "pendulum");
+
+// sqrt(<section>.k / <section>.m) of the scene; refuses (<section>.k) one that is not finite and positive.
+double spring_frequency(const Scene& s, const std::string& section = "pendulum");
+
+// A state [x, y, px, py], as a scene's rows give it.
+inline PhaseState<2> elastic_pendulum_state(const std::vector<double>& row) {
+  return make_state<2>(Vec<2>(row[0], row[1]), Vec<2>(row[2], row[3]));
+}
+
+// The energies at rest at the Cartesian position (x, y): of (73), and of (72) with (r, theta) from (x, y) by
+// 000 eq. (63), or by (63) as printed (`as_printed_63`, transforms/polar.hpp); each with its gravity term.
+double cartesian_energy_at_rest(const ElasticPendulumParams& p, double x, double y);
+double polar_energy_at_rest(const ElasticPendulumParams& p, double x, double y, bool as_printed_63 = false);
+
+// Rejects a state [x, y, px, py] of the rows `key` at the pivot x = y = 0, where the spring force (73) is singular.
+void check_elastic_pendulum_states(const Scene& s, const char* key);
+
 // Calls f with the Cartesian pendulum made of the terms the parameters call for.
 template <class F>
 decltype(auto) with_elastic_pendulum(const ElasticPendulumParams& p, F&& f) {
   if (p.g == 0.0) return f(ElasticPendulumWithoutGravity{p.m, {SpringTerm{p.k, p.l}}});
   return f(ElasticPendulumWithGravity{p.m, {SpringTerm{p.k, p.l}, GravityTerm{p.m, p.g}}});
 }
+
+// The Cartesian pendulum (73) of the parameters, with or without its gravity term (with_elastic_pendulum), as a study
+// runs it: by the registered methods by name and by the odeint reference, compiled once in the library
+// (elastic_pendulum_runs.cpp), so that a study that takes the pendulum from its scene is compiled once, not per system.
+class ElasticPendulumRuns {
+ public:
+  using State = PhaseState<2>;
+  using Observer = std::function<void(std::int64_t, const State&)>;
+  explicit ElasticPendulumRuns(const ElasticPendulumParams& p);
+
+  double H(const State& z) const;  // (73)
+  // z_n after n steps of `method` from z0 (MethodsOn::integrate: pre once, post once), the force evaluations added to
+  // *evals; with `observe`, observe(j, z_j) for j = 0..n (each z_j postprocessed).
+  State integrate(std::string_view method, const State& z0, double h, std::int64_t n, std::int64_t* evals,
+                  const Observer& observe = {}) const;
+  // n steps of `method` from z0, every call inlined: a configuration to time (MethodsOn::timed); *this must outlive it.
+  std::function<void()> timed(std::string_view method, const State& z0, double h, std::int64_t n) const;
+  // The solution at t_end to the tolerances (rtol, atol): odeint's Bulirsch-Stoer (reference_solution).
+  State reference(const State& z0, double t_end, double rtol, double atol) const;
+  // The solutions at t_end from each state [x, y, px, py] of `starts` (split across threads and ranks:
+  // distributed_map), each with its self-check: |z - z'|_2 against z' at 100x tighter tolerances.
+  struct Reference {
+    State z;
+    double self_check;
+  };
+  std::vector<Reference> references(const std::vector<std::vector<double>>& starts, double t_end, double rtol,
+                                    double atol) const;
+  // Rejects `key` unless it names each method once, each can step the pendulum (MethodsOn::check) and each is below
+  // its oscillatory bound at every step of `step_key` (check_oscillatory_bounds, omega = sqrt(k/m)).
+  void check(const Scene& s, const char* key, const char* step_key) const;
+  // What a scene may name: the methods that step the pendulum, and their labels (MethodsOn::choices).
+  static std::vector<std::string> choices();
+
+ private:
+  bool gravity_;
+  double omega_;  // sqrt(k/m)
+  ElasticPendulumWithGravity with_gravity_;
+  ElasticPendulumWithoutGravity without_gravity_;
+};
 
 }  // namespace geomint
