@@ -6,7 +6,9 @@
 //
 // The Cartesian form (73) is separable, H = |p|^2/(2m) + U(q), and is
 // assembled from potential terms, so a scene without gravity compiles a step
-// without a gravity term (not one multiplied by zero).
+// without a gravity term (not one multiplied by zero). Below the systems, what the
+// studies of 000 and 001 take of them: the pendulum of a scene, its energies at rest,
+// and its runs with or without gravity (ElasticPendulumRuns).
 //
 // The registered methods run by name on (compiled once each: cmake/geomint_experiment.cmake geomint_methods_on):
 // geomint: MethodsOn<ElasticPendulumWithGravity>

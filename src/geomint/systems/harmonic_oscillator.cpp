@@ -24,7 +24,8 @@ OscillatorFromRest oscillator_from_rest(const Scene& s) {
   return {osc, A, 2 * std::numbers::pi / osc.w, make_state(A, 0.0)};
 }
 
-PhaseErrors max_errors(const HarmonicOscillator& osc, const PhaseState<1>& z0, const std::vector<PhaseState<1>>& zs, double h) {
+PhaseErrors max_errors(const HarmonicOscillator& osc, const PhaseState<1>& z0, const std::vector<PhaseState<1>>& zs,
+                       double h) {
   PhaseErrors e{0, 0};
   for (std::size_t j = 0; j < zs.size(); ++j) {
     const PhaseState<1> exact = osc.exact(z0, static_cast<double>(j) * h);

@@ -1,6 +1,9 @@
 #pragma once
 // The harmonic oscillator H(q, p) = p^2/(2m) + m w^2 q^2/2: with m = w = 1 the
-// dimensionless form 000 eq. (74); with m = 1, w = 2 pi the oscillator of 001.
+// dimensionless form 000 eq. (74); with m = 1, w = 2 pi the oscillator of 001. And the
+// nonlinear pendulum of 001 Sec. 5. Below them, what the studies take of them: 001's oscillator
+// released from rest and its one-step matrices, and 000's oscillator (74) with and without the
+// compensating transformation (82).
 //
 // The registered methods run by name on (compiled once each: cmake/geomint_experiment.cmake geomint_methods_on):
 // geomint: MethodsOn<HarmonicOscillator>
@@ -97,7 +100,8 @@ OscillatorFromRest oscillator_from_rest(const Scene& s);
 struct PhaseErrors {
   double q, p;
 };
-PhaseErrors max_errors(const HarmonicOscillator& osc, const PhaseState<1>& z0, const std::vector<PhaseState<1>>& zs, double h);
+PhaseErrors max_errors(const HarmonicOscillator& osc, const PhaseState<1>& z0, const std::vector<PhaseState<1>>& zs,
+                       double h);
 
 // The one-step matrix of (the kernel of) a registered method on the oscillator at step h, in 001's order (p, q)
 // of eq. (13) (harmonic_oscillator_runs.cpp).
