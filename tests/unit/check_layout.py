@@ -11,8 +11,9 @@ For every experiment (a directory experiments/<name> with a .cpp file):
 - main.cpp has under 100 lines, no source file of the directory more than 400, and no function more
   than 80 (a function: from a line in column 0 that opens a definition to the next line in column 0
   that starts with '}', the style of this tree);
-- a study file includes at most one header of its experiment's directory (what a reader opens beside the
-  study: that header, the scene, the gnuplot script and the library's headers);
+- no source file of an experiment includes a header of its experiment's directory: what a reader opens beside
+  the study is its scene, its gnuplot script and the library's headers (a system header among them), and what
+  several studies share lives in the library;
 - over all experiments, the median study file (a .cpp other than main.cpp and <name>.cpp) has at most 120 lines.
 Exit 1 listing what is wrong.
 """
@@ -59,10 +60,11 @@ def main() -> int:
             limit = MAX_MAIN if f.name == "main.cpp" else MAX_FILE
             if f.suffix == ".cpp" and f.stem not in ("main", name):
                 study_lines.append(len(lines))
-                local = LOCAL_INCLUDE.findall(text)
-                if len(local) > 1:
-                    problems.append(f"{f.relative_to(source)}: includes {len(local)} headers of its experiment "
-                                    f"({', '.join(local)}; at most one)")
+            for local in LOCAL_INCLUDE.findall(text):
+                problems.append(f"{f.relative_to(source)}: includes {local}, a header of its experiment (what "
+                                f"studies share belongs in the library: src/geomint/)")
+            if f.suffix == ".hpp":
+                problems.append(f"{f.relative_to(source)}: a header in an experiment's directory (src/geomint/)")
             if len(lines) > limit:
                 problems.append(f"{f.relative_to(source)}: {len(lines)} lines (at most {limit})")
             for i, line in enumerate(lines, 1):

@@ -31,6 +31,7 @@ void check_oscillatory_bound(const Scene& s, const char* step_key, const char* m
 void check_at_least_one_step(const Scene& s, const char* key, const std::vector<double>& steps, const char* what) {
   const double longest = *std::max_element(steps.begin(), steps.end());
   if (s.real(key) < longest) s.reject(key, std::string("must be at least one step ") + what + " = " + format_double(longest));
+}
 
 void check_oscillatory_bound(const Scene& s, const OscillatorSteps& steps, const char* methods_key,
                              const std::string& method, const std::string& formula) {
