@@ -19,7 +19,6 @@
 namespace geomint::euler_compensation {
 namespace {
 
-constexpr double kEvalsPerStep = 4;  // --plan: force evaluations per step, the most of the paper scene's methods (rk4)
 
 // Max over t_j in [0, N h] of the global error of explicit Euler on a scalar ODE.
 template <class Sys>
@@ -88,7 +87,7 @@ StudyPlan plan_convergence(const Scene& s) {
   const double methods = static_cast<double>(s.texts("convergence.methods").size());
   const double steps = (methods + 2) * steps_to_each(s.real("convergence.t_end"), s.reals("convergence.h"));  // and Euler on (14), (17)
   const PlanRate& rate = plan_rate("oscillator compensated symplectic euler");
-  return {steps, steps * kEvalsPerStep, static_cast<double>(s.reals("convergence.h").size()) * (4 + 3 * methods) * kCsvCellBytes,
+  return {steps, steps * rate.evals_per_step(), static_cast<double>(s.reals("convergence.h").size()) * (4 + 3 * methods) * kCsvCellBytes,
           rate.ns_per_step, rate.note};
 }
 

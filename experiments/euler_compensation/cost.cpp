@@ -22,7 +22,6 @@
 namespace geomint::euler_compensation {
 namespace {
 
-constexpr double kEvalsPerStep = 4;  // --plan: force evaluations per step, the most of the paper scene's methods (rk4)
 
 // The set "energy": counting runs in parallel, then every (h, method) timed together (runner/timing.hpp).
 WorkPrecisionSet energy_set(const Scene& s, const PhaseState<1>& z0, int workers) {
@@ -92,7 +91,7 @@ StudyPlan plan_cost(const Scene& s) {
   for (double h : s.reals("timing.h")) calls.insert(calls.end(), methods.size(), TimedCall{s.real("convergence.t_end") / h, rate.ns_per_step});
   calls.insert(calls.end(), methods.size(), TimedCall{static_cast<double>(s.integer("timing.steps")), rate.ns_per_step});
   StudyPlan p;
-  p.steps = counted, p.force_evals = counted * kEvalsPerStep;
+  p.steps = counted, p.force_evals = counted * rate.evals_per_step();
   p.memory_bytes = static_cast<double>(calls.size()) * 8 * kCsvCellBytes, p.ns_per_step = rate.ns_per_step;
   p.note = "counting runs, then the timing protocol; " + rate.note;
   p.time(s, calls);

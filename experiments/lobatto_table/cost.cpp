@@ -25,7 +25,6 @@ namespace {
 
 using Z1 = PhaseState<1>;
 
-constexpr double kEvalsPerStep = 16;  // --plan: force evaluations per step, the most of 001's methods (Lobatto's Newton)
 
 void check_cost(const Scene& s) {
   check_distinct_methods(s, "timing.methods");
@@ -69,7 +68,7 @@ StudyPlan plan_cost(const Scene& s) {
   std::vector<TimedCall> calls;
   for (std::size_t m = 0; m < methods.size(); ++m)
     for (double h : s.reals("nonlinear.h")) steps += t_end / h, calls.push_back(TimedCall{t_end / h, rate.ns_per_step});
-  StudyPlan p{steps, steps * kEvalsPerStep, static_cast<double>(calls.size()) * 8 * kCsvCellBytes, rate.ns_per_step,
+  StudyPlan p{steps, steps * rate.evals_per_step(), static_cast<double>(calls.size()) * 8 * kCsvCellBytes, rate.ns_per_step,
               "a counting run per method and h, then the timing protocol; " + rate.note};
   p.time(s, calls);
   return p;

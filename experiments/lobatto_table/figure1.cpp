@@ -19,7 +19,6 @@ namespace {
 
 using Z1 = PhaseState<1>;
 
-constexpr double kEvalsPerStep = 11;  // --plan: force evaluations per step, the most of 001's methods (Lobatto)
 
 void check_figure1(const Scene& s) {
   check_distinct_methods(s, "figure1.methods");
@@ -89,7 +88,7 @@ StudyPlan plan_figure1(const Scene& s) {
   double steps = 0, largest = 0;
   for (double n : s.reals("figure1.meshes")) steps += methods * n, largest = std::max(largest, n);
   const PlanRate& rate = plan_rate("oscillator lobatto");
-  return {steps, steps * kEvalsPerStep, (largest + 1) * (methods * sizeof(Z1) + (2 + 2 * methods) * kCsvCellBytes),
+  return {steps, steps * rate.evals_per_step(), (largest + 1) * (methods * sizeof(Z1) + (2 + 2 * methods) * kCsvCellBytes),
           rate.ns_per_step, rate.note};
 }
 

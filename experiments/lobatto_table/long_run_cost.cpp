@@ -31,7 +31,6 @@ namespace {
 
 using Z1 = PhaseState<1>;
 
-constexpr double kEvalsPerStep = 11;  // --plan: force evaluations per step, the most of 001's methods (Lobatto)
 
 void check_long_run_cost(const Scene& s) {
   check_distinct_methods(s, "long_run_cost.methods");
@@ -160,7 +159,7 @@ StudyPlan plan_long_run_cost(const Scene& s) {
     counted += methods * n;
     calls.insert(calls.end(), s.texts("long_run_cost.methods").size(), TimedCall{std::min(n, timed), rate.ns_per_step});
   }
-  StudyPlan p{counted, counted * kEvalsPerStep,
+  StudyPlan p{counted, counted * rate.evals_per_step(),
               methods * static_cast<double>(s.reals("long_run_cost.h").size()) * 9 * kCsvCellBytes, rate.ns_per_step,
               "the runs, then the timing protocol on their segments; " + rate.note};
   p.time(s, calls);

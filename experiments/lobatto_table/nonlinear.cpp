@@ -28,7 +28,6 @@ namespace {
 
 using Z1 = PhaseState<1>;
 
-constexpr double kEvalsPerStep = 16;  // --plan: force evaluations per step, the most of 001's methods (Lobatto's Newton)
 
 // Errors of the nonlinear study below this many times the reference's absolute tolerance are not fitted.
 constexpr double kReferenceFloorFactor = 100;
@@ -107,7 +106,7 @@ StudyPlan plan_nonlinear(const Scene& s) {
   double steps = 0;
   for (double h : s.reals("nonlinear.h")) steps += runs * t_end / h;
   const PlanRate& rate = plan_rate("pendulum lobatto");
-  return {steps, steps * kEvalsPerStep, static_cast<double>(s.reals("nonlinear.h").size()) * runs * 4 * sizeof(double),
+  return {steps, steps * rate.evals_per_step(), static_cast<double>(s.reals("nonlinear.h").size()) * runs * 4 * sizeof(double),
           rate.ns_per_step, "odeint reference steps not counted; " + rate.note};
 }
 

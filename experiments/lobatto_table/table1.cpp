@@ -22,7 +22,6 @@ namespace {
 
 using Z1 = PhaseState<1>;
 
-constexpr double kEvalsPerStep = 11;  // --plan: force evaluations per step, the most of 001's methods (Lobatto)
 
 void check_table1(const Scene& s) {
   check_distinct_methods(s, "table1.methods");
@@ -93,7 +92,7 @@ StudyPlan plan_table1(const Scene& s) {
   const double runs = 2.0 + static_cast<double>(s.texts("table1.methods").size());  // Lobatto, (12), compared
   for (double n : s.reals("meshes")) steps += runs * n, largest = std::max(largest, n);
   const PlanRate& rate = plan_rate("oscillator lobatto");
-  return {steps, steps * kEvalsPerStep, 2 * (largest + 1) * sizeof(Z1), rate.ns_per_step, rate.note};
+  return {steps, steps * rate.evals_per_step(), 2 * (largest + 1) * sizeof(Z1), rate.ns_per_step, rate.note};
 }
 
 }  // namespace

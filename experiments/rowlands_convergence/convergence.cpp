@@ -27,7 +27,6 @@ namespace {
 
 using State = PhaseState<2>;
 
-constexpr double kEvalsPerStep = 6;  // --plan: force evaluations per step, the most of the paper scene's methods (odeint_rkn_sb3a)
 
 struct Errors {
   double energy_rms = 0, energy_max = 0;  // of H(z_j) - H(z_0), j = 0..N: eq. (50) and the max
@@ -261,7 +260,7 @@ StudyPlan plan_convergence(const Scene& s) {
   const double steps = runs * steps_to_each(s.real("t_end"), s.reals("h"));
   const double rows = static_cast<double>(s.real_rows("initial").size() * s.reals("h").size());
   const PlanRate& rate = plan_rate("elastic pendulum rowlands");
-  return {steps, steps * kEvalsPerStep, rows * (3 + 4 * static_cast<double>(s.texts("methods").size())) * kCsvCellBytes,
+  return {steps, steps * rate.evals_per_step(), rows * (3 + 4 * static_cast<double>(s.texts("methods").size())) * kCsvCellBytes,
           rate.ns_per_step, "odeint reference steps not counted; " + rate.note};
 }
 

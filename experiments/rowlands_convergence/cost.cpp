@@ -25,7 +25,6 @@ namespace {
 
 using State = PhaseState<2>;
 
-constexpr double kEvalsPerStep = 6;  // --plan: force evaluations per step, the most of the paper scene's methods (odeint_rkn_sb3a)
 
 void run_cost(Context& ctx) {
   const Scene& s = ctx.scene;
@@ -79,7 +78,7 @@ StudyPlan plan_cost(const Scene& s) {
   const PlanRate& rate = plan_rate("elastic pendulum rowlands");
   for (std::size_t m = 0; m < s.texts("timing.methods").size(); ++m)
     for (double h : s.reals("h")) calls.push_back(TimedCall{s.real("t_end") / h, rate.ns_per_step});
-  StudyPlan p{counted, counted * kEvalsPerStep, methods * static_cast<double>(s.reals("h").size()) * 8 * kCsvCellBytes,
+  StudyPlan p{counted, counted * rate.evals_per_step(), methods * static_cast<double>(s.reals("h").size()) * 8 * kCsvCellBytes,
               rate.ns_per_step, "a counting run per method and h, then the timing protocol; " + rate.note};
   p.time(s, calls);
   return p;

@@ -23,14 +23,25 @@ std::map<std::string, PlanRate, std::less<>> read_table() {
                                "' needs ns_per_step > 0, what and cpu");
       char ns_text[32];
       std::snprintf(ns_text, sizeof ns_text, "%.3g", *ns);
+      const double evals = node.at_path("force_evals_per_step").value_or(0.0);
+      if (!(evals >= 0))
+        throw std::logic_error("experiments/plan_rates.toml: rate '" + std::string(name.str()) +
+                               "' needs force_evals_per_step >= 0");
       rates.emplace(std::string(name.str()),
-                    PlanRate{*ns, "ns per step: " + *what + " (" + ns_text + " ns on " + *cpu + ", plan_rates.toml)"});
+                    PlanRate{*ns, "ns per step: " + *what + " (" + ns_text + " ns on " + *cpu + ", plan_rates.toml)",
+                             evals});
     }
   }
   return rates;
 }
 
 }  // namespace
+
+double PlanRate::evals_per_step() const {
+  if (!(force_evals_per_step > 0))
+    throw std::logic_error("experiments/plan_rates.toml: the rate of '" + note + "' gives no force_evals_per_step");
+  return force_evals_per_step;
+}
 
 const PlanRate& plan_rate(std::string_view name) {
   static const std::map<std::string, PlanRate, std::less<>> rates = read_table();

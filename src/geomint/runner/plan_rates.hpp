@@ -10,6 +10,10 @@ namespace geomint {
 struct PlanRate {
   double ns_per_step;  // ns per integration step and thread
   std::string note;    // what the rate is and where it was measured, for the plan's note
+  double force_evals_per_step = 0;  // the most in a step of the methods planned with the rate (0: not given)
+
+  // force_evals_per_step; std::logic_error where the table does not give it.
+  double evals_per_step() const;
 };
 
 // --plan's memory of a CSV: one cell held in memory (its text and separator), in bytes.
