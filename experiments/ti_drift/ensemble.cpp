@@ -182,7 +182,7 @@ StudyPlan plan_ensemble(const Scene& s) {
   // M trajectories; the series of all M (and the copy of the one handed to Fig. 5), and the CSVs
   return {M * n, M * n * static_cast<double>(evals_per_step("simplified_takahashi_imada")),
           (M + 1) * rows * 8 + M * std::min(rows, 201.0) * 60, lanes.ns_per_step, lanes.note,
-          static_cast<double>(lane_batches(static_cast<std::size_t>(M)))};  // (tasks: batches of lanes)
+          static_cast<double>(lane_batches(static_cast<std::size_t>(M), kHenonHeilesLanes))};  // (tasks: batches of lanes)
 }
 
 }  // namespace

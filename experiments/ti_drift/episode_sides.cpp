@@ -41,8 +41,8 @@ Value write_starts(Context& ctx) {
     for (std::size_t i = 0; i < N; ++i) starts[i] = ensemble_start(s, hhk, i);
   });
   const std::vector<EpisodeSample> found = concatenate(checkpointed_map<std::vector<EpisodeSample>>(
-      ctx, {"episode_sides.starts"}, lane_batches(N), [&](std::size_t b) {  // (the keys: all the study reads)
-        const LaneBatch batch = lane_batch(b, N);
+      ctx, {"episode_sides.starts"}, lane_batches(N, kHenonHeilesLanes), [&](std::size_t b) {  // (the keys: all the study reads)
+        const LaneBatch batch = lane_batch(b, N, kHenonHeilesLanes);
         return with_ensemble_system(s, [&](const auto& hhk) {
           return first_growth_episode_cuts(hhk, std::span<const Z2>(starts).subspan(batch.first, batch.count), h, n, every, rule);
         });
@@ -72,7 +72,7 @@ StudyPlan plan_episode_sides(const Scene& s) {
   const double evals = static_cast<double>(evals_per_step("simplified_takahashi_imada"));
   const PlanRate& lanes = plan_rate("henon-heiles lanes");
   return {N * n, N * n * evals, N * 64, lanes.ns_per_step, "the starts in lanes; " + lanes.note,
-          static_cast<double>(lane_batches(static_cast<std::size_t>(N)))};
+          static_cast<double>(lane_batches(static_cast<std::size_t>(N), kHenonHeilesLanes))};
 }
 
 }  // namespace

@@ -52,16 +52,17 @@ void timing_with(Context& ctx, const HH& hhk) {
        {"runs", runs},
        {"method", timing_method_text(repeats) + "; a run is " + std::to_string(n) + " steps of a method's kernel, "
                   "every call inlined; fig4_wall_s, fig6_wall_s: the ensembles on --threads threads, one run"}});
-  // The ensembles of Figs 4 and 6 in SIMD lanes against the scalar method: their first kEnsembleLanes starts.
+  // The ensembles of Figs 4 and 6 in SIMD lanes against the scalar method: the starts of their first batch of lanes.
   const std::int64_t n_lj = s.integer("timing.lj_steps");
   std::vector<PhaseState<2>> hh_starts;
   std::vector<PhaseState<18>> lj_starts;
-  for (std::size_t i = 0; i < kEnsembleLanes; ++i) hh_starts.push_back(ensemble_start(s, hhk, i)), lj_starts.push_back(lennard_jones_start(s, i));
+  for (std::size_t i = 0; i < kHenonHeilesLanes; ++i) hh_starts.push_back(ensemble_start(s, hhk, i));
+  for (std::size_t i = 0; i < kLennardJonesLanes; ++i) lj_starts.push_back(lennard_jones_start(s, i));
   merge(ctx.summary, "timing",
-      {{"lanes", {{"fig4", time_lanes(hhk, hh_starts, h, n, repeats).summary(kEnsembleLanes, n)},
-                  {"fig6", time_lanes(LennardJones<9>{}, lj_starts, s.real("lj.h"), n_lj, repeats).summary(kEnsembleLanes, n_lj)},
-                  {"method", "ns per trajectory-step of " + std::to_string(kEnsembleLanes) + " trajectories (the first starts of "
-                             "Figs 4 and 6), simplified Takahashi-Imada unprocessed: scalar, one trajectory after another "
+      {{"lanes", {{"fig4", time_lanes(hhk, hh_starts, h, n, repeats).summary(hh_starts.size(), n)},
+                  {"fig6", time_lanes(LennardJones<9>{}, lj_starts, s.real("lj.h"), n_lj, repeats).summary(lj_starts.size(), n_lj)},
+                  {"method", "ns per trajectory-step of a batch of lanes (" + std::to_string(kHenonHeilesLanes) + " and " +
+                             std::to_string(kLennardJonesLanes) + " trajectories, the first starts of Figs 4 and 6), simplified Takahashi-Imada unprocessed: scalar, one trajectory after another "
                              "(integrate, every call inlined), against each lane kernel this CPU runs (all lanes at once, the "
                              "same bits); single thread, the timing method above"}}}});
   const auto sv = std::find(labels.begin(), labels.end(), "sv");
@@ -79,14 +80,15 @@ void run_timing(Context& ctx) {
 StudyPlan plan_timing(const Scene& s) {
   // the timing protocol over the methods' kernels, then over the scalar method and the lane kernels this CPU
   // runs for Figs 4 and 6 (the Lennard-Jones scalar run planned at the lanes' rate: a lower bound)
-  const double n = static_cast<double>(s.integer("timing.steps")), lanes = static_cast<double>(kEnsembleLanes);
+  const double n = static_cast<double>(s.integer("timing.steps")), hh_lanes_n = static_cast<double>(kHenonHeilesLanes);
+  const double lj_lanes_n = static_cast<double>(kLennardJonesLanes);
   const double lj_n = static_cast<double>(s.integer("timing.lj_steps"));
   const std::size_t kernels = simplified_ti_lanes_kernels<LennardJones<9>>().size();
   const PlanRate &hh = plan_rate("henon-heiles splitting"), &hh_lanes = plan_rate("henon-heiles lanes");
   std::vector<TimedCall> calls(s.texts("timing.methods").size(), TimedCall{n, hh.ns_per_step});
-  calls.push_back(TimedCall{lanes * n, hh.ns_per_step});
-  calls.insert(calls.end(), kernels, TimedCall{lanes * n, hh_lanes.ns_per_step});
-  calls.insert(calls.end(), 1 + kernels, TimedCall{lanes * lj_n, plan_rate("lennard-jones lanes").ns_per_step});
+  calls.push_back(TimedCall{hh_lanes_n * n, hh.ns_per_step});
+  calls.insert(calls.end(), kernels, TimedCall{hh_lanes_n * n, hh_lanes.ns_per_step});
+  calls.insert(calls.end(), 1 + kernels, TimedCall{lj_lanes_n * lj_n, plan_rate("lennard-jones lanes").ns_per_step});
   StudyPlan p;
   p.memory_bytes = 1e4, p.ns_per_step = hh.ns_per_step;
   p.time(s, calls);

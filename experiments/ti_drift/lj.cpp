@@ -230,7 +230,7 @@ StudyPlan plan_lj(const Scene& s) {
   const PlanRate& rate = plan_rate("lennard-jones lanes");
   p.ns_per_step = rate.ns_per_step;
   p.note = rate.note;
-  p.tasks = static_cast<double>(lane_batches(static_cast<std::size_t>(M)));  // the ensemble's batches of lanes (the scan before it: a small part)
+  p.tasks = static_cast<double>(lane_batches(static_cast<std::size_t>(M), kLennardJonesLanes));  // the ensemble's batches of lanes (the scan before it: a small part)
   return p;
 }
 

@@ -34,10 +34,10 @@ void run_lj_steps(Context& ctx) {
   const auto M = static_cast<std::size_t>(s.integer("lj_steps.size"));
   const double T = s.real("lj_steps.t_end");
   const auto lanes = simplified_ti_lanes_kernels<LJ>().front().steps;  // (bit for bit the scalar method)
-  const std::size_t nb = lane_batches(M);  // per step h
+  const std::size_t nb = lane_batches(M, kLennardJonesLanes);  // per step h
   const auto err = concatenate(distributed_map(hs.size() * nb, [&](std::size_t task) {
     const double h = hs[task / nb];
-    const LaneBatch batch = lane_batch(task % nb, M);
+    const LaneBatch batch = lane_batch(task % nb, M, kLennardJonesLanes);
     std::vector<LJ::State> starts;
     for (std::size_t i = batch.first; i < batch.first + batch.count; ++i) starts.push_back(lennard_jones_start(s, i));
     const std::int64_t n = steps_to(T, h);
@@ -97,7 +97,7 @@ StudyPlan plan_lj_steps(const Scene& s) {
   for (double h : s.reals("lj_steps.h")) steps += M * s.real("lj_steps.t_end") / h;
   const double evals = steps * static_cast<double>(evals_per_step("simplified_takahashi_imada"));
   return {steps, evals, M * hs * 8, plan_rate("lennard-jones lanes").ns_per_step, plan_rate("lennard-jones lanes").note,
-          static_cast<double>(lane_batches(static_cast<std::size_t>(M))) * hs};
+          static_cast<double>(lane_batches(static_cast<std::size_t>(M), kLennardJonesLanes)) * hs};
 }
 
 }  // namespace

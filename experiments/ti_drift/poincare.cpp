@@ -315,12 +315,12 @@ StudyPlan plan_poincare(const Scene& s) {
   const double evals = static_cast<double>(evals_per_step("simplified_takahashi_imada"));
   const double rows = kept_samples(n, static_cast<double>(s.integer("samples")));
   const PlanRate &lanes = plan_rate("henon-heiles lanes"), &scalar = plan_rate("henon-heiles splitting");
-  const StudyPlan taken{n, n * evals, rows * 208 + kEnsembleLanes * rows * 40, scalar.ns_per_step,
+  const StudyPlan taken{n, n * evals, rows * 208 + kHenonHeilesLanes * rows * 40, scalar.ns_per_step,
                         "the trajectory of the ensemble study of this run; " + scalar.note, 1};
   StudyPlan alone{(M + 1) * n, (M + 1) * n * evals, M * rows * 8 + rows * 200,
                   (scalar.ns_per_step + M * lanes.ns_per_step) / (M + 1),
                   "the ensemble integrated again (without the ensemble study); " + lanes.note,
-                  static_cast<double>(lane_batches(static_cast<std::size_t>(M)))};  // (tasks: batches of lanes)
+                  static_cast<double>(lane_batches(static_cast<std::size_t>(M), kHenonHeilesLanes))};  // (tasks: batches of lanes)
   alone.reuses = "ensemble", alone.when_reusing = std::make_shared<const StudyPlan>(taken);
   return alone;
 }

@@ -78,15 +78,15 @@ void expect_lanes_are_the_scalar_method(const Sys& sys, const std::vector<typena
 TEST(EnsembleKernels, LennardJonesLanesAreTheScalarMethodBitForBit) {
   // 2000 steps at the Fig. 6 step: long enough for round-off to grow by orders of magnitude in this
   // chaotic cluster, so a lane that differed in one operation would differ in many digits.
-  expect_lanes_are_the_scalar_method(LennardJones<9>{}, cluster_starts(kEnsembleLanes), 0.01, 2000, 300);
+  expect_lanes_are_the_scalar_method(LennardJones<9>{}, cluster_starts(kLennardJonesLanes), 0.01, 2000, 300);
 }
 
 TEST(EnsembleKernels, HenonHeilesLanesAreTheScalarMethodBitForBit) {
   HenonHeilesT<true> hh5;
   hh5.k = 5;
-  expect_lanes_are_the_scalar_method(hh5, henon_heiles_starts(kEnsembleLanes), 0.2, 5000, 1000);
+  expect_lanes_are_the_scalar_method(hh5, henon_heiles_starts(kHenonHeilesLanes), 0.2, 5000, 1000);
   HenonHeilesT<false> hh3;  // the coupling compiled out
-  expect_lanes_are_the_scalar_method(hh3, henon_heiles_starts(kEnsembleLanes), 0.2, 5000, 1000);
+  expect_lanes_are_the_scalar_method(hh3, henon_heiles_starts(kHenonHeilesLanes), 0.2, 5000, 1000);
 }
 
 TEST(EnsembleKernels, AShortBatchFillsItsLanesAndReturnsOnlyItsTrajectories) {

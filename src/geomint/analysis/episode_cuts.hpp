@@ -65,7 +65,7 @@ struct EpisodeSample {
   auto fields() { return std::tie(found, begin, end, count, negative, p2_sum); }
 };
 
-// The starts (at most kEnsembleLanes) along (1.6) at step h for n steps, the error of E of each at the output times
+// The starts (at most kHenonHeilesLanes) along (1.6) at step h for n steps, the error of E of each at the output times
 // every `every` steps (as 004 Fig. 4 records it: E(z_j) - E(z_0)); per start its first growth episode by `rule`
 // and the cuts along it. Compiled once, in episode_cuts.cpp, for the Henon-Heiles systems of 004.
 template <class Sys>

@@ -5,7 +5,7 @@ namespace geomint {
 #define GEOMINT_DECLARE_LANES(isa)                                                                             \
   namespace isa {                                                                                              \
   template <class Sys>                                                                                         \
-  void simplified_ti_steps(const Sys&, double, double, KickLanes<Sys::State::dof>&, std::int64_t);            \
+  void simplified_ti_steps(const Sys&, double, double, LanesOf<Sys>&, std::int64_t);                          \
   }
 GEOMINT_DECLARE_LANES(sse2)
 GEOMINT_DECLARE_LANES(avx2)
@@ -28,9 +28,10 @@ std::vector<typename Sys::State> simplified_ti_lanes(const Sys& sys, LanesSteps<
                                                     std::int64_t n, std::int64_t every, const LanesObserver<Sys>& observe) {
   constexpr int D = Sys::State::dof;
   const auto method = simplified_ti_method(sys, false);
-  const int used = static_cast<int>(std::min<std::size_t>(starts.size(), kEnsembleLanes));
-  KickLanes<D> lanes;
-  for (int i = 0; i < kEnsembleLanes; ++i) lanes.set(i, method.pre(starts[i < used ? i : 0], h));
+  constexpr int L = kLanes<Sys>;
+  const int used = static_cast<int>(std::min<std::size_t>(starts.size(), L));
+  LanesOf<Sys> lanes;
+  for (int i = 0; i < L; ++i) lanes.set(i, method.pre(starts[i < used ? i : 0], h));
   const auto observe_all = [&](std::int64_t j) {
     for (int i = 0; i < used; ++i) observe(i, j, lanes.get(i).z);
   };

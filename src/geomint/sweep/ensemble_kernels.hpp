@@ -1,6 +1,6 @@
 #pragma once
 // Ensembles in SIMD lanes: the simplified Takahashi-Imada method (004 (1.6)), unprocessed, as the
-// kick-drift-kick kernel of integrators/takahashi_imada.hpp, on kEnsembleLanes trajectories at once
+// kick-drift-kick kernel of integrators/takahashi_imada.hpp, on a batch of trajectories at once (kLanes)
 // (004 Fig. 4 on Henon-Heiles, Fig. 6 on the Lennard-Jones cluster, and the step studies of Fig. 6).
 //
 // A lane kernel keeps the states of its trajectories in structure-of-arrays form (KickLanes: q, p and
@@ -26,12 +26,22 @@
 
 namespace geomint {
 
-inline constexpr int kEnsembleLanes = 8;
+// Trajectories per batch of lanes, per system: enough registers of lanes stepped together to hide the latency
+// of a step. A Henon-Heiles step is one chain of about 30 dependent operations, so one register of lanes
+// waits on each (8 lanes took as long per trajectory-step in AVX-512 as in SSE2); 32 lanes are 4 AVX-512
+// registers (8 AVX2, 16 SSE2) in flight, 2.2 times the throughput of 8 in AVX-512. A Lennard-Jones step has
+// hundreds of independent operations (36 pairs): 8 lanes, and the fewest lanes a small ensemble fills.
+inline constexpr int kHenonHeilesLanes = 32, kLennardJonesLanes = 8;
+template <class Sys>
+inline constexpr int kLanes = kHenonHeilesLanes;
+template <int N>
+inline constexpr int kLanes<LennardJones<N>> = kLennardJonesLanes;
 
-// Kick-drift-kick states of kEnsembleLanes trajectories: q[k][lane], p[k][lane], F[k][lane].
-template <int D>
+// Kick-drift-kick states of L trajectories: q[k][lane], p[k][lane], F[k][lane].
+template <int D, int L>
 struct KickLanes {
-  alignas(64) double q[D][kEnsembleLanes], p[D][kEnsembleLanes], F[D][kEnsembleLanes];
+  static constexpr int lanes = L;
+  alignas(64) double q[D][L], p[D][L], F[D][L];
 
   void set(int lane, const KickState<D>& s) {
     for (int k = 0; k < D; ++k) q[k][lane] = s.z.q[k], p[k][lane] = s.z.p[k], F[k][lane] = s.F[k];
@@ -45,7 +55,9 @@ struct KickLanes {
 
 // n steps of (1.6) at step h on every lane of s.
 template <class Sys>
-using LanesSteps = void (*)(const Sys& sys, double h, double alpha, KickLanes<Sys::State::dof>& s, std::int64_t n);
+using LanesOf = KickLanes<Sys::State::dof, kLanes<Sys>>;
+template <class Sys>
+using LanesSteps = void (*)(const Sys& sys, double h, double alpha, LanesOf<Sys>& s, std::int64_t n);
 
 template <class Sys>
 struct LanesKernel {
@@ -62,7 +74,7 @@ std::vector<LanesKernel<Sys>> simplified_ti_lanes_kernels();
 template <class Sys>
 using LanesObserver = std::function<void(int i, std::int64_t j, const typename Sys::State& z)>;
 
-// Integrates the trajectories from `starts` (at most kEnsembleLanes; a shorter batch fills its other
+// Integrates the trajectories from `starts` (at most kLanes<Sys>; a shorter batch fills its other
 // lanes with the first start) by (1.6), unprocessed, at step h for n steps with the kernel `steps`,
 // and calls observe(i, j, z) for trajectory i at every step j <= n that is a multiple of `every`
 // (j = 0 included), as integrate(simplified_ti_method(sys, false), ...) would for the same z.
@@ -72,15 +84,15 @@ std::vector<typename Sys::State> simplified_ti_lanes(const Sys& sys, LanesSteps<
                                                     std::span<const typename Sys::State> starts, double h,
                                                     std::int64_t n, std::int64_t every, const LanesObserver<Sys>& observe);
 
-// The trajectories 0..M-1 of an ensemble in batches of kEnsembleLanes (the tasks of its sweep):
-// batch b holds trajectories first..first + count.
+// The trajectories 0..M-1 of an ensemble in batches of `lanes` (kLanes of its system; the tasks of its
+// sweep): batch b holds trajectories first..first + count.
 struct LaneBatch {
   std::size_t first, count;
 };
-inline std::size_t lane_batches(std::size_t M) { return (M + kEnsembleLanes - 1) / kEnsembleLanes; }
-inline LaneBatch lane_batch(std::size_t b, std::size_t M) {
-  const std::size_t first = b * kEnsembleLanes;
-  return {first, std::min<std::size_t>(kEnsembleLanes, M - first)};
+inline std::size_t lane_batches(std::size_t M, int lanes) { return (M + lanes - 1) / static_cast<std::size_t>(lanes); }
+inline LaneBatch lane_batch(std::size_t b, std::size_t M, int lanes) {
+  const std::size_t first = b * static_cast<std::size_t>(lanes);
+  return {first, std::min<std::size_t>(static_cast<std::size_t>(lanes), M - first)};
 }
 
 // The records of the batches, in trajectory order.

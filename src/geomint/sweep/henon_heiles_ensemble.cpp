@@ -24,7 +24,7 @@ namespace {
 template <class HH>
 std::vector<std::vector<double>> batch_errors(const HH& hhk, const std::vector<PhaseState<2>>& starts, std::size_t b,
                                               double h, std::int64_t n, std::int64_t every) {
-  const LaneBatch batch = lane_batch(b, starts.size());
+  const LaneBatch batch = lane_batch(b, starts.size(), kHenonHeilesLanes);
   std::vector<std::vector<double>> e(batch.count);
   std::vector<double> E0;
   for (std::size_t i = 0; i < batch.count; ++i) E0.push_back(simplified_ti_modified_energy(hhk, starts[batch.first + i], h));
@@ -52,7 +52,7 @@ HenonHeilesEnsemble integrate_ensemble(Context& ctx) {
   });
   const auto t0 = std::chrono::steady_clock::now();  // (on --resume: the part run since)
   auto series = concatenate(checkpointed_map<std::vector<std::vector<double>>>(
-      ctx, {"ensemble", kEnsembleKeys}, lane_batches(M), [&](std::size_t b) {
+      ctx, {"ensemble", kEnsembleKeys}, lane_batches(M, kHenonHeilesLanes), [&](std::size_t b) {
         return with_ensemble_system(s, [&](const auto& hhk) { return batch_errors(hhk, starts, b, h, n4, every4); });
       }));
   const double wall4 = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();

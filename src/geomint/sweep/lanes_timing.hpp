@@ -25,7 +25,7 @@ struct LanesTiming {
   Value summary(std::size_t trajectories, std::int64_t n) const;
 };
 
-// n steps of h from each of `starts` (at most kEnsembleLanes), the scalar method and every kernel timed
+// n steps of h from each of `starts` (at most kLanes<Sys>), the scalar method and every kernel timed
 // together under the timing protocol with `repeats` rounds.
 // For LennardJones<9>, HenonHeilesT<true> and HenonHeilesT<false>.
 template <class Sys>

@@ -74,8 +74,8 @@ LennardJonesEnsemble integrate_lennard_jones_ensemble(Context& ctx) {
   const auto tl0 = std::chrono::steady_clock::now();  // (on --resume: the part run since)
   const std::vector<std::string> series_keys = {"samples", "lj.h", "lj.t_end", "lj.size", "lj.seed", "lj.perturbation"};
   const auto lanes = simplified_ti_lanes_kernels<LJ>().front().steps;  // (bit for bit the scalar method)
-  auto lj_series = concatenate(checkpointed_map<std::vector<LennardJonesSeries>>(ctx, {"lj", series_keys}, lane_batches(Ml), [&](std::size_t b) {
-    const LaneBatch batch = lane_batch(b, Ml);
+  auto lj_series = concatenate(checkpointed_map<std::vector<LennardJonesSeries>>(ctx, {"lj", series_keys}, lane_batches(Ml, kLennardJonesLanes), [&](std::size_t b) {
+    const LaneBatch batch = lane_batch(b, Ml, kLennardJonesLanes);
     std::vector<Z18> starts;
     std::vector<double> E0, Hs;
     for (std::size_t i = batch.first; i < batch.first + batch.count; ++i)
