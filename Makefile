@@ -25,6 +25,7 @@ MPL_PYTHON ?= /usr/bin/python3
 EXPERIMENTS := $(sort $(notdir $(patsubst %/,%,$(dir $(wildcard experiments/*/*.cpp)))))
 DEPS_STAMP := .deps
 UNCHECKED := figures/out/.unchecked   # figures rendered by make figures whose text is not yet checked
+RENDERED := figures/out/.rendered     # figures rendered so far by this make figures (its progress lines)
 
 .PHONY: all deps build build-figures test figures figure-runs figure-files scaling paper overview-figures experiment bench plan-rates methods-gpi new-study clean FORCE
 all: build
@@ -38,13 +39,14 @@ deps: $(DEPS_STAMP)/figures.stamp
 $(BUILD)/CMakeCache.txt: | $(DEPS_STAMP)/build.stamp
 	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_ARGS)
 
+# (scripts/build_progress.py adds the time so far and an estimate of the time left to CMake's percentages)
 build: $(DEPS_STAMP)/build.stamp $(BUILD)/CMakeCache.txt
-	cmake --build $(BUILD) -j $(JOBS)
+	@scripts/build_progress.py cmake --build $(BUILD) -j $(JOBS)
 
 # What the runs and figures need: the experiments and geomint-methods (CMake target geomint_figures), no test
 # suite or benchmark.
 build-figures: $(DEPS_STAMP)/build.stamp $(BUILD)/CMakeCache.txt
-	cmake --build $(BUILD) -j $(JOBS) --target geomint_figures
+	@scripts/build_progress.py cmake --build $(BUILD) -j $(JOBS) --target geomint_figures
 
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
@@ -101,7 +103,9 @@ $(BUILD)/bin/%: ;   # made by `build`, before figure-files is asked for
 # whole make figures.
 figures: build-figures $(DEPS_STAMP)/figures.stamp
 	@start=$$(date +%s.%N); $(MAKE) --no-print-directory figure-runs && render=$$(date +%s.%N) && \
-	  $(MAKE) --no-print-directory -j $(JOBS) figure-files && \
+	  n=$$($(MAKE) --no-print-directory -n figure-files | grep -c 'render_figures.sh' || true) && \
+	  { [ $$n = 0 ] || echo "== rendering $$n figures"; } && mkdir -p figures/out && : > $(RENDERED) && \
+	  GEOMINT_RENDER_PROGRESS="$$n $$(date +%s.%N) $(RENDERED)" $(MAKE) --no-print-directory -j $(JOBS) figure-files && \
 	  python3 scripts/figure_times.py --rendering-from $$render $(RESULTS) $$start $(foreach sc,$(PAPER_SCENES),$(call id_of,$(sc)))
 
 figure-runs: $(ALL_RUNS)

@@ -14,6 +14,9 @@
 # All scripts are tried; the exit status is 1 if any failed, 2 on a usage error.
 # --check-later LIST appends each rendered PDF to the file LIST instead of checking its text, for one
 # check_figure_text.py --remove-failing over all of them (make figures: one Python start, not one per figure).
+# With GEOMINT_RENDER_PROGRESS="TOTAL START FILE" (make figures: TOTAL figures to render from START, seconds
+# since the epoch, FILE listing those rendered so far), each "ok" line also says how many of them are done,
+# the time so far and an estimate of the time left at that pace.
 # --only-available skips (and names) each script whose input CSVs, as its
 # "# Input:" line lists them, are not all in RESULTS_DIR: a run of some of the
 # studies (--study) renders the figures of those studies only.
@@ -68,6 +71,22 @@ missing_inputs() {
     done
 }
 
+# " [k/TOTAL, T s so far, about L s left]" after a figure rendered under GEOMINT_RENDER_PROGRESS (above);
+# nothing without it. (Bash arithmetic in milliseconds: no program started.)
+progress() {
+    [ -n "${GEOMINT_RENDER_PROGRESS:-}" ] || return 0
+    local total start file done_ now ms left
+    read -r total start file <<< "$GEOMINT_RENDER_PROGRESS"
+    [ -n "$file" ] && [ "$total" -gt 0 ] 2>/dev/null || return 0
+    printf '%s\n' "$1" >> "$file"                  # (one short line: an atomic append)
+    mapfile -t done_ < "$file"
+    now=${EPOCHREALTIME/[.,]/}; start=${start/./}; start=${start:0:${#now}}
+    ms=$(( (now - start) / 1000 )); (( ms < 0 )) && ms=0
+    left=$(( ms * (total - ${#done_[@]}) / ${#done_[@]} )); (( left < 0 )) && left=0
+    printf ' [%d/%d, %d.%d s so far, about %d.%d s left]' "${#done_[@]}" "$total" $((ms / 1000)) $((ms % 1000 / 100)) \
+        $((left / 1000)) $((left % 1000 / 100))
+}
+
 # (make figures runs this once per figure: no program is started here that a shell expansion can replace)
 case "${BASH_SOURCE[0]}" in */*) here=${BASH_SOURCE[0]%/*} ;; *) here=. ;; esac
 root=$(cd "$here/../.." && pwd)
@@ -109,7 +128,7 @@ for script in "${scripts[@]}"; do
         echo "FAIL $name ($script): $why" >&2
         failed+=("$name")
     else
-        echo "ok   $name -> $out/$name.pdf, $out/$name.png"
+        echo "ok   $name -> $out/$name.pdf, $out/$name.png$(progress "$name")"
     fi
 done
 
