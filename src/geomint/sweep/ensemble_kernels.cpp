@@ -26,7 +26,6 @@ template <class Sys>
 std::vector<typename Sys::State> simplified_ti_lanes(const Sys& sys, LanesSteps<Sys> steps,
                                                     std::span<const typename Sys::State> starts, double h,
                                                     std::int64_t n, std::int64_t every, const LanesObserver<Sys>& observe) {
-  constexpr int D = Sys::State::dof;
   const auto method = simplified_ti_method(sys, false);
   constexpr int L = kLanes<Sys>;
   const int used = static_cast<int>(std::min<std::size_t>(starts.size(), L));

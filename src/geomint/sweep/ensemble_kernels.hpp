@@ -27,15 +27,22 @@
 namespace geomint {
 
 // Trajectories per batch of lanes, per system: enough registers of lanes stepped together to hide the latency
-// of a step. A Henon-Heiles step is one chain of about 30 dependent operations, so one register of lanes
-// waits on each (8 lanes took as long per trajectory-step in AVX-512 as in SSE2); 32 lanes are 4 AVX-512
-// registers (8 AVX2, 16 SSE2) in flight, 2.2 times the throughput of 8 in AVX-512. A Lennard-Jones step has
-// hundreds of independent operations (36 pairs): 8 lanes, and the fewest lanes a small ensemble fills.
+// of a step (kChains, below). A Henon-Heiles step is one chain of about 30 dependent operations, so one register
+// of lanes waits on each (8 lanes took as long per trajectory-step in AVX-512 as in SSE2): 32 lanes, 4 AVX-512
+// registers (8 AVX2, 16 SSE2). A Lennard-Jones step has hundreds of independent operations (36 pairs), bound
+// by the divider's throughput: 8 lanes, the fewest a small ensemble fills.
 inline constexpr int kHenonHeilesLanes = 32, kLennardJonesLanes = 8;
 template <class Sys>
 inline constexpr int kLanes = kHenonHeilesLanes;
 template <int N>
 inline constexpr int kLanes<LennardJones<N>> = kLennardJonesLanes;
+// Registers of lanes a kernel steps together, their states kept in registers; a batch of more runs group after
+// group. Henon-Heiles: 4, whose chains hide each other's latency (AVX-512: 0.79 ns per trajectory-step, 1.27
+// with 2, 2.47 with 1; AVX2 1.38, SSE2 2.43 with 4, more spills); Lennard-Jones: 1, a step that fills the pipes.
+template <class Sys>
+inline constexpr int kChains = 4;
+template <int N>
+inline constexpr int kChains<LennardJones<N>> = 1;
 
 // Kick-drift-kick states of L trajectories: q[k][lane], p[k][lane], F[k][lane].
 template <int D, int L>
