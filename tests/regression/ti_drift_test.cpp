@@ -532,10 +532,10 @@ TEST(TiDrift, PlanOfThePaperSceneCountsEveryStudy) {
 // and the Lennard-Jones ensemble of Fig. 6, stopped after one round of trajectories (on 2 threads a round of two
 // batches of lanes: four batches, two rounds) and resumed (on 1 thread), give the files of a run straight through.
 TEST(TiDrift, ResumedEnsembleGivesTheSameFiles) {
-  expect_resume_identical("ti_drift", "--quick --study ensemble --set ensemble.size=32 --set t_end=100000", 1, "ensemble");
+  expect_resume_identical("ti_drift", "--quick --study ensemble --set ensemble.size=128 --set t_end=100000", 1, "ensemble");
 }
 TEST(TiDrift, ResumedPoincareAloneGivesTheSameFiles) {
-  expect_resume_identical("ti_drift", "--quick --study poincare --set ensemble.size=32 --set t_end=100000", 1, "poincare");
+  expect_resume_identical("ti_drift", "--quick --study poincare --set ensemble.size=128 --set t_end=100000", 1, "poincare");
 }
 TEST(TiDrift, ResumedLennardJonesEnsembleGivesTheSameFiles) {
   expect_resume_identical("ti_drift", "--quick --study lj --set lj.size=32 --set lj.t_end=100", 1, "lj");

@@ -26,30 +26,38 @@ Value LanesTiming::summary(std::size_t trajectories, std::int64_t n) const {
   return out;
 }
 
-template <class Sys>
-LanesTiming time_lanes(const Sys& sys, const std::vector<typename Sys::State>& starts, double h, std::int64_t n,
-                       int repeats) {
-  using Z = typename Sys::State;
-  const auto method = simplified_ti_method(sys, false);
-  InterleavedTiming timing(repeats);  // the scalar method and each kernel, interleaved
-  timing.add([&] {
-    for (const Z& z : starts) do_not_optimize(integrate_inlined(method, z, h, n));
-  });
-  const auto kernels = simplified_ti_lanes_kernels<Sys>();
-  for (const auto& k : kernels)
-    timing.add([&] {
-      do_not_optimize(simplified_ti_lanes(sys, k.steps, std::span<const Z>(starts), h, n, n, [](int, std::int64_t, const Z&) {}));
-    });
-  const std::vector<RunTime> t = timing.run();
-  LanesTiming out{t.front(), {}};
-  for (std::size_t i = 0; i < kernels.size(); ++i) out.kernels.push_back({kernels[i].name, t[i + 1]});
+LanesTiming LanesConfigs::of(const std::vector<RunTime>& times) const {
+  LanesTiming out{times.at(scalar).scaled(scalar_runs), {}};
+  for (const auto& [name, i] : kernels) out.kernels.push_back({name, times.at(i)});
   return out;
 }
 
-template LanesTiming time_lanes(const LennardJones<9>&, const std::vector<LennardJones<9>::State>&, double, std::int64_t, int);
-template LanesTiming time_lanes(const HenonHeilesT<true>&, const std::vector<HenonHeilesT<true>::State>&, double,
-                                std::int64_t, int);
-template LanesTiming time_lanes(const HenonHeilesT<false>&, const std::vector<HenonHeilesT<false>::State>&, double,
-                                std::int64_t, int);
+template <class Sys>
+LanesConfigs add_lanes(InterleavedTiming& timing, const Sys& sys, const std::vector<typename Sys::State>& starts,
+                       double h, std::int64_t n, std::optional<std::size_t> scalar_on_first) {
+  using Z = typename Sys::State;
+  LanesConfigs out;
+  if (scalar_on_first) {
+    out.scalar = *scalar_on_first, out.scalar_runs = static_cast<double>(starts.size());
+  } else {
+    out.scalar = timing.add([&sys, &starts, h, n] {
+      const auto method = simplified_ti_method(sys, false);
+      for (const Z& z : starts) do_not_optimize(integrate_inlined(method, z, h, n));
+    });
+  }
+  for (const auto& k : simplified_ti_lanes_kernels<Sys>())
+    out.kernels.emplace_back(k.name, timing.add([&sys, &starts, h, n, steps = k.steps] {
+      do_not_optimize(simplified_ti_lanes(sys, steps, std::span<const Z>(starts), h, n, n, [](int, std::int64_t, const Z&) {}));
+    }));
+  return out;
+}
+
+#define GEOMINT_ADD_LANES(Sys)                                                                                   \
+  template LanesConfigs add_lanes(InterleavedTiming&, const Sys&, const std::vector<Sys::State>&, double, std::int64_t, \
+                                  std::optional<std::size_t>);
+GEOMINT_ADD_LANES(LennardJones<9>)
+GEOMINT_ADD_LANES(HenonHeilesT<true>)
+GEOMINT_ADD_LANES(HenonHeilesT<false>)
+#undef GEOMINT_ADD_LANES
 
 }  // namespace geomint

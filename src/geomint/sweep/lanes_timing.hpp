@@ -4,7 +4,9 @@
 // trajectories of one batch, single thread (runner/timing.hpp). Compiled once in the library for the
 // systems of 004 Figs 4 and 6.
 #include <cstdint>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "geomint/runner/timing.hpp"
@@ -25,11 +27,20 @@ struct LanesTiming {
   Value summary(std::size_t trajectories, std::int64_t n) const;
 };
 
-// n steps of h from each of `starts` (at most kLanes<Sys>), the scalar method and every kernel timed
-// together under the timing protocol with `repeats` rounds.
-// For LennardJones<9>, HenonHeilesT<true> and HenonHeilesT<false>.
+// The lane kernels of Sys as configurations of a measurement (InterleavedTiming) that may time other things too:
+// n steps of h from each of `starts` (at most kLanes<Sys>), every kernel this CPU runs, and the scalar method
+// (simplified Takahashi-Imada unprocessed, every call inlined) one trajectory after another; or, given
+// `scalar_on_first`, the index of a configuration of the same measurement that already runs the scalar method
+// n steps from starts[0], that one, its time taken for every start (the step's arithmetic does not depend on the
+// state): one measurement reused, not a second. For LennardJones<9>, HenonHeilesT<true> and HenonHeilesT<false>.
+struct LanesConfigs {
+  std::size_t scalar = 0;       // the scalar method's configuration
+  double scalar_runs = 1;       // its time times this is that of every start
+  std::vector<std::pair<std::string, std::size_t>> kernels;  // name and configuration of each kernel
+  LanesTiming of(const std::vector<RunTime>& times) const;    // from the measurement's times
+};
 template <class Sys>
-LanesTiming time_lanes(const Sys& sys, const std::vector<typename Sys::State>& starts, double h, std::int64_t n,
-                       int repeats);
+LanesConfigs add_lanes(InterleavedTiming& timing, const Sys& sys, const std::vector<typename Sys::State>& starts,
+                       double h, std::int64_t n, std::optional<std::size_t> scalar_on_first = std::nullopt);
 
 }  // namespace geomint
