@@ -241,11 +241,15 @@ RunTime time_runs(int repeats, const std::function<void()>& f, double floor_s) {
 
 void dependent_additions(std::int64_t n) {
   std::uint64_t x = 0;
+  const std::uint64_t one = 1;
   for (std::int64_t i = 0; i < n; i += 8) {
 #if defined(__x86_64__)
-    asm volatile("add $1, %0\n\tadd $1, %0\n\tadd $1, %0\n\tadd $1, %0\n\t"
-                 "add $1, %0\n\tadd $1, %0\n\tadd $1, %0\n\tadd $1, %0"
-                 : "+r"(x));  // (each addition waits for the previous one)
+    // Register operands, not immediates: Intel cores since Golden Cove (Sapphire Rapids) fold chains of
+    // additions of immediates in the renamer, several per cycle, and the clock came out four times too fast.
+    asm volatile("add %1, %0\n\tadd %1, %0\n\tadd %1, %0\n\tadd %1, %0\n\t"
+                 "add %1, %0\n\tadd %1, %0\n\tadd %1, %0\n\tadd %1, %0"
+                 : "+r"(x)
+                 : "r"(one));  // (each addition waits for the previous one)
 #else
     x += 8;
 #endif
