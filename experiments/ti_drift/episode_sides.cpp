@@ -36,10 +36,7 @@ Value write_starts(Context& ctx) {
   const double h = s.real("h");
   const std::int64_t n = steps_to(s.real("t_end"), h), every = std::max<std::int64_t>(1, n / s.integer("samples"));
   const EpisodeRule rule = episode_rule(s, "ensemble", static_cast<double>(every) * h);
-  std::vector<Z2> starts(N);
-  with_ensemble_system(s, [&](const auto& hhk) {
-    for (std::size_t i = 0; i < N; ++i) starts[i] = ensemble_start(s, hhk, i);
-  });
+  const std::vector<Z2> starts = ensemble_starts(s, N);
   const std::vector<EpisodeSample> found = concatenate(checkpointed_map<std::vector<EpisodeSample>>(
       ctx, {"episode_sides.starts"}, lane_batches(N, kHenonHeilesLanes), [&](std::size_t b) {  // (the keys: all the study reads)
         const LaneBatch batch = lane_batch(b, N, kHenonHeilesLanes);

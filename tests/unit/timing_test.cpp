@@ -152,6 +152,12 @@ TEST(TimingProtocol, RelativeTimingsAgainstTheFirst) {
   EXPECT_EQ(relative_timings({"sv", "ti"}, {timing(44, 45.5, 47), timing(50, 60, 110)}, {1, 2})["by_method"]["ti"]["verdict"].text(),
             "slower");
   EXPECT_THROW(relative_timings({"sv"}, {}, {1}), std::invalid_argument);
+  // The reference where it is not the first: the same ratios, keys in the given order.
+  const auto s = to_json(relative_timings({"ti", "sv"}, {timing(40, 60, 110), timing(44, 45.5, 47)}, {2, 1}, 1));
+  EXPECT_EQ(s["reference"], "sv");
+  EXPECT_EQ(s["by_method"]["sv"]["verdict"], "reference");
+  EXPECT_NEAR(s["by_method"]["ti"]["ratio"].get<double>(), 60 / 45.5, 1e-15);
+  EXPECT_THROW(relative_timings({"sv", "ti"}, {timing(44, 45.5, 47), timing(40, 60, 110)}, {1, 2}, 2), std::invalid_argument);
 }
 
 TEST(TimingProtocol, PlansItsOwnTime) {

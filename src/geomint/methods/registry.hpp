@@ -48,6 +48,11 @@ const MethodInfo* find_method(std::string_view name_or_label);
 const MethodInfo& method_info(std::string_view name_or_label);
 // The label (CSV column and summary-key prefix) of a method named by its name or label.
 inline std::string label_of(std::string_view name_or_label) { return std::string(method_info(name_or_label).label); }
+inline std::vector<std::string> method_labels(const std::vector<std::string>& names_or_labels) {
+  std::vector<std::string> labels;
+  for (const auto& m : names_or_labels) labels.push_back(label_of(m));
+  return labels;
+}
 std::string_view family_name(Family);
 
 }  // namespace geomint

@@ -301,15 +301,16 @@ std::string timing_verdict(const TimeRatio& a_over_b, double work_a, double work
 }
 
 Value relative_timings(const std::vector<std::string>& labels, const std::vector<RunTime>& times,
-                       const std::vector<double>& work) {
+                       const std::vector<double>& work, std::size_t ref) {
   if (labels.empty() || times.size() != labels.size() || work.size() != labels.size())
     throw std::invalid_argument("relative_timings: labels, times and work differ in length");
-  Value out = {{"reference", labels.front()}, {"by_method", Value::record()}};
+  if (ref >= labels.size()) throw std::invalid_argument("relative_timings: no reference " + std::to_string(ref));
+  Value out = {{"reference", labels[ref]}, {"by_method", Value::record()}};
   for (std::size_t k = 0; k < labels.size(); ++k) {
-    const TimeRatio r = time_ratio(times[k], times.front());
+    const TimeRatio r = time_ratio(times[k], times[ref]);
     out["by_method"][labels[k]] = {{"ratio", r.median},
                                    {"interval", {{"min", r.lo}, {"max", r.hi}}},
-                                   {"verdict", k == 0 ? std::string("reference") : timing_verdict(r, work[k], work.front())}};
+                                   {"verdict", k == ref ? std::string("reference") : timing_verdict(r, work[k], work[ref])}};
   }
   return out;
 }

@@ -149,11 +149,11 @@ Value to_value(const TimeRatio& r);
 // slower): a measurement error until shown otherwise, never a finding.
 std::string timing_verdict(const TimeRatio& a_over_b, double work_a, double work_b);
 
-// Each timing against the first (the reference): {reference, by_method: {label: {ratio (of the medians),
-// interval: {min, max} (time_ratio), verdict (timing_verdict, with work[k] the work per call)}}}. Labels,
-// times and work are parallel lists.
+// Each timing against the reference, labels[ref] (the first by default): {reference, by_method: {label: {ratio
+// (of the medians), interval: {min, max} (time_ratio), verdict (timing_verdict, with work[k] the work per
+// call)}}}. Labels, times and work are parallel lists.
 Value relative_timings(const std::vector<std::string>& labels, const std::vector<RunTime>& times,
-                       const std::vector<double>& work);
+                       const std::vector<double>& work, std::size_t ref = 0);
 
 // n steps of eq. (23) (pre once, post once) with every call in the loop inlined: each method is
 // timed with its step inlined, however many other methods the executable instantiates.

@@ -38,6 +38,14 @@ std::vector<std::vector<double>> batch_errors(const HH& hhk, const std::vector<P
 
 }  // namespace
 
+std::vector<PhaseState<2>> ensemble_starts(const Scene& s, std::size_t count) {
+  std::vector<PhaseState<2>> starts(count);
+  with_ensemble_system(s, [&](const auto& hhk) {
+    for (std::size_t i = 0; i < count; ++i) starts[i] = ensemble_start(s, hhk, i);
+  });
+  return starts;
+}
+
 HenonHeilesEnsemble integrate_ensemble(Context& ctx) {
   const Scene& s = ctx.scene;
   ctx.progress("Fig. 4: ensemble");
@@ -46,10 +54,7 @@ HenonHeilesEnsemble integrate_ensemble(Context& ctx) {
   const auto M = static_cast<std::size_t>(s.integer("ensemble.size"));
   const std::int64_t n4 = steps_to(t_end, h), every4 = std::max<std::int64_t>(1, n4 / samples);
   const auto time_of = [&](std::size_t k) { return static_cast<double>(k) * static_cast<double>(every4) * h; };
-  std::vector<PhaseState<2>> starts(M);
-  with_ensemble_system(s, [&](const auto& hhk) {
-    for (std::size_t i = 0; i < M; ++i) starts[i] = ensemble_start(s, hhk, i);
-  });
+  const std::vector<PhaseState<2>> starts = ensemble_starts(s, M);
   const auto t0 = std::chrono::steady_clock::now();  // (on --resume: the part run since)
   auto series = concatenate(checkpointed_map<std::vector<std::vector<double>>>(
       ctx, {"ensemble", kEnsembleKeys}, lane_batches(M, kHenonHeilesLanes), [&](std::size_t b) {

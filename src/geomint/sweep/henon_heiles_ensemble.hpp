@@ -32,6 +32,9 @@ PhaseState<2> ensemble_start(const Scene& s, const HH& hhk, std::size_t i) {
                              static_cast<std::uint64_t>(s.integer("ensemble.seed")), i);
 }
 
+// Starts 0 .. count - 1 of the ensemble (ensemble_start) on the scene's system.
+std::vector<PhaseState<2>> ensemble_starts(const Scene& s, std::size_t count);
+
 // The ensemble as run: the error of E of each trajectory at its ns output times, every4 steps apart.
 struct HenonHeilesEnsemble {
   double h, t_end;

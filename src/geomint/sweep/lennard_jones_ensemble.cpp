@@ -25,6 +25,12 @@ PhaseState<18> lennard_jones_start(const Scene& s, std::size_t i) {
   return lennard_jones_grid_start(static_cast<std::uint64_t>(s.integer("lj.seed")), s.real("lj.perturbation"), i);
 }
 
+std::vector<PhaseState<18>> lennard_jones_starts(const Scene& s, std::size_t count) {
+  std::vector<PhaseState<18>> starts;
+  for (std::size_t i = 0; i < count; ++i) starts.push_back(lennard_jones_start(s, i));
+  return starts;
+}
+
 void check_lennard_jones_step(const Scene& s, const char* key, double h) {
   check_step_bound(s, key, "simplified_takahashi_imada", h * std::sqrt(lennard_jones_grid_stiffness()),
                    "omega^2 = max eig U'' at the 3 x 3 grid of Fig. 6", "2 sqrt(3)");

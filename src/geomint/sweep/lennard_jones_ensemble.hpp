@@ -32,6 +32,8 @@ void check_lennard_jones_step(const Scene& s, const char* key, double h);
 
 // Start i of the scene's ensemble: lennard_jones_grid_start from lj.seed and lj.perturbation.
 PhaseState<18> lennard_jones_start(const Scene& s, std::size_t i);
+// Starts 0 .. count - 1.
+std::vector<PhaseState<18>> lennard_jones_starts(const Scene& s, std::size_t count);
 
 // One trajectory's errors at the output times: E - E_0, H - H_0, and H(processed) - H_0.
 struct LennardJonesSeries {
