@@ -92,6 +92,10 @@ TEST(EnsembleKernels, HenonHeilesLanesAreTheScalarMethodBitForBit) {
 TEST(EnsembleKernels, AShortBatchFillsItsLanesAndReturnsOnlyItsTrajectories) {
   // 3 trajectories, and a step count that is not a multiple of `every` (the last part unobserved).
   expect_lanes_are_the_scalar_method(LennardJones<9>{}, cluster_starts(3), 0.01, 250, 100);
+  // Henon-Heiles: 5 of its 32 lanes, stepped in groups of registers (kChains) that must each keep their own.
+  HenonHeilesT<true> hh5;
+  hh5.k = 5;
+  expect_lanes_are_the_scalar_method(hh5, henon_heiles_starts(5), 0.2, 250, 100);
 }
 
 }  // namespace ensemble_kernels_test
