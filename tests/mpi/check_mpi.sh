@@ -37,8 +37,11 @@ if [[ -n $resume_np ]]; then
     "${mpi[@]}" -np "$np" "$bin" "$@" --threads 1 --set checkpoint.interval=0 --out "$work/mpi" 2> "$work/stop.stderr" &
     pid=$!
     until compgen -G "$work/mpi.partial/*.checkpoint.json" > /dev/null || ! kill -0 "$pid" 2> /dev/null; do sleep 0.05; done
-    if [[ -n $rank ]]; then  # (the newest process of the binary's name: a rank, never mpirun)
-      pkill -TERM -n -x "$(basename "$bin")"
+    if [[ -n $rank ]]; then
+      # The newest rank of this run: a process whose command line starts with the binary and names this run's
+      # --out (never mpirun, nor a rank of another test running beside this one: ctest -j).
+      quote() { printf '%s' "$1" | sed 's/[][\.*^$+?(){}|]/\\&/g'; }
+      pkill -TERM -n -f "^$(quote "$bin") .*--out $(quote "$work/mpi")( |\$)"
     else
       kill -"$usr1" "$pid" 2> /dev/null
     fi
