@@ -13,7 +13,7 @@ namespace geomint {
 
 Value labels_of(const std::vector<std::string>& methods) {
   Value out = Value::list();
-  for (const auto& m : methods) out.push_back(label_of(m));
+  for (auto& label : method_labels(methods)) out.push_back(std::move(label));
   return out;
 }
 

@@ -29,8 +29,8 @@ namespace geomint {
 // Trajectories per batch of lanes, per system: enough registers of lanes stepped together to hide the latency
 // of a step (kChains, below). A Henon-Heiles step is one chain of about 30 dependent operations, so one register
 // of lanes waits on each (8 lanes took as long per trajectory-step in AVX-512 as in SSE2): 32 lanes, 4 AVX-512
-// registers (8 AVX2, 16 SSE2). A Lennard-Jones step has hundreds of independent operations (36 pairs), bound
-// by the divider's throughput: 8 lanes, the fewest a small ensemble fills.
+// registers (8 AVX2, 16 SSE2). A Lennard-Jones step has hundreds of independent operations (36 pairs, two
+// gradients, a division each): 8 lanes, the fewest a small ensemble fills.
 inline constexpr int kHenonHeilesLanes = 32, kLennardJonesLanes = 8;
 template <class Sys>
 inline constexpr int kLanes = kHenonHeilesLanes;
@@ -47,7 +47,6 @@ inline constexpr int kChains<LennardJones<N>> = 1;
 // Kick-drift-kick states of L trajectories: q[k][lane], p[k][lane], F[k][lane].
 template <int D, int L>
 struct KickLanes {
-  static constexpr int lanes = L;
   alignas(64) double q[D][L], p[D][L], F[D][L];
 
   void set(int lane, const KickState<D>& s) {
