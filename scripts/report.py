@@ -11,7 +11,7 @@ into OUT_DIR:
                     paper/main.tex and paper/sections/**/*.tex):
                       \\result[fmt]{run}{key}        a number or text of summary.json (dotted key,
                                                     array elements by index from 0), or of the
-                                                    resolved scene as scene.<key> (run.json)
+                                                    resolved scene as scene.<key> (run.json; run.<key>: any of it)
                       \\resultrange[fmt]{run}{key}   an object {min, max} as "a--b" ("a" if equal)
                     fmt: one of FORMATS below (default general). A key that does not exist or has
                     no finite value stops this script (exit 1) and the LaTeX run, naming it; with
@@ -69,7 +69,7 @@ VERDICT = re.compile(r"\\verdict\{([^}]*)\}\{([^}]*)\}")  # \verdict{run}{fig5}:
 
 def lookup_text(run, key, fmt, ranged):
     """The LaTeX of one lookup, or None if the value does not exist or cannot be shown."""
-    tree, key = (run["run"].get("scene", {}), key[6:]) if key.startswith("scene.") else (run["summary"], key)
+    tree, key = (run["run"], key.removeprefix("run.")) if key.startswith(("scene.", "run.")) else (run["summary"], key)
     v = at(tree, key)
     if ranged:
         if not isinstance(v, dict):

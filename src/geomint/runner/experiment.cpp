@@ -930,6 +930,7 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
     run["rank_exchange_s"] = mpi::all_gather(std::span<const double>(&exchange, 1));  // and in exchanging their results
     run["checkpoint_write_s"] = checkpoint_write_seconds();
     run["load_average"] = {{"before", load_before}, {"after", load_average()}};  // 1, 5, 15 minutes
+    run["timing_protocol"] = to_json(timing_protocol_record());  // (runner/timing.hpp: its floor and rounds)
     run["timing_concurrency"] = to_json(timing_concurrency_record());  // (runner/timing.hpp; null: no cost study timed)
     run["timing_control"] = to_json(timing_control_record());  // (runner/timing.hpp: each measurement's drift)
     run["start_utc"] = utc_iso8601(start);

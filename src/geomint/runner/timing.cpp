@@ -213,6 +213,11 @@ Value timing_concurrency_record() {
   return out;
 }
 
+Value timing_protocol_record() {
+  return {{"floor_ms", kTimingFloorS * 1000}, {"margin", kTimingMargin}, {"min_repeats", kTimingRepeats},
+          {"control_repeats", kControlRepeats}};
+}
+
 Value timing_control_record() {
   const std::lock_guard<std::mutex> lock(control_mutex);
   if (control_measured.size() == 0) return nullptr;

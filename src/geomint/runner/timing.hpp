@@ -4,8 +4,8 @@
 //
 // Each configuration (a method at a step, a kernel, ...) gets one untimed warm-up call, then its calls
 // per timed run are calibrated from a probe run of an eighth of the floor so that a run lasts
-// kTimingMargin times the floor (kTimingFloorS, 20 ms: well above the clock's resolution and a
-// scheduler tick's jitter); a run that still ends below the floor is lengthened and run again. Then `repeats` rounds (at least
+// kTimingMargin times the floor (kTimingFloorS, 10 ms: well above the clock's resolution and a
+// scheduler tick's jitter; below); a run that still ends below the floor is lengthened and run again. Then `repeats` rounds (at least
 // kTimingRepeats in the paper scenes) each time one run of every configuration, in an order rotated
 // by one per round (A B C, B C A, C A B, ...): a burst of load on a shared machine hits every
 // configuration alike. A run's time is its wall time over its calls; a configuration reports the
@@ -21,6 +21,12 @@
 // many configurations of a round run at a time, each on its own core, if the cores time alike
 // (timing_concurrency: a throughput-bound loop runs as fast beside the others as alone, within
 // kConcurrentSlowdown); otherwise, as on two hyperthreads of one core, one at a time.
+// The floor: the cost studies of the paper scenes (329 timed configurations), five runs each at floors of 5,
+// 10 and 20 ms, interleaved, on one idle 2-core machine (bench/README.md): a configuration's time relative to
+// the others of its measurement, what every comparison uses, varied between runs by 0.84, 0.96 and 0.93 %
+// (median standard deviation of its logarithm), a time itself by 4.1, 3.4 and 2.1 %, and the studies took
+// 7.4, 11.3 and 19.0 s. 10 ms keeps every ratio as reproducible as 20 ms, and absolute times within the
+// spread of a run (about 3 %), at 60 % of the time.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -35,13 +41,14 @@
 
 namespace geomint {
 
-inline constexpr double kTimingFloorS = 0.02;  // the shortest timed run
+inline constexpr double kTimingFloorS = 0.01;  // the shortest timed run
 inline constexpr double kTimingMargin = 1.1;   // a run is calibrated to this times the floor
 inline constexpr int kTimingRepeats = 7;       // the fewest rounds of the protocol (paper scenes)
 inline constexpr int kControlRepeats = 3;      // runs of the control before and after a measurement
 inline constexpr const char* kTimingRepeatsHelp =
-    "rounds of the timing protocol (runner/timing.hpp): each configuration timed once per round in runs of >= 20 ms, "
-    "interleaved; the median is the estimate, the interquartile range the spread (paper scenes: >= 7)";
+    "rounds of the timing protocol (runner/timing.hpp): each configuration timed once per round in runs of at least "
+    "its floor (run.json timing_protocol), interleaved; the median is the estimate, the interquartile range the spread "
+    "(paper scenes: >= 7)";
 
 // Keeps the compiler from discarding a computation whose result is unused.
 template <class T>
@@ -86,6 +93,10 @@ Value timing_concurrency_record();
 // The control of every measurement of several configurations in this process, in order: {configurations,
 // before_s, after_s, drift} (run.json timing_control; null if none).
 Value timing_control_record();
+
+// The protocol's constants, as run.json records them (timing_protocol): floor_ms, margin, min_repeats,
+// control_repeats.
+Value timing_protocol_record();
 
 // Times configurations under the protocol of the header comment.
 class InterleavedTiming {
