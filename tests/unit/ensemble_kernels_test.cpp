@@ -2,8 +2,12 @@
 // simplified Takahashi-Imada (004 (1.6)) through integrate(), lane by lane, bit for bit.
 #include <gtest/gtest.h>
 
+#include <bit>
+#include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <limits>
+#include <random>
 #include <vector>
 
 #include "geomint/sweep/ensemble_kernels.hpp"
@@ -96,6 +100,45 @@ TEST(EnsembleKernels, AShortBatchFillsItsLanesAndReturnsOnlyItsTrajectories) {
   HenonHeilesT<true> hh5;
   hh5.k = 5;
   expect_lanes_are_the_scalar_method(hh5, henon_heiles_starts(5), 0.2, 250, 100);
+}
+
+// The u whose 1/u the lanes' reciprocal (ensemble_kernel.inc) must round as the division does: every significand
+// of all ones (the one case where Markstein's correction alone rounds wrongly) and of one bit set, and their
+// neighbours, at every exponent of [-1000, 1000]; random significands at random exponents and in the cluster's
+// range of u; and the values outside [2^-1000, 2^1000] that take the division, among ordinary ones.
+std::vector<double> reciprocal_cases() {
+  std::vector<double> u;
+  const std::uint64_t all_ones = (std::uint64_t{1} << 52) - 1;
+  for (int e = -1000; e <= 1000; ++e)
+    for (std::uint64_t m : {all_ones, all_ones - 1, all_ones - 2, std::uint64_t{0}, std::uint64_t{1}, std::uint64_t{2}})
+      u.push_back(std::ldexp(std::bit_cast<double>((std::uint64_t{1023} << 52) | m), e));
+  std::mt19937_64 rng(20251129);
+  std::uniform_int_distribution<int> exponent(-1000, 999);
+  std::uniform_real_distribution<double> cluster(0.25, 20);
+  for (int i = 0; i < (1 << 20); ++i) {
+    const double significand = std::bit_cast<double>((std::uint64_t{1023} << 52) | (rng() & all_ones));
+    u.push_back(std::ldexp(significand, exponent(rng))), u.push_back(significand), u.push_back(cluster(rng));
+  }
+  const double inf = std::numeric_limits<double>::infinity();
+  for (double x : {0.0, -0.0, std::numeric_limits<double>::denorm_min(), std::numeric_limits<double>::min(),
+                   std::nextafter(0x1p-1000, 0.0), 0x1p-1000, 0x1p+1000, std::nextafter(0x1p+1000, inf),
+                   std::numeric_limits<double>::max(), inf, -inf, -1.5, std::numeric_limits<double>::quiet_NaN()})
+    u.push_back(x), u.push_back(3.0);  // (with an ordinary value beside it in the same vector)
+  u.resize((u.size() + 7) / 8 * 8, 1.0);
+  return u;
+}
+
+TEST(EnsembleKernels, LanesReciprocalIsTheDivisionBitForBit) {
+  const std::vector<double> u = reciprocal_cases();
+  for (const auto& k : lanes_reciprocals_kernels()) {
+    std::vector<double> out(u.size());
+    k.reciprocals(u.data(), out.data(), u.size());
+    std::size_t wrong = 0, first = 0;
+    for (std::size_t i = 0; i < u.size(); ++i)
+      if (std::bit_cast<std::uint64_t>(out[i]) != std::bit_cast<std::uint64_t>(1.0 / u[i]) && wrong++ == 0) first = i;
+    EXPECT_EQ(wrong, 0u) << k.isa << ": of " << u.size() << ", the first at u = " << u[first] << " (" << out[first]
+                         << " for " << 1.0 / u[first] << ")";
+  }
 }
 
 }  // namespace ensemble_kernels_test

@@ -8,8 +8,9 @@
 // force is the system's own gradient(), instantiated for a vector of lanes instead of a double, and the
 // step does the operations of kick_drift_kick and simplified_ti_force in their order: the build has no
 // FMA contraction (CMakeLists.txt), so each lane is bit for bit the scalar method
-// (tests/unit/ensemble_kernels_test.cpp). One translation unit per instruction set (SSE2, AVX2,
-// AVX-512), chosen at run time by CPU detection, as for the energy map.
+// (tests/unit/ensemble_kernels_test.cpp); in AVX-512 a third of a Lennard-Jones gradient's reciprocals come
+// correctly rounded from the FMA units instead of the divider (ensemble_kernel.inc). One translation unit per
+// instruction set (SSE2, AVX2, AVX-512), chosen at run time by CPU detection, as for the energy map.
 #include <algorithm>
 #include <cstdint>
 #include <functional>
@@ -75,6 +76,14 @@ struct LanesKernel {
 // The kernels this CPU can run, best first (for LennardJones<9>, HenonHeilesT<true> and <false>).
 template <class Sys>
 std::vector<LanesKernel<Sys>> simplified_ti_lanes_kernels();
+
+// out[i] = 1 / u[i], i < n (a multiple of 8), as the lanes of an instruction set take 1/u where not from the divider
+// (AVX-512: from the FMA units, correctly rounded; the others divide): {isa, function} for each one this CPU runs.
+struct LanesReciprocals {
+  std::string isa;
+  void (*reciprocals)(const double* u, double* out, std::size_t n);
+};
+std::vector<LanesReciprocals> lanes_reciprocals_kernels();
 
 // observe(i, j, z): trajectory i (of a batch) is z at step j.
 template <class Sys>

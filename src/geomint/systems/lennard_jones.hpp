@@ -17,6 +17,10 @@
 
 namespace geomint {
 
+// 1 / u of the pair_index-th pair as gradient() takes it: for a double, the division; lanes of doubles
+// (sweep/ensemble_kernel.inc) have their own, bit for bit the same, which may take some pairs' otherwise.
+inline double reciprocal(double u, int /*pair_index*/) { return 1.0 / u; }
+
 template <int N>
 struct LennardJones {
   static constexpr int D = 2 * N;
@@ -53,13 +57,14 @@ struct LennardJones {
   template <class T>
   void gradient(const T* q, T* g) const {
     for (int k = 0; k < D; ++k) g[k] = T(0.0);
+    int pair_index = 0;  // (the pairs in the order visited: constants once the loops are unrolled)
 #pragma GCC unroll 16
     for (int i = 0; i < N; ++i) {
       T gx = g[2 * i], gy = g[2 * i + 1];  // (the sum for particle i in registers, in the same order)
 #pragma GCC unroll 16
       for (int j = i + 1; j < N; ++j) {
         const T dx = q[2 * i] - q[2 * j], dy = q[2 * i + 1] - q[2 * j + 1];
-        const T iu = 1.0 / (dx * dx + dy * dy), iu2 = iu * iu, iu4 = iu2 * iu2;
+        const T iu = reciprocal(dx * dx + dy * dy, pair_index++), iu2 = iu * iu, iu4 = iu2 * iu2;
         const T c = (12 * eps) * iu4 * (1.0 - iu2 * iu);  // 2 G'(u) = 12 eps u^-4 (1 - u^-3), G' = eps (6 u^-4 - 6 u^-7)
         const T wx = c * dx, wy = c * dy;
         gx += wx, gy += wy, g[2 * j] -= wx, g[2 * j + 1] -= wy;
