@@ -4,7 +4,7 @@
 The generic report script (scripts/report.py) on the quick runs: it writes its files, every
 comparison of every summary.json has its row in comparisons.tex, the ledger names every figure and
 table of paper/papers.toml, quick.tex lists a quick run's comparisons (by number) and the tests that wait on it,
-a \\result lookup of an existing key is defined and one of a missing
+a \\result lookup of an existing key (of summary.json, and run.<key> of run.json) is defined and one of a missing
 key stops the script naming the key, and the script stays generic (no experiment name in it, at
 most 600 lines).
 """
@@ -51,9 +51,10 @@ def main() -> int:
             if (all_results / run / "summary.json").exists():
                 shutil.copytree(all_results / run, results / run)
     runs = sorted(p.parent.name for p in results.glob("*/summary.json"))
-    lookups_tex = work / "lookups.tex"  # every run's wall time, in two formats
-    lookups_tex.write_text("".join(f"\\result{{{r}}}{{timing.wall_s}} \\result[sci]{{{r}}}{{timing.wall_s}}\n"
-                                   for r in runs), encoding="utf-8")
+    lookups_tex = work / "lookups.tex"  # every run's wall time, in two formats, and a value of its run.json
+    lookups_tex.write_text("".join(f"\\result{{{r}}}{{timing.wall_s}} \\result[sci]{{{r}}}{{timing.wall_s}} "
+                                   f"\\result[plain]{{{r}}}{{run.timing_protocol.floor_ms}}\n" for r in runs),
+                           encoding="utf-8")
     command = [sys.executable, str(script), str(results), str(work), "--methods", str(methods),
                "--papers", str(source / "paper" / "papers.toml")]
     junit = work / "junit.xml"  # a ctest JUnit report: a passed and a failed hard case, and a fixture
@@ -107,6 +108,9 @@ def main() -> int:
         for fmt in ("general", "sci"):
             if f"geomint@{run}@{fmt}@timing.wall_s@v" not in lookups:
                 problems.append(f"{run}: no \\result[{fmt}] for timing.wall_s")
+        floor = json.loads((results / run / "run.json").read_text(encoding="utf-8"))["timing_protocol"]["floor_ms"]
+        if f"geomint@{run}@plain@run.timing_protocol.floor_ms@v}}{{\\ensuremath{{{floor:g}}}}}" not in lookups:
+            problems.append(f"{run}: \\result{{{run}}}{{run.timing_protocol.floor_ms}} is not run.json's {floor:g}")
     papers = tomllib.loads((source / "paper" / "papers.toml").read_text(encoding="utf-8"))
     for paper in papers["paper"]:
         for item in paper.get("item", []):
