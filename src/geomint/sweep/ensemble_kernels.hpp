@@ -31,7 +31,7 @@ namespace geomint {
 // of a step (kChains, below). A Henon-Heiles step is one chain of about 30 dependent operations, so one register
 // of lanes waits on each (8 lanes took as long per trajectory-step in AVX-512 as in SSE2): 32 lanes, 4 AVX-512
 // registers (8 AVX2, 16 SSE2). A Lennard-Jones step has hundreds of independent operations (36 pairs, two
-// gradients, a division each): 8 lanes, the fewest a small ensemble fills.
+// gradients, a reciprocal each): 8 lanes, the fewest a small ensemble fills.
 inline constexpr int kHenonHeilesLanes = 32, kLennardJonesLanes = 8;
 template <class Sys>
 inline constexpr int kLanes = kHenonHeilesLanes;
