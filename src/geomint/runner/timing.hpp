@@ -21,12 +21,9 @@
 // many configurations of a round run at a time, each on its own core, if the cores time alike
 // (timing_concurrency: a throughput-bound loop runs as fast beside the others as alone, within
 // kConcurrentSlowdown); otherwise, as on two hyperthreads of one core, one at a time.
-// The floor: the cost studies of the paper scenes (329 timed configurations), five runs each at floors of 5,
-// 10 and 20 ms, interleaved, on one idle 2-core machine (bench/README.md): a configuration's time relative to
-// the others of its measurement, what every comparison uses, varied between runs by 0.84, 0.96 and 0.93 %
-// (median standard deviation of its logarithm), a time itself by 4.1, 3.4 and 2.1 %, and the studies took
-// 7.4, 11.3 and 19.0 s. 10 ms keeps every ratio as reproducible as 20 ms, and absolute times within the
-// spread of a run (about 3 %), at 60 % of the time.
+// The floor comes from a measurement (bench/README.md, "The timing protocol's floor"): at 10 ms a configuration's
+// time relative to the others of its measurement, what every comparison uses, reproduces between runs as well as
+// at 20 ms, and a time itself about as well as the spread within one run, at 60 % of the time.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>

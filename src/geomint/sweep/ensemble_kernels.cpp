@@ -17,18 +17,10 @@ template <class Sys>
 std::vector<LanesKernel<Sys>> simplified_ti_lanes_kernels() {
   __builtin_cpu_init();
   std::vector<LanesKernel<Sys>> k;
-  if (__builtin_cpu_supports("avx512f")) k.push_back({"avx512", "AVX-512", avx512::simplified_ti_steps<Sys>});
-  if (__builtin_cpu_supports("avx2")) k.push_back({"avx2", "AVX2", avx2::simplified_ti_steps<Sys>});
-  k.push_back({"sse2", "SSE2", sse2::simplified_ti_steps<Sys>});
-  return k;
-}
-
-std::vector<LanesReciprocals> lanes_reciprocals_kernels() {
-  __builtin_cpu_init();
-  std::vector<LanesReciprocals> k;
-  if (__builtin_cpu_supports("avx512f")) k.push_back({"avx512", avx512::reciprocals});
-  if (__builtin_cpu_supports("avx2")) k.push_back({"avx2", avx2::reciprocals});
-  k.push_back({"sse2", sse2::reciprocals});
+  if (__builtin_cpu_supports("avx512f"))
+    k.push_back({"avx512", "AVX-512", avx512::simplified_ti_steps<Sys>, avx512::reciprocals});
+  if (__builtin_cpu_supports("avx2")) k.push_back({"avx2", "AVX2", avx2::simplified_ti_steps<Sys>, avx2::reciprocals});
+  k.push_back({"sse2", "SSE2", sse2::simplified_ti_steps<Sys>, sse2::reciprocals});
   return k;
 }
 

@@ -71,19 +71,14 @@ struct LanesKernel {
   std::string isa;   // "avx512", "avx2", "sse2"
   std::string name;  // "AVX-512", "AVX2", "SSE2"
   LanesSteps<Sys> steps;
+  // out[i] = 1 / u[i], i < n (a multiple of 8), as the lanes take 1/u where not from the divider (AVX-512: from the
+  // FMA units, correctly rounded, ensemble_kernel.inc; the others divide): for the tests.
+  void (*reciprocals)(const double* u, double* out, std::size_t n);
 };
 
 // The kernels this CPU can run, best first (for LennardJones<9>, HenonHeilesT<true> and <false>).
 template <class Sys>
 std::vector<LanesKernel<Sys>> simplified_ti_lanes_kernels();
-
-// out[i] = 1 / u[i], i < n (a multiple of 8), as the lanes of an instruction set take 1/u where not from the divider
-// (AVX-512: from the FMA units, correctly rounded; the others divide): {isa, function} for each one this CPU runs.
-struct LanesReciprocals {
-  std::string isa;
-  void (*reciprocals)(const double* u, double* out, std::size_t n);
-};
-std::vector<LanesReciprocals> lanes_reciprocals_kernels();
 
 // observe(i, j, z): trajectory i (of a batch) is z at step j.
 template <class Sys>
