@@ -9,6 +9,7 @@
 //   BM_EnergyMapKernel/<isa>/<coordinates>  the batch kernels of energy_map_kernels()
 //   BM_EnergyMapScalar/<coordinates>        energy_map_scalar (the straightforward scalar loop)
 //   BM_EnergyMapOdeint/cartesian            Boost.Odeint symplectic_euler, p-first arrangement
+//   BM_KernelArithmetic/<isa>/<coordinates> the kernel's vector arithmetic alone: its ceiling on this core
 //   BM_ClockCalibration                      a dependent chain of integer additions: the cycle time
 //
 // Before any benchmark runs, the odeint loop is checked against
@@ -28,6 +29,7 @@
 #include <boost/numeric/odeint/integrate/integrate_n_steps.hpp>
 #include <boost/numeric/odeint/stepper/symplectic_euler.hpp>
 
+#include "arithmetic_ceiling.hpp"
 #include "geomint/runner/clock.hpp"
 #include "geomint/sweep/energy_map.hpp"
 
@@ -205,6 +207,14 @@ void BM_EnergyMapOdeint(benchmark::State& state) {
   set_counters(state, out);
 }
 
+// The kernel's arithmetic alone (arithmetic_ceiling.hpp), per trajectory-step: its ceiling on this core.
+void BM_KernelArithmetic(benchmark::State& state, double (*arithmetic)(bool, std::int64_t), Coordinates c) {
+  constexpr std::int64_t kBatchSteps = 4096;  // steps of a batch per iteration
+  for (auto _ : state) benchmark::DoNotOptimize(arithmetic(c == Coordinates::polar, kBatchSteps));
+  state.counters["time_per_step"] = benchmark::Counter(static_cast<double>(kBatchSteps * kEnergyMapBatch),
+                                                       benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
+}
+
 // The clock, calibrated in the same run: a dependent chain of integer additions (runner/clock.hpp), one cycle
 // of latency each on every x86-64 core, timed like the kernels. Its time per addition is the cycle time of the core the benchmarks
 // ran on (turbo included), which turns their ns per trajectory-step into cycles (run_energy_map_bench.sh).
@@ -218,10 +228,17 @@ void BM_ClockCalibration(benchmark::State& state) {
 void register_benchmarks() {
   benchmark::RegisterBenchmark("BM_ClockCalibration", BM_ClockCalibration)->Unit(benchmark::kMillisecond);
   for (const auto& k : energy_map_kernels()) {
+    const auto arithmetic = k.isa == "avx512" ? bench::arithmetic_of_step_avx512
+                            : k.isa == "avx2" ? bench::arithmetic_of_step_avx2
+                                              : nullptr;  // (not counted for SSE2)
     for (const Coordinates c : {Coordinates::cartesian, Coordinates::polar}) {
       benchmark::RegisterBenchmark(("BM_EnergyMapKernel/" + k.isa + "/" + name(c)).c_str(), BM_EnergyMapKernel, k.run,
                                    c)
           ->Unit(benchmark::kMillisecond);
+      if (arithmetic)
+        benchmark::RegisterBenchmark(("BM_KernelArithmetic/" + k.isa + "/" + name(c)).c_str(), BM_KernelArithmetic,
+                                     arithmetic, c)
+            ->Unit(benchmark::kMillisecond);
     }
   }
   for (const Coordinates c : {Coordinates::cartesian, Coordinates::polar}) {

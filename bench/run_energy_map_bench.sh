@@ -10,10 +10,11 @@
 # NUMPY_REPEAT runs of NUMPY_N trajectories x 20000 steps) under Debian's
 # /usr/bin/python3, then prints per implementation and coordinate system: ns per
 # trajectory-step on one core and in cycles (the clock calibrated in the same run by a dependent chain of
-# integer additions), the ratio to the best batch kernel, the fraction of each kernel's own ceiling in
-# cycles (its multiplies and FMAs on two pipes, counted in its object: AVX-512 1.5 cycles Cartesian, 2.7
-# polar, AVX2 3.125 and 5.4; bench/README.md; not yet counted for SSE2), and the eps of the check points from
-# every implementation. Build first:
+# integer additions), the ratio to the best batch kernel, the fraction of each kernel's own ceiling on
+# this core (the time of its step's vector arithmetic alone, measured in the same run: arithmetic_ceiling.hpp;
+# not counted for SSE2) and of its ceiling counted for Zen 5 in cycles (its multiplies and FMAs on two
+# pipes: AVX-512 1.5 cycles Cartesian, 2.7 polar, AVX2 3.125 and 5.4; bench/README.md), and the eps of
+# the check points from every implementation. Build first:
 #   cmake --build build --target geomint_energy_map_bench
 # QUICK=1 shortens everything (a smoke run, ~6 s; numpy keeps 4096 trajectories,
 # below which its per-step interpreter overhead dominates).
@@ -47,14 +48,15 @@ echo "== numpy: $HERE/peers/energy_map_numpy.py (${NUMPY_N} trajectories, median
 "$PY" - "$TMP/cpp.json" "$TMP/cpp.err" "$TMP/numpy.json" <<'EOF'
 import json, sys
 
-# Cycles per trajectory-step that each kernel's multiplies and FMAs need on two multiply pipes, counted in its
-# compiled object (bench/README.md); None where not counted.
+# Cycles per trajectory-step that each kernel's multiplies and FMAs need on the two multiply pipes of Zen 5,
+# counted in its compiled object (bench/README.md); None where not counted.
 CEILING_CYCLES = {("avx512", "cartesian"): 1.5, ("avx512", "polar"): 2.7,
                   ("avx2", "cartesian"): 3.125, ("avx2", "polar"): 5.4}
 cpp = json.load(open(sys.argv[1]))
 numpy = json.load(open(sys.argv[3]))
 
 rows = []  # (implementation, coordinates, ns per step)
+arithmetic = {}  # (isa, coordinates): ns per trajectory-step of the kernel's arithmetic alone, on this core
 ns_per_cycle = None  # the calibrated clock: ns per dependent integer addition, one cycle each
 for b in cpp["benchmarks"]:
     if b.get("run_type") == "aggregate" and b.get("aggregate_name") != "median":
@@ -62,8 +64,11 @@ for b in cpp["benchmarks"]:
     if b["run_name"] == "BM_ClockCalibration":
         ns_per_cycle = b["time_per_add"] * 1e9
         continue
-    parts = b["run_name"].split("/")  # BM_EnergyMapKernel/<isa>/<coords>, BM_EnergyMap{Scalar,Odeint}/<coords>
+    parts = b["run_name"].split("/")  # BM_{EnergyMapKernel,KernelArithmetic}/<isa>/<coords>, BM_EnergyMap{Scalar,Odeint}/<coords>
     kind, coords = parts[0], parts[-1]
+    if kind == "BM_KernelArithmetic":
+        arithmetic[(parts[1], coords)] = b["time_per_step"] * 1e9
+        continue
     impl = {"BM_EnergyMapKernel": "batch kernel " + parts[1] if len(parts) == 3 else kind,
             "BM_EnergyMapScalar": "straightforward scalar loop",
             "BM_EnergyMapOdeint": "Boost.Odeint symplectic_euler"}.get(kind, kind)
@@ -83,14 +88,18 @@ w = max(len(r[0]) for r in rows)
 print(f"# clock: {1 / ns_per_cycle:.3f} GHz, calibrated in this run (a dependent chain of integer additions, "
       f"one cycle each: {ns_per_cycle:.4f} ns per addition)")
 print(f"{'implementation':{w}s}  {'coordinates':11s}  {'ns/step/core':>12s}  {'cycles/step':>11s}  "
-      f"{'x best kernel':>13s}  {'of own ceiling':>14s}")
+      f"{'x best kernel':>13s}  {'of own ceiling':>14s}  {'of Zen 5 count':>14s}")
 for c in COORDS:
     for impl, cc, ns in sorted((r for r in rows if r[1] == c), key=lambda r: r[2]):
         ratio = f"{ns / best[c]:12.2f}x" if c in best else f"{'-':>13s}"
         cycles = ns / ns_per_cycle
-        ceiling = CEILING_CYCLES.get((impl.split()[-1], c)) if impl.startswith("batch kernel") else None
-        own = f"{ceiling / cycles:14.1%}" if ceiling else f"{'not counted':>14s}"
-        print(f"{impl:{w}s}  {cc:11s}  {ns:12.3f}  {cycles:11.2f}  {ratio}  {own}")
+        isa = impl.split()[-1] if impl.startswith("batch kernel") else None
+        here, zen5 = arithmetic.get((isa, c)), CEILING_CYCLES.get((isa, c))
+        own = f"{here / ns:14.1%}" if here else f"{'not counted' if isa else '':>14s}"
+        counted = f"{zen5 / cycles:14.1%}" if zen5 else f"{'not counted' if isa else '':>14s}"
+        print(f"{impl:{w}s}  {cc:11s}  {ns:12.3f}  {cycles:11.2f}  {ratio}  {own}  {counted}")
+print("# own ceiling: the time of the kernel's vector arithmetic alone on this core, measured in this run "
+      "(" + ", ".join(f"{isa} {c} {ns:.3f} ns" for (isa, c), ns in sorted(arithmetic.items())) + ")")
 
 # eps of the check points: C++ lines "eps <coords> <impl> <x0> <y0> <eps>", numpy's JSON
 print(f"\n# eps (000 eq. (50)) after {numpy['steps']} steps at the check points")
