@@ -29,7 +29,6 @@
 #include <boost/numeric/odeint/integrate/integrate_n_steps.hpp>
 #include <boost/numeric/odeint/stepper/symplectic_euler.hpp>
 
-#include "arithmetic_ceiling.hpp"
 #include "geomint/runner/clock.hpp"
 #include "geomint/sweep/energy_map.hpp"
 
@@ -207,10 +206,10 @@ void BM_EnergyMapOdeint(benchmark::State& state) {
   set_counters(state, out);
 }
 
-// The kernel's arithmetic alone (arithmetic_ceiling.hpp), per trajectory-step: its ceiling on this core.
-void BM_KernelArithmetic(benchmark::State& state, double (*arithmetic)(bool, std::int64_t), Coordinates c) {
+// The kernel's arithmetic alone (energy_map_arithmetic.hpp), per trajectory-step: its ceiling on this core.
+void BM_KernelArithmetic(benchmark::State& state, EnergyMapArithmetic arithmetic, Coordinates c) {
   constexpr std::int64_t kBatchSteps = 4096;  // steps of a batch per iteration
-  for (auto _ : state) benchmark::DoNotOptimize(arithmetic(c == Coordinates::polar, kBatchSteps));
+  for (auto _ : state) benchmark::DoNotOptimize(arithmetic(c, kBatchSteps));
   state.counters["time_per_step"] = benchmark::Counter(static_cast<double>(kBatchSteps * kEnergyMapBatch),
                                                        benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
@@ -228,16 +227,13 @@ void BM_ClockCalibration(benchmark::State& state) {
 void register_benchmarks() {
   benchmark::RegisterBenchmark("BM_ClockCalibration", BM_ClockCalibration)->Unit(benchmark::kMillisecond);
   for (const auto& k : energy_map_kernels()) {
-    const auto arithmetic = k.isa == "avx512" ? bench::arithmetic_of_step_avx512
-                            : k.isa == "avx2" ? bench::arithmetic_of_step_avx2
-                                              : nullptr;  // (not counted for SSE2)
     for (const Coordinates c : {Coordinates::cartesian, Coordinates::polar}) {
       benchmark::RegisterBenchmark(("BM_EnergyMapKernel/" + k.isa + "/" + name(c)).c_str(), BM_EnergyMapKernel, k.run,
                                    c)
           ->Unit(benchmark::kMillisecond);
-      if (arithmetic)
+      if (k.arithmetic)
         benchmark::RegisterBenchmark(("BM_KernelArithmetic/" + k.isa + "/" + name(c)).c_str(), BM_KernelArithmetic,
-                                     arithmetic, c)
+                                     k.arithmetic, c)
             ->Unit(benchmark::kMillisecond);
     }
   }

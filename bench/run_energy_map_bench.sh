@@ -11,9 +11,10 @@
 # /usr/bin/python3, then prints per implementation and coordinate system: ns per
 # trajectory-step on one core and in cycles (the clock calibrated in the same run by a dependent chain of
 # integer additions), the ratio to the best batch kernel, the fraction of each kernel's own ceiling on
-# this core (the time of its step's vector arithmetic alone, measured in the same run: arithmetic_ceiling.hpp;
+# this core (the time of its step's vector arithmetic alone, measured in the same run:
+# src/geomint/sweep/energy_map_arithmetic.hpp;
 # not counted for SSE2) and of its ceiling counted for Zen 5 in cycles (its multiplies and FMAs on two
-# pipes: AVX-512 1.5 cycles Cartesian, 2.7 polar, AVX2 3.125 and 5.4; bench/README.md), and the eps of
+# pipes: AVX-512 1.5 cycles Cartesian, 2.7 polar, AVX2 3.25 and 5.4; bench/README.md), and the eps of
 # the check points from every implementation. Build first:
 #   cmake --build build --target geomint_energy_map_bench
 # QUICK=1 shortens everything (a smoke run, ~6 s; numpy keeps 4096 trajectories,
@@ -51,7 +52,7 @@ import json, sys
 # Cycles per trajectory-step that each kernel's multiplies and FMAs need on the two multiply pipes of Zen 5,
 # counted in its compiled object (bench/README.md); None where not counted.
 CEILING_CYCLES = {("avx512", "cartesian"): 1.5, ("avx512", "polar"): 2.7,
-                  ("avx2", "cartesian"): 3.125, ("avx2", "polar"): 5.4}
+                  ("avx2", "cartesian"): 3.25, ("avx2", "polar"): 5.4}
 cpp = json.load(open(sys.argv[1]))
 numpy = json.load(open(sys.argv[3]))
 

@@ -18,12 +18,8 @@
 namespace geomint::energy_map {
 namespace {
 
-// The batched kernel's own ceiling in cycles per trajectory-step: its multiplies and FMAs on two multiply
-// pipes, counted in its compiled object (bench/README.md); 0 where not counted (SSE2).
-double kernel_ceiling_cycles(const std::string& isa, Coordinates c) {
-  const bool polar = c == Coordinates::polar;
-  return isa == "avx512" ? (polar ? 2.7 : 1.5) : isa == "avx2" ? (polar ? 5.4 : 3.125) : 0.0;
-}
+// Steps of a batch per call of a kernel's arithmetic alone (its own ceiling, energy_map_arithmetic.hpp).
+constexpr std::int64_t kArithmeticSteps = 4096;
 
 void check_timing(const Scene& s) {
   check_energy_map(s);
@@ -44,7 +40,11 @@ StudyPlan plan_timing(const Scene& s) {
   p.memory_bytes = n.batches * kEnergyMapBatch * 2 * sizeof(double), p.ns_per_step = rate.ns_per_step;
   p.note = "the timing protocol; " + rate.note;
   const double repeats = static_cast<double>(s.integer("timing.repeats"));
-  const TimedPlan sample = timing_plan({{kernel, kernel_rate.ns_per_step}, {kernel, kernel_rate.ns_per_step}}, repeats);
+  // (the kernel's arithmetic alone on every thread, at most the kernel's time per step)
+  const double arithmetic = static_cast<double>(kArithmeticSteps * kEnergyMapBatch);
+  const TimedPlan sample = timing_plan({{kernel, kernel_rate.ns_per_step}, {kernel, kernel_rate.ns_per_step},
+                                        {arithmetic, kernel_rate.ns_per_step}, {arithmetic, kernel_rate.ns_per_step}},
+                                       repeats);
   const TimedPlan loop = timing_plan({{scalar, rate.ns_per_step}, {scalar, rate.ns_per_step}}, repeats);
   p.timed_seconds = sample.seconds + loop.seconds, p.timed_steps = sample.steps + loop.steps;
   return p;
@@ -91,7 +91,8 @@ void time_scalar_loop(Context& ctx, const EnergyMapGrid& g, int repeats, Value& 
 // The sample: the batched kernel on timing.kernel_batches batches of the grid under the timing protocol (the
 // kernel's time where the map did not run in this process and, always, the repeats its target is judged over):
 // the wall times of the two systems; their trajectory-steps in `steps`, their ns per step per core in `ns_per_step`,
-// the sample in timing.kernel_sample.
+// the sample in timing.kernel_sample. In the same rounds, the kernel's arithmetic alone on every thread (where
+// counted): its ceiling on this core in timing.own_ceiling_ns, ns per trajectory-step and core.
 std::vector<RunTime> time_kernel_sample(Context& ctx, const EnergyMapGrid& g, int repeats, Value& timing, double& steps,
                                         std::vector<RunTime>& ns_per_step) {
   ctx.progress("cost: batched kernel on a sample of batches");
@@ -108,8 +109,20 @@ std::vector<RunTime> time_kernel_sample(Context& ctx, const EnergyMapGrid& g, in
     sample.add([&, c] {
       do_not_optimize(run_batches(kernels.front().run, c, g, count, [&](std::size_t b) { return batches[b]; }));
     });
+  const EnergyMapArithmetic arithmetic = kernels.front().arithmetic;
+  if (arithmetic)
+    for (const auto c : {Coordinates::cartesian, Coordinates::polar})
+      sample.add([&, c] {
+        do_not_optimize(parallel_map(static_cast<std::size_t>(ctx.threads),
+                                     [&](std::size_t) { return arithmetic(c, kArithmeticSteps); }));
+      });
   const std::vector<RunTime> times = sample.run();
   steps = static_cast<double>(trajectories) * static_cast<double>(g.P.steps);
+  for (const auto c : {Coordinates::cartesian, Coordinates::polar})  // (each thread its own steps: per core)
+    timing["own_ceiling_ns"][coordinates_name(c)] =
+        arithmetic ? Value(1e9 * times[c == Coordinates::cartesian ? 2 : 3].seconds() /
+                           static_cast<double>(kArithmeticSteps * kEnergyMapBatch))
+                   : Value();
   Value ns;  // per step and core: the median, the quartiles and the drift of the measurement
   for (const auto c : {Coordinates::cartesian, Coordinates::polar}) {
     const RunTime& t = ns_per_step.emplace_back(times[c == Coordinates::cartesian ? 0 : 1].scaled(1e9 * ctx.threads / steps));
@@ -121,8 +134,8 @@ std::vector<RunTime> time_kernel_sample(Context& ctx, const EnergyMapGrid& g, in
   return times;
 }
 
-// Each kernel against its target, the AVX-512 ceiling the scene gives, and its own ceiling in cycles at the
-// clock calibrated in this run (kernel_ceiling_cycles; null where not counted). The target is judged over the
+// Each kernel against its target, the AVX-512 ceiling the scene gives, and its own ceiling on this core (its
+// arithmetic alone, timing.own_ceiling_ns, in cycles at the clock calibrated in this run; null where not counted). The target is judged over the
 // repeats of the sample (ns per step per core of each run, `sample`): met where its third quartile, widened by
 // the measurement's drift, is at most the target; missed where its first quartile, narrowed by it, is above.
 void against_targets(Value& timing, const Scene& s, double ns_cart, double ns_polar, const std::vector<RunTime>& sample) {
@@ -139,10 +152,10 @@ void against_targets(Value& timing, const Scene& s, double ns_cart, double ns_po
     timing["target_verdict"][name] = t.q3_s * (1 + t.drift) <= target  ? "meets"
                                      : t.q1_s / (1 + t.drift) > target ? "misses"
                                                                         : "is within the spread of";
-    const double own = kernel_ceiling_cycles(timing.at("kernel_isa").text(), c);
+    const Value& own = timing.at("own_ceiling_ns").at(name);
     timing["cycles_per_step_per_core"][name] = ns / ns_cycle;
-    timing["own_ceiling_cycles"][name] = own > 0 ? Value(own) : Value();
-    timing["own_ceiling_fraction"][name] = own > 0 ? Value(own / (ns / ns_cycle)) : Value();
+    timing["own_ceiling_cycles"][name] = own.is_null() ? Value() : Value(own.number() / ns_cycle);
+    timing["own_ceiling_fraction"][name] = own.is_null() ? Value() : Value(own.number() / ns);
   }
 }
 

@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "geomint/sweep/energy_map_arithmetic.hpp"
 
 namespace geomint {
 
@@ -13,9 +14,10 @@ std::vector<EnergyMapKernelInfo> energy_map_kernels() {
   __builtin_cpu_init();
   std::vector<EnergyMapKernelInfo> k;
   const bool fma = __builtin_cpu_supports("fma");  // the AVX2 and AVX-512 kernels use it
-  if (fma && __builtin_cpu_supports("avx512f")) k.push_back({"avx512", "AVX-512", energy_map_kernel_avx512});
-  if (fma && __builtin_cpu_supports("avx2")) k.push_back({"avx2", "AVX2", energy_map_kernel_avx2});
-  k.push_back({"sse2", "SSE2", energy_map_kernel_sse2});
+  if (fma && __builtin_cpu_supports("avx512f"))
+    k.push_back({"avx512", "AVX-512", energy_map_kernel_avx512, energy_map_arithmetic_avx512});
+  if (fma && __builtin_cpu_supports("avx2")) k.push_back({"avx2", "AVX2", energy_map_kernel_avx2, energy_map_arithmetic_avx2});
+  k.push_back({"sse2", "SSE2", energy_map_kernel_sse2, nullptr});
   return k;
 }
 

@@ -1,9 +1,9 @@
-// arithmetic_ceiling.inc for AVX2 (compiled with -mavx2 -mfma: bench/CMakeLists.txt).
+// energy_map_arithmetic.inc for AVX2 (compiled with -mavx2 -mfma: CMakeLists.txt).
 #include <immintrin.h>
 
 #include <cstdint>
 
-namespace geomint::bench {
+namespace geomint {
 namespace {
 using V = __m256d;
 constexpr int kChains = 10;  // more than the FMA latency (4) times the two FMA ports; with C and a temporary, 15 registers
@@ -22,9 +22,9 @@ inline V op_logic(V a, const C& c) { return _mm256_and_pd(a, c.ones); }
 inline V op_rsqrt(V a, const C&) { return _mm256_cvtps_pd(_mm_rsqrt_ps(_mm256_cvtpd_ps(a))); }
 inline V op_div(V a, const C& c) { return _mm256_div_pd(c.one, a); }
 }  // namespace
-}  // namespace geomint::bench
+}  // namespace geomint
 
-#define GEOMINT_ARITHMETIC_FN arithmetic_of_step_avx2
+#define GEOMINT_ARITHMETIC_FN energy_map_arithmetic_avx2
 #define GEOMINT_MIX_CARTESIAN kAvx2Cartesian
 #define GEOMINT_MIX_POLAR kAvx2Polar
-#include "arithmetic_ceiling.inc"
+#include "geomint/sweep/energy_map_arithmetic.inc"

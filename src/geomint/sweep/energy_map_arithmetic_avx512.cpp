@@ -1,9 +1,9 @@
-// arithmetic_ceiling.inc for AVX-512 (compiled with -mavx512f -mfma: bench/CMakeLists.txt).
+// energy_map_arithmetic.inc for AVX-512 (compiled with -mavx512f -mfma: CMakeLists.txt).
 #include <immintrin.h>
 
 #include <cstdint>
 
-namespace geomint::bench {
+namespace geomint {
 namespace {
 using V = __m512d;
 constexpr int kChains = 16;  // twice the FMA latency (4) times the two FMA ports: no chain waits
@@ -22,9 +22,9 @@ inline V op_logic(V a, const C& c) { return _mm512_castsi512_pd(_mm512_and_epi64
 inline V op_rsqrt(V a, const C&) { return _mm512_maskz_rsqrt14_pd(0xFF, a); }  // (maskz: no undefined source)
 inline V op_div(V a, const C& c) { return _mm512_div_pd(c.one, a); }
 }  // namespace
-}  // namespace geomint::bench
+}  // namespace geomint
 
-#define GEOMINT_ARITHMETIC_FN arithmetic_of_step_avx512
+#define GEOMINT_ARITHMETIC_FN energy_map_arithmetic_avx512
 #define GEOMINT_MIX_CARTESIAN kAvx512Cartesian
 #define GEOMINT_MIX_POLAR kAvx512Polar
-#include "arithmetic_ceiling.inc"
+#include "geomint/sweep/energy_map_arithmetic.inc"
