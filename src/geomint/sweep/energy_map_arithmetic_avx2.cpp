@@ -1,26 +1,14 @@
 // energy_map_arithmetic.inc for AVX2 (compiled with -mavx2 -mfma: CMakeLists.txt).
 #include <immintrin.h>
 
-#include <cstdint>
-
 namespace geomint {
 namespace {
 using V = __m256d;
-constexpr int kChains = 10;  // more than the FMA latency (4) times the two FMA ports; with C and a temporary, 15 registers
-struct C { V half, one, zero, ones; };
-inline C constants() {
-  C c{_mm256_set1_pd(0.5), _mm256_set1_pd(1.0), _mm256_setzero_pd(), _mm256_castsi256_pd(_mm256_set1_epi64x(-1))};
-  asm volatile("" : "+v"(c.half), "+v"(c.one), "+v"(c.zero), "+v"(c.ones));
-  return c;
-}
-inline V start(double x) { return _mm256_set1_pd(x); }
-inline double first_lane(V a) { return _mm256_cvtsd_f64(a); }
-inline V op_fma(V a, const C& c) { return _mm256_fmadd_pd(a, c.half, c.one); }
-inline V op_add(V a, const C& c) { return _mm256_add_pd(a, c.zero); }
-inline V op_minmax(V a, const C& c) { return _mm256_max_pd(a, c.zero); }
-inline V op_logic(V a, const C& c) { return _mm256_and_pd(a, c.ones); }
-inline V op_rsqrt(V a, const C&) { return _mm256_cvtps_pd(_mm_rsqrt_ps(_mm256_cvtpd_ps(a))); }
-inline V op_div(V a, const C& c) { return _mm256_div_pd(c.one, a); }
+constexpr int kChains = 10;  // more than the FMA latency (4) times the two FMA ports; with the constants, 15 registers
+inline V op_fma(V a, V half, V one) { return _mm256_fmadd_pd(a, half, one); }
+inline V op_minmax(V a, V zero) { return _mm256_max_pd(a, zero); }
+inline V op_logic(V a, V ones) { return _mm256_and_pd(a, ones); }
+inline V op_rsqrt(V a) { return _mm256_cvtps_pd(_mm_rsqrt_ps(_mm256_cvtpd_ps(a))); }  // as the kernel: via single precision
 }  // namespace
 }  // namespace geomint
 
