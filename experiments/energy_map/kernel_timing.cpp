@@ -136,8 +136,9 @@ std::vector<RunTime> time_kernel_sample(Context& ctx, const EnergyMapGrid& g, in
 
 // Each kernel against its target, the AVX-512 ceiling the scene gives, and its own ceiling on this core (its
 // arithmetic alone, timing.own_ceiling_ns; in cycles at the clock calibrated in this run; null where not
-// counted). The target is judged over the repeats of the sample (ns per step per core of each run, `sample`): met where its third quartile, widened by
-// the measurement's drift, is at most the target; missed where its first quartile, narrowed by it, is above.
+// counted). The target is judged over the repeats of the sample (ns per step per core of each run, `sample`):
+// met where its third quartile, widened by the measurement's drift, is at most the target; missed where its
+// first quartile, narrowed by it, is above.
 void against_targets(Value& timing, const Scene& s, double ns_cart, double ns_polar, const std::vector<RunTime>& sample) {
   const double ns_cycle = ns_per_cycle(static_cast<int>(s.integer("timing.repeats")));
   timing["clock_ghz"] = 1 / ns_cycle;
