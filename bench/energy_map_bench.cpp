@@ -206,11 +206,10 @@ void BM_EnergyMapOdeint(benchmark::State& state) {
   set_counters(state, out);
 }
 
-// The kernel's arithmetic alone (energy_map_arithmetic.hpp), per trajectory-step: its ceiling on this core.
-void BM_KernelArithmetic(benchmark::State& state, EnergyMapArithmetic arithmetic, Coordinates c) {
-  constexpr std::int64_t kBatchSteps = 4096;  // steps of a batch per iteration
-  for (auto _ : state) benchmark::DoNotOptimize(arithmetic(c, kBatchSteps));
-  state.counters["time_per_step"] = benchmark::Counter(static_cast<double>(kBatchSteps * kEnergyMapBatch),
+// The kernel's arithmetic alone (arithmetic_ceiling.hpp), per trajectory-step: its ceiling on this core.
+void BM_KernelArithmetic(benchmark::State& state, KernelArithmetic arithmetic) {
+  for (auto _ : state) benchmark::DoNotOptimize(arithmetic(kArithmeticRepeats));
+  state.counters["time_per_step"] = benchmark::Counter(arithmetic.trajectory_steps(kArithmeticRepeats),
                                                        benchmark::Counter::kIsIterationInvariantRate | benchmark::Counter::kInvert);
 }
 
@@ -231,9 +230,8 @@ void register_benchmarks() {
       benchmark::RegisterBenchmark(("BM_EnergyMapKernel/" + k.isa + "/" + name(c)).c_str(), BM_EnergyMapKernel, k.run,
                                    c)
           ->Unit(benchmark::kMillisecond);
-      if (k.arithmetic)
-        benchmark::RegisterBenchmark(("BM_KernelArithmetic/" + k.isa + "/" + name(c)).c_str(), BM_KernelArithmetic,
-                                     k.arithmetic, c)
+      if (const KernelArithmetic a = k.arithmetic[static_cast<int>(c)])
+        benchmark::RegisterBenchmark(("BM_KernelArithmetic/" + k.isa + "/" + name(c)).c_str(), BM_KernelArithmetic, a)
             ->Unit(benchmark::kMillisecond);
     }
   }

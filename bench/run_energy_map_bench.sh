@@ -12,7 +12,7 @@
 # trajectory-step on one core and in cycles (the clock calibrated in the same run by a dependent chain of
 # integer additions), the ratio to the best batch kernel, the fraction of each kernel's own ceiling on
 # this core (the time of its step's vector arithmetic alone, measured in the same run:
-# src/geomint/sweep/energy_map_arithmetic.hpp;
+# src/geomint/sweep/arithmetic_ceiling.hpp;
 # not counted for SSE2) and of its ceiling counted for Zen 5 in cycles (its multiplies and FMAs on two
 # pipes: AVX-512 1.5 cycles Cartesian, 2.7 polar, AVX2 3.25 and 5.4; bench/README.md), and the eps of
 # the check points from every implementation. Build first:

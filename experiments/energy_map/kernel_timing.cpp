@@ -18,9 +18,6 @@
 namespace geomint::energy_map {
 namespace {
 
-// Steps of a batch per call of a kernel's arithmetic alone (its own ceiling, energy_map_arithmetic.hpp).
-constexpr std::int64_t kArithmeticSteps = 4096;
-
 void check_timing(const Scene& s) {
   check_energy_map(s);
   for (const char* key : {"timing.ceiling.cartesian", "timing.ceiling.polar"})
@@ -40,8 +37,8 @@ StudyPlan plan_timing(const Scene& s) {
   p.memory_bytes = n.batches * kEnergyMapBatch * 2 * sizeof(double), p.ns_per_step = rate.ns_per_step;
   p.note = "the timing protocol; " + rate.note;
   const double repeats = static_cast<double>(s.integer("timing.repeats"));
-  // (the kernel's arithmetic alone on every thread, at most the kernel's time per step)
-  const double arithmetic = static_cast<double>(kArithmeticSteps * kEnergyMapBatch);
+  // (the kernel's arithmetic alone on every thread, at most the kernel's time per step: arithmetic_ceiling.hpp)
+  const double arithmetic = static_cast<double>(kArithmeticRepeats * kEnergyMapBatch);
   const TimedPlan sample = timing_plan({{kernel, kernel_rate.ns_per_step}, {kernel, kernel_rate.ns_per_step},
                                         {arithmetic, kernel_rate.ns_per_step}, {arithmetic, kernel_rate.ns_per_step}},
                                        repeats);
@@ -109,20 +106,19 @@ std::vector<RunTime> time_kernel_sample(Context& ctx, const EnergyMapGrid& g, in
     sample.add([&, c] {
       do_not_optimize(run_batches(kernels.front().run, c, g, count, [&](std::size_t b) { return batches[b]; }));
     });
-  const EnergyMapArithmetic arithmetic = kernels.front().arithmetic;
-  if (arithmetic)
-    for (const auto c : {Coordinates::cartesian, Coordinates::polar})
-      sample.add([&, c] {
-        do_not_optimize(parallel_map(static_cast<std::size_t>(ctx.threads),
-                                     [&](std::size_t) { return arithmetic(c, kArithmeticSteps); }));
+  const auto& arithmetic = kernels.front().arithmetic;  // (counted for both systems, or for neither)
+  if (arithmetic[0])
+    for (const KernelArithmetic& a : arithmetic)
+      sample.add([&] {
+        do_not_optimize(parallel_map(static_cast<std::size_t>(ctx.threads), [&](std::size_t) { return a(kArithmeticRepeats); }));
       });
   const std::vector<RunTime> times = sample.run();
   steps = static_cast<double>(trajectories) * static_cast<double>(g.P.steps);
-  for (const auto c : {Coordinates::cartesian, Coordinates::polar})  // (configurations 2 and 3; per thread: per core)
+  for (const auto c : {Coordinates::cartesian, Coordinates::polar}) {  // (configurations 2 and 3; per thread: per core)
+    const auto i = static_cast<std::size_t>(c);
     timing["own_ceiling_ns"][coordinates_name(c)] =
-        arithmetic ? Value(1e9 * times[c == Coordinates::cartesian ? 2 : 3].seconds() /
-                           static_cast<double>(kArithmeticSteps * kEnergyMapBatch))
-                   : Value();
+        arithmetic[i] ? Value(1e9 * times[2 + i].seconds() / arithmetic[i].trajectory_steps(kArithmeticRepeats)) : Value();
+  }
   Value ns;  // per step and core: the median, the quartiles and the drift of the measurement
   for (const auto c : {Coordinates::cartesian, Coordinates::polar}) {
     const RunTime& t = ns_per_step.emplace_back(times[c == Coordinates::cartesian ? 0 : 1].scaled(1e9 * ctx.threads / steps));

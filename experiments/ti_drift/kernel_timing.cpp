@@ -80,16 +80,16 @@ void run_timing(Context& ctx) {
 StudyPlan plan_timing(const Scene& s) {
   // one measurement under the timing protocol: the methods' kernels and the lane kernels this CPU runs for Figs 4
   // and 6 with their scalar method (Fig. 4's the run of simplified_takahashi_imada where timing.methods has it;
-  // the Lennard-Jones scalar run planned at the lanes' rate: a lower bound)
-  const double n = static_cast<double>(s.integer("timing.steps")), lj_n = static_cast<double>(s.integer("timing.lj_steps"));
-  const double hh_lanes_n = kHenonHeilesLanes, lj_lanes_n = kLennardJonesLanes;
-  const std::size_t kernels = simplified_ti_lanes_kernels<LennardJones<9>>().size();
-  const PlanRate &hh = plan_rate("henon-heiles splitting"), &hh_lanes = plan_rate("henon-heiles lanes");
+  // the Lennard-Jones scalar run planned at the lanes' rate: a lower bound), and the counted lanes' arithmetic alone
+  const std::int64_t n = s.integer("timing.steps");
+  const PlanRate &hh = plan_rate("henon-heiles splitting"), &lj_lanes = plan_rate("lennard-jones lanes");
   const auto labels = method_labels(s.texts("timing.methods"));
-  std::vector<TimedCall> calls(labels.size(), TimedCall{n, hh.ns_per_step});
-  if (!fig4_scalar(labels)) calls.push_back(TimedCall{hh_lanes_n * n, hh.ns_per_step});
-  calls.insert(calls.end(), kernels, TimedCall{hh_lanes_n * n, hh_lanes.ns_per_step});
-  calls.insert(calls.end(), 1 + kernels, TimedCall{lj_lanes_n * lj_n, plan_rate("lennard-jones lanes").ns_per_step});
+  std::vector<TimedCall> calls(labels.size(), TimedCall{static_cast<double>(n), hh.ns_per_step});
+  for (const auto& c : lanes_calls<HenonHeiles>(n, hh.ns_per_step, plan_rate("henon-heiles lanes").ns_per_step,
+                                                fig4_scalar(labels).has_value()))
+    calls.push_back(c);
+  for (const auto& c : lanes_calls<LennardJones<9>>(s.integer("timing.lj_steps"), lj_lanes.ns_per_step, lj_lanes.ns_per_step, false))
+    calls.push_back(c);
   StudyPlan p;
   p.memory_bytes = 1e4, p.ns_per_step = hh.ns_per_step, p.note = "the timing protocol; " + hh.note;
   p.time(s, calls);

@@ -1,14 +1,15 @@
 #!/usr/bin/env python3
-"""Each energy-map kernel's arithmetic alone issues exactly the instructions counted for it.
+"""Each counted kernel's arithmetic alone issues exactly the instructions counted for it.
 
     check_kernel_arithmetic.py HEADER OBJECT...
     check_kernel_arithmetic.py --loops OBJECT FUNCTION
 
-HEADER is src/geomint/sweep/energy_map_arithmetic.hpp, whose OpMix constants are the counts of the kernels'
-objects (bench/README.md); each OBJECT an energy_map_arithmetic_<isa>.cpp.o. In each object, the loop of every
-`issue<OpMix{...}>` (its longest backward jump) must hold the instructions of that mix, kind by kind, and no
-other vector arithmetic; and the mixes of an object must be the header's of its instruction set. A compiler that
-folded an operation with a constant (a + 0, a and all-ones) or merged two would fail it.
+HEADER is src/geomint/sweep/arithmetic_ceiling.hpp, whose OpMix constants are the counts of the kernels'
+objects (bench/README.md); each OBJECT an arithmetic_ceiling_<isa>.cpp.o. In each object, the loop of every
+`issue<OpMix{...}>` (its longest backward jump) must hold the instructions of that mix, kind by kind (other
+vector arithmetic is not counted, and none is issued), and the mixes of an object must be those of the header's
+list for its instruction set (kAvx512Mixes, kAvx2Mixes). A compiler that folded an operation with a constant
+(a + 0, a and all-ones), merged two or left one out would fail it.
 
 --loops prints the counts of every loop of FUNCTION (a substring of its demangled name) in OBJECT: how the
 kernels' own counts are read (bench/README.md). Exit 1 listing what is wrong.
@@ -18,13 +19,13 @@ import re
 import subprocess
 import sys
 
-FIELDS = ("fma", "add", "minmax", "logic", "rsqrt", "div")
+FIELDS = ("fma", "add", "minmax", "logic", "estimate", "div", "trajectory_steps")
 KIND = [  # (the instruction's mnemonic, the OpMix field it counts for)
     (re.compile(r"v(mul|f[n]?m(add|sub)\d{3})[ps]d$"), "fma"),
     (re.compile(r"v(add|sub)[ps]d$"), "add"),
     (re.compile(r"v(min|max)[ps]d$|vcmp\w*[ps]d$"), "minmax"),
     (re.compile(r"v(p?andn?|p?xor|p?or)(pd|q|d)?$"), "logic"),
-    (re.compile(r"vrsqrt(14pd|ps)$"), "rsqrt"),
+    (re.compile(r"vrsqrt(14pd|ps)$|vrcp(14pd|ps)$"), "estimate"),
     (re.compile(r"vdiv[ps]d$"), "div"),
     (re.compile(r"vcvt(pd2ps|ps2pd)y?$"), "convert"),  # AVX2's estimate from single precision: two per rsqrt
 ]
@@ -72,19 +73,21 @@ def mix(instructions, start, end):
 
 
 def header_mixes(header):
-    """{constant name: (fma, add, minmax, logic, rsqrt, div)} of the header's OpMix constants."""
+    """{isa: {the values of each OpMix of its list}} from the header (OpMix name{fma, add, ...} and kAvx512Mixes{...})."""
     text = open(header).read()
-    return {name: tuple(int(dict(re.findall(r"\.(\w+) = (\d+)", body))[f]) for f in FIELDS)
-            for name, body in re.findall(r"inline constexpr OpMix (\w+)\{([^}]*)\};", text)}
+    values = {name: tuple(int(x) for x in body.split(","))
+              for name, body in re.findall(r"(k\w+)\{(\d+(?:, \d+){%d})\}" % (len(FIELDS) - 1), text)}
+    return {isa.lower(): {values[n.strip()] for n in names.split(",")}
+            for isa, names in re.findall(r"inline constexpr std::array k(Avx\d+)Mixes\{([^}]*)\};", text)}
 
 
 def check(header, objects):
     declared, errors = header_mixes(header), []
     if not declared:
-        return ["no OpMix constant in " + header]
+        return ["no list of mixes in " + header]
     for obj in objects:
-        isa = re.search(r"energy_map_arithmetic_(\w+)\.cpp\.o$", obj).group(1)
-        expected = {v for k, v in declared.items() if k.lower().startswith("k" + isa)}
+        isa = re.search(r"arithmetic_ceiling_(\w+)\.cpp\.o$", obj).group(1)
+        expected = declared.get(isa, set())
         seen = set()
         for name, instructions in disassemble(obj).items():
             m = re.search(r"issue<geomint::OpMix\{([\d, ]*)\}>", name)
@@ -98,11 +101,11 @@ def check(header, objects):
                 errors.append(f"{obj}: {name}: no loop")
                 continue
             got = mix(instructions, *found[0])
-            for field, n in zip(FIELDS, want):
+            for field, n in zip(FIELDS[:-1], want):
                 if got[field] != n:
                     errors.append(f"{obj}: {name}: {got[field]} {field} instructions in its loop, the mix has {n}")
-            if got["convert"] != (2 * want[FIELDS.index("rsqrt")] if isa == "avx2" else 0):
-                errors.append(f"{obj}: {name}: {got['convert']} conversions for {want[FIELDS.index('rsqrt')]} estimates")
+            if got["convert"] != (2 * want[FIELDS.index("estimate")] if isa == "avx2" else 0):
+                errors.append(f"{obj}: {name}: {got['convert']} conversions for {want[FIELDS.index('estimate')]} estimates")
         if seen != expected:
             errors.append(f"{obj}: mixes {sorted(seen)}, the header's for {isa} {sorted(expected)}")
     return errors

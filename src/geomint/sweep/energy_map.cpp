@@ -2,8 +2,6 @@
 
 #include <cmath>
 
-#include "geomint/sweep/energy_map_arithmetic.hpp"
-
 namespace geomint {
 
 void energy_map_kernel_sse2(Coordinates, const EnergyMapParams&, const double*, const double*, EnergyMapPoint*);
@@ -15,9 +13,12 @@ std::vector<EnergyMapKernelInfo> energy_map_kernels() {
   std::vector<EnergyMapKernelInfo> k;
   const bool fma = __builtin_cpu_supports("fma");  // the AVX2 and AVX-512 kernels use it
   if (fma && __builtin_cpu_supports("avx512f"))
-    k.push_back({"avx512", "AVX-512", energy_map_kernel_avx512, energy_map_arithmetic_avx512});
-  if (fma && __builtin_cpu_supports("avx2")) k.push_back({"avx2", "AVX2", energy_map_kernel_avx2, energy_map_arithmetic_avx2});
-  k.push_back({"sse2", "SSE2", energy_map_kernel_sse2, nullptr});
+    k.push_back({"avx512", "AVX-512", energy_map_kernel_avx512,
+                 {{{&kEnergyMapAvx512Cartesian, issue_mix_avx512}, {&kEnergyMapAvx512Polar, issue_mix_avx512}}}});
+  if (fma && __builtin_cpu_supports("avx2"))
+    k.push_back({"avx2", "AVX2", energy_map_kernel_avx2,
+                 {{{&kEnergyMapAvx2Cartesian, issue_mix_avx2}, {&kEnergyMapAvx2Polar, issue_mix_avx2}}}});
+  k.push_back({"sse2", "SSE2", energy_map_kernel_sse2, {}});
   return k;
 }
 

@@ -24,6 +24,8 @@
 #include <tuple>
 #include <vector>
 
+#include "geomint/sweep/arithmetic_ceiling.hpp"
+
 namespace geomint {
 
 enum class Coordinates { cartesian, polar };
@@ -83,15 +85,11 @@ inline void energy_map_turn(double d, double& s, double& c) {
 using EnergyMapKernel = void (*)(Coordinates, const EnergyMapParams&, const double* x0, const double* y0,
                                  EnergyMapPoint* out);
 
-// A kernel's vector arithmetic alone, `steps` steps of a batch (its ceiling: energy_map_arithmetic.hpp);
-// returns a value that depends on all of it.
-using EnergyMapArithmetic = double (*)(Coordinates, std::int64_t steps);
-
 struct EnergyMapKernelInfo {
   std::string isa;   // "avx512", "avx2", "sse2"
   std::string name;  // the instruction set as the reader knows it: "AVX-512", "AVX2", "SSE2"
   EnergyMapKernel run;
-  EnergyMapArithmetic arithmetic;  // null where not counted (SSE2)
+  std::array<KernelArithmetic, 2> arithmetic;  // Cartesian, polar: a step's arithmetic alone (empty for SSE2)
 };
 
 // The kernels this CPU can run, best first.

@@ -22,6 +22,7 @@
 #include "geomint/core/state.hpp"
 #include "geomint/integrators/stormer_verlet.hpp"
 #include "geomint/integrators/takahashi_imada.hpp"
+#include "geomint/sweep/arithmetic_ceiling.hpp"
 #include "geomint/systems/henon_heiles.hpp"
 #include "geomint/systems/lennard_jones.hpp"
 
@@ -74,6 +75,7 @@ struct LanesKernel {
   // out[i] = 1 / u[i], i < n (a multiple of 8), as the lanes take 1/u where not from the divider (AVX-512: from the
   // FMA units, correctly rounded, ensemble_kernel.inc; the others divide): for the tests.
   void (*reciprocals)(const double* u, double* out, std::size_t n);
+  KernelArithmetic arithmetic;  // a step of a register of lanes, its arithmetic alone (arithmetic_ceiling.hpp); empty: not counted
 };
 
 // The kernels this CPU can run, best first (for LennardJones<9>, HenonHeilesT<true> and <false>).
