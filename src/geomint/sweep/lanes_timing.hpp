@@ -41,7 +41,7 @@ struct LanesConfigs {
   double scalar_runs = 1;       // its time times this is that of every start
   struct Kernel {
     std::string name;
-    std::size_t config;                     // the kernel's configuration
+    std::size_t config = 0;                 // the kernel's configuration
     std::optional<std::size_t> arithmetic;  // its arithmetic alone's, if counted
     double arithmetic_steps = 0;            // the trajectory-steps of a call of it
   };
