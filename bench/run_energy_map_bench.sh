@@ -14,7 +14,7 @@
 # this core (the time of its step's vector arithmetic alone, measured in the same run:
 # src/geomint/sweep/arithmetic_ceiling.hpp;
 # not counted for SSE2) and of its ceiling counted for Zen 5 in cycles (its multiplies and FMAs on two
-# pipes: AVX-512 1.5 cycles Cartesian, 2.7 polar, AVX2 3.25 and 5.4; bench/README.md), and the eps of
+# pipes: AVX-512 1.5 cycles Cartesian, 2.625 polar, AVX2 3.25 and 5.25; bench/README.md), and the eps of
 # the check points from every implementation. Build first:
 #   cmake --build build --target geomint_energy_map_bench
 # QUICK=1 shortens everything (a smoke run, ~6 s; numpy keeps 4096 trajectories,
@@ -51,8 +51,8 @@ import json, sys
 
 # Cycles per trajectory-step that each kernel's multiplies and FMAs need on the two multiply pipes of Zen 5,
 # counted in its compiled object (bench/README.md); None where not counted.
-CEILING_CYCLES = {("avx512", "cartesian"): 1.5, ("avx512", "polar"): 2.7,
-                  ("avx2", "cartesian"): 3.25, ("avx2", "polar"): 5.4}
+CEILING_CYCLES = {("avx512", "cartesian"): 1.5, ("avx512", "polar"): 2.625,
+                  ("avx2", "cartesian"): 3.25, ("avx2", "polar"): 5.25}
 cpp = json.load(open(sys.argv[1]))
 numpy = json.load(open(sys.argv[3]))
 
