@@ -9,7 +9,8 @@
 # BENCH_MIN_TIME seconds each) and bench/peers/energy_map_numpy.py (median of
 # NUMPY_REPEAT runs of NUMPY_N trajectories x 20000 steps) under Debian's
 # /usr/bin/python3, then prints per implementation and coordinate system: ns per
-# trajectory-step on one core and in cycles (the clock calibrated in the same run by a dependent chain of
+# trajectory-step on one core and in cycles (the repetitions of all benchmarks interleaved in random order; the
+# clock calibrated in the same run by a dependent chain of
 # integer additions), the ratio to the best batch kernel, the fraction of each kernel's own ceiling on
 # this core (the time of its step's vector arithmetic alone, measured in the same run:
 # src/geomint/sweep/arithmetic_ceiling.hpp;
@@ -40,7 +41,7 @@ TMP=$(mktemp -d)
 trap 'rm -rf "$TMP"' EXIT INT TERM
 
 echo "== C++: $BIN (min time ${BENCH_MIN_TIME} s, ${BENCH_REPS} repetitions)" >&2
-"$BIN" --benchmark_min_time="$BENCH_MIN_TIME" --benchmark_repetitions="$BENCH_REPS" \
+"$BIN" --benchmark_min_time="$BENCH_MIN_TIME" --benchmark_repetitions="$BENCH_REPS" --benchmark_enable_random_interleaving=true \
   --benchmark_report_aggregates_only=true --benchmark_format=json >"$TMP/cpp.json" 2>"$TMP/cpp.err" ||
   { cat "$TMP/cpp.err" >&2; exit 1; }
 echo "== numpy: $HERE/peers/energy_map_numpy.py (${NUMPY_N} trajectories, median of ${NUMPY_REPEAT})" >&2

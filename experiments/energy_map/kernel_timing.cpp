@@ -37,11 +37,10 @@ StudyPlan plan_timing(const Scene& s) {
   p.memory_bytes = n.batches * kEnergyMapBatch * 2 * sizeof(double), p.ns_per_step = rate.ns_per_step;
   p.note = "the timing protocol; " + rate.note;
   const double repeats = static_cast<double>(s.integer("timing.repeats"));
-  // (the kernel's arithmetic alone on every thread, at most the kernel's time per step: arithmetic_ceiling.hpp)
-  const double arithmetic = static_cast<double>(kArithmeticRepeats * kEnergyMapBatch);
-  const TimedPlan sample = timing_plan({{kernel, kernel_rate.ns_per_step}, {kernel, kernel_rate.ns_per_step},
-                                        {arithmetic, kernel_rate.ns_per_step}, {arithmetic, kernel_rate.ns_per_step}},
-                                       repeats);
+  std::vector<TimedCall> calls(2, TimedCall{kernel, kernel_rate.ns_per_step});
+  for (const KernelArithmetic& a : energy_map_kernels().front().arithmetic)  // (alone: at most the kernel's time)
+    if (a) calls.push_back({a.trajectory_steps(kArithmeticRepeats), kernel_rate.ns_per_step});
+  const TimedPlan sample = timing_plan(calls, repeats);
   const TimedPlan loop = timing_plan({{scalar, rate.ns_per_step}, {scalar, rate.ns_per_step}}, repeats);
   p.timed_seconds = sample.seconds + loop.seconds, p.timed_steps = sample.steps + loop.steps;
   return p;
