@@ -73,6 +73,23 @@ TEST(EnergyMapKernel, DivergingLanesAreMaskedAndDoNotPoisonOthers) {
               energy_map_scalar(Coordinates::polar, P, 1.5, 1.5).diverge_step, ">", 0);
 }
 
+// A start straight below the pivot (x = 0, theta = 0) keeps p_theta = 0 exactly: the motion is radial, an
+// oscillation about r* = 1.02 from r = 2.5 that crosses r = 0, where (72) stays finite (p_theta^2 / r^2 = 0).
+// Only the test of r, the block's smallest r in the kernels, finds it; the step must be the scalar loop's.
+TEST(EnergyMapKernel, RadialPassThroughTheOriginIsFoundByTheTestOfR) {
+  std::vector<double> x, y;
+  regular_batch(x, y);
+  x[5] = 0.0, y[5] = 2.5;
+  const auto ref = energy_map_scalar(Coordinates::polar, P, x[5], y[5]);
+  EXPECT_CASE("the scalar loop from (0, 2.5): step of divergence", ref.diverge_step, ">", 0);
+  for (const auto& k : energy_map_kernels()) {
+    std::vector<EnergyMapPoint> out(kEnergyMapBatch);
+    k.run(Coordinates::polar, P, x.data(), y.data(), out.data());
+    EXPECT_EQ(out[5].diverge_step, ref.diverge_step) << k.isa;
+    EXPECT_TRUE(std::isnan(out[5].eps)) << k.isa;
+  }
+}
+
 // The kernels test for divergence once per block of steps and replay a suspect block
 // step by step: with a threshold that some lanes cross mid-run, the step found must be
 // the scalar loop's (round-off, and vector sin/cos, may move a marginal crossing by a step).
