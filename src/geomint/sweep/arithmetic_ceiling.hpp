@@ -30,8 +30,8 @@ struct OpMix {
 // The counted kernels, g++ 12 -O3, as {fma, add, minmax, logic, estimate, div, trajectory_steps} (each instruction
 // set's list is issued by its function below).
 // The energy map of 000 Fig. 6 (energy_map_kernel_<isa>.cpp): one step of a batch of 64 trajectories.
-inline constexpr OpMix kEnergyMapAvx512Cartesian{184, 24, 0, 0, 8, 0, 64}, kEnergyMapAvx512Polar{336, 40, 36, 24, 0, 8, 64};
-inline constexpr OpMix kEnergyMapAvx2Cartesian{416, 64, 16, 16, 16, 0, 64}, kEnergyMapAvx2Polar{672, 80, 67, 80, 0, 16, 64};
+inline constexpr OpMix kEnergyMapAvx512Cartesian{184, 24, 0, 0, 8, 0, 64}, kEnergyMapAvx512Polar{336, 40, 40, 24, 0, 8, 64};
+inline constexpr OpMix kEnergyMapAvx2Cartesian{416, 64, 16, 16, 16, 0, 64}, kEnergyMapAvx2Polar{672, 80, 70, 80, 0, 16, 64};
 // The Lennard-Jones lanes of 004 Fig. 6 (ensemble_kernel_<isa>.cpp, LennardJones<9>): one step of a register of
 // lanes (AVX-512: 24 of the 72 reciprocals by vrcp14pd and the FMA units, ensemble_kernel.inc).
 inline constexpr OpMix kLennardJonesAvx512{847, 648, 48, 66, 24, 48, 8}, kLennardJonesAvx2{721, 648, 0, 18, 0, 72, 4};
