@@ -20,11 +20,13 @@ namespace geomint {
 
 class Scene;
 
-// x^n for a small integer n >= 0 (std::pow is slow in the inner loop); T = double or a vector of lanes.
+// x^n for a small integer n >= 0 (std::pow is slow in the inner loop); T = double or a vector of lanes. The
+// product ((x x) x)..., from x itself: the same roundings as from 1 (1 x is x), one dependent multiply fewer.
 template <class T>
 T int_pow(const T& x, int n) {
-  T r = 1.0;
-  for (int i = 0; i < n; ++i) r *= x;
+  if (n == 0) return T(1.0);
+  T r = x;
+  for (int i = 1; i < n; ++i) r *= x;
   return r;
 }
 
