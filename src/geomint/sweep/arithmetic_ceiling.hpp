@@ -34,7 +34,7 @@ inline constexpr OpMix kEnergyMapAvx512Cartesian{184, 24, 0, 0, 8, 0, 64}, kEner
 inline constexpr OpMix kEnergyMapAvx2Cartesian{416, 64, 16, 16, 16, 0, 64}, kEnergyMapAvx2Polar{672, 80, 70, 80, 0, 16, 64};
 // The Lennard-Jones lanes of 004 Fig. 6 (ensemble_kernel_<isa>.cpp, LennardJones<9>): one step of a register of
 // lanes (AVX-512: 24 of the 72 reciprocals by vrcp14pd and the FMA units, ensemble_kernel.inc).
-inline constexpr OpMix kLennardJonesAvx512{847, 648, 48, 66, 24, 48, 8}, kLennardJonesAvx2{721, 648, 0, 18, 0, 72, 4};
+inline constexpr OpMix kLennardJonesAvx512{846, 648, 48, 48, 24, 48, 8}, kLennardJonesAvx2{702, 648, 0, 0, 0, 72, 4};
 inline constexpr std::array kAvx512Mixes{kEnergyMapAvx512Cartesian, kEnergyMapAvx512Polar, kLennardJonesAvx512};
 inline constexpr std::array kAvx2Mixes{kEnergyMapAvx2Cartesian, kEnergyMapAvx2Polar, kLennardJonesAvx2};
 
