@@ -13,7 +13,7 @@
 # clock calibrated in the same run by a dependent chain of
 # integer additions), the ratio to the best batch kernel, the fraction of each kernel's own ceiling on
 # this core (the time of its step's vector arithmetic alone, measured in the same run:
-# src/geomint/sweep/arithmetic_ceiling.hpp;
+# src/geomint/sweep/arithmetic_ceiling.hpp, the counts in arithmetic_counts.hpp;
 # not counted for SSE2) and of its ceiling counted for Zen 5 in cycles (its multiplies and FMAs on two
 # pipes: AVX-512 1.5 cycles Cartesian, 2.625 polar, AVX2 3.25 and 5.25; bench/README.md), and the eps of
 # the check points from every implementation. Build first:

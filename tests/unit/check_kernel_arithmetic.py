@@ -4,7 +4,7 @@
     check_kernel_arithmetic.py HEADER OBJECT...
     check_kernel_arithmetic.py --loops OBJECT FUNCTION
 
-HEADER is src/geomint/sweep/arithmetic_ceiling.hpp, whose OpMix constants are the counts of the kernels'
+HEADER is src/geomint/sweep/arithmetic_counts.hpp, whose OpMix constants are the counts of the kernels'
 objects (bench/README.md); each OBJECT an arithmetic_ceiling_<isa>.cpp.o. In each object, the loop of every
 `issue<OpMix{...}>` (its longest backward jump) must hold the instructions of that mix, kind by kind (other
 vector arithmetic is not counted, and none is issued), and the mixes of an object must be those of the header's

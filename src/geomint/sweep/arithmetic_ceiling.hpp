@@ -8,13 +8,14 @@
 // or the clock of wide vectors (bench/README.md); the kernel's time over it is the fraction of the ceiling
 // the kernel reaches. Loads, stores, register moves, zeroing idioms, scalar, mask and shuffle instructions
 // are not counted.
-#include <array>
 #include <cstdint>
 
 namespace geomint {
 
 // The vector instructions of one pass of a kernel's loop, counted with `objdump -d` in its object (the loop
-// that runs a step without a test; bench/README.md), and the trajectory-steps that pass computes.
+// that runs a step without a test; bench/README.md), and the trajectory-steps that pass computes. The counts
+// are in arithmetic_counts.hpp, which only the kernels' registries and the issuing files include: a recount
+// recompiles those, not every study.
 struct OpMix {
   int fma;       // multiplies and fused multiply-adds
   int add;       // additions and subtractions
@@ -27,19 +28,8 @@ struct OpMix {
   constexpr bool operator==(const OpMix&) const = default;
 };
 
-// The counted kernels, g++ 12 -O3, as {fma, add, minmax, logic, estimate, div, trajectory_steps} (each instruction
-// set's list is issued by its function below).
-// The energy map of 000 Fig. 6 (energy_map_kernel_<isa>.cpp): one step of a batch of 64 trajectories.
-inline constexpr OpMix kEnergyMapAvx512Cartesian{184, 24, 0, 0, 8, 0, 64}, kEnergyMapAvx512Polar{336, 40, 40, 24, 0, 8, 64};
-inline constexpr OpMix kEnergyMapAvx2Cartesian{416, 64, 16, 16, 16, 0, 64}, kEnergyMapAvx2Polar{672, 80, 70, 80, 0, 16, 64};
-// The Lennard-Jones lanes of 004 Fig. 6 (ensemble_kernel_<isa>.cpp, LennardJones<9>): one step of a register of
-// lanes (AVX-512: 24 of the 72 reciprocals by vrcp14pd and the FMA units, ensemble_kernel.inc).
-inline constexpr OpMix kLennardJonesAvx512{846, 648, 48, 48, 24, 48, 8}, kLennardJonesAvx2{702, 648, 0, 0, 0, 72, 4};
-inline constexpr std::array kAvx512Mixes{kEnergyMapAvx512Cartesian, kEnergyMapAvx512Polar, kLennardJonesAvx512};
-inline constexpr std::array kAvx2Mixes{kEnergyMapAvx2Cartesian, kEnergyMapAvx2Polar, kLennardJonesAvx2};
-
-// Issues the instructions of `m` (one of the instruction set's list) `repeats` times; returns a value that depends
-// on all of them. Call only where the CPU has the instruction set.
+// Issues the instructions of `m` (one of the instruction set's list, arithmetic_counts.hpp) `repeats` times;
+// returns a value that depends on all of them. Call only where the CPU has the instruction set.
 double issue_mix_avx512(const OpMix& m, std::int64_t repeats);
 double issue_mix_avx2(const OpMix& m, std::int64_t repeats);
 

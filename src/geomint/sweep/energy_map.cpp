@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "geomint/sweep/arithmetic_counts.hpp"
+
 namespace geomint {
 
 void energy_map_kernel_sse2(Coordinates, const EnergyMapParams&, const double*, const double*, EnergyMapPoint*);

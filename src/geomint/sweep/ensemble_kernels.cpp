@@ -2,6 +2,8 @@
 
 #include <type_traits>
 
+#include "geomint/sweep/arithmetic_counts.hpp"
+
 namespace geomint {
 
 #define GEOMINT_DECLARE_LANES(isa)                                                                             \
