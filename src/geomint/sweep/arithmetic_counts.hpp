@@ -1,7 +1,8 @@
 #pragma once
 // The counted kernels' vector arithmetic per pass (arithmetic_ceiling.hpp's OpMix), read off their objects:
-// tests/unit/check_kernel_arithmetic.py --loops OBJECT FUNCTION prints a loop's counts (bench/README.md), and
-// ctest bench.kernel_arithmetic checks that the issuing objects issue exactly these.
+// tests/unit/check_kernel_arithmetic.py --loops OBJECT FUNCTION prints a loop's counts (bench/README.md). ctest
+// bench.kernel_arithmetic checks that each is the step of its kernel's object as built (a kernel changed without
+// a recount fails it) and that the issuing objects issue exactly these.
 #include <array>
 
 #include "geomint/sweep/arithmetic_ceiling.hpp"
