@@ -39,16 +39,18 @@ KIND = [  # (the instruction's mnemonic, the OpMix field it counts for)
     (re.compile(r"vdiv[ps]d$"), "div"),
     (re.compile(r"vcvt(pd2ps|ps2pd)y?$"), "convert"),  # AVX2's estimate from single precision: two per rsqrt
 ]
-# The counted kernels: header constant -> (object, a substring of the kernel's function, passes per step: the
-# energy map's pass loops run over the 64 trajectories of a batch, 8 or 4 to a vector).
+# The counted kernels: header constant -> (object, a substring of the kernel's function). A pass over a register of
+# lanes computes WIDTH of the mix's trajectory-steps: the energy map's pass loops run trajectory_steps / WIDTH times
+# per step (64 trajectories, 8 or 4 to a register), the Lennard-Jones lanes' step is one register.
 RECOUNT = {
-    "kEnergyMapAvx512Cartesian": ("energy_map_kernel_avx512", "batch<false>", 8),
-    "kEnergyMapAvx512Polar": ("energy_map_kernel_avx512", "batch<true>", 8),
-    "kEnergyMapAvx2Cartesian": ("energy_map_kernel_avx2", "batch<false>", 16),
-    "kEnergyMapAvx2Polar": ("energy_map_kernel_avx2", "batch<true>", 16),
-    "kLennardJonesAvx512": ("ensemble_kernel_avx512", "simplified_ti_steps<geomint::LennardJones<9> >", 1),
-    "kLennardJonesAvx2": ("ensemble_kernel_avx2", "simplified_ti_steps<geomint::LennardJones<9> >", 1),
+    "kEnergyMapAvx512Cartesian": ("energy_map_kernel_avx512", "batch<false>"),
+    "kEnergyMapAvx512Polar": ("energy_map_kernel_avx512", "batch<true>"),
+    "kEnergyMapAvx2Cartesian": ("energy_map_kernel_avx2", "batch<false>"),
+    "kEnergyMapAvx2Polar": ("energy_map_kernel_avx2", "batch<true>"),
+    "kLennardJonesAvx512": ("ensemble_kernel_avx512", "simplified_ti_steps<geomint::LennardJones<9> >"),
+    "kLennardJonesAvx2": ("ensemble_kernel_avx2", "simplified_ti_steps<geomint::LennardJones<9> >"),
 }
+WIDTH = {"avx512": 8, "avx2": 4}  # doubles per register
 LINE = re.compile(r"^\s+([0-9a-f]+):\s+(\S+)\s*(.*)$")
 JUMP = re.compile(r"^j\w+$")
 
@@ -121,7 +123,7 @@ def recount(header, objects):
     """Problems of each counted kernel's mix against its own object (RECOUNT)."""
     values, errors = header_values(header), []
     by_stem = {re.sub(r"\.cpp\.o$", "", obj.rsplit("/", 1)[-1]): obj for obj in objects}
-    for name, (stem, function, passes) in RECOUNT.items():
+    for name, (stem, function) in RECOUNT.items():
         if name not in values:
             errors.append(f"{name}: not in {header}")
             continue
@@ -129,6 +131,7 @@ def recount(header, objects):
             errors.append(f"{name}: no object {stem}.cpp.o among the arguments")
             continue
         want = dict(zip(FIELDS, values[name]))
+        passes = want["trajectory_steps"] // WIDTH[stem.rsplit("_", 1)[-1]]
         found = [(n, ins) for n, ins in disassemble(by_stem[stem]).items() if function in n]
         if len(found) != 1:
             errors.append(f"{name}: {len(found)} functions named like {function} in {stem}.cpp.o")
