@@ -66,7 +66,7 @@ void time_scalar_loop(Context& ctx, const EnergyMapGrid& g, int repeats, Value& 
       std::min<std::int64_t>(s.integer("timing.scalar_points"), static_cast<std::int64_t>(g.npoints)));
   EnergyMapParams Ps = g.P;
   Ps.steps = s.integer("timing.scalar_steps");
-  InterleavedTiming timing(repeats);  // the two coordinate systems together
+  InterleavedTiming timing(repeats, kTimingFloorS, ctx.threads);  // the two coordinate systems together, a core each
   for (const auto c : {Coordinates::cartesian, Coordinates::polar})
     timing.add([&, c] {
       for (std::size_t i = 0; i < nsc; ++i) {

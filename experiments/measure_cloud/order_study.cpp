@@ -95,11 +95,14 @@ void run_order_study(Context& ctx) {
     tasks.push_back({k, es.size(), 0});
   }
   const double h_probe = 0.5 * *std::min_element(hs.begin(), hs.end());
+  const auto step_of = [&](const Task& T) { return T.e == es.size() ? h_probe : hs[T.i]; };
+  std::vector<double> work;  // the longest runs first: a run's steps and snapshots both go as 1/h
+  for (const Task& T : tasks) work.push_back(static_cast<double>(steps_within(t_end, step_of(T))));
   ctx.progress("order study: " + std::to_string(tasks.size()) + " cloud runs");
-  const auto results = checkpointed_map<Result>(ctx, {"order_study"}, tasks.size(), [&](std::size_t t) {
+  const auto results = checkpointed_map<Result>(ctx, {"order_study", {}, 0, work}, tasks.size(), [&](std::size_t t) {
     const Task& T = tasks[t];
     const bool probe = T.e == es.size();
-    const double hh = probe ? h_probe : hs[T.i];
+    const double hh = step_of(T);
     const int ell = probe ? max_modified_order : es[T.e];
     const std::int64_t n = steps_within(t_end, hh);
     const CloudRun run = cloud_phi(methods[T.k], sys, hh, ell, cloud, n);

@@ -39,9 +39,9 @@ void timing_with(Context& ctx, const HH& hhk) {
   const auto methods = s.texts("timing.methods"), labels = method_labels(methods);
   const auto hh_starts = ensemble_starts(s, kHenonHeilesLanes);
   const auto lj_starts = lennard_jones_starts(s, kLennardJonesLanes);
-  // One measurement: each method's kernel from the ensemble's first start; the first batch of lanes of Figs 4 and 6
-  // against the scalar method, Fig. 4's (simplified_takahashi_imada's kernel) that run where it is one of them.
-  InterleavedTiming timing(repeats);
+  // One measurement, a configuration per thread at a time: each method's kernel from the ensemble's first start; the first
+  // batch of lanes of Figs 4 and 6 against the scalar method (Fig. 4's: that of simplified_takahashi_imada, if timed).
+  InterleavedTiming timing(repeats, kTimingFloorS, ctx.threads);
   for (const auto& m : methods) timing.add(MethodsOn<HH>::timed(m, hhk, {hh_starts.front()}, h, n, Bind::kernel));
   const std::optional<std::size_t> scalar4 = fig4_scalar(labels);
   const LanesConfigs fig4 = add_lanes(timing, hhk, hh_starts, h, n, scalar4);

@@ -75,9 +75,11 @@ struct Fixture {
     if (fresh) fs::remove_all(dir);
     return dir;
   }
-  std::vector<std::vector<double>> run(std::size_t round = 5) {
-    return checkpointed_map<std::vector<double>>(ctx, {"", {"a"}, round}, kTasks, [&](std::size_t i) {
+  std::array<std::atomic<bool>, kTasks> called{};  // the tasks computed
+  std::vector<std::vector<double>> run(std::size_t round = 5, std::vector<double> work = {}) {
+    return checkpointed_map<std::vector<double>>(ctx, {"", {"a"}, round, std::move(work)}, kTasks, [&](std::size_t i) {
       ++calls;
+      called[i] = true;
       return task(i);
     });
   }
@@ -151,6 +153,27 @@ TEST(Checkpoint, ResumeAfterAStopGivesTheSameResults) {
   Fixture resumed(0, 1.0, false);
   EXPECT_EQ(resumed.run(7), straight());  // (another round size: the tasks are stored by index)
   EXPECT_EQ(resumed.calls, static_cast<int>(kTasks) - 5);
+}
+
+TEST(Checkpoint, WorkRunsTheLongestTasksFirstAndTheResultsStayByIndex) {
+  std::vector<double> work(kTasks);  // task i's work: i % 5 (the largest, 4, for tasks 4, 9, 14, ...)
+  for (std::size_t i = 0; i < kTasks; ++i) work[i] = static_cast<double>(i % 5);
+  const auto stop = [&] {  // one round of 5: the first five of work 4, in index order
+    Fixture stopped(1);
+    EXPECT_THROW(stopped.run(5, work), Interrupted);
+    for (std::size_t i = 0; i < kTasks; ++i) EXPECT_EQ(stopped.called[i].load(), i % 5 == 4 && i < 25) << i;
+  };
+  stop();
+  Fixture in_index_order(0, 1.0, false);  // another order: the checkpoint does not apply, the map starts over
+  EXPECT_EQ(in_index_order.run(5), straight());
+  EXPECT_EQ(in_index_order.calls, static_cast<int>(kTasks));
+  stop();
+  Fixture resumed(0, 1.0, false);
+  EXPECT_EQ(resumed.run(5, work), straight());
+  EXPECT_EQ(resumed.calls, static_cast<int>(kTasks) - 5);
+  EXPECT_EQ(task_order({"", {}, 0, {1, 3, 3, 2}}, 4), (std::vector<std::size_t>{1, 2, 3, 0}));
+  EXPECT_EQ(task_order({}, 3), (std::vector<std::size_t>{0, 1, 2}));
+  EXPECT_THROW(task_order({"", {}, 0, {1, 2}}, 3), std::logic_error);
 }
 
 TEST(Checkpoint, StopNamesWhereAndTheResumeCommand) {

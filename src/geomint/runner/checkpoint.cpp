@@ -8,6 +8,8 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <functional>
+#include <numeric>
 #include <random>
 
 #include "geomint/io/atomic_file.hpp"
@@ -98,11 +100,13 @@ CheckpointLog::CheckpointLog(const Context& ctx, const CheckpointSpec& spec, std
       header_(ctx.out.path() / (name_ + kHeaderSuffix)),
       log_(ctx.out.path() / (name_ + kLogSuffix)),
       n_(n),
+      order_(task_order(spec, n)),
       run_id_(new_run_id()) {
+  std::vector<std::uint64_t> order(order_.begin(), order_.end());
   identity_ = std::make_shared<const json>(json{{"format", kFormat},       {"experiment", ctx.experiment},
                {"study", ctx.study},      {"name", name_},
                {"scene", scene_slice(ctx.scene, spec.keys.empty() ? task_keys(ctx.reads) : spec.keys)}, {"build", build_info()},
-               {"n", n}});
+               {"n", n}, {"order_crc32c", crc32c(order.data(), order.size() * sizeof(std::uint64_t))}});
   chain_ = seed();
 }
 
@@ -188,7 +192,8 @@ CheckpointLog::Records CheckpointLog::load_here(bool resume) {
       refuse(header_, "written by another binary: build." + key + " is " +
                           (h["build"].is_object() && h["build"].contains(key) ? shown(h["build"][key]) : "missing") +
                           ", this binary's " + shown(value));
-  if (h["scene"] != (*identity_)["scene"]) {  // a run of other scene values: nothing of it applies
+  if (h["scene"] != (*identity_)["scene"] || !h.contains("order_crc32c") ||
+      h["order_crc32c"] != (*identity_)["order_crc32c"]) {  // a run of other scene values or order: nothing of it applies
     reset();
     return records;
   }
@@ -270,6 +275,17 @@ double g_write_seconds = 0;
 }  // namespace
 
 double checkpoint_write_seconds() { return g_write_seconds; }
+
+std::vector<std::size_t> task_order(const CheckpointSpec& spec, std::size_t n) {
+  std::vector<std::size_t> order(n);
+  std::iota(order.begin(), order.end(), std::size_t{0});
+  if (spec.work.empty()) return order;
+  if (spec.work.size() != n)
+    throw std::logic_error("checkpoint " + spec.name + ": work for " + std::to_string(spec.work.size()) + " tasks, not " +
+                           std::to_string(n));
+  std::ranges::stable_sort(order, std::ranges::greater{}, [&](std::size_t i) { return spec.work[i]; });
+  return order;
+}
 
 void CheckpointLog::append(std::span<const double> values, std::span<const std::size_t> lengths) {
   if (!mpi::is_root()) {  // rank 0 alone writes; the others keep count

@@ -15,10 +15,11 @@
 //                           place of its own run's log;
 //   <name>.checkpoint.json  the header, written atomically after each append: format, experiment,
 //                           study, name, the scene keys the tasks depend on, the binary (build_info),
-//                           n, run_id, tasks_done, log_bytes (the part of the log that holds them in
+//                           n, order_crc32c (the CRC-32C of the order the tasks run in, task_order, as
+//                           uint64s), run_id, tasks_done, log_bytes (the part of the log that holds them in
 //                           full) and chain_crc32c (the check of the last of them; the seed if none).
-// On --resume a header that is missing means nothing to resume, one of other scene values is
-// discarded (start over); one that cannot be used (not JSON, another format, another binary,
+// On --resume a header that is missing means nothing to resume, one of other scene values or of
+// another task order is discarded (start over); one that cannot be used (not JSON, another format, another binary,
 // tasks_done beyond n, a log shorter than log_bytes, the log of another run, a record that fails its
 // check (damaged, moved, dropped, repeated, or from another run's log), records that do not end with
 // chain_crc32c, a value that is not finite, a header or log that is not a regular file) is refused with
@@ -54,12 +55,19 @@ struct CheckpointSpec {
   // (Context::reads) but checkpoint.* (task_keys).
   std::vector<std::string> keys = {};
   std::size_t round = 0;          // tasks per round (0: default_round)
+  // The tasks' relative work (e.g. steps times force evaluations per step), if known: they run in decreasing order
+  // of it (ties in index order), so that a round's tasks take alike and the long ones do not each leave threads idle
+  // beside short ones at the round's end; empty: in index order. The results are by index either way.
+  std::vector<double> work = {};
 };
 
 // The header and log of one checkpointed map (the part that does not depend on the record type).
 class CheckpointLog {
  public:
   CheckpointLog(const Context& ctx, const CheckpointSpec& spec, std::size_t n);
+  // The order the tasks run in (task_order): the log's k-th record is task order()[k]. A checkpoint of another
+  // order is one of other scene values: nothing of it applies.
+  const std::vector<std::size_t>& order() const { return order_; }
 
   struct Records {
     std::vector<double> values;
@@ -89,6 +97,7 @@ class CheckpointLog {
   std::filesystem::path header_, log_;
   std::shared_ptr<const nlohmann::ordered_json> identity_;  // the header less tasks_done and log_bytes
   std::size_t n_, tasks_done_ = 0;
+  std::vector<std::size_t> order_;
   std::uint64_t log_bytes_ = 0;
   std::uint64_t run_id_ = 0;   // of the run that began the log (a resumed run continues it)
   std::uint32_t chain_ = 0;    // the check of the last record (the seed if none)
@@ -116,8 +125,11 @@ void remove_checkpoints(const std::filesystem::path& dir);
 // key, kCheckpointInterval) has passed since the last one, at the end, and before every stop.
 inline constexpr std::chrono::seconds kCheckpointInterval{10};
 
+// The order checkpointed_map runs n tasks in: by decreasing spec.work where it is given (ties in index order).
+std::vector<std::size_t> task_order(const CheckpointSpec& spec, std::size_t n);
+
 // out[i] = f(i) for i < n, computed in rounds of distributed_map (results stored by index, so they
-// do not depend on the thread count; reductions come after, in the study). After a round, if
+// do not depend on the thread count or on the order of spec.work; reductions come after, in the study). After a round, if
 // checkpoint.interval has passed since the last save, the map is done, or a stop is requested
 // (SIGINT/SIGTERM/SIGUSR1, stop_requested(); or the scene's checkpoint.stop_after rounds), the finished
 // tasks not yet saved are appended to the log. A record with a value that is not finite is not
@@ -130,7 +142,8 @@ template <class R, class F, class Codec = RecordCodec<R>>
 std::vector<R> checkpointed_map(Context& ctx, const CheckpointSpec& spec, std::size_t n, const F& f,
                                 const Codec& codec = {}) {
   CheckpointLog log(ctx, spec, n);
-  std::vector<std::optional<R>> slots(n);
+  const std::vector<std::size_t>& order = log.order();
+  std::vector<std::optional<R>> slots(n);  // by place in the order
   std::size_t done = 0;
   {
     const CheckpointLog::Records restored = log.load(ctx.resume);
@@ -177,14 +190,16 @@ std::vector<R> checkpointed_map(Context& ctx, const CheckpointSpec& spec, std::s
                         "); continue with: " + ctx.resume_command);
     if (done == n) break;
     const std::size_t first = done, count = std::min(round, n - done);
-    auto results = distributed_map(count, [&](std::size_t i) { return f(first + i); }, codec);
+    auto results = distributed_map(count, [&](std::size_t i) { return f(order[first + i]); }, codec);
     for (std::size_t i = 0; i < count; ++i) slots[first + i].emplace(std::move(results[i]));
     done += count;
     ctx.progress(log.name(), static_cast<double>(done), static_cast<double>(n), "tasks");
   }
+  std::vector<std::optional<R>> by_task(n);
+  for (std::size_t k = 0; k < n; ++k) by_task[order[k]] = std::move(slots[k]);
   std::vector<R> out;
   out.reserve(n);
-  for (auto& s : slots) out.push_back(std::move(*s));
+  for (auto& s : by_task) out.push_back(std::move(*s));
   return out;
 }
 
