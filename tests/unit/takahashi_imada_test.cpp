@@ -337,6 +337,17 @@ TEST(LennardJones, HessianIsTheColumnsOfTheHessianVectorProductBitForBit) {
   }
 }
 
+TEST(HenonHeiles, IntPowIsTheProductFromXInOrderBitForBit) {
+  // int_pow's cases without a loop round as the product ((x x) x)... does (the lanes' vectors take the same code)
+  for (const double x : {0.7, -1.3, 1.0 / 3.0, 2.0 / 7.0, -0.9999999}) {
+    double r = 1.0;
+    for (int n = 0; n <= 8; ++n) {
+      EXPECT_EQ(int_pow(x, n), r) << x << "^" << n;
+      r = n == 0 ? x : r * x;
+    }
+  }
+}
+
 TEST(HenonHeiles, ZeroCouplingIsCompiledOutAndOneIsThePaperPotential) {
   // with_henon_heiles(k, 0) steps a system without the term c q1^2 q2 (not one that multiplies it by 0),
   // and with c = 1 the same bits as the paper's potential.
