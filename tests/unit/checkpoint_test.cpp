@@ -174,6 +174,7 @@ TEST(Checkpoint, WorkRunsTheLongestTasksFirstAndTheResultsStayByIndex) {
   EXPECT_EQ(task_order({"", {}, 0, {1, 3, 3, 2}}, 4), (std::vector<std::size_t>{1, 2, 3, 0}));
   EXPECT_EQ(task_order({}, 3), (std::vector<std::size_t>{0, 1, 2}));
   EXPECT_THROW(task_order({"", {}, 0, {1, 2}}, 3), std::logic_error);
+  EXPECT_THROW(task_order({"", {}, 0, {1, std::nan(""), 2}}, 3), std::logic_error);
 }
 
 TEST(Checkpoint, StopNamesWhereAndTheResumeCommand) {

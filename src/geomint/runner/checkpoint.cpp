@@ -283,6 +283,8 @@ std::vector<std::size_t> task_order(const CheckpointSpec& spec, std::size_t n) {
   if (spec.work.size() != n)
     throw std::logic_error("checkpoint " + spec.name + ": work for " + std::to_string(spec.work.size()) + " tasks, not " +
                            std::to_string(n));
+  if (!std::ranges::all_of(spec.work, [](double w) { return std::isfinite(w); }))  // (NaN would leave no order)
+    throw std::logic_error("checkpoint " + spec.name + ": the work of a task is not finite");
   std::ranges::stable_sort(order, std::ranges::greater{}, [&](std::size_t i) { return spec.work[i]; });
   return order;
 }
