@@ -181,8 +181,8 @@ CheckpointLog::Records CheckpointLog::load_here(bool resume) {
   if (!h.contains("format")) refuse(header_, "no field format");
   if (h["format"] != (*identity_)["format"])
     refuse(header_, "format is " + shown(h["format"]) + ", this binary reads format " + std::to_string(kFormat));
-  for (const char* field : {"experiment", "study", "name", "scene", "build", "n", "run_id", "tasks_done", "log_bytes",
-                            "chain_crc32c"})
+  for (const char* field : {"experiment", "study", "name", "scene", "build", "n", "order_crc32c", "run_id", "tasks_done",
+                            "log_bytes", "chain_crc32c"})
     if (!h.contains(field)) refuse(header_, std::string("no field ") + field);
   for (const char* field : {"experiment", "study", "name"})
     if (h[field] != (*identity_)[field])
@@ -192,8 +192,7 @@ CheckpointLog::Records CheckpointLog::load_here(bool resume) {
       refuse(header_, "written by another binary: build." + key + " is " +
                           (h["build"].is_object() && h["build"].contains(key) ? shown(h["build"][key]) : "missing") +
                           ", this binary's " + shown(value));
-  if (h["scene"] != (*identity_)["scene"] || !h.contains("order_crc32c") ||
-      h["order_crc32c"] != (*identity_)["order_crc32c"]) {  // a run of other scene values or order: nothing of it applies
+  if (h["scene"] != (*identity_)["scene"] || h["order_crc32c"] != (*identity_)["order_crc32c"]) {  // nothing of it applies
     reset();
     return records;
   }
