@@ -39,10 +39,12 @@ inline constexpr int kLanes = kHenonHeilesLanes;
 template <int N>
 inline constexpr int kLanes<LennardJones<N>> = kLennardJonesLanes;
 // Registers of lanes a kernel steps together, their states kept in registers; a batch of more runs group after
-// group. Henon-Heiles: 4, whose chains hide each other's latency (AVX-512: 0.79 ns per trajectory-step, 1.27
-// with 2, 2.47 with 1; AVX2 1.38, SSE2 2.43 with 4, more spills); Lennard-Jones: 1, a step that fills the pipes.
+// group. Henon-Heiles: up to 8, whose chains hide each other's latency: AVX-512 steps its 4 registers together
+// (0.79 ns per trajectory-step, 1.27 with 2, 2.47 with 1), AVX2 and SSE2 8 of their 8 and 16 despite the spills
+// (Fig. 4's lanes with k = 5 on a Sapphire Rapids core: AVX2 1.13-1.19 -> 0.96-1.05 ns, SSE2 2.20-2.32 -> 1.61-1.78,
+// three rounds in turn); Lennard-Jones: 1, a step that fills the pipes.
 template <class Sys>
-inline constexpr int kChains = 4;
+inline constexpr int kChains = 8;
 template <int N>
 inline constexpr int kChains<LennardJones<N>> = 1;
 
