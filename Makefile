@@ -83,7 +83,7 @@ id_of = $(call scene_id,$(word 2,$(subst /, ,$(1))),$(basename $(notdir $(1))))
 define SCENE_RULES
 $(RESULTS)/$(3)/run.json: $(BUILD)/bin/$(1) $(2) $(filter-out experiments/$(1)/quick% $(CLUSTER_SCENES),$(wildcard experiments/$(1)/*.toml)) $(if $(filter $(3),$(STALE_RUNS)),FORCE)
 	@echo "== $(3)"
-	@start=$$$$(date +%s%N); $(BUILD)/bin/$(1) --scene $(2) --out $(RESULTS)/$(3) && \
+	@start=$$$$(date +%s%N); $(BUILD)/bin/$(1) --scene $(2) --out $(RESULTS)/$(3) $$(if $$(TIMING_CONCURRENCY),--timing-concurrency $$(TIMING_CONCURRENCY)) && \
 	  awk -v ns=$$$$(( $$$$(date +%s%N) - start )) 'BEGIN { printf "== $(3): %.1f s\n", ns / 1e9 }'
 FIGURES_$(3) := $(patsubst figures/%.gp,figures/out/%.pdf,$(wildcard figures/$(3)_*.gp))
 $$(FIGURES_$(3)): figures/out/%.pdf: figures/%.gp figures/common.gp $(wildcard figures/*.gpi) $(RESULTS)/$(3)/run.json
@@ -98,11 +98,13 @@ $(foreach sc,$(PAPER_SCENES),$(eval $(call SCENE_RULES,$(word 2,$(subst /, ,$(sc
 FORCE:
 $(BUILD)/bin/%: ;   # made by `build`, before figure-files is asked for
 
-# The runs one after another (each uses every core, and times itself), then the figures rendered
-# in parallel; at the end each experiment's wall time (its run.json), the rendering's and that of the
+# The runs one after another (each uses every core, and times itself; whether the cores time alike is measured
+# by the first run that times and read by the others: --timing-concurrency, a file of this make), then the figures
+# rendered in parallel; at the end each experiment's wall time (its run.json), the rendering's and that of the
 # whole make figures.
 figures: build-figures $(DEPS_STAMP)/figures.stamp
-	@start=$$(date +%s.%N); $(MAKE) --no-print-directory figure-runs && render=$$(date +%s.%N) && \
+	@start=$$(date +%s.%N); shared=$(BUILD)/timing_concurrency_of_make_figures.$$$$; trap 'rm -f $$shared' EXIT; \
+	  $(MAKE) --no-print-directory figure-runs TIMING_CONCURRENCY=$$shared && render=$$(date +%s.%N) && \
 	  n=$$($(MAKE) --no-print-directory -n figure-files | grep -c 'render_figures.sh' || true) && \
 	  { [ $$n = 0 ] || echo "== rendering $$n figures"; } && mkdir -p figures/out && : > $(RENDERED) && \
 	  GEOMINT_RENDER_PROGRESS="$$n $$(date +%s.%N) $(RENDERED)" $(MAKE) --no-print-directory -j $(JOBS) figure-files && \

@@ -471,6 +471,39 @@ TEST(Cli, TwoConcurrentRunsOnOneOutput) {
   EXPECT_FALSE(fs::exists(out.string() + ".partial"));
 }
 
+// --timing-concurrency FILE (make figures): the first run that times measures whether the cores time alike and adds
+// it to FILE; a later run reads it there (run.json timing_concurrency says which), and times by it; a FILE of another
+// form is refused before any work.
+TEST(Cli, TimingConcurrencyIsMeasuredOnceAndReadFromItsFile) {
+  const fs::path shared = work / "timing_concurrency.txt", out = work / "concurrency";
+  fs::remove(shared), fs::remove_all(out);
+  const auto concurrency_of = [&](const std::string& args) {
+    fs::remove_all(out);
+    const Outcome r = run("--quick --study cost --threads 2 --out " + out.string() + " --timing-concurrency " + args);
+    EXPECT_EQ(r.code, 0) << r.err;
+    return nlohmann::json::parse(file_text(out / "run.json")).at("timing_concurrency").at(0);
+  };
+  const auto measured = concurrency_of(shared.string());
+  EXPECT_EQ(measured.at("from"), "this run");
+  std::istringstream line(file_text(shared));
+  int requested = 0, workers = 0;
+  double slowdown = 0;
+  ASSERT_TRUE(line >> requested >> workers >> slowdown) << file_text(shared);
+  EXPECT_EQ(requested, 2);
+  EXPECT_EQ(workers, measured.at("workers").get<int>());
+  EXPECT_EQ(slowdown, measured.at("slowdown").get<double>());  // (%.17g: the same double)
+
+  std::ofstream(shared) << "2 1 1.5\n";  // (as if measured on two hyperthreads: one configuration at a time)
+  const auto read = concurrency_of(shared.string());
+  EXPECT_EQ(read.at("from"), shared.string());
+  EXPECT_EQ(read.at("workers"), 1);
+  EXPECT_EQ(read.at("slowdown"), 1.5);
+
+  std::ofstream(shared) << "2 3 1.5\n";  // (3 workers of 2 requested)
+  expect_refused_raw("--quick --study cost --out " + out.string() + " --timing-concurrency " + shared.string(),
+                     {"--timing-concurrency " + shared.string() + ", line 1", "\"2 3 1.5\"", "requested workers slowdown"});
+}
+
 }  // namespace cli_test
 
 // Under a file size limit (ulimit -f) a write past it fails and the run says so (exit 1, DIR untouched), where

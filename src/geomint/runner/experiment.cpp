@@ -725,6 +725,11 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
   app.add_option("--max-seconds", max_seconds,
                  "Refuse, before any work, a run whose --plan estimates more wall time than this (0: no limit)")
       ->check(CLI::Range(0.0, 1e12));
+  std::string concurrency_file;
+  app.add_option("--timing-concurrency", concurrency_file,
+                 "Share the measurement of whether the cores time alike (run.json timing_concurrency) through this "
+                 "file: read it there if the file holds it, else measure it and add it (make figures: one measurement "
+                 "for all its runs)");
   bool resume = false;
   app.add_flag("--resume", resume,
                "Continue an interrupted run from the checkpoint in --out (experiments that write checkpoints)");
@@ -740,7 +745,8 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
   // Arguments are shown in one line: one with a control character (a newline, a carriage return, a tab...)
   // is refused, shown with the character escaped (a --set of two lines would otherwise set one key).
   for (const auto& [option, values] : {std::pair<const char*, std::vector<std::string>>{"--set", overrides},
-                                       {"--study", only}, {"--scene", {scene_file}}, {"--out", {out_dir}}})
+                                       {"--study", only}, {"--scene", {scene_file}}, {"--out", {out_dir}},
+                                       {"--timing-concurrency", {concurrency_file}}})
     for (const auto& v : values)
       if (std::any_of(v.begin(), v.end(), [](char c) { return static_cast<unsigned char>(c) < 0x20 || c == 0x7f; })) {
         std::cerr << name << ": " << option << " " << printable(v)
@@ -777,6 +783,12 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
     }
     return 0;
   }
+  if (!concurrency_file.empty()) try {
+      share_timing_concurrency(concurrency_file);
+    } catch (const std::runtime_error& e) {
+      std::cerr << name << ": " << e.what() << '\n';
+      return 2;
+    }
   // (--quick: quick.toml, or the paper scene where the experiment has none: its paper scene is quick)
   if (scene_file.empty())
     scene_file = experiment_dir + "/" +

@@ -6,12 +6,16 @@
 #include <barrier>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <exception>
+#include <fstream>
 #include <map>
 #include <mutex>
+#include <sstream>
 #include <stdexcept>
 #include <thread>
 
+#include "geomint/io/atomic_file.hpp"
 #include "geomint/runner/clock.hpp"
 
 namespace geomint {
@@ -168,6 +172,37 @@ void fp_throughput_loop() {
 
 std::mutex concurrency_mutex;
 std::map<int, TimingConcurrency> concurrency_measured;  // by requested workers
+std::map<int, std::string> concurrency_from;            // by requested workers: "this run" or the file read
+std::string concurrency_file;                           // share_timing_concurrency
+
+// The measurements in a shared file, by requested workers (none where the file does not exist).
+std::map<int, TimingConcurrency> read_shared_concurrency(const std::string& path) {
+  std::map<int, TimingConcurrency> out;
+  std::ifstream in(path);
+  std::string line;
+  for (int n = 1; std::getline(in, line); ++n) {
+    std::istringstream fields(line);
+    int requested = 0;
+    TimingConcurrency c;
+    std::string more;
+    if (!(fields >> requested >> c.workers >> c.slowdown) || fields >> more || requested < 2 ||
+        (c.workers != 1 && c.workers != requested) || !(c.slowdown > 0))
+      throw std::runtime_error("--timing-concurrency " + path + ", line " + std::to_string(n) + ": \"" + line +
+                               "\" is not \"requested workers slowdown\" (requested >= 2, workers 1 or requested, slowdown > 0)");
+    out[requested] = c;
+  }
+  return out;
+}
+
+void write_shared_concurrency(const std::string& path, const std::map<int, TimingConcurrency>& all) {
+  std::string text;
+  for (const auto& [requested, c] : all) {
+    char line[96];
+    std::snprintf(line, sizeof line, "%d %d %.17g\n", requested, c.workers, c.slowdown);
+    text += line;
+  }
+  write_file_atomic(path, text);
+}
 
 std::mutex control_mutex;
 Value control_measured = Value::list();  // timing_control_record
@@ -183,6 +218,14 @@ TimingConcurrency timing_concurrency(int workers, int repeats) {
   if (workers <= 1) return {};
   const std::lock_guard<std::mutex> lock(concurrency_mutex);
   if (const auto it = concurrency_measured.find(workers); it != concurrency_measured.end()) return it->second;
+  std::map<int, TimingConcurrency> shared;
+  if (!concurrency_file.empty()) {
+    shared = read_shared_concurrency(concurrency_file);
+    if (const auto it = shared.find(workers); it != shared.end()) {
+      concurrency_from[workers] = concurrency_file;
+      return concurrency_measured[workers] = it->second;
+    }
+  }
   // Per round, one run of the loop alone (the other threads waiting), then one on every thread at once
   // (the slowest counts), each of at least the floor.
   Pool pool(workers);
@@ -196,7 +239,15 @@ TimingConcurrency timing_concurrency(int workers, int repeats) {
   TimingConcurrency c;
   c.slowdown = run_time_of(beside, inner).seconds() / run_time_of(alone, inner).seconds();
   c.workers = c.slowdown <= kConcurrentSlowdown ? workers : 1;
+  if (!concurrency_file.empty()) shared[workers] = c, write_shared_concurrency(concurrency_file, shared);
+  concurrency_from[workers] = "this run";
   return concurrency_measured[workers] = c;
+}
+
+void share_timing_concurrency(const std::string& file) {
+  const std::lock_guard<std::mutex> lock(concurrency_mutex);
+  read_shared_concurrency(file);  // (a file of another form is refused before any work)
+  concurrency_file = file;
 }
 
 Value to_value(const TimingConcurrency& c) { return {{"workers", c.workers}, {"slowdown", c.slowdown}}; }
@@ -208,6 +259,7 @@ Value timing_concurrency_record() {
   for (const auto& [requested, c] : concurrency_measured) {
     Value m = to_value(c);
     m["requested"] = requested;
+    m["from"] = concurrency_from.at(requested);
     out.push_back(m);
   }
   return out;

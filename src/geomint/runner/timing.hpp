@@ -77,7 +77,7 @@ RunTime run_time_of(std::vector<double> per_call, std::int64_t inner);
 // a loop bound by the throughput of the floating-point units over the median time of one copy alone (the
 // protocol, both interleaved, at least kTimingRepeats rounds). On two hyperthreads of one core the loop
 // takes about twice as long beside the other; on separate cores as long. Measured once per process and
-// worker count.
+// worker count, or read from the file of share_timing_concurrency.
 inline constexpr double kConcurrentSlowdown = 1.1;
 struct TimingConcurrency {
   int workers = 1;        // those used: the requested count where slowdown <= kConcurrentSlowdown, else 1
@@ -85,7 +85,12 @@ struct TimingConcurrency {
 };
 TimingConcurrency timing_concurrency(int workers, int repeats);
 Value to_value(const TimingConcurrency& c);
-// The measurements timing_concurrency made in this process (run.json timing_concurrency; null if none).
+// The runs of one make figures measure it once (--timing-concurrency FILE): timing_concurrency then takes it from
+// FILE where FILE holds it for the requested workers, and otherwise measures it and adds it to FILE (one line
+// "requested workers slowdown" each; a line of another form is an error). Empty: measured in this process only.
+void share_timing_concurrency(const std::string& file);
+// The measurements timing_concurrency used in this process, each with where it came from ("from": "this run" or
+// the file it was read from) (run.json timing_concurrency; null if none).
 Value timing_concurrency_record();
 // The control of every measurement of several configurations in this process, in order: {configurations,
 // before_s, after_s, drift} (run.json timing_control; null if none).
