@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "geomint/observables/linear_fit.hpp"
+#include "geomint/sweep/parallel_map.hpp"
 
 namespace geomint {
 
@@ -80,19 +81,24 @@ inline constexpr int kBootstrapResamples = 200;
 // ensemble, each trajectory's correlation over time included, which a formula for independent points would miss.
 inline double bootstrap_exponent_stderr(const std::vector<std::vector<double>>& series, std::span<const double> t,
                                         double t0, int resamples, std::uint64_t seed) {
+  const std::size_t M = series.size(), K = t.size();
   std::mt19937_64 rng(seed);
-  std::uniform_int_distribution<std::size_t> pick(0, series.size() - 1);
-  std::vector<double> gammas, column(series.size()), sd(t.size(), 0.0);
-  std::vector<std::size_t> which(series.size());
-  for (int r = 0; r < resamples; ++r) {
-    for (auto& w : which) w = pick(rng);
-    for (std::size_t k = 0; k < t.size(); ++k) {
+  std::uniform_int_distribution<std::size_t> pick(0, M - 1);
+  std::vector<std::vector<std::size_t>> which(static_cast<std::size_t>(resamples), std::vector<std::size_t>(M));
+  for (auto& w : which)  // (every draw first, in the stream's order; the resamples then on the threads)
+    for (auto& i : w) i = pick(rng);
+  std::vector<double> by_time(K * M);  // by_time[k M + i] = series[i][k]: a resample gathers within one time's row
+  for (std::size_t i = 0; i < M; ++i)
+    for (std::size_t k = 0; k < K; ++k) by_time[k * M + i] = series[i][k];
+  const std::vector<double> gammas = parallel_map(which.size(), [&](std::size_t r) {
+    std::vector<double> column(M), sd(K, 0.0);
+    for (std::size_t k = 0; k < K; ++k) {
       if (t[k] < t0) continue;  // (outside the fit)
-      for (std::size_t j = 0; j < which.size(); ++j) column[j] = series[which[j]][k];
+      for (std::size_t j = 0; j < M; ++j) column[j] = by_time[k * M + which[r][j]];
       sd[k] = mean_and_deviation(column).sd;
     }
-    gammas.push_back(power_law_exponent(t, sd, t0));
-  }
+    return power_law_exponent(t, sd, t0);
+  });
   return mean_and_deviation(gammas).sd;
 }
 
