@@ -783,12 +783,12 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
     }
     return 0;
   }
-  if (!concurrency_file.empty()) try {
-      share_timing_concurrency(concurrency_file);
-    } catch (const std::runtime_error& e) {
-      std::cerr << name << ": " << e.what() << '\n';
-      return 2;
-    }
+  try {
+    if (!concurrency_file.empty()) share_timing_concurrency(concurrency_file);
+  } catch (const std::runtime_error& e) {  // (a file of another form: before any work)
+    std::cerr << name << ": " << e.what() << '\n';
+    return 2;
+  }
   // (--quick: quick.toml, or the paper scene where the experiment has none: its paper scene is quick)
   if (scene_file.empty())
     scene_file = experiment_dir + "/" +
