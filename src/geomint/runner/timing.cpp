@@ -6,7 +6,6 @@
 #include <barrier>
 #include <chrono>
 #include <cmath>
-#include <cstdio>
 #include <exception>
 #include <fstream>
 #include <map>
@@ -16,6 +15,7 @@
 #include <thread>
 
 #include "geomint/io/atomic_file.hpp"
+#include "geomint/io/csv.hpp"
 #include "geomint/runner/clock.hpp"
 
 namespace geomint {
@@ -171,9 +171,12 @@ void fp_throughput_loop() {
 }
 
 std::mutex concurrency_mutex;
-std::map<int, TimingConcurrency> concurrency_measured;  // by requested workers
-std::map<int, std::string> concurrency_from;            // by requested workers: "this run" or the file read
-std::string concurrency_file;                           // share_timing_concurrency
+struct ConcurrencyUsed {
+  TimingConcurrency c;
+  std::string from;  // "this run" or the file it was read from
+};
+std::map<int, ConcurrencyUsed> concurrency_used;  // by requested workers
+std::string concurrency_file;                     // share_timing_concurrency
 
 // The measurements in a shared file, by requested workers (none where the file does not exist).
 std::map<int, TimingConcurrency> read_shared_concurrency(const std::string& path) {
@@ -196,11 +199,8 @@ std::map<int, TimingConcurrency> read_shared_concurrency(const std::string& path
 
 void write_shared_concurrency(const std::string& path, const std::map<int, TimingConcurrency>& all) {
   std::string text;
-  for (const auto& [requested, c] : all) {
-    char line[96];
-    std::snprintf(line, sizeof line, "%d %d %.17g\n", requested, c.workers, c.slowdown);
-    text += line;
-  }
+  for (const auto& [requested, c] : all)
+    text += std::to_string(requested) + " " + std::to_string(c.workers) + " " + format_double(c.slowdown) + "\n";
   write_file_atomic(path, text);
 }
 
@@ -217,14 +217,12 @@ double control_seconds(double floor_s) {
 TimingConcurrency timing_concurrency(int workers, int repeats) {
   if (workers <= 1) return {};
   const std::lock_guard<std::mutex> lock(concurrency_mutex);
-  if (const auto it = concurrency_measured.find(workers); it != concurrency_measured.end()) return it->second;
+  if (const auto it = concurrency_used.find(workers); it != concurrency_used.end()) return it->second.c;
   std::map<int, TimingConcurrency> shared;
   if (!concurrency_file.empty()) {
     shared = read_shared_concurrency(concurrency_file);
-    if (const auto it = shared.find(workers); it != shared.end()) {
-      concurrency_from[workers] = concurrency_file;
-      return concurrency_measured[workers] = it->second;
-    }
+    if (const auto it = shared.find(workers); it != shared.end())
+      return (concurrency_used[workers] = {it->second, concurrency_file}).c;
   }
   // Per round, one run of the loop alone (the other threads waiting), then one on every thread at once
   // (the slowest counts), each of at least the floor.
@@ -240,8 +238,7 @@ TimingConcurrency timing_concurrency(int workers, int repeats) {
   c.slowdown = run_time_of(beside, inner).seconds() / run_time_of(alone, inner).seconds();
   c.workers = c.slowdown <= kConcurrentSlowdown ? workers : 1;
   if (!concurrency_file.empty()) shared[workers] = c, write_shared_concurrency(concurrency_file, shared);
-  concurrency_from[workers] = "this run";
-  return concurrency_measured[workers] = c;
+  return (concurrency_used[workers] = {c, "this run"}).c;
 }
 
 void share_timing_concurrency(const std::string& file) {
@@ -254,12 +251,12 @@ Value to_value(const TimingConcurrency& c) { return {{"workers", c.workers}, {"s
 
 Value timing_concurrency_record() {
   const std::lock_guard<std::mutex> lock(concurrency_mutex);
-  if (concurrency_measured.empty()) return nullptr;
+  if (concurrency_used.empty()) return nullptr;
   Value out = Value::list();
-  for (const auto& [requested, c] : concurrency_measured) {
-    Value m = to_value(c);
+  for (const auto& [requested, used] : concurrency_used) {
+    Value m = to_value(used.c);
     m["requested"] = requested;
-    m["from"] = concurrency_from.at(requested);
+    m["from"] = used.from;
     out.push_back(m);
   }
   return out;
