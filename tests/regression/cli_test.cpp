@@ -504,6 +504,28 @@ TEST(Cli, TimingConcurrencyIsMeasuredOnceAndReadFromItsFile) {
                      {"--timing-concurrency " + shared.string() + ", line 1", "\"2 3 1.5\"", "requested workers slowdown"});
 }
 
+// GEOMINT_LANES caps the lanes' instruction set (sweep/lanes_cap.hpp): with sse2 only the SSE2 lanes run and are
+// timed, and run.json records the cap; another value is refused before any work, in one line.
+TEST(Cli, LanesCapIsTheWidestInstructionSetTheLanesUse) {
+  const fs::path out = work / "lanes";
+  for (const std::string name : {"ti_drift", "energy_map"}) {
+    fs::remove_all(out);
+    const Outcome r = run("--quick --study kernel_timing --threads 2 --out " + out.string(), "GEOMINT_LANES=sse2 " + bin_of(name));
+    ASSERT_EQ(r.code, 0) << name << ": " << r.err;
+    EXPECT_EQ(nlohmann::json::parse(file_text(out / "run.json")).at("lanes_cap"), "sse2") << name;
+    const auto timing = nlohmann::json::parse(file_text(out / "summary.json")).at("timing");
+    if (name == "energy_map") EXPECT_EQ(timing.at("kernel_isa"), "sse2");
+    for (const char* fig : {"fig4", "fig6"})
+      if (name == "ti_drift") {
+        const auto& kernels = timing.at("lanes").at(fig).at("kernels");
+        EXPECT_EQ(kernels.size(), 1u) << fig << ": " << kernels.dump();
+        EXPECT_TRUE(kernels.contains("SSE2")) << fig << ": " << kernels.dump();
+      }
+  }
+  expect_refused_raw("--quick --out " + out.string(), {"GEOMINT_LANES=avx1024", "avx512, avx2 or sse2"},
+                     "GEOMINT_LANES=avx1024 " + bin);
+}
+
 }  // namespace cli_test
 
 // Under a file size limit (ulimit -f) a write past it fails and the run says so (exit 1, DIR untouched), where

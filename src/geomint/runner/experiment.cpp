@@ -28,6 +28,7 @@
 #include "geomint/runner/published.hpp"
 #include "geomint/runner/results_json.hpp"
 #include "geomint/runner/timing.hpp"
+#include "geomint/sweep/lanes_cap.hpp"
 #include "geomint/sweep/mpi.hpp"
 
 namespace geomint {
@@ -783,9 +784,11 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
     }
     return 0;
   }
+  std::string lanes;  // GEOMINT_LANES, the lane kernels' widest instruction set ("": the CPU's)
   try {
     if (!concurrency_file.empty()) share_timing_concurrency(concurrency_file);
-  } catch (const std::runtime_error& e) {  // (a file of another form: before any work)
+    lanes = lanes_cap();
+  } catch (const std::exception& e) {  // (a file of another form, or GEOMINT_LANES of none: before any work)
     std::cerr << name << ": " << e.what() << '\n';
     return 2;
   }
@@ -935,6 +938,7 @@ int run_experiment(int argc, char** argv, ExperimentSpec spec, const std::string
                                    {"files", st.files},
                                    {"ran", std::find(ran.begin(), ran.end(), st.name) != ran.end()}});
     run["threads"] = threads;
+    run["lanes_cap"] = lanes.empty() ? nlohmann::ordered_json() : nlohmann::ordered_json(lanes);  // (GEOMINT_LANES)
     run["ranks"] = mpi::size();
     const double busy = mpi::busy_seconds();
     const double exchange = mpi::exchange_seconds();

@@ -92,7 +92,7 @@ struct EnergyMapKernelInfo {
   std::array<KernelArithmetic, 2> arithmetic;  // Cartesian, polar: a step's arithmetic alone (empty for SSE2)
 };
 
-// The kernels this CPU can run, best first.
+// The kernels this CPU can run under GEOMINT_LANES (sweep/lanes_cap.hpp), best first.
 std::vector<EnergyMapKernelInfo> energy_map_kernels();
 
 // The straightforward scalar loop, one trajectory.

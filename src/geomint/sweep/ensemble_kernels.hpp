@@ -80,7 +80,8 @@ struct LanesKernel {
   KernelArithmetic arithmetic;  // a step of a register of lanes, its arithmetic alone (arithmetic_ceiling.hpp); empty: not counted
 };
 
-// The kernels this CPU can run, best first (for LennardJones<9>, HenonHeilesT<true> and <false>).
+// The kernels this CPU can run under GEOMINT_LANES (sweep/lanes_cap.hpp), best first (for LennardJones<9>,
+// HenonHeilesT<true> and <false>).
 template <class Sys>
 std::vector<LanesKernel<Sys>> simplified_ti_lanes_kernels();
 
