@@ -343,10 +343,11 @@ def method_citations(papers):
 def machine_tex(runs):
     seen = {}
     for run in runs.values():
-        b, m = run["run"].get("build", {}), run["run"].get("machine", {})
+        b, m, cap = run["run"].get("build", {}), run["run"].get("machine", {}), run["run"].get("lanes_cap")
         line = (f"{tex_escape(m.get('cpu', 'an unrecorded CPU'))} ({m.get('logical_cores', '?')} logical cores); "
                 f"{tex_escape(b.get('compiler', '?'))}, {code(b.get('cxx_flags', ''))}; commit "
-                f"\\texttt{{{tex_escape(b.get('git_commit', '?')[:12])}}}{' (with local changes)' if b.get('git_dirty') else ''}")
+                f"\\texttt{{{tex_escape(b.get('git_commit', '?')[:12])}}}{' (with local changes)' if b.get('git_dirty') else ''}"
+                + (f"; lane kernels capped at {tex_escape(cap)} (\\texttt{{GEOMINT\\_LANES}})" if cap else ""))
         seen.setdefault(line, []).append(run["run"].get("threads"))
     lines = [f"{line}; runs on {' or '.join(sorted({str(t) for t in threads}))} threads" for line, threads in seen.items()]
     return "% The machine and build of the runs (run.json).\n{\\sloppy " + r"\\ ".join(lines) + "\\par}\n"
@@ -506,8 +507,7 @@ def load_runs(root, paper_scenes=None, program="report.py"):
     root/<run>/summary.json with its run.json. With `paper_scenes` (ID=SCENE, as make passes them) a reviewer's
     rerun (<id>+<hash>) is left out, and a paper scene's run that is missing or not that scene's run stops
     the program (SystemExit naming why)."""
-    runs = {}
-    scenes = dict(pair.partition("=")[::2] for pair in paper_scenes or [])
+    runs, scenes = {}, dict(pair.partition("=")[::2] for pair in paper_scenes or [])
     for path in sorted(root.glob("*/summary.json")):
         if scenes and path.parent.name not in scenes and "+" in path.parent.name:
             continue  # (a reviewer's rerun, results/<id>+<hash>: not the report's)
