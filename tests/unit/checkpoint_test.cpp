@@ -76,8 +76,9 @@ struct Fixture {
     return dir;
   }
   std::array<std::atomic<bool>, kTasks> called{};  // the tasks computed
-  std::vector<std::vector<double>> run(std::size_t round = 5, std::vector<double> work = {}) {
-    return checkpointed_map<std::vector<double>>(ctx, {"", {"a"}, round, std::move(work)}, kTasks, [&](std::size_t i) {
+  std::vector<std::vector<double>> run(std::size_t round = 5, std::vector<double> work = {}, std::string kernel = {}) {
+    const CheckpointSpec spec{"", {"a"}, round, std::move(work), std::move(kernel)};
+    return checkpointed_map<std::vector<double>>(ctx, spec, kTasks, [&](std::size_t i) {
       ++calls;
       called[i] = true;
       return task(i);
@@ -194,6 +195,13 @@ TEST(Checkpoint, OtherSceneValuesStartOver) {
   stop_after_one_round();
   Fixture f(0, 2.0, false);
   EXPECT_EQ(f.run(), straight());
+  EXPECT_EQ(f.calls, static_cast<int>(kTasks));
+}
+
+TEST(Checkpoint, AnotherKernelStartsOver) {  // (the energy map's kernels each round in their own way)
+  stop_after_one_round();
+  Fixture f(0, 1.0, false);
+  EXPECT_EQ(f.run(5, {}, "avx2"), straight());
   EXPECT_EQ(f.calls, static_cast<int>(kTasks));
 }
 

@@ -25,7 +25,7 @@ using json = nlohmann::ordered_json;
 
 namespace {
 
-constexpr int kFormat = 3;  // of the header and the log (checkpoint.hpp)
+constexpr int kFormat = 4;  // of the header and the log (checkpoint.hpp)
 constexpr char kMagic[8] = {'g', 'e', 'o', 'm', 'i', 'n', 't', 'L'};  // the log's first 8 bytes
 constexpr std::size_t kPreamble = 16;                                // the magic and the run id
 const char* const kHeaderSuffix = ".checkpoint.json";
@@ -106,7 +106,7 @@ CheckpointLog::CheckpointLog(const Context& ctx, const CheckpointSpec& spec, std
   identity_ = std::make_shared<const json>(json{{"format", kFormat},       {"experiment", ctx.experiment},
                {"study", ctx.study},      {"name", name_},
                {"scene", scene_slice(ctx.scene, spec.keys.empty() ? task_keys(ctx.reads) : spec.keys)}, {"build", build_info()},
-               {"n", n}, {"order_crc32c", crc32c(order.data(), order.size() * sizeof(std::uint64_t))}});
+               {"kernel", spec.kernel}, {"n", n}, {"order_crc32c", crc32c(order.data(), order.size() * sizeof(std::uint64_t))}});
   chain_ = seed();
 }
 
@@ -181,8 +181,8 @@ CheckpointLog::Records CheckpointLog::load_here(bool resume) {
   if (!h.contains("format")) refuse(header_, "no field format");
   if (h["format"] != (*identity_)["format"])
     refuse(header_, "format is " + shown(h["format"]) + ", this binary reads format " + std::to_string(kFormat));
-  for (const char* field : {"experiment", "study", "name", "scene", "build", "n", "order_crc32c", "run_id", "tasks_done",
-                            "log_bytes", "chain_crc32c"})
+  for (const char* field : {"experiment", "study", "name", "scene", "build", "kernel", "n", "order_crc32c", "run_id",
+                            "tasks_done", "log_bytes", "chain_crc32c"})
     if (!h.contains(field)) refuse(header_, std::string("no field ") + field);
   for (const char* field : {"experiment", "study", "name"})
     if (h[field] != (*identity_)[field])
@@ -192,7 +192,8 @@ CheckpointLog::Records CheckpointLog::load_here(bool resume) {
       refuse(header_, "written by another binary: build." + key + " is " +
                           (h["build"].is_object() && h["build"].contains(key) ? shown(h["build"][key]) : "missing") +
                           ", this binary's " + shown(value));
-  if (h["scene"] != (*identity_)["scene"] || h["order_crc32c"] != (*identity_)["order_crc32c"]) {  // nothing of it applies
+  if (h["scene"] != (*identity_)["scene"] || h["kernel"] != (*identity_)["kernel"] ||
+      h["order_crc32c"] != (*identity_)["order_crc32c"]) {  // nothing of it applies
     reset();
     return records;
   }

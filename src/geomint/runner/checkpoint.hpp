@@ -11,14 +11,14 @@
 //                           the CRC-32C (io/crc32c.hpp) of its task index, L and the values, seeded by the
 //                           check of the record before (the machine's byte order). Record 0 is seeded by
 //                           the run's seed, the CRC-32C of the header's identity (format, experiment, study,
-//                           name, scene keys, binary, n) and the run id: a record checks only in its own
+//                           name, scene keys, binary, kernel, n) and the run id: a record checks only in its own
 //                           place of its own run's log;
 //   <name>.checkpoint.json  the header, written atomically after each append: format, experiment,
-//                           study, name, the scene keys the tasks depend on, the binary (build_info),
-//                           n, order_crc32c (the CRC-32C of the order the tasks run in, task_order, as
+//                           study, name, the scene keys the tasks depend on, the binary (build_info), the
+//                           kernel (CheckpointSpec::kernel), n, order_crc32c (the CRC-32C of the order the tasks run in, task_order, as
 //                           uint64s), run_id, tasks_done, log_bytes (the part of the log that holds them in
 //                           full) and chain_crc32c (the check of the last of them; the seed if none).
-// On --resume a header that is missing means nothing to resume, one of other scene values or of
+// On --resume a header that is missing means nothing to resume, one of other scene values, another kernel or
 // another task order is discarded (start over); one that cannot be used (not JSON, another format, another binary,
 // tasks_done beyond n, a log shorter than log_bytes, the log of another run, a record that fails its
 // check (damaged, moved, dropped, repeated, or from another run's log), records that do not end with
@@ -59,6 +59,9 @@ struct CheckpointSpec {
   // of it (ties in index order), so that a round's tasks take alike and the long ones do not each leave threads idle
   // beside short ones at the round's end; empty: in index order. The results are by index either way.
   std::vector<double> work = {};
+  // The kernel the tasks run, where their results depend on which (the energy map's instruction set,
+  // sweep/energy_map.hpp); a checkpoint of another kernel, like one of other scene values, is discarded.
+  std::string kernel = {};
 };
 
 // The header and log of one checkpointed map (the part that does not depend on the record type).

@@ -55,10 +55,11 @@ struct BatchCodec {
 
 std::vector<EnergyMapPoint> energy_map_points(Context& ctx, const std::string& name, const EnergyMapGrid& g, Coordinates c,
                                               std::size_t& computed) {
-  const EnergyMapKernel kernel = energy_map_kernels().front().run;
+  const EnergyMapKernelInfo best = energy_map_kernels().front();
+  const EnergyMapKernel kernel = best.run;
   std::atomic<std::size_t> count = 0;
   const auto batches = checkpointed_map<std::vector<EnergyMapPoint>>(
-      ctx, {name}, g.nbatches,
+      ctx, {.name = name, .kernel = best.isa}, g.nbatches,  // (each kernel rounds in its own way)
       [&](std::size_t b) {
         std::vector<EnergyMapPoint> out(kEnergyMapBatch);
         kernel(c, g.P, &g.x0[b * kEnergyMapBatch], &g.y0[b * kEnergyMapBatch], out.data());

@@ -20,7 +20,9 @@ std::string lanes_cap() {
 
 bool lanes_allowed(std::string_view isa) {
   const std::string cap = lanes_cap();
-  const auto rank = [](std::string_view s) { return std::find(kWidestFirst.begin(), kWidestFirst.end(), s) - kWidestFirst.begin(); };
+  const auto rank = [](std::string_view s) {
+    return std::find(kWidestFirst.begin(), kWidestFirst.end(), s) - kWidestFirst.begin();
+  };
   return cap.empty() || rank(isa) >= rank(cap);
 }
 
