@@ -1,6 +1,7 @@
 #include "geomint/sweep/energy_map.hpp"
 
 #include <cmath>
+#include <utility>
 
 #include "geomint/sweep/arithmetic_counts.hpp"
 #include "geomint/sweep/lanes_cap.hpp"
@@ -15,14 +16,14 @@ std::vector<EnergyMapKernelInfo> energy_map_kernels() {
   __builtin_cpu_init();
   std::vector<EnergyMapKernelInfo> k;
   const bool fma = __builtin_cpu_supports("fma");  // the AVX2 and AVX-512 kernels use it
-  if (fma && __builtin_cpu_supports("avx512f") && lanes_allowed("avx512"))
+  if (fma && __builtin_cpu_supports("avx512f"))
     k.push_back({"avx512", "AVX-512", energy_map_kernel_avx512,
                  {{{&kEnergyMapAvx512Cartesian, issue_mix_avx512}, {&kEnergyMapAvx512Polar, issue_mix_avx512}}}});
-  if (fma && __builtin_cpu_supports("avx2") && lanes_allowed("avx2"))
+  if (fma && __builtin_cpu_supports("avx2"))
     k.push_back({"avx2", "AVX2", energy_map_kernel_avx2,
                  {{{&kEnergyMapAvx2Cartesian, issue_mix_avx2}, {&kEnergyMapAvx2Polar, issue_mix_avx2}}}});
   k.push_back({"sse2", "SSE2", energy_map_kernel_sse2, {}});
-  return k;
+  return within_lanes_cap(std::move(k));
 }
 
 // The straightforward scalar loop: one trajectory at a time, the formulas

@@ -1,6 +1,7 @@
 #include "geomint/sweep/ensemble_kernels.hpp"
 
 #include <type_traits>
+#include <utility>
 
 #include "geomint/sweep/arithmetic_counts.hpp"
 #include "geomint/sweep/lanes_cap.hpp"
@@ -23,14 +24,14 @@ std::vector<LanesKernel<Sys>> simplified_ti_lanes_kernels() {
   __builtin_cpu_init();
   std::vector<LanesKernel<Sys>> k;
   constexpr bool counted = std::is_same_v<Sys, LennardJones<9>>;  // (the Henon-Heiles lanes are not counted)
-  if (__builtin_cpu_supports("avx512f") && lanes_allowed("avx512"))
+  if (__builtin_cpu_supports("avx512f"))
     k.push_back({"avx512", "AVX-512", avx512::simplified_ti_steps<Sys>, avx512::reciprocals,
                  counted ? KernelArithmetic{&kLennardJonesAvx512, issue_mix_avx512} : KernelArithmetic{}});
-  if (__builtin_cpu_supports("avx2") && lanes_allowed("avx2"))
+  if (__builtin_cpu_supports("avx2"))
     k.push_back({"avx2", "AVX2", avx2::simplified_ti_steps<Sys>, avx2::reciprocals,
                  counted ? KernelArithmetic{&kLennardJonesAvx2, issue_mix_avx2} : KernelArithmetic{}});
   k.push_back({"sse2", "SSE2", sse2::simplified_ti_steps<Sys>, sse2::reciprocals, {}});
-  return k;
+  return within_lanes_cap(std::move(k));
 }
 
 template <class Sys>

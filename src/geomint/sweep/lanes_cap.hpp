@@ -6,6 +6,7 @@
 // kernels agree with its scalar loop to round-off, each differently (sweep/energy_map.hpp).
 #include <string>
 #include <string_view>
+#include <vector>
 
 namespace geomint {
 
@@ -13,8 +14,14 @@ namespace geomint {
 // values it takes, for any other value.
 std::string lanes_cap();
 
-// Whether the lane kernels may use `isa` ("avx512", "avx2" or "sse2") under lanes_cap() (the CPU's own
-// support is the caller's check).
+// Whether the lane kernels may use `isa` ("avx512", "avx2" or "sse2") under lanes_cap().
 bool lanes_allowed(std::string_view isa);
+
+// The kernels the CPU can run (each naming its instruction set in .isa), less those wider than lanes_cap().
+template <class Kernel>
+std::vector<Kernel> within_lanes_cap(std::vector<Kernel> kernels) {
+  std::erase_if(kernels, [](const Kernel& k) { return !lanes_allowed(k.isa); });
+  return kernels;
+}
 
 }  // namespace geomint
